@@ -1,0 +1,185 @@
+//! The kernel names of `docs/kernels.md` and the walker structures each belongs to.
+//!
+//! This table only says *which* kernels exist and where they apply; what they compute is the
+//! derivation's business (see `docs/kernels.md` for inputs, outputs and sign conventions).
+
+use crate::scene::{Floor, Torso};
+
+/// A kernel of the contract in `docs/kernels.md`.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
+pub enum KernelName {
+    /// `mass_matrix`: `M` (Eq. 2).
+    MassMatrix,
+    /// `bias`: `h` (Eq. 20).
+    Bias,
+    /// `lambda_level`: the ground reaction on the level floor (Eqs. 22-23).
+    LambdaLevel,
+    /// `projection_level`: `Y` (Eqs. 28-29).
+    ProjectionLevel,
+    /// `control_level`: `A, B` of the output-following control (Eqs. 30-31).
+    ControlLevel,
+    /// `accel_level`: `qdd` on the level floor (Eq. 27).
+    AccelLevel,
+    /// `lambda_slope`: the ground reaction on the slope (Eq. 22 with Eqs. 36, 38).
+    LambdaSlope,
+    /// `accel_slope`: `qdd` on the slope (Eq. 27 with Eqs. 36, 38).
+    AccelSlope,
+    /// `impact3_level`: impact with three constraints (Eqs. 6-10).
+    Impact3Level,
+    /// `impact2_level`: impact with the rear foot free (Eqs. 12-16).
+    Impact2Level,
+    /// `impact_slope`: the passive wheel's impact on the slope (Eqs. 39-42).
+    ImpactSlope,
+    /// `impact2_slope`: slope impact with the rear foot on the slope (Eq. 46).
+    Impact2Slope,
+    /// `fore_foot`: position and velocity of the fore foot (Eqs. 3, 39).
+    ForeFoot,
+    /// `energy`: kinetic and potential energy.
+    Energy,
+}
+
+/// `(kernel, name, paper equations)`, in catalogue (and default file) order.
+const TABLE: [(KernelName, &str, &str); 14] = [
+    (KernelName::MassMatrix, "mass_matrix", "Eq. 2"),
+    (KernelName::Bias, "bias", "Eq. 20"),
+    (KernelName::LambdaLevel, "lambda_level", "Eqs. 22-23"),
+    (
+        KernelName::ProjectionLevel,
+        "projection_level",
+        "Eqs. 28-29",
+    ),
+    (KernelName::ControlLevel, "control_level", "Eqs. 30-31"),
+    (KernelName::AccelLevel, "accel_level", "Eq. 27"),
+    (
+        KernelName::LambdaSlope,
+        "lambda_slope",
+        "Eq. 22 with Eqs. 36, 38",
+    ),
+    (
+        KernelName::AccelSlope,
+        "accel_slope",
+        "Eq. 27 with Eqs. 36, 38",
+    ),
+    (KernelName::Impact3Level, "impact3_level", "Eqs. 6-10"),
+    (KernelName::Impact2Level, "impact2_level", "Eqs. 12-16"),
+    (KernelName::ImpactSlope, "impact_slope", "Eqs. 39-42"),
+    (KernelName::Impact2Slope, "impact2_slope", "Eq. 46"),
+    (KernelName::ForeFoot, "fore_foot", "Eqs. 3, 39"),
+    (KernelName::Energy, "energy", "-"),
+];
+
+impl KernelName {
+    /// Every kernel, in catalogue order.
+    pub const ALL: [KernelName; 14] = [
+        KernelName::MassMatrix,
+        KernelName::Bias,
+        KernelName::LambdaLevel,
+        KernelName::ProjectionLevel,
+        KernelName::ControlLevel,
+        KernelName::AccelLevel,
+        KernelName::LambdaSlope,
+        KernelName::AccelSlope,
+        KernelName::Impact3Level,
+        KernelName::Impact2Level,
+        KernelName::ImpactSlope,
+        KernelName::Impact2Slope,
+        KernelName::ForeFoot,
+        KernelName::Energy,
+    ];
+
+    fn row(self) -> (KernelName, &'static str, &'static str) {
+        TABLE
+            .iter()
+            .copied()
+            .find(|row| row.0 == self)
+            .unwrap_or((self, "", ""))
+    }
+
+    /// The function name, as in `docs/kernels.md`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        self.row().1
+    }
+
+    /// The paper equations, as in `docs/kernels.md`.
+    #[must_use]
+    pub fn equation(self) -> &'static str {
+        self.row().2
+    }
+
+    /// The kernel called `name`, if there is one.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<KernelName> {
+        TABLE.iter().find(|row| row.1 == name).map(|row| row.0)
+    }
+
+    /// The floor the kernel is for; `None` if it applies to both.
+    #[must_use]
+    pub fn floor(self) -> Option<Floor> {
+        match self {
+            KernelName::MassMatrix
+            | KernelName::Bias
+            | KernelName::ForeFoot
+            | KernelName::Energy => None,
+            KernelName::LambdaLevel
+            | KernelName::ProjectionLevel
+            | KernelName::ControlLevel
+            | KernelName::AccelLevel
+            | KernelName::Impact3Level
+            | KernelName::Impact2Level => Some(Floor::Level),
+            KernelName::LambdaSlope
+            | KernelName::AccelSlope
+            | KernelName::ImpactSlope
+            | KernelName::Impact2Slope => Some(Floor::Slope),
+        }
+    }
+
+    /// Whether the kernel exists only for an actuated torso.
+    #[must_use]
+    pub fn needs_actuation(self) -> bool {
+        self == KernelName::ControlLevel
+    }
+
+    /// Whether a walker with this floor and torso has the kernel.
+    #[must_use]
+    pub fn applies_to(self, floor: Floor, torso: Torso) -> bool {
+        self.floor().is_none_or(|f| f == floor)
+            && (!self.needs_actuation() || torso == Torso::Actuated)
+    }
+
+    /// The kernels a walker with this floor and torso has, in catalogue order.
+    #[must_use]
+    pub fn for_structure(floor: Floor, torso: Torso) -> Vec<KernelName> {
+        Self::ALL
+            .into_iter()
+            .filter(|k| k.applies_to(floor, torso))
+            .collect()
+    }
+}
+
+impl std::fmt::Display for KernelName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for k in KernelName::ALL {
+            assert_eq!(KernelName::from_name(k.name()), Some(k));
+        }
+    }
+
+    #[test]
+    fn control_only_when_actuated() {
+        let passive = KernelName::for_structure(Floor::Level, Torso::Passive);
+        assert!(!passive.contains(&KernelName::ControlLevel));
+        let active = KernelName::for_structure(Floor::Level, Torso::Actuated);
+        assert!(active.contains(&KernelName::ControlLevel));
+        assert!(!active.contains(&KernelName::AccelSlope));
+    }
+}

@@ -1,0 +1,596 @@
+//! Rust source from a [`Module`]: tokens with `quote`, checked by `syn`, formatted by
+//! `prettyplease`, stamped with the `@generated` line.
+//!
+//! Layout of a generated file (see the crate docs for an example):
+//!
+//! 1. the `@generated` line and a header comment (scene structure, fixed values, options);
+//! 2. `pub type F = f64;` (or `f32`);
+//! 3. `pub struct Params` (the runtime parameters), `pub struct Prepared` (what `prepare`
+//!    computes from them) and `pub fn prepare(p: &Params) -> Prepared`;
+//! 4. one `pub fn` per kernel taking `p: &Prepared` and its arguments.
+//!
+//! The output depends only on the module and the options: no paths, no time, no hash-map
+//! order. Floating-point functions are inherent methods (`x.sin()`, `x.sin_cos()`) in std
+//! mode and `libm` calls (`libm::sin`, `libm::sincos`; `libm::sinf`... for `f32`) in no-std
+//! mode; `abs` and `signum` are the inherent methods of `core` in both modes (they are exact
+//! bit operations, and `core`'s `signum` keeps the same semantics as std's). Constants are
+//! written with the shortest digits that round-trip (`{:?}`), suffixed with the float type;
+//! a constant equal to one of `core::f64::consts` is written by that name.
+
+use std::collections::HashMap;
+
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::quote;
+
+use crate::error::EmitError;
+use crate::ir::{Kernel, Module, Node, NodeId, Shape};
+use crate::plan::{Block, Division, Plan, Step};
+use crate::stats;
+
+/// The float type of the generated code.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default)]
+pub enum Float {
+    /// `f64` (the default).
+    #[default]
+    F64,
+    /// `f32`, for small controllers. Constants are folded in `f64` and rounded once.
+    F32,
+}
+
+impl Float {
+    /// `"f64"` or `"f32"`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Float::F64 => "f64",
+            Float::F32 => "f32",
+        }
+    }
+}
+
+/// What the emitter writes.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default)]
+pub struct EmitOptions {
+    /// The float type `F`.
+    pub float: Float,
+    /// Whether to call `libm` instead of std's inherent float methods (the file then uses only
+    /// `core` and `libm`).
+    pub no_std: bool,
+    /// How divisions by shared denominators are evaluated.
+    pub division: Division,
+}
+
+/// Emits `module` as formatted Rust source.
+///
+/// # Errors
+/// The module is inconsistent (see [`EmitError`]).
+pub fn emit(module: &Module, options: &EmitOptions) -> Result<String, EmitError> {
+    let plan = Plan::new(module, options.division)?;
+    emit_plan(module, &plan, options)
+}
+
+// Precedence levels, loosest first.
+const SUM: u8 = 1;
+const PRODUCT: u8 = 2;
+const UNARY: u8 = 3;
+const POSTFIX: u8 = 4;
+const ATOM: u8 = 5;
+
+fn ident(name: &str) -> Ident {
+    Ident::new(name, Span::call_site())
+}
+
+fn ident_expr(name: &str) -> TokenStream {
+    let i = ident(name);
+    quote!(#i)
+}
+
+fn paren_if(t: TokenStream, cond: bool) -> TokenStream {
+    if cond { quote!((#t)) } else { t }
+}
+
+fn unsuffixed(n: usize) -> Literal {
+    Literal::usize_unsuffixed(n)
+}
+
+/// The named constants of `core::f64::consts` (also clippy's `approx_constant` list).
+const NAMED: [(&str, f64, f32); 19] = {
+    use std::f32::consts as s;
+    use std::f64::consts as d;
+    [
+        ("PI", d::PI, s::PI),
+        ("TAU", d::TAU, s::TAU),
+        ("FRAC_PI_2", d::FRAC_PI_2, s::FRAC_PI_2),
+        ("FRAC_PI_3", d::FRAC_PI_3, s::FRAC_PI_3),
+        ("FRAC_PI_4", d::FRAC_PI_4, s::FRAC_PI_4),
+        ("FRAC_PI_6", d::FRAC_PI_6, s::FRAC_PI_6),
+        ("FRAC_PI_8", d::FRAC_PI_8, s::FRAC_PI_8),
+        ("FRAC_1_PI", d::FRAC_1_PI, s::FRAC_1_PI),
+        ("FRAC_2_PI", d::FRAC_2_PI, s::FRAC_2_PI),
+        ("FRAC_2_SQRT_PI", d::FRAC_2_SQRT_PI, s::FRAC_2_SQRT_PI),
+        ("SQRT_2", d::SQRT_2, s::SQRT_2),
+        ("FRAC_1_SQRT_2", d::FRAC_1_SQRT_2, s::FRAC_1_SQRT_2),
+        ("E", d::E, s::E),
+        ("LN_2", d::LN_2, s::LN_2),
+        ("LN_10", d::LN_10, s::LN_10),
+        ("LOG2_E", d::LOG2_E, s::LOG2_E),
+        ("LOG10_E", d::LOG10_E, s::LOG10_E),
+        ("LOG2_10", d::LOG2_10, s::LOG2_10),
+        ("LOG10_2", d::LOG10_2, s::LOG10_2),
+    ]
+};
+
+/// Where a block reads its leaves from.
+#[derive(Clone, Copy)]
+enum Scope {
+    /// `prepare`: parameters are `p.<field>` of `Params`.
+    Prepare,
+    /// A kernel: hoisted nodes are `p.<field>` of `Prepared`.
+    Kernel,
+}
+
+struct Writer<'a> {
+    module: &'a Module,
+    plan: &'a Plan,
+    options: &'a EmitOptions,
+    names: &'a HashMap<NodeId, String>,
+    scope: Scope,
+}
+
+impl Writer<'_> {
+    /// A literal of type `F` and its precedence.
+    fn literal(&self, v: f64) -> (TokenStream, u8) {
+        let (magnitude, negative) = (v.abs(), v.is_sign_negative() && v != 0.0);
+        let ty = ident(self.options.float.name());
+        let body = if magnitude.is_nan() {
+            quote!(F::NAN)
+        } else if magnitude.is_infinite() {
+            quote!(F::INFINITY)
+        } else {
+            let (named, digits) = match self.options.float {
+                Float::F64 => (
+                    NAMED.iter().find(|c| c.1 == magnitude).map(|c| c.0),
+                    format!("{magnitude:?}_f64"),
+                ),
+                Float::F32 => {
+                    #[allow(
+                        clippy::cast_possible_truncation,
+                        reason = "rounding to f32 is the point"
+                    )]
+                    let m = magnitude as f32;
+                    if m.is_infinite() {
+                        return self.signed(quote!(F::INFINITY), negative);
+                    }
+                    (
+                        NAMED.iter().find(|c| c.2 == m).map(|c| c.0),
+                        format!("{m:?}_f32"),
+                    )
+                }
+            };
+            match (named, digits.parse::<Literal>()) {
+                (Some(name), _) => {
+                    let name = ident(name);
+                    quote!(core::#ty::consts::#name)
+                }
+                (None, Ok(lit)) => quote!(#lit),
+                (None, Err(_)) => quote!(F::NAN),
+            }
+        };
+        self.signed(body, negative)
+    }
+
+    fn signed(&self, body: TokenStream, negative: bool) -> (TokenStream, u8) {
+        if negative {
+            (quote!(-#body), UNARY)
+        } else {
+            (body, ATOM)
+        }
+    }
+
+    /// The expression for `n`: its name if it has one, else its definition.
+    fn expr(&self, n: NodeId) -> (TokenStream, u8) {
+        if let Some(name) = self.names.get(&n) {
+            return (ident_expr(name), ATOM);
+        }
+        if let Scope::Kernel = self.scope
+            && let Some(field) = self.plan.field_of.get(&n)
+        {
+            let field = ident(field);
+            return (quote!(p.#field), POSTFIX);
+        }
+        self.definition(n)
+    }
+
+    fn operand(&self, n: NodeId, paren_below: u8) -> TokenStream {
+        let (t, prec) = self.expr(n);
+        paren_if(t, prec < paren_below)
+    }
+
+    fn binary(&self, a: NodeId, op: TokenStream, b: NodeId, prec: u8) -> (TokenStream, u8) {
+        let a = self.operand(a, prec);
+        let b = self.operand(b, prec + 1);
+        (quote!(#a #op #b), prec)
+    }
+
+    /// A float function: an inherent method in std mode, `libm::<name>` in no-std mode.
+    fn call(&self, arg: NodeId, name: &str) -> (TokenStream, u8) {
+        if self.options.no_std {
+            let f = ident(&self.libm_name(name));
+            let (a, _) = self.expr(arg);
+            (quote!(libm::#f(#a)), POSTFIX)
+        } else {
+            self.method(arg, name)
+        }
+    }
+
+    fn method(&self, arg: NodeId, name: &str) -> (TokenStream, u8) {
+        let f = ident(name);
+        let recv = self.operand(arg, POSTFIX);
+        (quote!(#recv.#f()), POSTFIX)
+    }
+
+    fn libm_name(&self, name: &str) -> String {
+        let base = match name {
+            "sin_cos" => "sincos",
+            "powi" => "pow",
+            other => other,
+        };
+        match self.options.float {
+            Float::F64 => base.to_owned(),
+            Float::F32 => format!("{base}f"),
+        }
+    }
+
+    /// The definition of `n` (ignoring its own name).
+    fn definition(&self, n: NodeId) -> (TokenStream, u8) {
+        let g = &self.plan.graph;
+        match g.node(n) {
+            Node::Const(c) => self.literal(c.value()),
+            Node::Param(p) => {
+                let field = self
+                    .module
+                    .params
+                    .get(p.index())
+                    .map_or_else(|| format!("param{}", p.index()), |d| d.field());
+                let field = ident(&field);
+                (quote!(p.#field), POSTFIX)
+            }
+            Node::Input(i) => (ident_expr(g.input_name(i)), ATOM),
+            Node::Add(a, b) => self.binary(a, quote!(+), b, SUM),
+            Node::Sub(a, b) => self.binary(a, quote!(-), b, SUM),
+            Node::Mul(a, b) => self.binary(a, quote!(*), b, PRODUCT),
+            Node::Div(a, b) => self.binary(a, quote!(/), b, PRODUCT),
+            Node::Neg(a) => {
+                let a = self.operand(a, UNARY);
+                (quote!(-#a), UNARY)
+            }
+            Node::Powi(a, e) => {
+                // Not reached: the plan expands powers. Kept total for hand-built plans.
+                let e = Literal::i32_unsuffixed(e);
+                if self.options.no_std {
+                    let f = ident(&self.libm_name("powi"));
+                    let (a, _) = self.expr(a);
+                    (quote!(libm::#f(#a, #e as F)), POSTFIX)
+                } else {
+                    let recv = self.operand(a, POSTFIX);
+                    (quote!(#recv.powi(#e)), POSTFIX)
+                }
+            }
+            Node::Sqrt(a) => self.call(a, "sqrt"),
+            Node::Sin(a) => self.call(a, "sin"),
+            Node::Cos(a) => self.call(a, "cos"),
+            Node::Tanh(a) => self.call(a, "tanh"),
+            Node::Signum(a) => self.method(a, "signum"),
+            Node::Abs(a) => self.method(a, "abs"),
+        }
+    }
+
+    /// The `let` statements of a block.
+    fn lets(&self, block: &Block) -> Vec<TokenStream> {
+        block
+            .steps
+            .iter()
+            .map(|step| match *step {
+                Step::Let(n) => {
+                    let name = ident(self.names.get(&n).map_or("_", String::as_str));
+                    let (value, _) = self.definition(n);
+                    quote!(let #name = #value;)
+                }
+                Step::SinCos { sin, cos, arg } => {
+                    let s = ident(self.names.get(&sin).map_or("_", String::as_str));
+                    let c = ident(self.names.get(&cos).map_or("_", String::as_str));
+                    let value = if self.options.no_std {
+                        let f = ident(&self.libm_name("sin_cos"));
+                        let (a, _) = self.expr(arg);
+                        quote!(libm::#f(#a))
+                    } else {
+                        self.method(arg, "sin_cos").0
+                    };
+                    quote!(let (#s, #c) = #value;)
+                }
+            })
+            .collect()
+    }
+}
+
+fn doc_attrs(lines: &[String]) -> Vec<TokenStream> {
+    lines
+        .iter()
+        .flat_map(|l| l.split('\n').map(str::to_owned).collect::<Vec<_>>())
+        .map(|l| {
+            let l = l.trim_end();
+            let l = if l.is_empty() {
+                String::new()
+            } else {
+                format!(" {l}")
+            };
+            quote!(#[doc = #l])
+        })
+        .collect()
+}
+
+fn code_list(items: &[String]) -> String {
+    items
+        .iter()
+        .map(|s| format!("`{s}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn returns_doc(k: &Kernel) -> String {
+    let names: Vec<&str> = k.outputs.iter().map(|o| o.0.as_str()).collect();
+    match k.output_shape {
+        Shape::Scalar => format!("Returns `{}`.", names.join("")),
+        Shape::Vector(_) => format!("Returns `[{}]`.", names.join(", ")),
+        Shape::Matrix(_, c) => {
+            let rows: Vec<String> = names
+                .chunks(c.max(1))
+                .map(|r| format!("[{}]", r.join(", ")))
+                .collect();
+            format!("Returns, row-major, `[{}]`.", rows.join(", "))
+        }
+    }
+}
+
+fn kernel_fn(
+    module: &Module,
+    plan: &Plan,
+    options: &EmitOptions,
+    index: usize,
+) -> Option<TokenStream> {
+    let k = module.kernels.get(index)?;
+    let kp = plan.kernels.get(index)?;
+    let w = Writer {
+        module,
+        plan,
+        options,
+        names: &kp.block.names,
+        scope: Scope::Kernel,
+    };
+    let lets = w.lets(&kp.block);
+    let outs: Vec<TokenStream> = kp.outputs.iter().map(|&n| w.expr(n).0).collect();
+    let (ret_ty, ret) = match k.output_shape {
+        Shape::Scalar => (
+            quote!(F),
+            outs.first().cloned().unwrap_or_else(|| quote!(0.0)),
+        ),
+        Shape::Vector(n) => {
+            let n = unsuffixed(n);
+            (quote!([F; #n]), quote!([#(#outs),*]))
+        }
+        Shape::Matrix(r, c) => {
+            let rows: Vec<TokenStream> = outs
+                .chunks(c.max(1))
+                .map(|row| quote!([#(#row),*]))
+                .collect();
+            let (r, c) = (unsuffixed(r), unsuffixed(c));
+            (quote!([[F; #c]; #r]), quote!([#(#rows),*]))
+        }
+    };
+    let args: Vec<TokenStream> = k
+        .args
+        .iter()
+        .map(|a| {
+            let name = if kp.used_args.contains(a) {
+                ident(a)
+            } else {
+                ident(&format!("_{a}"))
+            };
+            quote!(#name: F)
+        })
+        .collect();
+    let unused: Vec<String> = k
+        .args
+        .iter()
+        .filter(|a| !kp.used_args.contains(*a))
+        .cloned()
+        .collect();
+    let p = ident(if kp.uses_prepared { "p" } else { "_p" });
+    let mut doc = vec![k.doc.clone(), String::new()];
+    if !k.equation.is_empty() {
+        doc.push(format!("Paper: {}.", k.equation));
+        doc.push(String::new());
+    }
+    let args_doc = if k.args.is_empty() {
+        "no state arguments".to_owned()
+    } else {
+        code_list(&k.args)
+    };
+    doc.push(format!(
+        "Arguments: {args_doc}; parameters through `p` from [`prepare`]."
+    ));
+    if !unused.is_empty() {
+        doc.push(format!(
+            "Not used by this scene (kept for a uniform signature): {}.",
+            code_list(&unused)
+        ));
+    }
+    doc.push(returns_doc(k));
+    doc.push(String::new());
+    doc.push(format!(
+        "Operations per call: {}.",
+        stats::block_counts(&plan.graph, &kp.block).summary()
+    ));
+    let docs = doc_attrs(&doc);
+    let name = ident(&k.name);
+    Some(quote! {
+        #(#docs)*
+        #[inline]
+        #[must_use]
+        pub fn #name(#p: &Prepared, #(#args),*) -> #ret_ty {
+            #(#lets)*
+            #ret
+        }
+    })
+}
+
+fn params_and_prepare(module: &Module, plan: &Plan, options: &EmitOptions) -> TokenStream {
+    let fields: Vec<TokenStream> = module
+        .params
+        .iter()
+        .map(|p| {
+            let docs = doc_attrs(std::slice::from_ref(&p.doc));
+            let f = ident(&p.field());
+            quote!(#(#docs)* pub #f: F,)
+        })
+        .collect();
+    let params_doc = doc_attrs(&[
+        format!(
+            "Runtime parameters of scene `{}` (everything the scene does not fix).",
+            module.scene_name
+        ),
+        String::new(),
+        "Pass them to [`prepare`] once per parameter set.".to_owned(),
+    ]);
+    let w = Writer {
+        module,
+        plan,
+        options,
+        names: &plan.prepare.names,
+        scope: Scope::Prepare,
+    };
+    let lets = w.lets(&plan.prepare);
+    let prepared_fields: Vec<TokenStream> = plan
+        .fields
+        .iter()
+        .map(|f| {
+            let name = ident(&f.name);
+            quote!(#name: F,)
+        })
+        .collect();
+    let inits: Vec<TokenStream> = plan
+        .fields
+        .iter()
+        .map(|f| {
+            let name = ident(&f.name);
+            if f.param.is_some() {
+                let (value, _) = w.definition(f.node);
+                quote!(#name: #value)
+            } else {
+                quote!(#name)
+            }
+        })
+        .collect();
+    let p = ident(if plan.fields.is_empty() { "_p" } else { "p" });
+    let prepare_doc = doc_attrs(&[
+        "Computes everything the kernels need that depends on the parameters only.".to_owned(),
+        String::new(),
+        "Call once per parameter set, then pass the result to every kernel.".to_owned(),
+        String::new(),
+        format!(
+            "Operations: {}.",
+            stats::block_counts(&plan.graph, &plan.prepare).summary()
+        ),
+    ]);
+    quote! {
+        #(#params_doc)*
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub struct Params {
+            #(#fields)*
+        }
+
+        /// Parameter-dependent values computed once by [`prepare`] and read by the kernels.
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub struct Prepared {
+            #(#prepared_fields)*
+        }
+
+        #(#prepare_doc)*
+        #[must_use]
+        pub fn prepare(#p: &Params) -> Prepared {
+            #(#lets)*
+            Prepared { #(#inits),* }
+        }
+    }
+}
+
+fn header(module: &Module, options: &EmitOptions) -> String {
+    let mut lines = vec![
+        format!(
+            "// @generated by walker-gen from scene {}. Do not edit by hand.",
+            module.scene_name
+        ),
+        "//".to_owned(),
+    ];
+    for note in module.notes.iter().flat_map(|n| n.lines()) {
+        lines.push(format!("// {note}").trim_end().to_owned());
+    }
+    lines.push(format!(
+        "// Float type: {}; float functions: {}.",
+        options.float.name(),
+        if options.no_std {
+            "libm (no_std)"
+        } else {
+            "inherent methods (std)"
+        }
+    ));
+    lines.push(format!(
+        "// Divisions: {}.",
+        match options.division {
+            Division::SharedReciprocal => "shared denominators as one reciprocal",
+            Division::Exact => "exact, one per quotient",
+        }
+    ));
+    let mut out = lines.join("\n");
+    out.push_str("\n\n");
+    out
+}
+
+pub(crate) fn emit_plan(
+    module: &Module,
+    plan: &Plan,
+    options: &EmitOptions,
+) -> Result<String, EmitError> {
+    let ty = ident(options.float.name());
+    let params = params_and_prepare(module, plan, options);
+    let kernels: Vec<TokenStream> = (0..module.kernels.len())
+        .filter_map(|i| kernel_fn(module, plan, options, i))
+        .collect();
+    let tokens = quote! {
+        /// The float type of every value in this file.
+        pub type F = #ty;
+
+        #params
+
+        #(#kernels)*
+    };
+    let file: syn::File = syn::parse2(tokens).map_err(|e| EmitError::Syntax {
+        message: e.to_string(),
+    })?;
+    // One item at a time, so that items are separated by a blank line.
+    let items: Vec<String> = file
+        .items
+        .into_iter()
+        .map(|item| {
+            prettyplease::unparse(&syn::File {
+                shebang: None,
+                frontmatter: None,
+                attrs: Vec::new(),
+                items: vec![item],
+            })
+        })
+        .collect();
+    let mut out = header(module, options);
+    out.push_str(&items.join("\n"));
+    Ok(out)
+}

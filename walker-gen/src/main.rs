@@ -1,0 +1,138 @@
+//! `walker-gen`: the generator as a command-line tool, for builds that are not cargo's.
+//!
+//! ```text
+//! walker-gen emit --scene scenes/active-level.toml [--f32] [--no-std] [--exact-division] [-o kernels.rs]
+//! walker-gen stats --scene scenes/active-level.toml [--f32] [--exact-division] [--toml]
+//! ```
+//!
+//! Bad input prints a message naming the field and exits with code 2.
+
+use std::io::Write as _;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand};
+use walker_gen::{Config, Division, Error, Float};
+
+#[derive(Parser)]
+#[command(
+    name = "walker-gen",
+    version,
+    about = "Generates closed-form Rust kernels of the slippery walker"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Writes the kernels of a scene as one Rust file.
+    Emit {
+        #[command(flatten)]
+        common: Common,
+        /// Use libm instead of std float methods (for `#![no_std]` crates).
+        #[arg(long)]
+        no_std: bool,
+        /// Output file (written only if it changes); standard output if absent or `-`.
+        #[arg(short = 'o', long = "out")]
+        out: Option<PathBuf>,
+    },
+    /// Prints the operation counts of the generated kernels.
+    Stats {
+        #[command(flatten)]
+        common: Common,
+        /// Print TOML data instead of a table.
+        #[arg(long)]
+        toml: bool,
+    },
+}
+
+#[derive(Args)]
+struct Common {
+    /// The scene file (TOML).
+    #[arg(long)]
+    scene: PathBuf,
+    /// Generate `f32` code instead of `f64`.
+    #[arg(long)]
+    f32: bool,
+    /// One correctly rounded division per quotient (no shared reciprocals).
+    #[arg(long)]
+    exact_division: bool,
+}
+
+impl Common {
+    fn config(&self) -> Config {
+        let mut config = Config::new();
+        config
+            .scene_file(&self.scene)
+            .float(if self.f32 { Float::F32 } else { Float::F64 })
+            .division(if self.exact_division {
+                Division::Exact
+            } else {
+                Division::SharedReciprocal
+            });
+        config
+    }
+}
+
+/// A failure of the tool: a generator error or an I/O error on standard output.
+#[derive(Debug, thiserror::Error)]
+enum CliError {
+    #[error(transparent)]
+    Gen(#[from] Error),
+    #[error("cannot write to standard output: {0}")]
+    Stdout(#[from] std::io::Error),
+    #[error("cannot encode the stats as TOML: {0}")]
+    Toml(#[from] toml::ser::Error),
+}
+
+fn run(cli: Cli) -> Result<(), CliError> {
+    let mut stdout = std::io::stdout().lock();
+    match cli.command {
+        Command::Emit {
+            common,
+            no_std,
+            out,
+        } => {
+            let mut config = common.config();
+            config.no_std(no_std);
+            match out.filter(|p| p.as_os_str() != "-") {
+                Some(path) => {
+                    let report = config.out_file(path).generate()?;
+                    eprintln!(
+                        "walker-gen: {} {} ({} bytes)",
+                        if report.written {
+                            "wrote"
+                        } else {
+                            "unchanged:"
+                        },
+                        report.out_file.display(),
+                        report.bytes
+                    );
+                }
+                None => stdout.write_all(config.render()?.as_bytes())?,
+            }
+        }
+        Command::Stats { common, toml } => {
+            let stats = common.config().stats()?;
+            if toml {
+                stdout.write_all(toml::to_string(&stats)?.as_bytes())?;
+            } else {
+                stdout.write_all(stats.table().as_bytes())?;
+            }
+        }
+    }
+    stdout.flush()?;
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("walker-gen: error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}

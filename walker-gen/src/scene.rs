@@ -1,0 +1,849 @@
+//! Scenes: which walker structure to generate kernels for, and which parameters are constants.
+//!
+//! A scene is a small TOML file:
+//!
+//! ```toml
+//! name = "active-level"     # used in the @generated line and the default file name
+//! floor = "level"           # "level" | "slope"
+//! friction = "tanh"         # "none" | "tanh" (Eqs. 26, 37) | "sign" (Eq. 25)
+//! torso = "actuated"        # "actuated" (output-following control, Eqs. 30-32) | "passive" (u = 0)
+//! kernels = ["accel_level", "lambda_level"]   # optional; default: every kernel of the structure
+//!
+//! [fixed]                   # parameters substituted at generation time
+//! m1 = 2.0
+//! alpha = 0.5235987755982988   # or alpha_deg = 30.0 (not both)
+//! # every parameter of the structure that is not fixed is a runtime field of `Params`
+//! ```
+//!
+//! | parameter | meaning | valid values | exists when |
+//! |---|---|---|---|
+//! | `m1`, `m2` | masses of wheel and torso | finite, > 0 | always |
+//! | `l` | leg length | finite, > 0 | always |
+//! | `I1`, `I2` | inertia moments of wheel and torso | finite, > 0 | always |
+//! | `g` | gravity | finite, > 0 | always |
+//! | `alpha` (`alpha_deg`) | angle between spokes | in (0, pi) (in (0, 180)) | always |
+//! | `phi` | slope angle | in [0, pi/2) | `floor = "slope"` |
+//! | `mu0` | friction coefficient | finite, >= 0 | `friction` is not `"none"` |
+//! | `c` | sharpness of the tanh friction | finite, > 0 | `friction = "tanh"` |
+//! | `T_set` | duration of the `y_d` ramp | finite, > 0 | `torso = "actuated"` |
+//! | `K_P`, `K_D` | PD gains | finite, >= 0 | `torso = "actuated"` |
+//!
+//! Rejected as contradictions: a parameter given for a structure that does not have it (the
+//! last column), both `alpha` and `alpha_deg`, `floor = "slope"` with `torso = "actuated"` (the
+//! paper's slope walker is passive and the derivation only provides passive slope kernels), and
+//! a kernel the structure does not have (see [`KernelName::applies_to`]). Every error names the
+//! field it is about ([`SceneError::field`]).
+
+use std::collections::BTreeMap;
+use std::fmt;
+use std::path::Path;
+
+use serde::{Deserialize, Serialize};
+
+use crate::catalog::KernelName;
+
+/// The floor the walker stands on.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Floor {
+    /// The level floor (Sections 2-4).
+    Level,
+    /// A slope of angle `phi` descending towards `+x` (Section 5).
+    Slope,
+}
+
+/// The friction model that defines `mu` from the state.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Friction {
+    /// Frictionless: `mu = 0`.
+    None,
+    /// `mu = -mu0 tanh(c xd)` (Eq. 26), on the slope `-mu0 tanh(c xd / cos phi)` (Eq. 37).
+    Tanh,
+    /// `mu = -mu0 sign(xd)` (Eq. 25 with the sign that opposes sliding).
+    Sign,
+}
+
+/// Whether the torso is driven.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Torso {
+    /// Output-following control of `y = th1 - th2` (Eqs. 30-32).
+    Actuated,
+    /// No torque: `u = 0`.
+    Passive,
+}
+
+impl fmt::Display for Floor {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Floor::Level => "level",
+            Floor::Slope => "slope",
+        })
+    }
+}
+
+impl fmt::Display for Friction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Friction::None => "none",
+            Friction::Tanh => "tanh",
+            Friction::Sign => "sign",
+        })
+    }
+}
+
+impl fmt::Display for Torso {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Torso::Actuated => "actuated",
+            Torso::Passive => "passive",
+        })
+    }
+}
+
+/// A model parameter (paper notation; Table 1 for the values used there).
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
+pub enum Param {
+    /// `m1`: mass of the rimless wheel [kg].
+    M1,
+    /// `m2`: mass of the torso [kg].
+    M2,
+    /// `l`: leg length, the radius of the wheel [m].
+    L,
+    /// `I1`: inertia moment of the wheel [kg m^2].
+    I1,
+    /// `I2`: inertia moment of the torso [kg m^2].
+    I2,
+    /// `g`: gravitational acceleration [m/s^2].
+    G,
+    /// `alpha`: angle between neighbouring spokes [rad].
+    Alpha,
+    /// `phi`: slope angle [rad].
+    Phi,
+    /// `mu0`: coefficient of sliding friction [-].
+    Mu0,
+    /// `c`: sharpness of the tanh friction law [s/m].
+    C,
+    /// `T_set`: duration of the `y_d` ramp [s].
+    TSet,
+    /// `K_P`: proportional gain [1/s^2].
+    KP,
+    /// `K_D`: derivative gain [1/s].
+    KD,
+}
+
+/// `(param, name, doc, valid range)`, in canonical (and `Params` field) order.
+const PARAMS: [(Param, &str, &str, Range); 13] = [
+    (
+        Param::M1,
+        "m1",
+        "Mass of the rimless wheel `m1` [kg].",
+        Range::Positive,
+    ),
+    (
+        Param::M2,
+        "m2",
+        "Mass of the torso `m2` [kg].",
+        Range::Positive,
+    ),
+    (
+        Param::L,
+        "l",
+        "Leg length (wheel radius) `l` [m].",
+        Range::Positive,
+    ),
+    (
+        Param::I1,
+        "I1",
+        "Inertia moment of the wheel `I1` [kg m^2].",
+        Range::Positive,
+    ),
+    (
+        Param::I2,
+        "I2",
+        "Inertia moment of the torso `I2` [kg m^2].",
+        Range::Positive,
+    ),
+    (
+        Param::G,
+        "g",
+        "Gravitational acceleration `g` [m/s^2].",
+        Range::Positive,
+    ),
+    (
+        Param::Alpha,
+        "alpha",
+        "Angle between neighbouring spokes `alpha` [rad].",
+        Range::OpenPi,
+    ),
+    (
+        Param::Phi,
+        "phi",
+        "Slope angle `phi` [rad].",
+        Range::HalfOpenHalfPi,
+    ),
+    (
+        Param::Mu0,
+        "mu0",
+        "Coefficient of sliding friction `mu0` [-].",
+        Range::NonNegative,
+    ),
+    (
+        Param::C,
+        "c",
+        "Sharpness `c` of the tanh friction law [s/m].",
+        Range::Positive,
+    ),
+    (
+        Param::TSet,
+        "T_set",
+        "Duration `T_set` of the `y_d` ramp [s].",
+        Range::Positive,
+    ),
+    (
+        Param::KP,
+        "K_P",
+        "Proportional gain `K_P` of the output control [1/s^2].",
+        Range::NonNegative,
+    ),
+    (
+        Param::KD,
+        "K_D",
+        "Derivative gain `K_D` of the output control [1/s].",
+        Range::NonNegative,
+    ),
+];
+
+/// A valid range of a parameter value.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Range {
+    Positive,
+    NonNegative,
+    OpenPi,
+    HalfOpenHalfPi,
+    OpenDegrees,
+}
+
+impl Range {
+    fn contains(self, v: f64) -> bool {
+        use std::f64::consts::{FRAC_PI_2, PI};
+        v.is_finite()
+            && match self {
+                Range::Positive => v > 0.0,
+                Range::NonNegative => v >= 0.0,
+                Range::OpenPi => v > 0.0 && v < PI,
+                Range::HalfOpenHalfPi => (0.0..FRAC_PI_2).contains(&v),
+                Range::OpenDegrees => v > 0.0 && v < 180.0,
+            }
+    }
+
+    fn describe(self) -> &'static str {
+        match self {
+            Range::Positive => "finite and > 0",
+            Range::NonNegative => "finite and >= 0",
+            Range::OpenPi => "in (0, pi)",
+            Range::HalfOpenHalfPi => "in [0, pi/2)",
+            Range::OpenDegrees => "in (0, 180)",
+        }
+    }
+}
+
+impl Param {
+    /// Every parameter, in canonical order.
+    pub const ALL: [Param; 13] = [
+        Param::M1,
+        Param::M2,
+        Param::L,
+        Param::I1,
+        Param::I2,
+        Param::G,
+        Param::Alpha,
+        Param::Phi,
+        Param::Mu0,
+        Param::C,
+        Param::TSet,
+        Param::KP,
+        Param::KD,
+    ];
+
+    fn row(self) -> (Param, &'static str, &'static str, Range) {
+        PARAMS
+            .iter()
+            .copied()
+            .find(|row| row.0 == self)
+            .unwrap_or((self, "", "", Range::Positive))
+    }
+
+    /// The name in scene files and in `docs/kernels.md` (`m1`, `I1`, `T_set`...).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        self.row().1
+    }
+
+    /// A one-line description with unit, for doc comments.
+    #[must_use]
+    pub fn doc(self) -> &'static str {
+        self.row().2
+    }
+
+    /// The valid values, in words (for example `"finite and > 0"`).
+    #[must_use]
+    pub fn valid_range(self) -> &'static str {
+        self.row().3.describe()
+    }
+
+    /// Whether `value` is valid for the parameter.
+    #[must_use]
+    pub fn accepts(self, value: f64) -> bool {
+        self.row().3.contains(value)
+    }
+
+    /// The parameter called `name` in scene files.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Param> {
+        PARAMS.iter().find(|row| row.1 == name).map(|row| row.0)
+    }
+
+    /// Whether a walker with this structure has the parameter.
+    #[must_use]
+    pub fn applies_to(self, floor: Floor, friction: Friction, torso: Torso) -> bool {
+        match self {
+            Param::M1 | Param::M2 | Param::L | Param::I1 | Param::I2 | Param::G | Param::Alpha => {
+                true
+            }
+            Param::Phi => floor == Floor::Slope,
+            Param::Mu0 => friction != Friction::None,
+            Param::C => friction == Friction::Tanh,
+            Param::TSet | Param::KP | Param::KD => torso == Torso::Actuated,
+        }
+    }
+
+    /// Why a structure lacks the parameter (for error messages).
+    fn absent_because(self, floor: Floor, friction: Friction, torso: Torso) -> String {
+        match self {
+            Param::Phi => format!(
+                "floor = \"{floor}\" has no slope angle; remove it or use floor = \"slope\""
+            ),
+            Param::Mu0 | Param::C => format!(
+                "friction = \"{friction}\" has no parameter `{}`; remove it or change `friction`",
+                self.name()
+            ),
+            Param::TSet | Param::KP | Param::KD => {
+                format!("torso = \"{torso}\" has no control; remove it or use torso = \"actuated\"")
+            }
+            _ => String::new(),
+        }
+    }
+}
+
+impl fmt::Display for Param {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A scene that failed to load or validate. Every variant names the field ([`SceneError::field`]).
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    /// The scene file could not be read.
+    #[error("cannot read scene file {path}: {source}")]
+    Read {
+        /// The path as given.
+        path: String,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+    /// The TOML is malformed, has an unknown key or a value of the wrong type.
+    #[error("scene {origin}: field `{field}`: {message}")]
+    Syntax {
+        /// Where the scene came from (a file name or `<string>`).
+        origin: String,
+        /// The field at the error (dotted path), or `<file>` if it cannot be told.
+        field: String,
+        /// The parser's message, with the offending line.
+        message: String,
+    },
+    /// The scene name is empty or has characters other than `a-z A-Z 0-9 - _`.
+    #[error("field `name` = {value:?}: must be 1 to 64 characters from a-z, A-Z, 0-9, '-', '_'")]
+    InvalidName {
+        /// The rejected name.
+        value: String,
+    },
+    /// A parameter value outside its valid range.
+    #[error("field `{field}` = {value}: must be {range}")]
+    OutOfRange {
+        /// The field, for example `fixed.m1`.
+        field: String,
+        /// The rejected value.
+        value: f64,
+        /// The valid range, in words.
+        range: &'static str,
+    },
+    /// Two settings contradict each other.
+    #[error("field `{field}`: {reason}")]
+    Contradiction {
+        /// The field to change.
+        field: String,
+        /// What contradicts it and how to fix it.
+        reason: String,
+    },
+    /// `kernels` names a kernel that does not exist.
+    #[error("field `kernels`: unknown kernel `{name}`; valid names: {valid}")]
+    UnknownKernel {
+        /// The unknown name.
+        name: String,
+        /// The valid names, comma separated.
+        valid: String,
+    },
+    /// `kernels` names a kernel that this structure does not have.
+    #[error("field `kernels`: kernel `{name}` does not exist for {structure}; it has: {valid}")]
+    KernelNotInStructure {
+        /// The kernel.
+        name: String,
+        /// The structure, in words.
+        structure: String,
+        /// The kernels the structure has.
+        valid: String,
+    },
+    /// `kernels` is empty or names a kernel twice.
+    #[error("field `kernels`: {reason}")]
+    BadKernelList {
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+impl SceneError {
+    /// The field the error is about (dotted, for example `fixed.phi`), or `<file>` for I/O errors.
+    #[must_use]
+    pub fn field(&self) -> &str {
+        match self {
+            SceneError::Read { .. } => "<file>",
+            SceneError::Syntax { field, .. }
+            | SceneError::OutOfRange { field, .. }
+            | SceneError::Contradiction { field, .. } => field,
+            SceneError::InvalidName { .. } => "name",
+            SceneError::UnknownKernel { .. }
+            | SceneError::KernelNotInStructure { .. }
+            | SceneError::BadKernelList { .. } => "kernels",
+        }
+    }
+}
+
+/// The file layout, as deserialised before validation.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawScene {
+    name: String,
+    floor: Floor,
+    friction: Friction,
+    torso: Torso,
+    #[serde(default)]
+    kernels: Option<Vec<String>>,
+    #[serde(default)]
+    fixed: RawFixed,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+#[allow(
+    non_snake_case,
+    reason = "field names are the paper's, as written in scene files"
+)]
+struct RawFixed {
+    m1: Option<f64>,
+    m2: Option<f64>,
+    l: Option<f64>,
+    I1: Option<f64>,
+    I2: Option<f64>,
+    g: Option<f64>,
+    alpha: Option<f64>,
+    alpha_deg: Option<f64>,
+    phi: Option<f64>,
+    mu0: Option<f64>,
+    c: Option<f64>,
+    T_set: Option<f64>,
+    K_P: Option<f64>,
+    K_D: Option<f64>,
+}
+
+/// A validated scene (build one with [`Scene::new`] or load one with [`Scene::from_file`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// Name for the `@generated` line and the default file name.
+    pub name: String,
+    /// Level floor or slope.
+    pub floor: Floor,
+    /// Friction model.
+    pub friction: Friction,
+    /// Actuated or passive torso.
+    pub torso: Torso,
+    /// The kernels asked for; `None` for every kernel of the structure.
+    pub kernels: Option<Vec<KernelName>>,
+    /// Parameters substituted at generation time.
+    pub fixed: BTreeMap<Param, f64>,
+}
+
+impl Scene {
+    /// A scene with nothing fixed and every kernel of the structure (validated).
+    ///
+    /// # Errors
+    /// The name is invalid or the structure is contradictory (see [`Scene::validate`]).
+    pub fn new(
+        name: &str,
+        floor: Floor,
+        friction: Friction,
+        torso: Torso,
+    ) -> Result<Scene, SceneError> {
+        let scene = Scene {
+            name: name.to_owned(),
+            floor,
+            friction,
+            torso,
+            kernels: None,
+            fixed: BTreeMap::new(),
+        };
+        scene.validate()?;
+        Ok(scene)
+    }
+
+    /// Fixes `param` to `value` (validated).
+    ///
+    /// # Errors
+    /// The value is out of range or the structure lacks the parameter.
+    pub fn fix(mut self, param: Param, value: f64) -> Result<Scene, SceneError> {
+        self.fixed.insert(param, value);
+        self.validate()?;
+        Ok(self)
+    }
+
+    /// Restricts the kernels to `kernels` (validated).
+    ///
+    /// # Errors
+    /// The list is empty, has duplicates or a kernel the structure lacks.
+    pub fn with_kernels(mut self, kernels: &[KernelName]) -> Result<Scene, SceneError> {
+        self.kernels = Some(kernels.to_vec());
+        self.validate()?;
+        Ok(self)
+    }
+
+    /// Reads and validates a scene file.
+    ///
+    /// # Errors
+    /// The file cannot be read or the scene is invalid.
+    pub fn from_file(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
+        let path = path.as_ref();
+        let src = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+            path: path.display().to_string(),
+            source,
+        })?;
+        let origin = path.file_name().map_or_else(
+            || path.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        );
+        Scene::from_toml_str(&src, &origin)
+    }
+
+    /// Parses and validates a scene from TOML text; `origin` names it in errors.
+    ///
+    /// # Errors
+    /// The TOML is malformed or the scene is invalid.
+    pub fn from_toml_str(src: &str, origin: &str) -> Result<Scene, SceneError> {
+        let raw: RawScene = toml::from_str(src).map_err(|e| SceneError::Syntax {
+            origin: origin.to_owned(),
+            field: e
+                .span()
+                .and_then(|s| field_at(src, s.start))
+                .unwrap_or_else(|| "<file>".to_owned()),
+            message: e.to_string().trim_end().to_owned(),
+        })?;
+        Scene::from_raw(raw)
+    }
+
+    fn from_raw(raw: RawScene) -> Result<Scene, SceneError> {
+        let f = raw.fixed;
+        if let (Some(_), Some(_)) = (f.alpha, f.alpha_deg) {
+            return Err(SceneError::Contradiction {
+                field: "fixed.alpha_deg".to_owned(),
+                reason: "give either `alpha` (radians) or `alpha_deg` (degrees), not both"
+                    .to_owned(),
+            });
+        }
+        if let Some(deg) = f.alpha_deg
+            && !Range::OpenDegrees.contains(deg)
+        {
+            return Err(SceneError::OutOfRange {
+                field: "fixed.alpha_deg".to_owned(),
+                value: deg,
+                range: Range::OpenDegrees.describe(),
+            });
+        }
+        let values = [
+            (Param::M1, f.m1),
+            (Param::M2, f.m2),
+            (Param::L, f.l),
+            (Param::I1, f.I1),
+            (Param::I2, f.I2),
+            (Param::G, f.g),
+            (
+                Param::Alpha,
+                f.alpha.or(f.alpha_deg.map(degrees_to_radians)),
+            ),
+            (Param::Phi, f.phi),
+            (Param::Mu0, f.mu0),
+            (Param::C, f.c),
+            (Param::TSet, f.T_set),
+            (Param::KP, f.K_P),
+            (Param::KD, f.K_D),
+        ];
+        let fixed = values
+            .into_iter()
+            .filter_map(|(p, v)| v.map(|v| (p, v)))
+            .collect();
+        let kernels = match raw.kernels {
+            None => None,
+            Some(names) => Some(
+                names
+                    .iter()
+                    .map(|n| {
+                        KernelName::from_name(n).ok_or_else(|| SceneError::UnknownKernel {
+                            name: n.clone(),
+                            valid: join(KernelName::ALL.iter().map(|k| k.name())),
+                        })
+                    })
+                    .collect::<Result<Vec<_>, _>>()?,
+            ),
+        };
+        let scene = Scene {
+            name: raw.name,
+            floor: raw.floor,
+            friction: raw.friction,
+            torso: raw.torso,
+            kernels,
+            fixed,
+        };
+        scene.validate()?;
+        Ok(scene)
+    }
+
+    /// Checks the name, the structure, the fixed values and the kernel list.
+    ///
+    /// # Errors
+    /// The first problem found, naming its field.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        let name_ok = (1..=64).contains(&self.name.len())
+            && self
+                .name
+                .chars()
+                .all(|ch| ch.is_ascii_alphanumeric() || ch == '-' || ch == '_');
+        if !name_ok {
+            return Err(SceneError::InvalidName {
+                value: self.name.clone(),
+            });
+        }
+        if self.floor == Floor::Slope && self.torso == Torso::Actuated {
+            return Err(SceneError::Contradiction {
+                field: "torso".to_owned(),
+                reason: "floor = \"slope\" needs torso = \"passive\": the paper's slope walker \
+                         is passive and only passive slope kernels are derived"
+                    .to_owned(),
+            });
+        }
+        for (&p, &v) in &self.fixed {
+            let field = format!("fixed.{}", p.name());
+            if !p.applies_to(self.floor, self.friction, self.torso) {
+                return Err(SceneError::Contradiction {
+                    field,
+                    reason: p.absent_because(self.floor, self.friction, self.torso),
+                });
+            }
+            if !p.accepts(v) {
+                return Err(SceneError::OutOfRange {
+                    field,
+                    value: v,
+                    range: p.valid_range(),
+                });
+            }
+        }
+        if let Some(kernels) = &self.kernels {
+            if kernels.is_empty() {
+                return Err(SceneError::BadKernelList {
+                    reason: "the list is empty; omit the field for every kernel of the structure"
+                        .to_owned(),
+                });
+            }
+            for (i, k) in kernels.iter().enumerate() {
+                if kernels.get(..i).is_some_and(|seen| seen.contains(k)) {
+                    return Err(SceneError::BadKernelList {
+                        reason: format!("kernel `{k}` is listed twice"),
+                    });
+                }
+                if !k.applies_to(self.floor, self.torso) {
+                    return Err(SceneError::KernelNotInStructure {
+                        name: k.name().to_owned(),
+                        structure: self.structure(),
+                        valid: join(
+                            KernelName::for_structure(self.floor, self.torso)
+                                .iter()
+                                .map(|k| k.name()),
+                        ),
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The structure in words, for example `floor = "level", friction = "tanh", torso = "actuated"`.
+    #[must_use]
+    pub fn structure(&self) -> String {
+        format!(
+            "floor = \"{}\", friction = \"{}\", torso = \"{}\"",
+            self.floor, self.friction, self.torso
+        )
+    }
+
+    /// The kernels to generate: the list asked for, or every kernel of the structure.
+    #[must_use]
+    pub fn kernels(&self) -> Vec<KernelName> {
+        self.kernels
+            .clone()
+            .unwrap_or_else(|| KernelName::for_structure(self.floor, self.torso))
+    }
+
+    /// The parameters the structure has, in canonical order.
+    #[must_use]
+    pub fn params(&self) -> Vec<Param> {
+        Param::ALL
+            .into_iter()
+            .filter(|p| p.applies_to(self.floor, self.friction, self.torso))
+            .collect()
+    }
+
+    /// The parameters that are runtime fields of `Params`: those of the structure not fixed.
+    #[must_use]
+    pub fn runtime_params(&self) -> Vec<Param> {
+        self.params()
+            .into_iter()
+            .filter(|p| !self.fixed.contains_key(p))
+            .collect()
+    }
+
+    /// The value `param` is fixed to, if it is fixed.
+    #[must_use]
+    pub fn fixed_value(&self, param: Param) -> Option<f64> {
+        self.fixed.get(&param).copied()
+    }
+
+    /// The default output file name: the scene name with `-` as `_`, plus `.rs`.
+    #[must_use]
+    pub fn default_file_name(&self) -> String {
+        format!("{}.rs", self.name.replace('-', "_"))
+    }
+
+    /// Lines describing the scene, for the generated file's header comment.
+    #[must_use]
+    pub fn summary(&self) -> Vec<String> {
+        let fixed = if self.fixed.is_empty() {
+            "nothing".to_owned()
+        } else {
+            join(self.fixed.iter().map(|(p, v)| format!("{p} = {v:?}")))
+        };
+        let runtime = self.runtime_params();
+        let runtime = if runtime.is_empty() {
+            "none".to_owned()
+        } else {
+            join(runtime.iter().map(|p| p.name()))
+        };
+        vec![
+            format!("Structure: {}.", self.structure()),
+            format!("Fixed at generation time: {fixed}."),
+            format!("Runtime parameters (fields of `Params`): {runtime}."),
+        ]
+    }
+}
+
+/// `deg * pi / 180`, nearly correctly rounded: `pi` is carried as two doubles and the product
+/// and quotient errors are compensated, so that 30 gives `FRAC_PI_6` (plain `to_radians` is
+/// one unit in the last place low there).
+fn degrees_to_radians(deg: f64) -> f64 {
+    use std::f64::consts::PI;
+    const PI_LO: f64 = 1.224_646_799_147_353_2e-16;
+    let p = deg * PI;
+    let p_err = deg.mul_add(PI, -p) + deg * PI_LO;
+    let q = p / 180.0;
+    let q_err = (-q).mul_add(180.0, p);
+    q + (q_err + p_err) / 180.0
+}
+
+fn join<I: IntoIterator<Item = S>, S: AsRef<str>>(items: I) -> String {
+    items
+        .into_iter()
+        .map(|s| s.as_ref().to_owned())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The dotted key at byte `offset` of TOML text `src`: the key of that line, prefixed by the
+/// last `[table]` header before it. A heuristic for error messages.
+fn field_at(src: &str, offset: usize) -> Option<String> {
+    let before = src.get(..offset)?;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let line = src.get(line_start..)?.lines().next()?.trim();
+    let header = |l: &str| {
+        l.trim()
+            .strip_prefix('[')
+            .and_then(|h| h.split(']').next())
+            .map(|h| h.trim().to_owned())
+    };
+    if let Some(h) = header(line) {
+        return Some(h);
+    }
+    let key = line.split_once('=')?.0.trim().trim_matches('"').to_owned();
+    let table = src.get(..line_start)?.lines().rev().find_map(header);
+    Some(match table {
+        Some(t) => format!("{t}.{key}"),
+        None => key,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn alpha_deg_thirty_is_pi_over_six() {
+        let s = Scene::from_toml_str(
+            "name = \"a\"\nfloor = \"level\"\nfriction = \"none\"\ntorso = \"passive\"\n\
+             [fixed]\nalpha_deg = 30\n",
+            "t",
+        );
+        let s = s.expect("valid scene");
+        assert_eq!(
+            s.fixed_value(Param::Alpha),
+            Some(std::f64::consts::FRAC_PI_6)
+        );
+    }
+
+    #[test]
+    fn degrees_convert_to_the_nearest_double() {
+        use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, FRAC_PI_4, FRAC_PI_6, FRAC_PI_8};
+        for (deg, rad) in [
+            (30.0, FRAC_PI_6),
+            (45.0, FRAC_PI_4),
+            (60.0, FRAC_PI_3),
+            (90.0, FRAC_PI_2),
+            (22.5, FRAC_PI_8),
+        ] {
+            assert_eq!(degrees_to_radians(deg), rad, "{deg} degrees");
+        }
+    }
+
+    #[test]
+    fn field_at_finds_table_and_key() {
+        let src = "name = \"x\"\n[fixed]\nm1 = \"heavy\"\n";
+        let off = src.find("\"heavy\"").unwrap_or(0);
+        assert_eq!(field_at(src, off).as_deref(), Some("fixed.m1"));
+    }
+}
