@@ -105,6 +105,7 @@ impl<const N: usize> Rodas4<N> {
         sys: &mut S,
         t: f64,
         y: &[f64; N],
+        h: f64,
         stats: &mut Stats,
     ) {
         if sys.jacobian(t, y, &mut self.jac) {
@@ -125,7 +126,18 @@ impl<const N: usize> Rodas4<N> {
             }
         }
         if !sys.time_derivative(t, y, &mut self.ft) {
-            let delt = (UROUND * t.abs().max(1.0e-5)).sqrt();
+            // Hairer uses sqrt(eps * max(1e-5, |t|)), which is far too small
+            // near t = 0 (the rounding error of the difference quotient then
+            // dominates and spoils the order). Scale the increment with the
+            // larger of |t| and the step size instead, and make it exactly
+            // representable as a difference of times.
+            let scale = t.abs().max(h.abs());
+            let delt = if scale > 0.0 {
+                UROUND.sqrt() * scale
+            } else {
+                UROUND.sqrt()
+            };
+            let delt = (t + delt) - t;
             let mut fp = [0.0; N];
             rhs(sys, stats, t + delt, y, &mut fp);
             for i in 0..N {
@@ -180,7 +192,7 @@ impl<const N: usize> Stepper<N> for Rodas4<N> {
         stats: &mut Stats,
     ) -> f64 {
         if !self.jac_current {
-            self.update_jacobian(sys, t, y, stats);
+            self.update_jacobian(sys, t, y, h, stats);
         }
         stats.lu_decompositions += 1;
         if self
