@@ -352,6 +352,26 @@ fn returns_doc(k: &Kernel) -> String {
     }
 }
 
+/// `const` if the block calls no float function (arithmetic, `abs` and `signum` are `const`).
+fn const_if_possible(plan: &Plan, block: &Block) -> TokenStream {
+    let calls = block.nodes.iter().any(|&n| {
+        matches!(
+            plan.graph.node(n),
+            Node::Sqrt(_) | Node::Sin(_) | Node::Cos(_) | Node::Tanh(_) | Node::Powi(..)
+        )
+    });
+    if calls { quote!() } else { quote!(const) }
+}
+
+/// The derives of a struct of `F` fields: `Eq` too when it has no fields.
+fn derives(empty: bool) -> TokenStream {
+    if empty {
+        quote!(#[derive(Debug, Clone, Copy, PartialEq, Eq)])
+    } else {
+        quote!(#[derive(Debug, Clone, Copy, PartialEq)])
+    }
+}
+
 fn kernel_fn(
     module: &Module,
     plan: &Plan,
@@ -433,11 +453,12 @@ fn kernel_fn(
     ));
     let docs = doc_attrs(&doc);
     let name = ident(&k.name);
+    let constness = const_if_possible(plan, &kp.block);
     Some(quote! {
         #(#docs)*
         #[inline]
         #[must_use]
-        pub fn #name(#p: &Prepared, #(#args),*) -> #ret_ty {
+        pub #constness fn #name(#p: &Prepared, #(#args),*) -> #ret_ty {
             #(#lets)*
             #ret
         }
@@ -502,22 +523,25 @@ fn params_and_prepare(module: &Module, plan: &Plan, options: &EmitOptions) -> To
             stats::block_counts(&plan.graph, &plan.prepare).summary()
         ),
     ]);
+    let params_derive = derives(fields.is_empty());
+    let prepared_derive = derives(prepared_fields.is_empty());
+    let constness = const_if_possible(plan, &plan.prepare);
     quote! {
         #(#params_doc)*
-        #[derive(Debug, Clone, Copy, PartialEq)]
+        #params_derive
         pub struct Params {
             #(#fields)*
         }
 
         /// Parameter-dependent values computed once by [`prepare`] and read by the kernels.
-        #[derive(Debug, Clone, Copy, PartialEq)]
+        #prepared_derive
         pub struct Prepared {
             #(#prepared_fields)*
         }
 
         #(#prepare_doc)*
         #[must_use]
-        pub fn prepare(#p: &Params) -> Prepared {
+        pub #constness fn prepare(#p: &Params) -> Prepared {
             #(#lets)*
             Prepared { #(#inits),* }
         }

@@ -12,7 +12,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
-use walker_gen::{Config, Division, Error, Float};
+use walker_gen::{Config, Division, Error, Float, SceneError};
 
 #[derive(Parser)]
 #[command(
@@ -128,10 +128,25 @@ fn run(cli: Cli) -> Result<(), CliError> {
 }
 
 fn main() -> ExitCode {
-    match run(Cli::parse()) {
+    let cli = Cli::parse();
+    let scene = match &cli.command {
+        Command::Emit { common, .. } | Command::Stats { common, .. } => common.scene.clone(),
+    };
+    match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("walker-gen: error: {e}");
+            // Validation errors name the field; say which file it is in.
+            let located = matches!(
+                e,
+                CliError::Gen(Error::Scene(
+                    SceneError::Read { .. } | SceneError::Syntax { .. }
+                ))
+            );
+            if located {
+                eprintln!("walker-gen: error: {e}");
+            } else {
+                eprintln!("walker-gen: error: {}: {e}", scene.display());
+            }
             ExitCode::from(2)
         }
     }

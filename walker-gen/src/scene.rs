@@ -105,31 +105,31 @@ impl fmt::Display for Torso {
 /// A model parameter (paper notation; Table 1 for the values used there).
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub enum Param {
-    /// `m1`: mass of the rimless wheel [kg].
+    /// `m1`: mass of the rimless wheel (kg).
     M1,
-    /// `m2`: mass of the torso [kg].
+    /// `m2`: mass of the torso (kg).
     M2,
-    /// `l`: leg length, the radius of the wheel [m].
+    /// `l`: leg length, the radius of the wheel (m).
     L,
-    /// `I1`: inertia moment of the wheel [kg m^2].
+    /// `I1`: inertia moment of the wheel (kg m^2).
     I1,
-    /// `I2`: inertia moment of the torso [kg m^2].
+    /// `I2`: inertia moment of the torso (kg m^2).
     I2,
-    /// `g`: gravitational acceleration [m/s^2].
+    /// `g`: gravitational acceleration (m/s^2).
     G,
-    /// `alpha`: angle between neighbouring spokes [rad].
+    /// `alpha`: angle between neighbouring spokes (rad).
     Alpha,
-    /// `phi`: slope angle [rad].
+    /// `phi`: slope angle (rad).
     Phi,
-    /// `mu0`: coefficient of sliding friction [-].
+    /// `mu0`: coefficient of sliding friction (-).
     Mu0,
-    /// `c`: sharpness of the tanh friction law [s/m].
+    /// `c`: sharpness of the tanh friction law (s/m).
     C,
-    /// `T_set`: duration of the `y_d` ramp [s].
+    /// `T_set`: duration of the `y_d` ramp (s).
     TSet,
-    /// `K_P`: proportional gain [1/s^2].
+    /// `K_P`: proportional gain (1/s^2).
     KP,
-    /// `K_D`: derivative gain [1/s].
+    /// `K_D`: derivative gain (1/s).
     KD,
 }
 
@@ -138,79 +138,79 @@ const PARAMS: [(Param, &str, &str, Range); 13] = [
     (
         Param::M1,
         "m1",
-        "Mass of the rimless wheel `m1` [kg].",
+        "Mass of the rimless wheel `m1` (kg).",
         Range::Positive,
     ),
     (
         Param::M2,
         "m2",
-        "Mass of the torso `m2` [kg].",
+        "Mass of the torso `m2` (kg).",
         Range::Positive,
     ),
     (
         Param::L,
         "l",
-        "Leg length (wheel radius) `l` [m].",
+        "Leg length (wheel radius) `l` (m).",
         Range::Positive,
     ),
     (
         Param::I1,
         "I1",
-        "Inertia moment of the wheel `I1` [kg m^2].",
+        "Inertia moment of the wheel `I1` (kg m^2).",
         Range::Positive,
     ),
     (
         Param::I2,
         "I2",
-        "Inertia moment of the torso `I2` [kg m^2].",
+        "Inertia moment of the torso `I2` (kg m^2).",
         Range::Positive,
     ),
     (
         Param::G,
         "g",
-        "Gravitational acceleration `g` [m/s^2].",
+        "Gravitational acceleration `g` (m/s^2).",
         Range::Positive,
     ),
     (
         Param::Alpha,
         "alpha",
-        "Angle between neighbouring spokes `alpha` [rad].",
+        "Angle between neighbouring spokes `alpha` (rad).",
         Range::OpenPi,
     ),
     (
         Param::Phi,
         "phi",
-        "Slope angle `phi` [rad].",
+        "Slope angle `phi` (rad).",
         Range::HalfOpenHalfPi,
     ),
     (
         Param::Mu0,
         "mu0",
-        "Coefficient of sliding friction `mu0` [-].",
+        "Coefficient of sliding friction `mu0` (dimensionless).",
         Range::NonNegative,
     ),
     (
         Param::C,
         "c",
-        "Sharpness `c` of the tanh friction law [s/m].",
+        "Sharpness `c` of the tanh friction law (s/m).",
         Range::Positive,
     ),
     (
         Param::TSet,
         "T_set",
-        "Duration `T_set` of the `y_d` ramp [s].",
+        "Duration `T_set` of the `y_d` ramp (s).",
         Range::Positive,
     ),
     (
         Param::KP,
         "K_P",
-        "Proportional gain `K_P` of the output control [1/s^2].",
+        "Proportional gain `K_P` of the output control (1/s^2).",
         Range::NonNegative,
     ),
     (
         Param::KD,
         "K_D",
-        "Derivative gain `K_D` of the output control [1/s].",
+        "Derivative gain `K_D` of the output control (1/s).",
         Range::NonNegative,
     ),
 ];
@@ -552,10 +552,7 @@ impl Scene {
     pub fn from_toml_str(src: &str, origin: &str) -> Result<Scene, SceneError> {
         let raw: RawScene = toml::from_str(src).map_err(|e| SceneError::Syntax {
             origin: origin.to_owned(),
-            field: e
-                .span()
-                .and_then(|s| field_at(src, s.start))
-                .unwrap_or_else(|| "<file>".to_owned()),
+            field: error_field(src, &e),
             message: e.to_string().trim_end().to_owned(),
         })?;
         Scene::from_raw(raw)
@@ -783,6 +780,26 @@ fn join<I: IntoIterator<Item = S>, S: AsRef<str>>(items: I) -> String {
         .map(|s| s.as_ref().to_owned())
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// The field a TOML error is about: the missing field for "missing field", else the key at
+/// the error's position.
+fn error_field(src: &str, e: &toml::de::Error) -> String {
+    let at = e.span().and_then(|s| field_at(src, s.start));
+    let missing = e
+        .message()
+        .strip_prefix("missing field `")
+        .and_then(|rest| rest.split('`').next());
+    match (missing, at) {
+        (Some(name), Some(table))
+            if !table.contains('.') && src.contains(&format!("[{table}]")) =>
+        {
+            format!("{table}.{name}")
+        }
+        (Some(name), _) => name.to_owned(),
+        (None, Some(field)) => field,
+        (None, None) => "<file>".to_owned(),
+    }
 }
 
 /// The dotted key at byte `offset` of TOML text `src`: the key of that line, prefixed by the

@@ -1,0 +1,55 @@
+//! Golden copies of generated files: `tests/golden/<scene>.rs` must equal `Config::render()`.
+//!
+//! After an intended change of the generated code, rewrite them with
+//! `WALKER_GEN_BLESS=1 cargo test -p walker-gen --test golden` and review the diff.
+
+use std::path::PathBuf;
+
+use walker_gen::Config;
+
+const BLESS: &str = "WALKER_GEN_BLESS=1 cargo test -p walker-gen --test golden";
+
+fn check(scene: &str) {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let golden = root.join("tests/golden").join(format!("{scene}.rs"));
+    let mut config = Config::new();
+    config.scene_file(root.join("../scenes").join(format!("{scene}.toml")));
+    let rendered = config.render().expect("the scene renders");
+    if std::env::var_os("WALKER_GEN_BLESS").is_some_and(|v| v == "1") {
+        std::fs::create_dir_all(root.join("tests/golden")).expect("create tests/golden");
+        std::fs::write(&golden, &rendered).expect("write the golden file");
+        return;
+    }
+    let expected = std::fs::read_to_string(&golden).unwrap_or_default();
+    assert!(
+        expected == rendered,
+        "tests/golden/{scene}.rs differs from the rendered source{}\nIf the change is \
+         intended, run `{BLESS}` and review the diff.",
+        first_difference(&expected, &rendered)
+    );
+}
+
+/// Where two texts first differ, for the failure message.
+fn first_difference(expected: &str, rendered: &str) -> String {
+    let (e, r): (Vec<&str>, Vec<&str>) = (expected.lines().collect(), rendered.lines().collect());
+    let line = (0..e.len().max(r.len()))
+        .find(|&i| e.get(i) != r.get(i))
+        .unwrap_or(0);
+    let show = |v: &[&str]| v.get(line).copied().unwrap_or("<end of file>").to_owned();
+    format!(
+        " at line {}:\n  golden:   {}\n  rendered: {}",
+        line + 1,
+        show(&e),
+        show(&r)
+    )
+}
+
+#[test]
+fn active_level_matches_golden() {
+    check("active-level");
+}
+
+#[test]
+fn passive_slope_matches_golden() {
+    check("passive-slope");
+}
