@@ -212,6 +212,34 @@ impl Writer<'_> {
         (quote!(#a #op #b), prec)
     }
 
+    /// The precedence `n` is written with, without building its tokens.
+    fn precedence(&self, n: NodeId) -> u8 {
+        if self.names.contains_key(&n) {
+            return ATOM;
+        }
+        if matches!(self.scope, Scope::Kernel) && self.plan.field_of.contains_key(&n) {
+            return POSTFIX;
+        }
+        match self.plan.graph.node(n) {
+            Node::Const(c) if c.value().is_sign_negative() && c.value() != 0.0 => UNARY,
+            Node::Const(_) | Node::Input(_) => ATOM,
+            Node::Add(..) | Node::Sub(..) => SUM,
+            Node::Mul(..) | Node::Div(..) => PRODUCT,
+            Node::Neg(_) => UNARY,
+            _ => POSTFIX,
+        }
+    }
+
+    /// The operands of a commutative operation in the order that needs fewer parentheses:
+    /// `(a + b) + c` rather than `c + (a + b)`. Exact: IEEE `+` and `*` commute.
+    fn flatter(&self, a: NodeId, b: NodeId, prec: u8) -> (NodeId, NodeId) {
+        if self.precedence(b) == prec && self.precedence(a) != prec {
+            (b, a)
+        } else {
+            (a, b)
+        }
+    }
+
     /// A float function: an inherent method in std mode, `libm::<name>` in no-std mode.
     fn call(&self, arg: NodeId, name: &str) -> (TokenStream, u8) {
         if self.options.no_std {
@@ -256,9 +284,15 @@ impl Writer<'_> {
                 (quote!(p.#field), POSTFIX)
             }
             Node::Input(i) => (ident_expr(g.input_name(i)), ATOM),
-            Node::Add(a, b) => self.binary(a, quote!(+), b, SUM),
+            Node::Add(a, b) => {
+                let (a, b) = self.flatter(a, b, SUM);
+                self.binary(a, quote!(+), b, SUM)
+            }
             Node::Sub(a, b) => self.binary(a, quote!(-), b, SUM),
-            Node::Mul(a, b) => self.binary(a, quote!(*), b, PRODUCT),
+            Node::Mul(a, b) => {
+                let (a, b) = self.flatter(a, b, PRODUCT);
+                self.binary(a, quote!(*), b, PRODUCT)
+            }
             Node::Div(a, b) => self.binary(a, quote!(/), b, PRODUCT),
             Node::Neg(a) => {
                 let a = self.operand(a, UNARY);

@@ -14,8 +14,9 @@
 //!    kernel) becomes the fields of `Prepared`, inner hoisted nodes are `let`s of `prepare`;
 //! 5. **schedule**: in each block (`prepare` or a kernel), a node gets a `let` iff it is used
 //!    more than once in the block, or it is a function call (sqrt, sin, cos, tanh) used inside
-//!    another expression, or its sine and cosine are both needed (one `sin_cos`); everything
-//!    else is inlined. `let`s appear in node-id (topological) order and are named `t0, t1, ...`
+//!    another expression, or its sine and cosine are both needed (one `sin_cos`), or inlining
+//!    it would nest operations deeper than 16 levels (long sums are cut into `let`s of at most
+//!    that depth); everything else is inlined. `let`s appear in node-id (topological) order and are named `t0, t1, ...`
 //!    in that order, so the output depends on the module only.
 
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -335,6 +336,9 @@ fn reciprocals(g: &mut Graph, roots: &[NodeId]) -> Vec<NodeId> {
         .collect()
 }
 
+/// The deepest operation nesting an inlined expression may have before it gets a `let`.
+const MAX_INLINE_DEPTH: usize = 16;
+
 fn is_call(node: Node) -> bool {
     matches!(
         node,
@@ -387,12 +391,31 @@ fn schedule(
             paired_sin.insert(n);
         }
     }
-    let bound = |n: NodeId| {
-        fixed_names.contains_key(&n)
-            || pair_of.contains_key(&n)
-            || uses.get(&n).copied().unwrap_or(0) > 1
-            || (is_call(g.node(n)) && inner_use.contains(&n))
-    };
+    let mut bound: BTreeSet<NodeId> = nodes
+        .iter()
+        .copied()
+        .filter(|n| {
+            fixed_names.contains_key(n)
+                || pair_of.contains_key(n)
+                || uses.get(n).copied().unwrap_or(0) > 1
+                || (is_call(g.node(*n)) && inner_use.contains(n))
+        })
+        .collect();
+    // Bound the nesting of inlined expressions (line length, and recursion in the emitter).
+    let mut depth: HashMap<NodeId, usize> = HashMap::new();
+    for &n in &nodes {
+        let d = 1 + g
+            .node(n)
+            .children()
+            .filter(|c| in_block.contains(c) && !bound.contains(c))
+            .map(|c| depth.get(&c).copied().unwrap_or(0))
+            .max()
+            .unwrap_or(0);
+        if d > MAX_INLINE_DEPTH && inner_use.contains(&n) {
+            bound.insert(n);
+        }
+        depth.insert(n, if bound.contains(&n) { 0 } else { d });
+    }
     let mut block = Block {
         nodes: nodes.clone(),
         paired_sin,
@@ -405,7 +428,7 @@ fn schedule(
         name
     };
     for &n in &nodes {
-        if !bound(n) || block.names.contains_key(&n) {
+        if !bound.contains(&n) || block.names.contains_key(&n) {
             continue;
         }
         if let Some(&(sin, cos, arg)) = pair_of.get(&n) {

@@ -73,6 +73,6 @@ pub fn lambda_demo(p: &Prepared, th1: F, th1d: F, xd: F, u: F) -> [F; 2] {
     let t2 = (p.c * xd).tanh();
     let t3 = 2.0_f64 * th1;
     let (t4, t5) = t3.sin_cos();
-    let t6 = 1.0_f64 / (1.0_f64 + 3.0_f64 * (p.mu0 * t2 * t4 + (1.0_f64 - t5)));
-    [6.0_f64 * (0.5_f64 * (9.81_f64 - t1 * (th1d * th1d)) - t0 * u) * t6, 3.0_f64 * t6]
+    let t6 = 1.0_f64 / (1.0_f64 + 3.0_f64 * (1.0_f64 - t5 + p.mu0 * t2 * t4));
+    [6.0_f64 * (0.5_f64 * (9.81_f64 - th1d * th1d * t1) - t0 * u) * t6, 3.0_f64 * t6]
 }

@@ -72,6 +72,6 @@ pub fn lambda_demo(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 2] {
     let t1 = 2.0_f64 * th1;
     let (t2, t3) = t1.sin_cos();
     let t4 = (p.c * xd * p.k0).tanh();
-    let t5 = 1.0_f64 / (1.0_f64 + 3.0_f64 * (1.0_f64 - t3 + t2 * (p.mu0 * t4)));
-    [6.0_f64 * (0.5_f64 * (9.81_f64 - t0 * (th1d * th1d))) * t5, 3.0_f64 * t5]
+    let t5 = 1.0_f64 / (1.0_f64 + 3.0_f64 * (1.0_f64 - t3 + p.mu0 * t4 * t2));
+    [0.5_f64 * (9.81_f64 - th1d * th1d * t0) * 6.0_f64 * t5, 3.0_f64 * t5]
 }
