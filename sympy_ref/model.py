@@ -1,0 +1,327 @@
+"""Independent symbolic derivation (SymPy) of the rimless wheel with torso on slippery ground.
+
+Everything is derived from the physical description in docs/kernels.md (positions, kinetic and
+potential energy, Euler-Lagrange, contact geometry); none of the paper's printed closed forms is
+used.  The public entry point is `derive()`, which returns a `Model` holding the symbolic matrices
+and the kernel table `KERNELS` (name -> inputs, outputs).
+
+Symbols
+-------
+parameters : m1 m2 l I1 I2 g alpha phi   (PARAMS, in the canonical JSON order)
+state      : x z th1 th2, velocities xd zd th1d th2d
+inputs     : u (joint torque), mu (friction coefficient incl. direction)
+"""
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+# ---------------------------------------------------------------- symbols
+m1, m2, l, I1, I2, g, alpha = sp.symbols("m1 m2 l I1 I2 g alpha", positive=True)
+phi = sp.Symbol("phi", real=True)
+PARAMS = [m1, m2, l, I1, I2, g, alpha, phi]
+
+x, z, th1, th2 = sp.symbols("x z th1 th2", real=True)
+xd, zd, th1d, th2d = sp.symbols("xd zd th1d th2d", real=True)
+xdd, zdd, th1dd, th2dd = sp.symbols("xdd zdd th1dd th2dd", real=True)
+u, mu = sp.symbols("u mu", real=True)
+
+Q = [x, z, th1, th2]
+QD = [xd, zd, th1d, th2d]
+QDD = [xdd, zdd, th1dd, th2dd]
+ALL_INPUT_SYMBOLS = Q + QD + [u, mu]
+
+t = sp.Symbol("t", real=True)
+
+
+# Polynomial stand-ins for the trigonometric functions.  All kernel algebra is done on rational
+# functions of these symbols (fast, exact), reduced modulo the Pythagorean identities
+# C^2 + S^2 = 1, and converted back to sin/cos at the end.
+S1, C1, SA, CA, SP, CP = sp.symbols("S1 C1 SA CA SP CP", real=True)
+TRIG_PAIRS = [(C1, S1, th1), (CA, SA, alpha), (CP, SP, phi)]
+TO_POLY = {sp.sin(th1): S1, sp.cos(th1): C1, sp.sin(alpha): SA, sp.cos(alpha): CA,
+           sp.sin(phi): SP, sp.cos(phi): CP, sp.tan(phi): SP / CP}
+FROM_POLY = {S1: sp.sin(th1), C1: sp.cos(th1), SA: sp.sin(alpha), CA: sp.cos(alpha),
+             SP: sp.sin(phi), CP: sp.cos(phi)}
+
+
+def to_poly(e):
+    """Rewrite sin/cos/tan of th1, alpha, phi (and of their sums) as rational functions of
+    S1, C1, SA, CA, SP, CP.  Exact (angle-addition formulas only)."""
+    e = sp.sympify(e)
+    e = sp.expand_trig(e)
+    e = e.subs(TO_POLY)
+    assert not e.has(sp.sin, sp.cos, sp.tan), e
+    return e
+
+
+def reduce_pyth(p):
+    """Normal form of a polynomial modulo C^2 + S^2 - 1 for the three angle pairs."""
+    p = sp.expand(p)
+    for c, s, _ in TRIG_PAIRS:
+        if p.has(c):
+            p = sp.rem(p, c ** 2 + s ** 2 - 1, c)
+            p = sp.expand(p)
+    return p
+
+
+def rsimp(e):
+    """Canonical rational simplification of a poly-form expression: cancel, reduce numerator and
+    denominator modulo the Pythagorean identities, cancel again.  A rational function that
+    vanishes identically always comes out as exactly 0."""
+    e = sp.cancel(sp.together(e))
+    n, d = sp.fraction(e)
+    n = reduce_pyth(n)
+    if n == 0:
+        return sp.Integer(0)
+    d = reduce_pyth(d)
+    return sp.cancel(n / d)
+
+
+def from_poly(e):
+    return e.subs(FROM_POLY)
+
+
+def _grad(f):
+    """Row vector d f / d q (the Jacobian of a contact-geometry function)."""
+    return sp.Matrix([[sp.diff(f, qi) for qi in Q]])
+
+
+def _time_derivative(f):
+    """d/dt of a function of q along qd (chain rule)."""
+    return sum(sp.diff(f, qi) * qdi for qi, qdi in zip(Q, QD))
+
+
+@dataclass
+class Model:
+    M: sp.Matrix
+    h: sp.Matrix
+    S: sp.Matrix
+    T: sp.Expr
+    V: sp.Expr
+    hip: tuple
+    fore: tuple
+    fore_vel: tuple
+    J_level: sp.Matrix
+    Jmu_level: sp.Matrix
+    J_slope: sp.Matrix
+    Jmu_slope: sp.Matrix
+    JI: dict
+    kernels: dict = field(default_factory=dict)
+
+
+def euler_lagrange():
+    """M(q), h(q, qd) from T and V by the Euler-Lagrange equations (time functions)."""
+    qf = [sp.Function(n, real=True)(t) for n in ("x", "z", "th1", "th2")]
+    xf, zf, t1f, t2f = qf
+    # hip = torso centre of mass = wheel centre
+    xh = xf + l * sp.sin(t1f)
+    zh = zf + l * sp.cos(t1f)
+    mt = m1 + m2
+    Tk = (sp.Rational(1, 2) * mt * (sp.diff(xh, t) ** 2 + sp.diff(zh, t) ** 2)
+          + sp.Rational(1, 2) * I1 * sp.diff(t1f, t) ** 2
+          + sp.Rational(1, 2) * I2 * sp.diff(t2f, t) ** 2)
+    Vp = mt * g * zh
+    L = Tk - Vp
+    eqs = []
+    for qi in qf:
+        eqs.append(sp.diff(sp.diff(L, sp.diff(qi, t)), t) - sp.diff(L, qi))
+    # replace derivatives by plain symbols (second derivatives first)
+    rep = {}
+    for qi, a, b, c in zip(qf, Q, QD, QDD):
+        rep[sp.diff(qi, t, 2)] = c
+    for qi, a, b, c in zip(qf, Q, QD, QDD):
+        rep[sp.diff(qi, t)] = b
+    for qi, a, b, c in zip(qf, Q, QD, QDD):
+        rep[qi] = a
+    eqs = [sp.expand(e.subs(rep)) for e in eqs]
+    M = sp.Matrix(4, 4, lambda i, j: sp.simplify(sp.diff(eqs[i], QDD[j])))
+    h = sp.Matrix(4, 1, lambda i, j: sp.simplify(eqs[i].subs({a: 0 for a in QDD})))
+    # check the split is exact: eqs = M qdd + h
+    for i in range(4):
+        r = sp.simplify(eqs[i] - (sum(M[i, j] * QDD[j] for j in range(4)) + h[i]))
+        assert r == 0, r
+    Tq = sp.expand(Tk.subs(rep))
+    Vq = sp.expand(Vp.subs(rep))
+    return M, h, Tq, Vq
+
+
+def contact_jacobians(slope_angle):
+    """Constraint Jacobian J and friction Jacobian J_mu for a floor through the origin that
+    descends towards +x with angle `slope_angle` (0 = level floor).
+
+    The constraint is c(q) = z + x tan(phi) = 0 (the stance foot stays on the floor); J = dc/dq.
+    lambda is the multiplier of J, i.e. the generalized constraint force is J^T lambda; in the
+    (x, z) plane that force is (lambda tan phi, lambda): normal to the floor with magnitude
+    N = lambda / cos phi.  Sliding friction mu * N acts along the unit tangent
+    tau = (cos phi, -sin phi) (downslope = +x); its generalized force is Jp^T (mu N tau) with
+    Jp = d(x, z)/dq, which defines J_mu through J_mu^T lambda.
+    """
+    cphi = z + x * sp.tan(slope_angle)
+    J = _grad(cphi)
+    Jp = sp.Matrix([_grad(x), _grad(z)])  # 2x4 Jacobian of the foot position
+    normal_force = Jp.T * sp.Matrix([sp.tan(slope_angle), 1])  # = J^T, per unit lambda
+    assert sp.simplify(normal_force - J.T) == sp.zeros(4, 1)
+    nvec = sp.Matrix([sp.tan(slope_angle), 1])
+    # |n| = sqrt(1 + tan^2 phi) = 1/cos phi for |phi| < pi/2 (the positive root)
+    N_per_lambda = 1 / sp.cos(slope_angle)
+    assert sp.simplify(N_per_lambda ** 2 - nvec.dot(nvec)) == 0
+    tau = sp.Matrix([sp.cos(slope_angle), -sp.sin(slope_angle)])
+    Jmu = (Jp.T * (mu * N_per_lambda * tau)).T
+    Jmu = Jmu.applyfunc(sp.simplify)
+    return J, Jmu
+
+
+def _rs_mat(A):
+    return A.applyfunc(rsimp)
+
+
+def constrained_dynamics(Minv, h, S, J, Jmu, uval):
+    """lambda, qdd, Y, A, B for one holonomic constraint J qdd = 0 (poly form, J constant).
+
+    lambda = -J M^-1 (S u - h) / (J M^-1 Jhat^T),  qdd = M^-1 (S u - h + Jhat^T lambda),
+    Y = I - Jhat^T (J M^-1 Jhat^T)^-1 J M^-1,  A = S^T M^-1 Y S,  B = S^T M^-1 Y h.
+    """
+    Jhat = J + Jmu
+    den = rsimp((J * Minv * Jhat.T)[0, 0])
+    lam = rsimp(-(J * Minv * (S * uval - h))[0, 0] / den)
+    qdd = _rs_mat(Minv * (S * uval - h + Jhat.T * lam))
+    Y = _rs_mat(sp.eye(4) - Jhat.T * (1 / den) * J * Minv)
+    MY = _rs_mat(Minv * Y)
+    A = rsimp((S.T * MY * S)[0, 0])
+    B = rsimp((S.T * MY * h)[0, 0])
+    # consistency: M qdd = Y (S u - h) and J qdd = 0 and ydd = A u - B
+    M = Minv.inv()
+    assert _rs_mat(M * qdd - Y * (S * uval - h)) == sp.zeros(4, 1)
+    assert rsimp((J * qdd)[0, 0]) == 0
+    assert rsimp((S.T * qdd)[0, 0] - (A * uval - B)) == 0
+    return den, lam, qdd, Y, A, B
+
+
+def impact(Minv, JI):
+    """lambda_I = -(J_I M^-1 J_I^T)^-1 J_I qd-, qd+ = qd- + M^-1 J_I^T lambda_I (poly form)."""
+    qdm = sp.Matrix(QD)
+    X = _rs_mat(JI * Minv * JI.T)
+    detX = rsimp(X.det(method="berkowitz"))
+    Xinv = _rs_mat(X.adjugate() / detX)
+    lamI = _rs_mat(-Xinv * JI * qdm)
+    qdp = _rs_mat(qdm + Minv * JI.T * lamI)
+    assert _rs_mat(JI * qdp) == sp.zeros(JI.rows, 1)
+    return detX, lamI, qdp
+
+
+@functools.lru_cache(maxsize=None)
+def derive() -> Model:
+    M, h, T, V = euler_lagrange()
+    # control input: torque u between stance leg (wheel) and torso; its virtual work is
+    # u (d th1 - d th2) = u d y with y = th1 - th2, hence S = dy/dq^T.
+    y = th1 - th2
+    S = _grad(y).T
+
+    xh = x + l * sp.sin(th1)
+    zh = z + l * sp.cos(th1)
+    xf = xh - l * sp.sin(th1 - alpha)
+    zf = zh - l * sp.cos(th1 - alpha)
+    xfd = _time_derivative(xf)
+    zfd = _time_derivative(zf)
+
+    J_level, Jmu_level = contact_jacobians(sp.Integer(0))
+    J_slope, Jmu_slope = contact_jacobians(phi)
+
+    # impact constraint Jacobians, each row the gradient of a contact-geometry function
+    fore_level = _grad(zf)                       # fore foot vertical velocity
+    rear_level = _grad(z)                        # rear (old stance) foot vertical velocity
+    lock = _grad(th1 - th2)                      # torso locked to the wheel
+    fore_slope = _grad(zf + xf * sp.tan(phi))    # fore foot velocity along the slope normal
+    rear_slope = _grad(z + x * sp.tan(phi))      # rear foot velocity along the slope normal
+    JI = {
+        "impact3_level": sp.Matrix.vstack(fore_level, rear_level, lock),
+        "impact2_level": sp.Matrix.vstack(fore_level, lock),
+        "impact_slope": fore_slope,
+        "impact2_slope": sp.Matrix.vstack(fore_slope, rear_slope),
+    }
+    mdl = Model(M=M, h=h, S=S, T=T, V=V, hip=(xh, zh), fore=(xf, zf), fore_vel=(xfd, zfd),
+                J_level=J_level, Jmu_level=Jmu_level, J_slope=J_slope, Jmu_slope=Jmu_slope,
+                JI=JI)
+    mdl.kernels = build_kernels(mdl)
+    return mdl
+
+
+def build_kernels(mdl: Model):
+    """name -> dict(inputs, params, outputs=[(name, expr)], poly=[(name, poly-form expr)],
+    den=[denominator factors]).  `outputs` are in sin/cos form, `poly` in S1, C1, ... form."""
+    P = lambda A: A.applyfunc(to_poly) if hasattr(A, "applyfunc") else to_poly(A)
+    Mp, hp, Sp = P(mdl.M), P(mdl.h), mdl.S
+    detM = rsimp(Mp.det(method="berkowitz"))
+    Minv = _rs_mat(Mp.adjugate() / detM)
+    assert _rs_mat(Minv * Mp) == sp.eye(4)
+    den_l, lam_l, qdd_l, Y_l, A_l, B_l = constrained_dynamics(
+        Minv, hp, Sp, P(mdl.J_level), P(mdl.Jmu_level), u)
+    den_s, lam_s, qdd_s, _, _, _ = constrained_dynamics(
+        Minv, hp, Sp, P(mdl.J_slope), P(mdl.Jmu_slope), sp.Integer(0))
+    mdl.detM = detM
+    mdl.Minv_poly = Minv
+    mdl.den_level, mdl.den_slope = den_l, den_s
+    K = {}
+
+    def add(name, inputs, outs):
+        K[name] = dict(inputs=inputs, poly=[(n, rsimp(P(e))) for n, e in outs])
+
+    add("mass_matrix", [th1], [(f"M{i}{j}", Mp[i, j]) for i in range(4) for j in range(4)])
+    add("bias", [th1, th1d], [(f"h{i}", hp[i]) for i in range(4)])
+    add("lambda_level", [th1, th1d, u, mu], [("lambda", lam_l)])
+    add("projection_level", [th1, mu], [(f"Y{i}{j}", Y_l[i, j]) for i in range(4) for j in range(4)])
+    add("control_level", [th1, th1d, mu], [("A", A_l), ("B", B_l)])
+    add("accel_level", [th1, th1d, u, mu], [(f"qdd{i}", qdd_l[i]) for i in range(4)])
+    add("lambda_slope", [th1, th1d, mu], [("lambda", lam_s)])
+    add("accel_slope", [th1, th1d, mu], [(f"qdd{i}", qdd_s[i]) for i in range(4)])
+    imp_in = [th1, xd, zd, th1d, th2d]
+    mdl.detX = {}
+    for name in ("impact3_level", "impact2_level", "impact_slope", "impact2_slope"):
+        detX, lamI, qdp = impact(Minv, P(mdl.JI[name]))
+        mdl.detX[name] = detX
+        outs = [(f"lambdaI{i}", lamI[i]) for i in range(lamI.rows)]
+        outs += [(f"qdp{i}", qdp[i]) for i in range(4)]
+        add(name, imp_in, outs)
+    xf, zf = mdl.fore
+    xfd, zfd = mdl.fore_vel
+    add("fore_foot", [x, z, th1, xd, zd, th1d],
+        [("x_f", xf), ("z_f", zf), ("xd_f", xfd), ("zd_f", zfd)])
+    add("energy", [z, th1, xd, zd, th1d, th2d], [("T", mdl.T), ("V", mdl.V)])
+
+    for name, k in K.items():
+        k["outputs"] = [(n, from_poly(e)) for n, e in k["poly"]]
+        syms = set()
+        for _, e in k["outputs"]:
+            syms |= e.free_symbols
+        extra = syms - set(k["inputs"]) - set(PARAMS)
+        assert not extra, (name, extra)
+        missing = [s for s in k["inputs"] if s not in syms]
+        assert not missing, (name, missing)
+        k["params"] = [p for p in PARAMS if p in syms]
+        # denominator factors (for rejecting near-singular points)
+        dens = set()
+        for _, e in k["poly"]:
+            _, d = sp.fraction(e)
+            for f in sp.Mul.make_args(sp.factor(d)):
+                b = f.base if f.is_Pow else f
+                if b.free_symbols and not b.is_number:
+                    dens.add(from_poly(b))
+        k["den"] = sorted(dens, key=sp.default_sort_key)
+    return K
+
+
+if __name__ == "__main__":
+    import time
+    t0 = time.time()
+    mdl = derive()
+    print("M =", mdl.M)
+    print("h =", mdl.h.T)
+    print("J_level =", mdl.J_level, " J_mu_level =", mdl.Jmu_level)
+    print("J_slope =", mdl.J_slope, " J_mu_slope =", mdl.Jmu_slope)
+    for n, k in mdl.kernels.items():
+        print(n, [str(s) for s in k["inputs"]], [str(p) for p in k["params"]],
+              "den:", k["den"])
+    print(f"derived in {time.time() - t0:.1f} s")
