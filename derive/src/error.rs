@@ -1,0 +1,59 @@
+//! Errors of the symbolic engine: values, never panics.
+
+/// Everything that can go wrong in a derivation.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum Error {
+    /// A division whose divisor is identically zero.
+    #[error("division by an expression that is identically zero")]
+    DivisionByZero,
+    /// The inverse of a matrix whose determinant is identically zero.
+    #[error("matrix {name} is singular: its determinant is identically zero")]
+    SingularMatrix {
+        /// Which matrix.
+        name: String,
+    },
+    /// A symbol name that the model does not know.
+    #[error("unknown symbol `{name}`")]
+    UnknownSymbol {
+        /// The name asked for.
+        name: String,
+    },
+    /// Matrix dimensions that do not fit the operation.
+    #[error("dimension mismatch in {op}: {left:?} and {right:?}")]
+    Dimension {
+        /// The operation.
+        op: &'static str,
+        /// Shape of the left operand.
+        left: (usize, usize),
+        /// Shape of the right operand.
+        right: (usize, usize),
+    },
+    /// A trigonometric argument that is not an integer combination of base angles.
+    #[error("unsupported trigonometric argument: {what}")]
+    UnsupportedAngle {
+        /// Why the argument is not supported.
+        what: String,
+    },
+    /// An expression outside the polynomial-rational class (e.g. a negative power of a sum
+    /// inside a trigonometric argument).
+    #[error("unsupported expression: {what}")]
+    Unsupported {
+        /// What is not supported.
+        what: String,
+    },
+    /// A kernel that the derivation does not have.
+    #[error("unknown kernel `{name}`")]
+    UnknownKernel {
+        /// The name asked for.
+        name: String,
+    },
+    /// A symbolic check of the model failed (a derivation bug, reported rather than panicking).
+    #[error("check failed: {what}")]
+    CheckFailed {
+        /// The check.
+        what: String,
+    },
+}
+
+/// Result type of the engine.
+pub type Result<T> = std::result::Result<T, Error>;

@@ -1,0 +1,301 @@
+//! The derived quantities as named kernels: inputs and output expressions, in the order fixed
+//! by `docs/kernels.md`, for the code generator and the tests.
+
+use std::collections::BTreeSet;
+
+use crate::error::{Error, Result};
+use crate::matrix::Matrix;
+use crate::mechanics::{self, Floor, ImpactConstraint};
+use crate::ratfunc::RatFunc;
+use crate::symbol::{Atom, Sym, SymKind};
+
+/// The shape of a kernel's output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// One value.
+    Scalar,
+    /// A vector of the given length.
+    Vector(usize),
+    /// A matrix, rows x columns, row-major.
+    Matrix(usize, usize),
+    /// Several named parts (e.g. `lambda_I` then `qdot+`), flattened in order.
+    Parts,
+}
+
+/// A named kernel: the state and input symbols it takes, and its outputs.
+#[derive(Clone, Debug)]
+pub struct Kernel {
+    /// Name, as in `docs/kernels.md`.
+    pub name: &'static str,
+    /// What the kernel computes.
+    pub doc: &'static str,
+    /// The paper's equation numbers.
+    pub equation: &'static str,
+    /// State and input arguments, in order.
+    pub args: Vec<Sym>,
+    /// Output names and their canonical expressions.
+    pub outputs: Vec<(String, RatFunc)>,
+    /// Output shape.
+    pub shape: Shape,
+}
+
+impl Kernel {
+    /// The parameters the outputs contain, in symbol order.
+    pub fn params(&self) -> Vec<Sym> {
+        let mut set = BTreeSet::new();
+        for (_, r) in &self.outputs {
+            for p in [r.num(), r.den()] {
+                for slot in p.slots() {
+                    match Atom::of_slot(slot) {
+                        Some(Atom::Sym(s)) if s.kind() == SymKind::Parameter => {
+                            set.insert(s);
+                        }
+                        Some(Atom::Sin(a) | Atom::Cos(a)) => {
+                            let (s, _) = a.symbol_and_multiple();
+                            if s.kind() == SymKind::Parameter {
+                                set.insert(s);
+                            }
+                        }
+                        _ => {}
+                    }
+                }
+            }
+        }
+        set.into_iter().collect()
+    }
+
+    /// Every symbol the outputs depend on, that is not an argument or a parameter (must be
+    /// empty for a well-formed kernel).
+    pub fn free_symbols(&self) -> Vec<Sym> {
+        let mut set = BTreeSet::new();
+        for (_, r) in &self.outputs {
+            for p in [r.num(), r.den()] {
+                for slot in p.slots() {
+                    let s = match Atom::of_slot(slot) {
+                        Some(Atom::Sym(s)) => s,
+                        Some(Atom::Sin(a) | Atom::Cos(a)) => a.symbol_and_multiple().0,
+                        None => continue,
+                    };
+                    if s.kind() != SymKind::Parameter && !self.args.contains(&s) {
+                        set.insert(s);
+                    }
+                }
+            }
+        }
+        set.into_iter().collect()
+    }
+}
+
+/// Everything derived: the intermediate symbolic objects and the kernels.
+#[derive(Clone, Debug)]
+pub struct Derivation {
+    /// `M`, `h`, `S` and the geometry.
+    pub dynamics: mechanics::Dynamics,
+    /// Stance phase on level ground.
+    pub level: mechanics::Stance,
+    /// Stance phase on the slope.
+    pub slope: mechanics::Stance,
+    /// Control terms on level ground.
+    pub control: mechanics::Control,
+    /// Impact with three constraints (Eqs. 6-10).
+    pub impact3: mechanics::Impact,
+    /// Impact with two constraints (Eqs. 12-16).
+    pub impact2: mechanics::Impact,
+    /// Impact on the slope (Eqs. 39-42).
+    pub impact_slope: mechanics::Impact,
+    /// Impact on the slope with the rear foot held (Eq. 46).
+    pub impact2_slope: mechanics::Impact,
+    /// The kernels.
+    pub kernels: Vec<Kernel>,
+}
+
+fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
+    let entries = m.entries().iter().cloned();
+    if m.rows() > 1 && m.cols() > 1 {
+        let c = m.cols();
+        entries.enumerate().map(|(k, r)| (format!("{prefix}{}{}", k / c, k % c), r)).collect()
+    } else {
+        entries.enumerate().map(|(k, r)| (format!("{prefix}{k}"), r)).collect()
+    }
+}
+
+fn substitute_u_zero(m: &Matrix) -> Result<Matrix> {
+    m.try_map(|r| r.substitute(Atom::Sym(Sym::U), &RatFunc::zero()))
+}
+
+impl Derivation {
+    /// Derives everything from the physics.
+    pub fn new() -> Result<Derivation> {
+        use ImpactConstraint::*;
+        use Sym::*;
+        let dynamics = mechanics::dynamics()?;
+        let level = mechanics::stance(&dynamics, Floor::Level)?;
+        let slope = mechanics::stance(&dynamics, Floor::Slope)?;
+        let control = mechanics::control(&dynamics, &level)?;
+        mechanics::check_desired_output()?;
+        let impact3 = mechanics::impact(&dynamics, Floor::Level, &[ForeFoot, RearFoot, TorsoLock])?;
+        let impact2 = mechanics::impact(&dynamics, Floor::Level, &[ForeFoot, TorsoLock])?;
+        let impact_slope = mechanics::impact(&dynamics, Floor::Slope, &[ForeFoot])?;
+        let impact2_slope = mechanics::impact(&dynamics, Floor::Slope, &[ForeFoot, RearFoot])?;
+        let g = &dynamics.geometry;
+        let impact_args = vec![Th1, Xd, Zd, Th1d, Th2d];
+        let impact_outputs = |imp: &mechanics::Impact| {
+            let mut o = named("lambdaI", &imp.impulse);
+            o.extend(named("qdp", &imp.velocity));
+            o
+        };
+        let fore_foot_vel = [
+            mechanics::time_derivative(&g.fore_foot[0]),
+            mechanics::time_derivative(&g.fore_foot[1]),
+        ];
+        let kernels = vec![
+            Kernel {
+                name: "mass_matrix",
+                doc: "Inertia matrix M(q)",
+                equation: "Eq. 2",
+                args: vec![Th1],
+                outputs: named("M", &dynamics.mass),
+                shape: Shape::Matrix(4, 4),
+            },
+            Kernel {
+                name: "bias",
+                doc: "Coriolis, centrifugal and gravity vector h(q, qdot)",
+                equation: "Eq. 20",
+                args: vec![Th1, Th1d],
+                outputs: named("h", &dynamics.bias),
+                shape: Shape::Vector(4),
+            },
+            Kernel {
+                name: "lambda_level",
+                doc: "Vertical ground reaction lambda on level ground",
+                equation: "Eqs. 22-23",
+                args: vec![Th1, Th1d, U, Mu],
+                outputs: vec![("lambda".into(), level.lambda.clone())],
+                shape: Shape::Scalar,
+            },
+            Kernel {
+                name: "projection_level",
+                doc: "Projection Y(q, qdot) that eliminates lambda on level ground",
+                equation: "Eqs. 28-29",
+                args: vec![Th1, Mu],
+                outputs: named("Y", &level.projection),
+                shape: Shape::Matrix(4, 4),
+            },
+            Kernel {
+                name: "control_level",
+                doc: "Scalars A and B of the output-following control, yddot = A u - B",
+                equation: "Eqs. 30-31",
+                args: vec![Th1, Th1d, Mu],
+                outputs: vec![("A".into(), control.a.clone()), ("B".into(), control.b.clone())],
+                shape: Shape::Vector(2),
+            },
+            Kernel {
+                name: "accel_level",
+                doc: "Accelerations qddot of the active walker on level ground",
+                equation: "Eq. 27",
+                args: vec![Th1, Th1d, U, Mu],
+                outputs: named("qdd", &level.accel),
+                shape: Shape::Vector(4),
+            },
+            Kernel {
+                name: "lambda_slope",
+                doc: "Vertical ground reaction lambda of the passive wheel on the slope (u = 0)",
+                equation: "Eq. 22 with Eqs. 36, 38",
+                args: vec![Th1, Th1d, Mu],
+                outputs: vec![(
+                    "lambda".into(),
+                    slope.lambda.substitute(Atom::Sym(U), &RatFunc::zero())?,
+                )],
+                shape: Shape::Scalar,
+            },
+            Kernel {
+                name: "accel_slope",
+                doc: "Accelerations qddot of the passive wheel on the slope (u = 0)",
+                equation: "Eq. 27 with Eqs. 36, 38",
+                args: vec![Th1, Th1d, Mu],
+                outputs: named("qdd", &substitute_u_zero(&slope.accel)?),
+                shape: Shape::Vector(4),
+            },
+            Kernel {
+                name: "impact3_level",
+                doc: "Impulses and post-impact velocities with the fore foot, the rear foot and the torso lock",
+                equation: "Eqs. 6-10",
+                args: impact_args.clone(),
+                outputs: impact_outputs(&impact3),
+                shape: Shape::Parts,
+            },
+            Kernel {
+                name: "impact2_level",
+                doc: "Impulses and post-impact velocities with the fore foot and the torso lock",
+                equation: "Eqs. 12-16",
+                args: impact_args.clone(),
+                outputs: impact_outputs(&impact2),
+                shape: Shape::Parts,
+            },
+            Kernel {
+                name: "impact_slope",
+                doc: "Impulse and post-impact velocities of the passive wheel on the slope",
+                equation: "Eqs. 39-42",
+                args: impact_args.clone(),
+                outputs: impact_outputs(&impact_slope),
+                shape: Shape::Parts,
+            },
+            Kernel {
+                name: "impact2_slope",
+                doc: "Impulses and post-impact velocities on the slope with the rear foot held (double-support test)",
+                equation: "Eq. 46",
+                args: impact_args,
+                outputs: impact_outputs(&impact2_slope),
+                shape: Shape::Parts,
+            },
+            Kernel {
+                name: "fore_foot",
+                doc: "Position and velocity of the fore-leg end",
+                equation: "Eqs. 3, 39",
+                args: vec![X, Z, Th1, Xd, Zd, Th1d],
+                outputs: vec![
+                    ("x_f".into(), g.fore_foot[0].clone()),
+                    ("z_f".into(), g.fore_foot[1].clone()),
+                    ("xd_f".into(), fore_foot_vel[0].clone()),
+                    ("zd_f".into(), fore_foot_vel[1].clone()),
+                ],
+                shape: Shape::Vector(4),
+            },
+            Kernel {
+                name: "energy",
+                doc: "Kinetic and potential energy",
+                equation: "Section 2.1",
+                args: vec![Z, Th1, Xd, Zd, Th1d, Th2d],
+                outputs: vec![("T".into(), g.kinetic.clone()), ("V".into(), g.potential.clone())],
+                shape: Shape::Vector(2),
+            },
+        ];
+        for k in &kernels {
+            let free = k.free_symbols();
+            if !free.is_empty() {
+                return Err(Error::CheckFailed {
+                    what: format!("kernel {} depends on {:?} which is not an argument", k.name, free),
+                });
+            }
+        }
+        Ok(Derivation {
+            dynamics,
+            level,
+            slope,
+            control,
+            impact3,
+            impact2,
+            impact_slope,
+            impact2_slope,
+            kernels,
+        })
+    }
+
+    /// A kernel by name.
+    pub fn kernel(&self, name: &str) -> Result<&Kernel> {
+        self.kernels
+            .iter()
+            .find(|k| k.name == name)
+            .ok_or_else(|| Error::UnknownKernel { name: name.to_owned() })
+    }
+}
