@@ -165,7 +165,7 @@ fn validate(module: &Module) -> Result<(), EmitError> {
     }
     let mut names = BTreeSet::new();
     for k in &module.kernels {
-        if !is_snake_ident(&k.name) || k.name == "prepare" {
+        if !is_snake_ident(&k.name) || k.name == "prepare" || k.name == "sign" {
             return Err(EmitError::BadName {
                 what: "kernel".to_owned(),
                 name: k.name.clone(),

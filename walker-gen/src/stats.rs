@@ -33,7 +33,7 @@ pub struct OpCounts {
     pub sqrt: usize,
     /// Transcendental calls (`sin`, `cos`, `sin_cos` counted once, `tanh`).
     pub transcendental: usize,
-    /// `abs` and `signum` (bit operations).
+    /// `abs` and `sign` (a bit operation and two comparisons).
     pub abs_sign: usize,
 }
 
@@ -61,7 +61,7 @@ impl OpCounts {
             (self.neg, "neg"),
             (self.sqrt, "sqrt"),
             (self.transcendental, "transcendental"),
-            (self.abs_sign, "abs/signum"),
+            (self.abs_sign, "abs/sign"),
         ]
         .iter()
         .filter(|(n, _)| *n > 0)
