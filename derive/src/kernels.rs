@@ -139,8 +139,12 @@ impl Derivation {
         let impact2_slope = mechanics::impact(&dynamics, Floor::Slope, &[ForeFoot, RearFoot])?;
         let g = &dynamics.geometry;
         let impact_args = vec![Th1, Xd, Zd, Th1d, Th2d];
-        let impact_outputs = |imp: &mechanics::Impact| {
-            let mut o = named("lambdaI", &imp.impulse);
+        // On the slope the paper scales foot impulses to their vertical component (Eq. 42 has
+        // `tan phi, 1` where the unit normal has `sin phi, cos phi`): report them that way.
+        let cos_phi = RatFunc::cos_of(crate::symbol::BaseAngle::Phi);
+        let vertical = |imp: &mechanics::Impact| imp.impulse.scale(&cos_phi);
+        let impact_outputs = |imp: &mechanics::Impact, impulse: Matrix| {
+            let mut o = named("lambdaI", &impulse);
             o.extend(named("qdp", &imp.velocity));
             o
         };
@@ -221,7 +225,7 @@ impl Derivation {
                 doc: "Impulses and post-impact velocities with the fore foot, the rear foot and the torso lock",
                 equation: "Eqs. 6-10",
                 args: impact_args.clone(),
-                outputs: impact_outputs(&impact3),
+                outputs: impact_outputs(&impact3, impact3.impulse.clone()),
                 shape: Shape::Parts,
             },
             Kernel {
@@ -229,7 +233,7 @@ impl Derivation {
                 doc: "Impulses and post-impact velocities with the fore foot and the torso lock",
                 equation: "Eqs. 12-16",
                 args: impact_args.clone(),
-                outputs: impact_outputs(&impact2),
+                outputs: impact_outputs(&impact2, impact2.impulse.clone()),
                 shape: Shape::Parts,
             },
             Kernel {
@@ -237,7 +241,7 @@ impl Derivation {
                 doc: "Impulse and post-impact velocities of the passive wheel on the slope",
                 equation: "Eqs. 39-42",
                 args: impact_args.clone(),
-                outputs: impact_outputs(&impact_slope),
+                outputs: impact_outputs(&impact_slope, vertical(&impact_slope)),
                 shape: Shape::Parts,
             },
             Kernel {
@@ -245,7 +249,7 @@ impl Derivation {
                 doc: "Impulses and post-impact velocities on the slope with the rear foot held (double-support test)",
                 equation: "Eq. 46",
                 args: impact_args,
-                outputs: impact_outputs(&impact2_slope),
+                outputs: impact_outputs(&impact2_slope, vertical(&impact2_slope)),
                 shape: Shape::Parts,
             },
             Kernel {
