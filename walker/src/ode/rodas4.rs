@@ -15,7 +15,10 @@
 //! `y + Σ a_5j k_j + k_5`, so `k_6` is the error estimate. The Jacobian `J`
 //! and `f_t = df/dt` are computed once per accepted step (they are reused
 //! after a rejection; only the LU factorisation is redone with the new `h`).
-//! A step costs six evaluations of the right-hand side plus the Jacobian.
+//! An attempted step costs five evaluations of the right-hand side and one
+//! LU factorisation; an accepted one in addition `f(t + h, y_new)` for the
+//! next step and the Jacobian (analytic, or `N` evaluations by finite
+//! differences) and `df/dt` (analytic, or one evaluation).
 // Literals keep the published digits; stage formulas index the stage
 // vectors explicitly, mirroring the published Fortran loops.
 #![allow(clippy::excessive_precision, clippy::needless_range_loop)]
@@ -116,8 +119,9 @@ impl<const N: usize> Rodas4<N> {
             let mut fp = [0.0; N];
             for j in 0..N {
                 let ysafe = yp[j];
-                let delt = (UROUND * ysafe.abs().max(1.0e-5)).sqrt();
-                yp[j] = ysafe + delt;
+                yp[j] = ysafe + (UROUND * ysafe.abs().max(1.0e-5)).sqrt();
+                // The increment actually applied (exact in floating point).
+                let delt = yp[j] - ysafe;
                 rhs(sys, stats, t, &yp, &mut fp);
                 for i in 0..N {
                     self.jac[i][j] = (fp[i] - self.f0[i]) / delt;
