@@ -179,7 +179,8 @@ fn validate(module: &Module) -> Result<(), EmitError> {
         }
         let mut args = BTreeSet::new();
         for a in &k.args {
-            if !is_snake_ident(a) || is_generated_name(a) || a == "p" || a.starts_with('_') {
+            let reserved = ["p", "sign"].contains(&a.as_str()) || a.starts_with('_');
+            if !is_snake_ident(a) || is_generated_name(a) || reserved {
                 return Err(EmitError::BadName {
                     what: format!("argument of kernel `{}`", k.name),
                     name: a.clone(),
@@ -606,6 +607,35 @@ mod tests {
         assert!(matches!(
             Plan::new(&m, Division::Exact),
             Err(EmitError::UndeclaredInput { .. })
+        ));
+    }
+
+    #[test]
+    fn reserved_and_duplicate_names_are_rejected() {
+        let mut m = module_with(|m| vec![m.graph.input("x")]);
+        m.kernels[0].args = vec!["sign".to_owned()];
+        assert!(matches!(
+            Plan::new(&m, Division::Exact),
+            Err(EmitError::BadName { .. })
+        ));
+        let mut m = module_with(|m| vec![m.graph.input("x")]);
+        m.declare_param("k0", "");
+        assert!(matches!(
+            Plan::new(&m, Division::Exact),
+            Err(EmitError::BadName { .. })
+        ));
+        let mut m = module_with(|m| vec![m.graph.input("x")]);
+        let twin = m.kernels[0].clone();
+        m.kernels.push(twin);
+        assert!(matches!(
+            Plan::new(&m, Division::Exact),
+            Err(EmitError::Duplicate { .. })
+        ));
+        let mut m = module_with(|m| vec![m.graph.input("x")]);
+        m.kernels[0].output_shape = Shape::Matrix(2, 2);
+        assert!(matches!(
+            Plan::new(&m, Division::Exact),
+            Err(EmitError::ShapeMismatch { .. })
         ));
     }
 

@@ -189,8 +189,7 @@ pub(crate) fn from_plan(module: &Module, plan: &Plan) -> Stats {
 }
 
 fn row(out: &mut String, name: &str, c: &OpCounts, extra: &str) {
-    let _ = writeln!(
-        out,
+    let line = format!(
         "{name:<22} {:>7} {:>5} {:>5} {:>5} {:>5} {:>7} {:>7} {:>7}  {extra}",
         c.add_sub,
         c.mul,
@@ -201,6 +200,7 @@ fn row(out: &mut String, name: &str, c: &OpCounts, extra: &str) {
         c.abs_sign,
         c.total()
     );
+    let _ = writeln!(out, "{}", line.trim_end());
 }
 
 fn header(out: &mut String, title: &str) {
