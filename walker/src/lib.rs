@@ -1,4 +1,3 @@
 //! Placeholder.
 
-/// Adaptive ODE integrators (DOPRI5, DOP853, RODAS) with dense output, events and breakpoints.
 pub mod ode;
