@@ -43,36 +43,269 @@ pub const fn prepare(p: &Params) -> Prepared {
     Prepared { mu0: p.mu0, c: p.c }
 }
 
-/// Hip position (demo kernel of the stub lowering).
+/// Inertia matrix M(q) (Eq. 2). Inputs: `th1`. Outputs: `M00`, `M01`, `M02`, `M03`, `M10`, `M11`, `M12`, `M13`, `M20`, `M21`, `M22`, `M23`, `M30`, `M31`, `M32`, `M33`.
 ///
-/// Paper: Section 2.2.
+/// Paper: Eq. 2.
 ///
-/// Arguments: `x`, `z`, `th1`; parameters through `p` from [`prepare`].
-/// Returns `[x_h, z_h]`.
+/// Arguments: `th1`; parameters through `p` from [`prepare`].
+/// Returns, row-major, `[[M00, M01, M02, M03], [M10, M11, M12, M13], [M20, M21, M22, M23], [M30, M31, M32, M33]]`.
 ///
-/// Operations per call: 2 add/sub, 1 transcendental.
+/// Operations per call: 2 mul, 1 neg, 1 transcendental.
 #[inline]
 #[must_use]
-pub fn hip(_p: &Prepared, x: F, z: F, th1: F) -> [F; 2] {
+pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
     let (t0, t1) = th1.sin_cos();
-    [x + t0, z + t1]
+    let t2 = 3.0_f64 * t1;
+    let t3 = -(3.0_f64 * t0);
+    [
+        [3.0_f64, 0.0_f64, t2, 0.0_f64],
+        [0.0_f64, 3.0_f64, t3, 0.0_f64],
+        [t2, t3, 3.5_f64, 0.0_f64],
+        [0.0_f64, 0.0_f64, 0.0_f64, 1.0_f64],
+    ]
 }
 
-/// Ground reaction and its derivative by `g` (demo kernel of the stub lowering).
+/// Coriolis, centrifugal and gravity vector h(q, qdot) (Eq. 20). Inputs: `th1`, `th1d`. Outputs: `h0`, `h1`, `h2`, `h3`.
 ///
-/// Paper: Eq. 23.
+/// Paper: Eq. 20.
 ///
-/// Arguments: `th1`, `th1d`, `xd`, `u`; parameters through `p` from [`prepare`].
-/// Returns `[lambda, dlambda_dg]`.
+/// Arguments: `th1`, `th1d`; parameters through `p` from [`prepare`].
+/// Returns `[h0, h1, h2, h3]`.
 ///
-/// Operations per call: 5 add/sub, 12 mul, 1 div, 3 transcendental.
+/// Operations per call: 1 add/sub, 5 mul, 2 neg, 1 transcendental.
 #[inline]
 #[must_use]
-pub fn lambda_demo(p: &Prepared, th1: F, th1d: F, xd: F, u: F) -> [F; 2] {
+pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = 3.0_f64 * th1d * th1d;
+    [-(t0 * t2), 29.43_f64 - t1 * t2, -(29.43_f64 * t0), 0.0_f64]
+}
+
+/// Vertical ground reaction lambda on level ground (Eqs. 22-23). Inputs: `th1`, `th1d`, `u`, `xd`. Outputs: `lambda`.
+///
+/// Paper: Eqs. 22-23.
+///
+/// Arguments: `th1`, `th1d`, `u`, `xd`; parameters through `p` from [`prepare`].
+/// Returns `lambda`.
+///
+/// Operations per call: 4 add/sub, 11 mul, 1 div, 2 transcendental.
+#[inline]
+#[must_use]
+pub fn lambda_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> F {
     let (t0, t1) = th1.sin_cos();
     let t2 = (p.c * xd).tanh();
-    let t3 = 2.0_f64 * th1;
-    let (t4, t5) = t3.sin_cos();
-    let t6 = 1.0_f64 / (1.0_f64 + 3.0_f64 * (1.0_f64 - t5 + p.mu0 * t2 * t4));
-    [6.0_f64 * (0.5_f64 * (9.81_f64 - th1d * th1d * t1) - t0 * u) * t6, 3.0_f64 * t6]
+    (14.715_f64 - 1.5_f64 * th1d * th1d * t1 - 3.0_f64 * u * t0)
+        / (0.5_f64 + t0 * (3.0_f64 * t0 + p.mu0 * t2 * 3.0_f64 * t1))
+}
+
+/// Projection Y(q, qdot) that eliminates lambda on level ground (Eqs. 28-29). Inputs: `th1`, `xd`. Outputs: `Y00`, `Y01`, `Y02`, `Y03`, `Y10`, `Y11`, `Y12`, `Y13`, `Y20`, `Y21`, `Y22`, `Y23`, `Y30`, `Y31`, `Y32`, `Y33`.
+///
+/// Paper: Eqs. 28-29.
+///
+/// Arguments: `th1`, `xd`; parameters through `p` from [`prepare`].
+/// Returns, row-major, `[[Y00, Y01, Y02, Y03], [Y10, Y11, Y12, Y13], [Y20, Y21, Y22, Y23], [Y30, Y31, Y32, Y33]]`.
+///
+/// Operations per call: 3 add/sub, 18 mul, 1 div, 1 neg, 2 transcendental.
+#[inline]
+#[must_use]
+pub fn projection_level(p: &Prepared, th1: F, xd: F) -> [[F; 4]; 4] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = 3.0_f64 * t0;
+    let t3 = (p.c * xd).tanh();
+    let t4 = p.mu0 * t3;
+    let t5 = 3.0_f64 * t4;
+    let t6 = t1 * t5;
+    let t7 = 0.5_f64 + t0 * t2;
+    let t8 = 1.0_f64 / (0.5_f64 + t0 * (t2 + t6));
+    [
+        [t7 * t8, t4 * t7 * t8, t0 * t5 * t8, 0.0_f64],
+        [3.0_f64 * t1 * t0 * t8, t0 * t6 * t8, -(t2 * t8), 0.0_f64],
+        [0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64],
+        [0.0_f64, 0.0_f64, 0.0_f64, 1.0_f64],
+    ]
+}
+
+/// Scalars A and B of the output-following control, yddot = A u - B (Eqs. 30-31). Inputs: `th1`, `th1d`, `xd`. Outputs: `A`, `B`.
+///
+/// Paper: Eqs. 30-31.
+///
+/// Arguments: `th1`, `th1d`, `xd`; parameters through `p` from [`prepare`].
+/// Returns `[A, B]`.
+///
+/// Operations per call: 7 add/sub, 17 mul, 1 div, 2 transcendental.
+#[inline]
+#[must_use]
+pub fn control_level(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 2] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = (p.c * xd).tanh();
+    let t3 = p.mu0 * t2;
+    let t4 = 3.0_f64 * t3;
+    let t5 = t0 * (3.0_f64 * t0 + t1 * t4);
+    let t6 = 1.0_f64 / (0.5_f64 + t5);
+    [
+        (1.5_f64 + t5) * t6,
+        (t0 * (th1d * (3.0_f64 * t1 - t0 * t4) * th1d - 29.43_f64)
+            - t3 * (29.43_f64 * t1 - 3.0_f64 * th1d * th1d)) * t6,
+    ]
+}
+
+/// Accelerations qddot of the active walker on level ground (Eq. 27). Inputs: `th1`, `th1d`, `u`, `xd`. Outputs: `qdd0`, `qdd1`, `qdd2`, `qdd3`.
+///
+/// Paper: Eq. 27.
+///
+/// Arguments: `th1`, `th1d`, `u`, `xd`; parameters through `p` from [`prepare`].
+/// Returns `[qdd0, qdd1, qdd2, qdd3]`.
+///
+/// Operations per call: 13 add/sub, 27 mul, 1 div, 1 neg, 2 transcendental.
+#[inline]
+#[must_use]
+pub fn accel_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> [F; 4] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = (p.c * xd).tanh();
+    let t3 = p.mu0 * t2;
+    let t4 = 3.0_f64 * t3;
+    let t5 = 29.43_f64 * t1;
+    let t6 = 1.0_f64 / (0.5_f64 + t0 * (3.0_f64 * t0 + t1 * t4));
+    [
+        (t1 * (3.5_f64 * t3 * th1d * th1d - u) - 34.335_f64 * t3
+            + t0 * (3.5_f64 * th1d * th1d - t5 + t3 * (29.43_f64 * t0 + u))) * t6,
+        0.0_f64,
+        (u - t3 * (3.0_f64 * th1d * th1d - t5)
+            + t0 * (29.43_f64 + th1d * (t0 * t4 - 3.0_f64 * t1) * th1d)) * t6,
+        -u,
+    ]
+}
+
+/// Impulses and post-impact velocities with the fore foot, the rear foot and the torso lock (Eqs. 6-10). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `lambdaI2`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
+///
+/// Paper: Eqs. 6-10.
+///
+/// Arguments: `th1`, `xd`, `zd`, `th1d`, `th2d`; parameters through `p` from [`prepare`].
+/// Returns `[lambdaI0, lambdaI1, lambdaI2, qdp0, qdp1, qdp2, qdp3]`.
+///
+/// Operations per call: 24 add/sub, 43 mul, 2 div, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn impact3_level(_p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 7] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = 0.1294095225512604_f64 * th2d;
+    let t3 = t1 * (0.24148145657226708_f64 * th1d + 0.48296291314453416_f64 * th2d);
+    let t4 = 1.0_f64
+        / (0.2414814565722671_f64
+            + t0 * (0.1294095225512604_f64 * t1 - 0.22414386804201342_f64 * t0));
+    [
+        (t0
+            * (0.0647047612756302_f64 * th1d + t2 - 1.4488887394336025_f64 * zd * t1
+                + t0
+                    * (th1d * (0.3882285676537812_f64 * t0 + 1.4488887394336025_f64 * t1)
+                        - 0.3882285676537812_f64 * zd)) + t3) * t4,
+        (t0
+            * (0.6597396084411711_f64 * th1d - t2 + 1.0606601717798212_f64 * zd * t1
+                + t0
+                    * (1.0606601717798214_f64 * zd
+                        - th1d
+                            * (1.0606601717798214_f64 * t0
+                                + 1.0606601717798212_f64 * t1)))
+            - (t3 + 0.7244443697168013_f64 * zd)) * t4,
+        th2d,
+        (0.9330127018922193_f64 * th1d * t1 + 0.9330127018922193_f64 * xd
+            + t0
+                * (0.5000000000000001_f64 * xd * t1 + 0.5000000000000001_f64 * th1d
+                    - t0
+                        * (th1d
+                            * (0.5000000000000001_f64 * t0 + 0.8660254037844386_f64 * t1)
+                            + 0.8660254037844386_f64 * xd)))
+            / (0.9330127018922193_f64
+                + t0 * (0.5000000000000001_f64 * t1 - 0.8660254037844386_f64 * t0)),
+        0.0_f64,
+        0.0_f64,
+        0.0_f64,
+    ]
+}
+
+/// Impulses and post-impact velocities with the fore foot and the torso lock (Eqs. 12-16). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
+///
+/// Paper: Eqs. 12-16.
+///
+/// Arguments: `th1`, `xd`, `zd`, `th1d`, `th2d`; parameters through `p` from [`prepare`].
+/// Returns `[lambdaI0, lambdaI1, qdp0, qdp1, qdp2, qdp3]`.
+///
+/// Operations per call: 36 add/sub, 54 mul, 1 div, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn impact2_level(_p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 6] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = 2.598076211353316_f64 * zd;
+    let t3 = 1.5000000000000004_f64 * zd;
+    let t4 = t1 * t3;
+    let t5 = 0.5_f64 * th1d;
+    let t6 = 1.098076211353316_f64 * t0;
+    let t7 = 1.098076211353316_f64 * t1;
+    let t8 = 1.098076211353316_f64 * zd;
+    let t9 = 1.0_f64
+        / (2.25_f64 + t0 * (1.4999999999999998_f64 * t0 - 2.5980762113533165_f64 * t1));
+    let t10 = (th2d + t5 + t4
+        + t0 * (th1d * (2.598076211353316_f64 * t0 - 1.5000000000000004_f64 * t1) - t2))
+        * t9;
+    [
+        (t1 * (0.7500000000000002_f64 * th1d + 1.5000000000000004_f64 * th2d)
+            - 4.5_f64 * zd
+            + t0 * (3.200961894323342_f64 * th1d - 2.598076211353316_f64 * th2d)) * t9,
+        (1.25_f64 * th2d - t5 - t4
+            + t0
+                * (t1 * (1.5000000000000004_f64 * th1d - 2.5980762113533165_f64 * th2d)
+                    + t2
+                    + t0
+                        * (1.4999999999999998_f64 * th2d
+                            - 2.598076211353316_f64 * th1d))) * t9,
+        (2.25_f64 * xd - t3 + t1 * (1.75_f64 * th1d - th2d)
+            + t0
+                * (t1 * (t2 - 2.5980762113533165_f64 * xd) - 1.098076211353316_f64 * th1d
+                    + t0 * (t3 + 1.4999999999999998_f64 * xd + th1d * (t6 - t7)))) * t9,
+        (t1 * (0.25000000000000006_f64 * th1d + 0.5000000000000001_f64 * th2d)
+            + 0.7500000000000001_f64 * zd
+            + t0
+                * (0.13397459621556138_f64 * th2d - 0.6830127018922194_f64 * th1d
+                    - t1 * t8 + t0 * (th1d * (t6 + t7) - t8))) * t9,
+        t10,
+        t10,
+    ]
+}
+
+/// Position and velocity of the fore-leg end (Eqs. 3, 39). Inputs: `x`, `z`, `th1`, `xd`, `zd`, `th1d`. Outputs: `x_f`, `z_f`, `xd_f`, `zd_f`.
+///
+/// Paper: Eqs. 3, 39.
+///
+/// Arguments: `x`, `z`, `th1`, `xd`, `zd`, `th1d`; parameters through `p` from [`prepare`].
+/// Returns `[x_f, z_f, xd_f, zd_f]`.
+///
+/// Operations per call: 8 add/sub, 6 mul, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F; 4] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = 0.5000000000000001_f64 * t0;
+    let t3 = 0.5000000000000001_f64 * t1;
+    let t4 = 0.13397459621556138_f64 * t0;
+    let t5 = 0.13397459621556138_f64 * t1;
+    [t3 + x + t4, t5 + z - t2, xd + th1d * (t5 - t2), zd - th1d * (t3 + t4)]
+}
+
+/// Kinetic and potential energy (Section 2.1). Inputs: `z`, `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `T`, `V`.
+///
+/// Paper: Section 2.1.
+///
+/// Arguments: `z`, `th1`, `xd`, `zd`, `th1d`, `th2d`; parameters through `p` from [`prepare`].
+/// Returns `[T, V]`.
+///
+/// Operations per call: 6 add/sub, 14 mul, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 2] {
+    let (t0, t1) = th1.sin_cos();
+    [
+        1.5_f64 * zd * zd + 0.5_f64 * th2d * th2d + 1.5_f64 * xd * xd
+            + th1d * (1.75_f64 * th1d + 3.0_f64 * xd * t1 - 3.0_f64 * zd * t0),
+        29.43_f64 * t1 + 29.43_f64 * z,
+    ]
 }

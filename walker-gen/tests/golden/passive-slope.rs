@@ -28,50 +28,728 @@ pub struct Prepared {
     mu0: F,
     c: F,
     k0: F,
+    k1: F,
+    k2: F,
+    k3: F,
+    k4: F,
+    k5: F,
+    k6: F,
+    k7: F,
+    k8: F,
+    k9: F,
+    k10: F,
+    k11: F,
+    k12: F,
+    k13: F,
+    k14: F,
+    k15: F,
+    k16: F,
+    k17: F,
+    k18: F,
+    k19: F,
+    k20: F,
+    k21: F,
+    k22: F,
+    k23: F,
+    k24: F,
+    k25: F,
+    k26: F,
+    k27: F,
+    k28: F,
+    k29: F,
+    k30: F,
+    k31: F,
+    k32: F,
+    k33: F,
+    k34: F,
+    k35: F,
+    k36: F,
+    k37: F,
+    k38: F,
+    k39: F,
+    k40: F,
+    k41: F,
+    k42: F,
+    k43: F,
+    k44: F,
+    k45: F,
+    k46: F,
+    k47: F,
+    k48: F,
+    k49: F,
+    k50: F,
+    k51: F,
+    k52: F,
+    k53: F,
+    k54: F,
+    k55: F,
+    k56: F,
+    k57: F,
+    k58: F,
+    k59: F,
+    k60: F,
+    k61: F,
+    k62: F,
+    k63: F,
+    k64: F,
+    k65: F,
+    k66: F,
+    k67: F,
+    k68: F,
+    k69: F,
+    k70: F,
+    k71: F,
+    k72: F,
+    k73: F,
+    k74: F,
+    k75: F,
+    k76: F,
+    k77: F,
+    k78: F,
+    k79: F,
+    k80: F,
+    k81: F,
+    k82: F,
+    k83: F,
+    k84: F,
+    k85: F,
+    k86: F,
+    k87: F,
+    k88: F,
+    k89: F,
 }
 
 /// Computes everything the kernels need that depends on the parameters only.
 ///
 /// Call once per parameter set, then pass the result to every kernel.
 ///
-/// Operations: 1 div, 1 transcendental.
+/// Operations: 577 add/sub, 297 mul, 1 div, 1 transcendental.
 #[must_use]
 pub fn prepare(p: &Params) -> Prepared {
-    let t0 = p.phi.cos();
-    let k0 = 1.0_f64 / t0;
-    Prepared { mu0: p.mu0, c: p.c, k0 }
+    let (t0, t1) = p.phi.sin_cos();
+    let t2 = t0 * t1;
+    let t3 = 2.0_f64 * t2;
+    let k0 = 0.5_f64 * t2;
+    let k1 = 0.5_f64 * t3 + k0;
+    let t4 = 2.0_f64 * t0 * t1;
+    let t5 = 2.0_f64 * t4;
+    let k2 = t4 + t5;
+    let k3 = t2 + t3;
+    let k4 = 9.81_f64 * t3 + 9.81_f64 * t2;
+    let k5 = k0 + k3;
+    let k6 = k4 + 9.81_f64 * k0;
+    let t6 = 0.5000000000000001_f64 * t0 * t1;
+    let t7 = 2.0_f64 * t6;
+    let t8 = 0.5_f64 * t6;
+    let t9 = 0.13397459621556138_f64 * t0 * t1;
+    let t10 = 2.0_f64 * t9;
+    let t11 = 0.5_f64 * t9;
+    let t12 = 0.2679491924311228_f64 * t0 * t1;
+    let t13 = 2.0_f64 * t12;
+    let t14 = 2.0000000000000004_f64 * t0 * t1;
+    let t15 = 0.07179676972449085_f64 * t0 * t1;
+    let t16 = 1.071796769724491_f64 * t0 * t1;
+    let t17 = 0.1339745962155614_f64 * t0 * t1;
+    let t18 = 2.0_f64 * t17;
+    let t19 = 1.0000000000000002_f64 * t0 * t1;
+    let t20 = 2.0_f64 * t19;
+    let t21 = 0.8038475772933682_f64 * t0 * t1;
+    let t22 = 2.0_f64 * t21;
+    let t23 = 1.5000000000000004_f64 * t0 * t1;
+    let t24 = 2.0_f64 * t23;
+    let t25 = 0.9378221735089296_f64 * t0 * t1;
+    let t26 = 0.26794919243112275_f64 * t0 * t1;
+    let t27 = 1.4488887394336025_f64 * t0 * t1;
+    let t28 = 2.0_f64 * t27;
+    let t29 = 0.3882285676537812_f64 * t0 * t1;
+    let t30 = 2.0_f64 * t29;
+    let t31 = 0.1294095225512604_f64 * t0 * t1;
+    let t32 = 2.0_f64 * t31;
+    let t33 = 0.9659258262890683_f64 * t0 * t1;
+    let t34 = 2.0_f64 * t33;
+    let t35 = 0.48296291314453416_f64 * t0 * t1;
+    let t36 = 2.0_f64 * t35;
+    let t37 = 0.2588190451025208_f64 * t0 * t1;
+    let t38 = 2.0_f64 * t37;
+    let t39 = 0.5_f64 * t35;
+    let t40 = 0.5_f64 * t31;
+    let t41 = 0.06935035412101478_f64 * t0 * t1;
+    let t42 = 0.38822856765378116_f64 * t0 * t1;
+    let t43 = 0.10402553118152218_f64 * t0 * t1;
+    let t44 = 1.1646857029613435_f64 * t0 * t1;
+    let t45 = 0.03467517706050739_f64 * t0 * t1;
+    let t46 = 0.7764571353075624_f64 * t0 * t1;
+    let t47 = 0.017337588530253696_f64 * t0 * t1;
+    let t48 = 3.0_f64 * t0 * t1;
+    let t49 = t0 * t0;
+    let t50 = 2.0_f64 * t49;
+    let t51 = 0.5_f64 * t50;
+    let t52 = 0.5_f64 * t49;
+    let k7 = 1.0_f64 - (t51 + t52) + 0.5_f64;
+    let t53 = 9.81_f64 * t52;
+    let k8 = 9.81_f64 * t51 + t53 - 9.81_f64 - 4.905_f64;
+    let t54 = 2.0_f64 * t50;
+    let t55 = t50 + t54;
+    let k9 = t55 - 2.0_f64 - 1.0_f64;
+    let k10 = 2.0_f64 - t55 + 1.0_f64;
+    let t56 = t49 + t50;
+    let k11 = 0.5_f64 + t56;
+    let k12 = 9.81_f64 * t50 + 9.81_f64 * t49;
+    let k13 = 19.62_f64 - k12 + 9.81_f64;
+    let k14 = t52 + t56;
+    let k15 = k14 - 2.0_f64 - 1.0_f64 - 0.5_f64;
+    let k16 = 2.0_f64 - k14 + 1.0_f64 + 0.5_f64;
+    let k17 = t53 + k12;
+    let k18 = k17 - 19.62_f64 - 9.81_f64 - 4.905_f64;
+    let k19 = k12 - 19.62_f64 - 9.81_f64;
+    let k20 = t56 - 2.0_f64 - 1.0_f64;
+    let t57 = 0.13397459621556138_f64 * t49;
+    let t58 = 2.0_f64 * t57;
+    let t59 = 0.5_f64 * t57;
+    let k21 = 0.5_f64 * t58 + t59 - 0.13397459621556138_f64 - 0.06698729810778069_f64
+        - 0.5_f64 * t7 - t8;
+    let t60 = 0.5000000000000001_f64 * t49;
+    let t61 = 2.0_f64 * t60;
+    let t62 = 0.5_f64 * t60;
+    let k22 = 0.5_f64 * t10 + t11 + 0.5_f64 * t61 + t62 - 0.5000000000000001_f64
+        - 0.25000000000000006_f64;
+    let t63 = 0.07179676972449085_f64 * t49;
+    let t64 = 1.071796769724491_f64 * t49;
+    let t65 = t63 + 2.0_f64 * t63;
+    let t66 = t65 - 0.07179676972449085_f64 - 0.035898384862245426_f64 - t13 - t12;
+    let k23 = t66 - 2.0_f64 * t64 - t64 + 1.071796769724491_f64 + 0.5358983848622455_f64
+        + 2.0_f64 * t14 + t14 + t54 + t50 - 2.0_f64 - 1.0_f64;
+    let t67 = 0.2679491924311228_f64 * t49;
+    let t68 = 2.0000000000000004_f64 * t49;
+    let t69 = t15 + 2.0_f64 * t15 + 2.0_f64 * t67 + t67;
+    let t70 = t69 - 0.2679491924311228_f64 - 0.1339745962155614_f64;
+    let k24 = t70 - 2.0_f64 * t16 - t16 - 2.0_f64 * t68 - t68 + 2.0000000000000004_f64
+        + 1.0000000000000002_f64 + t5 + t4;
+    let t71 = 0.035898384862245426_f64 * t49;
+    let t72 = 0.5358983848622455_f64 * t49;
+    let t73 = t71 + 2.0_f64 * t71;
+    let t74 = 0.035898384862245426_f64 - t73 + 0.017949192431122713_f64 + t18 + t17;
+    let t75 = 2.0_f64 * t72 + t74 + t72 - 0.5358983848622455_f64
+        - 0.26794919243112275_f64 - t20 - t19 - t50 - t49;
+    let k25 = t75 - 0.5_f64;
+    let t76 = 1.0000000000000002_f64 * t49;
+    let t77 = 2.0_f64 * t76;
+    let k26 = 0.2679491924311228_f64 - t69 + 0.1339745962155614_f64 + t22 + t21 + t77
+        + t76 - 1.0000000000000002_f64 - 0.5000000000000001_f64;
+    let t78 = 0.8038475772933682_f64 * t49;
+    let t79 = 2.0_f64 * t78;
+    let k27 = t66 - t79 - t78 + 0.8038475772933682_f64 + 0.4019237886466841_f64 + t20
+        + t19;
+    let t80 = 0.9378221735089296_f64 * t49;
+    let t81 = t66 - 2.0_f64 * t80 - t80;
+    let k28 = 1.071796769724491_f64 + t81 + 0.5358983848622455_f64 + t24 + t23 + t50
+        + t49 - 2.0_f64 - 1.0_f64;
+    let t82 = t9 + t10 + t61 + t60;
+    let k29 = t82 - 1.0000000000000002_f64 - 0.5000000000000001_f64 - t3 - t2;
+    let t83 = 1.5000000000000004_f64 * t49;
+    let t84 = t70 - 2.0_f64 * t25 - t25 - 2.0_f64 * t83 - t83;
+    let k30 = 2.0000000000000004_f64 + t84 + 1.0000000000000002_f64 + t3 + t2;
+    let t85 = t57 + t58;
+    let k31 = 0.26794919243112275_f64 - t85 + 0.13397459621556138_f64 + t7 + t6 + t50
+        + t49 - 2.0_f64 - 1.0_f64;
+    let k32 = t70 - t22 - t21 - t11 - t77 - t76 - t62 + 1.0000000000000002_f64
+        + 0.5000000000000001_f64;
+    let t86 = 0.4019237886466841_f64 * t49;
+    let t87 = 2.0_f64 * t86;
+    let t88 = t74 + t87 + t86;
+    let k33 = t59 + t88 - 0.5358983848622455_f64 - 0.26794919243112275_f64 - t7 - t6
+        - t8;
+    let k34 = t88 - 0.5358983848622455_f64 - 0.26794919243112275_f64 - t7 - t6 + t52
+        - 0.5_f64;
+    let k35 = 1.0000000000000002_f64 - t82 + 0.5000000000000001_f64 + t3 + t2 + k0;
+    let k36 = 0.07179676972449085_f64 - t65 + 0.035898384862245426_f64 + t13 + t12 + t79
+        + t78 - 0.8038475772933682_f64 - 0.4019237886466841_f64 - t20 - t19;
+    let k37 = t3 - t82 + t2;
+    let k38 = 0.8038475772933682_f64 + t81 + 0.4019237886466841_f64 + t24 + t23 + t50
+        + t49;
+    let k39 = t85 - t7 - t6 - t50 - t49;
+    let k40 = 1.0000000000000002_f64 + t84 + 0.5000000000000001_f64 + t3 + t2;
+    let k41 = t73 - 0.035898384862245426_f64 - 0.017949192431122713_f64 - t18 - t17 - t87
+        - t86 + t59 + 0.5358983848622455_f64 + 0.26794919243112275_f64
+        - 0.06698729810778069_f64 + t7 + t6 - t8;
+    let k42 = t11 + t62 - 0.25000000000000006_f64;
+    let k43 = t75 - t52;
+    let t89 = 0.26794919243112275_f64 * t49;
+    let k44 = 0.26794919243112275_f64 - (t89 + 2.0_f64 * t89) + 0.13397459621556138_f64
+        + t20 + t19 + t54 + t50 - 2.0_f64 - 1.0_f64;
+    let k45 = 1.0000000000000002_f64 - (t26 + 2.0_f64 * t26 + t77 + t76)
+        + 0.5000000000000001_f64 + t5 + t4;
+    let k46 = t85 - 0.26794919243112275_f64 - 0.13397459621556138_f64 - t7 - t6 - t50
+        - t49 + 2.0_f64 + 1.0_f64;
+    let k47 = k39 - 0.5_f64;
+    let t90 = t49 * t49;
+    let t91 = 0.5176380902050416_f64 * t90;
+    let t92 = 2.0_f64 * t91;
+    let t93 = 0.647047612756302_f64 * t49;
+    let t94 = 2.0_f64 * t93;
+    let t95 = t0 * t49;
+    let t96 = 1.9318516525781366_f64 * t95 * t1;
+    let t97 = 2.0_f64 * t96;
+    let k48 = t94 - (t91 + t92) + t93 - 0.2588190451025208_f64 - 0.1294095225512604_f64
+        + t97 + t96 - t28 - t27;
+    let t98 = 0.5176380902050416_f64 * t95 * t1;
+    let t99 = 2.0_f64 * t98;
+    let t100 = 1.9318516525781366_f64 * t90;
+    let t101 = 2.0_f64 * t100;
+    let t102 = 2.4148145657226707_f64 * t49;
+    let t103 = 2.0_f64 * t102;
+    let k49 = t30 - (t98 + t99) + t29 - t101 - t100 + t103 + t102
+        - 0.9659258262890683_f64 - 0.48296291314453416_f64;
+    let t104 = 0.2588190451025208_f64 * t95 * t1;
+    let t105 = 2.0_f64 * t104;
+    let t106 = 0.9659258262890683_f64 * t90;
+    let t107 = 2.0_f64 * t106;
+    let t108 = 0.9659258262890683_f64 * t49;
+    let t109 = 2.0_f64 * t108;
+    let t110 = t104 + t105;
+    let k50 = t32 - t110 + t31 - t107 - t106 + t109 + t108;
+    let t111 = 0.2588190451025208_f64 * t90;
+    let t112 = 2.0_f64 * t111;
+    let t113 = 0.3882285676537812_f64 * t49;
+    let t114 = 2.0_f64 * t113;
+    let t115 = 0.9659258262890683_f64 * t95 * t1;
+    let t116 = 2.0_f64 * t115;
+    let t117 = t111 + t112;
+    let k51 = t117 - t114 - t113 + 0.2588190451025208_f64 + 0.1294095225512604_f64 - t116
+        - t115 + t34 + t33;
+    let t118 = 0.2588190451025208_f64 * t49;
+    let t119 = 2.0_f64 * t118;
+    let k52 = t117 - t119 - t118 - t116 - t115 + t36 + t35;
+    let t120 = 1.4488887394336025_f64 * t49;
+    let t121 = 2.0_f64 * t120;
+    let k53 = t110 - t38 - t37 + t107 + t106 - t121 - t120 + 0.9659258262890683_f64
+        + 0.48296291314453416_f64;
+    let t122 = 0.3882285676537812_f64 * t90;
+    let t123 = 2.0_f64 * t122;
+    let t124 = 0.1294095225512604_f64 * t49;
+    let t125 = 0.5_f64 * t124;
+    let t126 = 1.4488887394336025_f64 * t95 * t1;
+    let t127 = 2.0_f64 * t126;
+    let k54 = t122 + t123 - t114 - t113 + t125 - 0.0647047612756302_f64 - t127 - t126
+        + t34 + t33 - t39;
+    let t128 = 0.1294095225512604_f64 * t95 * t1;
+    let t129 = 2.0_f64 * t128;
+    let t130 = 0.48296291314453416_f64 * t90;
+    let t131 = 2.0_f64 * t130;
+    let t132 = 0.48296291314453416_f64 * t49;
+    let t133 = 2.0_f64 * t132;
+    let t134 = 0.5_f64 * t132;
+    let t135 = t128 + t129;
+    let k55 = t40 + t135 + t131 + t130 - t133 - t132 + t134 - 0.24148145657226708_f64;
+    let k56 = t131 + t135 + t130 - t133 - t132;
+    let t136 = 0.1294095225512604_f64 * t90;
+    let t137 = 2.0_f64 * t136;
+    let t138 = 2.0_f64 * t124;
+    let t139 = 0.48296291314453416_f64 * t95 * t1;
+    let t140 = 2.0_f64 * t139;
+    let k57 = t138 - (t136 + t137) + t124 + t140 + t139 - t36 - t35;
+    let t141 = 0.06935035412101478_f64 * t49;
+    let k58 = t141 - 0.03467517706050739_f64 - t37 - 0.5176380902050416_f64 * t49
+        + 0.2588190451025208_f64;
+    let k59 = t41 + t118 - 0.1294095225512604_f64 - 0.5176380902050416_f64 * t0 * t1;
+    let k60 = 0.017337588530253696_f64 - 0.03467517706050739_f64 * t49 + t31 + t118
+        - 0.2588190451025208_f64;
+    let t142 = 0.13870070824202957_f64 * t90;
+    let t143 = 0.17337588530253695_f64 * t49;
+    let t144 = 1.5529142706151249_f64 * t90;
+    let t145 = 1.941142838268906_f64 * t49;
+    let t146 = 2.0_f64 * t143 - (t142 + 2.0_f64 * t142) + t143 - 0.06935035412101478_f64
+        - 0.03467517706050739_f64 + t99 + t98 - 2.0_f64 * t42 - t42 + 2.0_f64 * t144
+        + t144 - 2.0_f64 * t145 - t145 + 0.7764571353075624_f64 + 0.3882285676537812_f64
+        - t97;
+    let k61 = t146 - t96 + t28 + t27;
+    let t147 = 0.13870070824202957_f64 * t95 * t1;
+    let t148 = 0.6470476127563021_f64 * t49;
+    let t149 = 1.5529142706151249_f64 * t95 * t1;
+    let t150 = 2.0_f64 * t43 - (t147 + 2.0_f64 * t147) + t43 - t92 - t91 + 2.0_f64 * t148
+        + t148 - 0.2588190451025208_f64 - 0.1294095225512604_f64 + 2.0_f64 * t149 + t149
+        - 2.0_f64 * t44 - t44 + t101 + t100 - t103;
+    let k62 = t150 - t102 + 0.9659258262890683_f64 + 0.48296291314453416_f64;
+    let t151 = 0.06935035412101478_f64 * t95 * t1;
+    let t152 = 0.7764571353075624_f64 * t95 * t1;
+    let t153 = 2.0_f64 * t152;
+    let t154 = t151 + 2.0_f64 * t151;
+    let k63 = 2.0_f64 * t45 - t154 + t45 - t112 - t111 + t119 + t118 + t153 + t152 - t30
+        - t29 + t107 + t106 - t109 - t108;
+    let t155 = 0.06935035412101478_f64 * t90;
+    let t156 = 0.10402553118152218_f64 * t49;
+    let t157 = 0.7764571353075624_f64 * t90;
+    let t158 = 2.0_f64 * t157;
+    let t159 = 1.1646857029613435_f64 * t49;
+    let t160 = t155 + 2.0_f64 * t155;
+    let t161 = t160 - 2.0_f64 * t156 - t156 + 0.06935035412101478_f64
+        + 0.03467517706050739_f64 - t105 - t104 + t38 + t37 - t158 - t157
+        + 2.0_f64 * t159 + t159 - 0.7764571353075624_f64 - 0.3882285676537812_f64 + t116
+        + t115;
+    let k64 = t161 - t34 - t33;
+    let t162 = 0.7764571353075624_f64 * t49;
+    let k65 = t160 - 2.0_f64 * t141 - t141 - t105 - t104 + t32 + t31 - t158 - t157
+        + 2.0_f64 * t162 + t162 + t116 + t115 - t36 - t35;
+    let t163 = 0.38822856765378116_f64 * t49;
+    let t164 = t154 - 2.0_f64 * t41 - t41 + t112 + t111 - 2.0_f64 * t163 - t163
+        + 0.2588190451025208_f64 + 0.1294095225512604_f64 - t153 - t152 + 2.0_f64 * t46
+        + t46 - t107 - t106 + t121 + t120;
+    let k66 = t164 - 0.9659258262890683_f64 - 0.48296291314453416_f64;
+    let t165 = 0.10402553118152218_f64 * t90;
+    let t166 = 0.12136311971177588_f64 * t49;
+    let t167 = 0.38822856765378116_f64 * t95 * t1;
+    let t168 = 1.1646857029613435_f64 * t90;
+    let t169 = 1.4235047480638643_f64 * t49;
+    let t170 = t165 + 2.0_f64 * t165 - 2.0_f64 * t166 - t166 + 0.03467517706050739_f64
+        + 0.017337588530253696_f64 - 2.0_f64 * t167 - t167 + t38 + t37 - 2.0_f64 * t168
+        - t168 + 2.0_f64 * t169 + t169 - t125 - 0.5176380902050416_f64
+        - 0.2588190451025208_f64;
+    let k67 = 0.0647047612756302_f64 + t170 + t127 + t126 - t34 - t33 + t39;
+    let t171 = 0.03467517706050739_f64 * t95 * t1;
+    let t172 = 0.3882285676537812_f64 * t95 * t1;
+    let t173 = t171 + 2.0_f64 * t171 - 2.0_f64 * t47 - t47 + t137 + t136 - t138 - t124
+        - 2.0_f64 * t172 - t172 + t38 + t37;
+    let k68 = t173 - t40 - t131 - t130 + t133 + t132 - t134 + 0.24148145657226708_f64;
+    let k69 = t173 - t131 - t130 + t133 + t132;
+    let t174 = 0.03467517706050739_f64 * t90;
+    let t175 = 0.05201276559076109_f64 * t49;
+    let t176 = 2.0_f64 * t175 - (t174 + 2.0_f64 * t174) + t175 - 0.03467517706050739_f64
+        - 0.017337588530253696_f64 + t129 + t128 - t32 - t31 + t123 + t122 - t94 - t93
+        + 0.5176380902050416_f64 + 0.2588190451025208_f64 - t140;
+    let k70 = t176 - t139 + t36 + t35;
+    let t177 = 0.5358983848622455_f64 * t95 * t1;
+    let t178 = 2.0000000000000004_f64 * t90;
+    let t179 = 4.0_f64 * t95 * t1;
+    let k71 = t177 - 0.4019237886466841_f64 * t0 * t1 + t178
+        - 2.5000000000000004_f64 * t49 + 0.5000000000000001_f64 - t179 + t48;
+    let t180 = 0.5358983848622455_f64 * t90;
+    let t181 = 2.0000000000000004_f64 * t95 * t1;
+    let t182 = 4.0_f64 * t90;
+    let k72 = 0.6698729810778069_f64 * t49 - t180 - 0.13397459621556138_f64 + t181 - t23
+        + t182 - 5.0_f64 * t49 + 1.0_f64;
+    let t183 = 0.26794919243112275_f64 * t90;
+    let t184 = 1.0000000000000002_f64 * t95 * t1;
+    let t185 = 2.0_f64 * t90;
+    let t186 = 3.0_f64 * t49;
+    let k73 = t86 - t183 - 0.13397459621556138_f64 + t184 - t19 + t185 - t186 + 1.0_f64;
+    let t187 = 0.26794919243112275_f64 * t95 * t1;
+    let t188 = 1.0000000000000002_f64 * t90;
+    let t189 = 2.0_f64 * t95 * t1;
+    let k74 = t9 - t187 - t188 + t76 + t189 - t2;
+    let k75 = t26 - t187 - t188 + t83 - 0.5000000000000001_f64 + t189 - t4;
+    let k76 = t183 - t89 - t184 + t6 - t185 + t50;
+    let k77 = 0.33493649053890345_f64 * t0 * t1 - 0.4019237886466841_f64 * t95 * t1
+        - 1.5000000000000004_f64 * t90 + t68 - 0.5000000000000001_f64
+        + 3.0_f64 * t95 * t1 - t48;
+    let t190 = 0.13397459621556138_f64 * t90;
+    let t191 = 0.5000000000000001_f64 * t95 * t1;
+    let k78 = t190 - 0.20096189432334205_f64 * t49 + 0.06698729810778069_f64 - t191 + t6
+        - t90 + t50 - 1.0_f64;
+    let k79 = 0.13397459621556138_f64 * t95 * t1 - 0.06698729810778069_f64 * t0 * t1
+        + 0.5000000000000001_f64 * t90 - t60 - t1 * t95 + t2;
+    let k80 = t89 - 0.13397459621556138_f64 - t19 - t50 + 1.0_f64;
+    let k81 = t26 + t76 - 0.5000000000000001_f64 - t4;
+    let k82 = 0.06698729810778069_f64 - t57 + t6 + t49 - 1.0_f64;
+    let k83 = t86 - t180 + t181 - t6 + t182 - t186;
+    let k84 = t9 - t177 - t178 + t83 + t179 - t2;
+    let k85 = t183 - t57 - t184 - t185 + t49;
+    let k86 = t187 + t188 - t60 - t189;
+    let k87 = 0.4019237886466841_f64 * t90 - 0.33493649053890345_f64 * t49
+        - 1.5000000000000004_f64 * t95 * t1 + t6 - 3.0_f64 * t90 + t186;
+    let k88 = 0.06698729810778069_f64 * t49 - t190 + t191 + t90 - t49;
+    let k89 = 1.0_f64 / t1;
+    Prepared {
+        mu0: p.mu0,
+        c: p.c,
+        k0,
+        k1,
+        k2,
+        k3,
+        k4,
+        k5,
+        k6,
+        k7,
+        k8,
+        k9,
+        k10,
+        k11,
+        k12,
+        k13,
+        k14,
+        k15,
+        k16,
+        k17,
+        k18,
+        k19,
+        k20,
+        k21,
+        k22,
+        k23,
+        k24,
+        k25,
+        k26,
+        k27,
+        k28,
+        k29,
+        k30,
+        k31,
+        k32,
+        k33,
+        k34,
+        k35,
+        k36,
+        k37,
+        k38,
+        k39,
+        k40,
+        k41,
+        k42,
+        k43,
+        k44,
+        k45,
+        k46,
+        k47,
+        k48,
+        k49,
+        k50,
+        k51,
+        k52,
+        k53,
+        k54,
+        k55,
+        k56,
+        k57,
+        k58,
+        k59,
+        k60,
+        k61,
+        k62,
+        k63,
+        k64,
+        k65,
+        k66,
+        k67,
+        k68,
+        k69,
+        k70,
+        k71,
+        k72,
+        k73,
+        k74,
+        k75,
+        k76,
+        k77,
+        k78,
+        k79,
+        k80,
+        k81,
+        k82,
+        k83,
+        k84,
+        k85,
+        k86,
+        k87,
+        k88,
+        k89,
+    }
 }
 
-/// Hip position (demo kernel of the stub lowering).
+/// Inertia matrix M(q) (Eq. 2). Inputs: `th1`. Outputs: `M00`, `M01`, `M02`, `M03`, `M10`, `M11`, `M12`, `M13`, `M20`, `M21`, `M22`, `M23`, `M30`, `M31`, `M32`, `M33`.
 ///
-/// Paper: Section 2.2.
+/// Paper: Eq. 2.
 ///
-/// Arguments: `x`, `z`, `th1`; parameters through `p` from [`prepare`].
-/// Returns `[x_h, z_h]`.
+/// Arguments: `th1`; parameters through `p` from [`prepare`].
+/// Returns, row-major, `[[M00, M01, M02, M03], [M10, M11, M12, M13], [M20, M21, M22, M23], [M30, M31, M32, M33]]`.
 ///
-/// Operations per call: 2 add/sub, 1 transcendental.
+/// Operations per call: 2 mul, 1 neg, 1 transcendental.
 #[inline]
 #[must_use]
-pub fn hip(_p: &Prepared, x: F, z: F, th1: F) -> [F; 2] {
+pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
     let (t0, t1) = th1.sin_cos();
-    [x + t0, z + t1]
+    let t2 = 3.0_f64 * t1;
+    let t3 = -(3.0_f64 * t0);
+    [
+        [3.0_f64, 0.0_f64, t2, 0.0_f64],
+        [0.0_f64, 3.0_f64, t3, 0.0_f64],
+        [t2, t3, 3.5_f64, 0.0_f64],
+        [0.0_f64, 0.0_f64, 0.0_f64, 1.0_f64],
+    ]
 }
 
-/// Ground reaction and its derivative by `g` (demo kernel of the stub lowering).
+/// Coriolis, centrifugal and gravity vector h(q, qdot) (Eq. 20). Inputs: `th1`, `th1d`. Outputs: `h0`, `h1`, `h2`, `h3`.
 ///
-/// Paper: Eq. 23.
+/// Paper: Eq. 20.
+///
+/// Arguments: `th1`, `th1d`; parameters through `p` from [`prepare`].
+/// Returns `[h0, h1, h2, h3]`.
+///
+/// Operations per call: 1 add/sub, 5 mul, 2 neg, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = 3.0_f64 * th1d * th1d;
+    [-(t0 * t2), 29.43_f64 - t1 * t2, -(29.43_f64 * t0), 0.0_f64]
+}
+
+/// Vertical ground reaction lambda of the passive wheel on the slope (u = 0) (Eq. 22 with Eqs. 36, 38). Inputs: `th1`, `th1d`, `xd`. Outputs: `lambda`.
+///
+/// Paper: Eq. 22 with Eqs. 36, 38.
 ///
 /// Arguments: `th1`, `th1d`, `xd`; parameters through `p` from [`prepare`].
-/// Returns `[lambda, dlambda_dg]`.
+/// Returns `lambda`.
 ///
-/// Operations per call: 4 add/sub, 12 mul, 1 div, 3 transcendental.
+/// Operations per call: 7 add/sub, 13 mul, 1 div, 2 transcendental.
 #[inline]
 #[must_use]
-pub fn lambda_demo(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 2] {
-    let t0 = th1.cos();
-    let t1 = 2.0_f64 * th1;
-    let (t2, t3) = t1.sin_cos();
-    let t4 = (p.c * xd * p.k0).tanh();
-    let t5 = 1.0_f64 / (1.0_f64 + 3.0_f64 * (1.0_f64 - t3 + p.mu0 * t4 * t2));
-    [0.5_f64 * (9.81_f64 - th1d * th1d * t0) * 6.0_f64 * t5, 3.0_f64 * t5]
+pub fn lambda_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> F {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = (p.c * xd * p.k89).tanh();
+    let t3 = p.mu0 * t2;
+    (p.k8 + th1d * (t0 * p.k1 + t1 * p.k7) * th1d)
+        / (p.k3 * t3 - p.k11 + t0 * (t0 * (p.k9 - p.k2 * t3) + t1 * (p.k2 - p.k10 * t3)))
+}
+
+/// Accelerations qddot of the passive wheel on the slope (u = 0) (Eq. 27 with Eqs. 36, 38). Inputs: `th1`, `th1d`, `xd`. Outputs: `qdd0`, `qdd1`, `qdd2`, `qdd3`.
+///
+/// Paper: Eq. 27 with Eqs. 36, 38.
+///
+/// Arguments: `th1`, `th1d`, `xd`; parameters through `p` from [`prepare`].
+/// Returns `[qdd0, qdd1, qdd2, qdd3]`.
+///
+/// Operations per call: 30 add/sub, 49 mul, 1 div, 2 transcendental.
+#[inline]
+#[must_use]
+pub fn accel_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 4] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = th1d * p.k5 * th1d - t1 * p.k4;
+    let t3 = t0 * p.k4;
+    let t4 = (p.c * xd * p.k89).tanh();
+    let t5 = p.mu0 * t4;
+    let t6 = p.k2 * t5;
+    let t7 = p.k2 - p.k10 * t5;
+    let t8 = 1.0_f64 / (p.k3 * t5 - p.k11 + t0 * (t0 * (p.k9 - t6) + t1 * t7));
+    [
+        (th1d * (p.k5 - p.k16 * t5) * th1d * t1 - (p.k6 + p.k18 * t5)
+            + t0 * (t1 * p.k13 + th1d * p.k15 * th1d + t3 - (t2 + t0 * p.k13) * t5))
+            * t8,
+        t8
+            * (p.k17 - p.k6 * t5 + th1d * (p.k5 * t5 - p.k14) * th1d * t1
+                + t0 * (t2 - t0 * p.k12 - (t1 * p.k12 - th1d * p.k14 * th1d - t3) * t5)),
+        t8
+            * (t1 * (p.k4 - p.k13 * t5) - th1d * (p.k3 + p.k20 * t5) * th1d
+                + t0
+                    * (p.k19 - p.k4 * t5 + th1d * (t0 * t7 + t1 * (p.k10 + t6)) * th1d)),
+        0.0_f64,
+    ]
+}
+
+/// Impulse and post-impact velocities of the passive wheel on the slope (Eqs. 39-42). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
+///
+/// Paper: Eqs. 39-42.
+///
+/// Arguments: `th1`, `xd`, `zd`, `th1d`, `th2d`; parameters through `p` from [`prepare`].
+/// Returns `[lambdaI0, qdp0, qdp1, qdp2, qdp3]`.
+///
+/// Operations per call: 29 add/sub, 49 mul, 1 div, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn impact_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 5] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = zd * p.k29;
+    let t3 = xd * p.k37;
+    let t4 = xd * p.k39;
+    let t5 = 1.0_f64 / (p.k25 + t0 * (t0 * p.k23 + t1 * p.k24));
+    [
+        (p.k1 * xd + zd * p.k7 + th1d * (t0 * p.k21 + t1 * p.k22)) * t5,
+        (xd * p.k34 + zd * p.k35 + th1d * p.k33 * t1
+            + t0
+                * (t1 * (xd * p.k30 + zd * p.k31) + th1d * p.k32
+                    + t0 * (xd * p.k28 + t2 + th1d * (t0 * p.k26 + t1 * p.k27)))) * t5,
+        (p.k0 * xd + zd * p.k43 + th1d * p.k42 * t1
+            + t0
+                * (t1 * (t4 + zd * p.k40) + th1d * p.k41
+                    + t0 * (t3 + zd * p.k38 + th1d * (t0 * p.k36 + t1 * p.k26)))) * t5,
+        (t1 * (t2 + t4) + th1d * p.k47
+            + t0 * (t3 + zd * p.k46 + th1d * (t0 * p.k44 + t1 * p.k45))) * t5,
+        th2d,
+    ]
+}
+
+/// Impulses and post-impact velocities on the slope with the rear foot held (double-support test) (Eq. 46). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
+///
+/// Paper: Eq. 46.
+///
+/// Arguments: `th1`, `xd`, `zd`, `th1d`, `th2d`; parameters through `p` from [`prepare`].
+/// Returns `[lambdaI0, lambdaI1, qdp0, qdp1, qdp2, qdp3]`.
+///
+/// Operations per call: 40 add/sub, 70 mul, 2 div, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn impact2_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 6] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = 1.0_f64 / (p.k60 + t0 * (t0 * p.k58 + t1 * p.k59));
+    let t3 = 1.0_f64 / (p.k82 + t0 * (t0 * p.k80 + t1 * p.k81));
+    [
+        (xd * p.k56 + zd * p.k57 + th1d * p.k55 * t1
+            + t0
+                * (t1 * (xd * p.k52 + zd * p.k53) + th1d * p.k54
+                    + t0 * (xd * p.k50 + zd * p.k51 + th1d * (t0 * p.k48 + t1 * p.k49))))
+            * t2,
+        (xd * p.k69 + zd * p.k70 + th1d * p.k68 * t1
+            + t0
+                * (t1 * (xd * p.k65 + zd * p.k66) + th1d * p.k67
+                    + t0 * (xd * p.k63 + zd * p.k64 + th1d * (t0 * p.k61 + t1 * p.k62))))
+            * t2,
+        (xd * p.k78 + zd * p.k79 + th1d * p.k78 * t1
+            + t0
+                * (t1 * (xd * p.k75 + zd * p.k76) + th1d * p.k77
+                    + t0 * (xd * p.k73 + zd * p.k74 + th1d * (t0 * p.k71 + t1 * p.k72))))
+            * t3,
+        (xd * p.k79 + zd * p.k88 + th1d * p.k79 * t1
+            + t0
+                * (t1 * (xd * p.k76 + zd * p.k86) + th1d * p.k87
+                    + t0 * (xd * p.k74 + zd * p.k85 + th1d * (t0 * p.k83 + t1 * p.k84))))
+            * t3,
+        0.0_f64,
+        th2d,
+    ]
+}
+
+/// Position and velocity of the fore-leg end (Eqs. 3, 39). Inputs: `x`, `z`, `th1`, `xd`, `zd`, `th1d`. Outputs: `x_f`, `z_f`, `xd_f`, `zd_f`.
+///
+/// Paper: Eqs. 3, 39.
+///
+/// Arguments: `x`, `z`, `th1`, `xd`, `zd`, `th1d`; parameters through `p` from [`prepare`].
+/// Returns `[x_f, z_f, xd_f, zd_f]`.
+///
+/// Operations per call: 8 add/sub, 6 mul, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F; 4] {
+    let (t0, t1) = th1.sin_cos();
+    let t2 = 0.13397459621556138_f64 * t0;
+    let t3 = 0.5000000000000001_f64 * t1;
+    let t4 = 0.5000000000000001_f64 * t0;
+    let t5 = 0.13397459621556138_f64 * t1;
+    [t3 + x + t2, t5 + z - t4, xd + th1d * (t5 - t4), zd - th1d * (t2 + t3)]
+}
+
+/// Kinetic and potential energy (Section 2.1). Inputs: `z`, `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `T`, `V`.
+///
+/// Paper: Section 2.1.
+///
+/// Arguments: `z`, `th1`, `xd`, `zd`, `th1d`, `th2d`; parameters through `p` from [`prepare`].
+/// Returns `[T, V]`.
+///
+/// Operations per call: 6 add/sub, 14 mul, 1 transcendental.
+#[inline]
+#[must_use]
+pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 2] {
+    let (t0, t1) = th1.sin_cos();
+    [
+        1.5_f64 * zd * zd + 0.5_f64 * th2d * th2d + 1.5_f64 * xd * xd
+            + th1d * (3.0_f64 * xd * t1 + 1.75_f64 * th1d - 3.0_f64 * zd * t0),
+        29.43_f64 * t1 + 29.43_f64 * z,
+    ]
 }
