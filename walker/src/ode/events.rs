@@ -1,59 +1,6 @@
 //! Event functions, crossing detection and root location on the dense output.
 //!
-//! # The detection rule
-//!
-//! Each event keeps a *reference sign*: the sign of the last nonzero value
-//! of `g` seen at a checked point. A crossing is a **genuine sign change from
-//! a nonzero value**: `g` had the reference sign at one checked point and has
-//! the opposite (nonzero) sign at a later one. Checked points are the ends of
-//! the accepted steps (and, while an event is still "on the guard", a few
-//! interior points of the step, see below). Touching zero and coming back
-//! (`+, 0, +`) is not a crossing.
-//!
-//! * A crossing from negative to positive is *rising*, from positive to
-//!   negative *falling*. Crossings that do not match the event's
-//!   [`Direction`] only update the reference sign.
-//! * A matching crossing is located by the Anderson–Björck variant of
-//!   regula falsi (Illinois-type, with bisection safeguard) on `g(t, u(t))`,
-//!   `u` being the dense output of the step, to a bracket of about two ulps
-//!   of `t`. The reported time is the end of the final bracket on the *far
-//!   side*: `g` there is zero or already has the new sign. Restarting from
-//!   the reported point therefore does not find the same crossing again.
-//! * If `g` was exactly zero at the previous step end and the crossing is
-//!   detected now, the root is that step end.
-//!
-//! **Starting on the guard.** If `g(t0, y0) == 0` exactly (for example just
-//! after a reset map put the state on the guard), there is no reference sign
-//! yet and the zero at `t0` is *not* an event by itself. The direction in
-//! which `g` leaves zero decides:
-//!
-//! * it is sampled on the dense output of the following step(s) at
-//!   `theta = 2^-10, 2^-8, 2^-6, 2^-4, 1/4, 1/2, 3/4, 1`, so that an early
-//!   dip is seen even when the first step is long;
-//! * if the first nonzero sample moves **in the event direction**
-//!   ([`Direction::Rising`] and positive, or [`Direction::Falling`] and
-//!   negative), the event fires at the last point where `g` was still zero
-//!   (normally `t0` itself, with the state `y0`): the trajectory leaves the
-//!   guard through the wrong side, which is a genuine event (a foot that
-//!   starts on the ground and moves into it);
-//! * otherwise that sample only sets the reference sign; subsequent crossings
-//!   are detected as usual (also between the later samples of the same
-//!   step);
-//! * for [`Direction::Either`] a zero start is never reported: leaving the
-//!   guard is indistinguishable from having been put on it.
-//!
-//! **Resuming after a terminal event.** When an integration starts from
-//! exactly the `(t, y)` that this event last returned as
-//! [`Outcome::Event`](super::Outcome::Event) (bitwise equal: the caller
-//! continues without changing the state) and `g` is exactly zero there, the
-//! crossing has already been reported: the reference sign is set to the
-//! post-crossing sign and the event does not fire again at `t0`. After a
-//! reset map the state differs and the rule above applies.
-//!
-//! Limitation: an even number of sign changes between two checked points
-//! (a short excursion across the guard within one step) is not seen. Limit
-//! the step size ([`Config::hmax`](super::Config::hmax)) if such grazing
-//! matters.
+//! The detection rule is documented on [`Event`].
 
 use super::{Dense, Observer};
 
@@ -101,17 +48,76 @@ type EventFn<'a, const N: usize> = Box<dyn FnMut(f64, &[f64; N]) -> f64 + 'a>;
 
 /// An event function `g(t, y)` whose zeros the integrator locates.
 ///
-/// See the module-level rule (reproduced here): a root is only reported for
-/// a genuine sign change from a nonzero value, in the chosen [`Direction`];
-/// a zero at the initial point is ignored unless `g` then leaves zero in the
-/// event direction (then the event fires at the initial point). Terminal
-/// events stop the integration ([`Outcome::Event`](super::Outcome::Event));
-/// non-terminal ones are passed to [`Observer::on_event`] and the
-/// integration goes on.
+/// Terminal events stop the integration
+/// ([`Outcome::Event`](super::Outcome::Event)); non-terminal ones are passed
+/// to [`Observer::on_event`] and the integration goes on. The event keeps a
+/// little state between calls (to recognise a resumption from the point it
+/// last fired at): use one `Event` per guard and reuse it across calls.
 ///
-/// The event keeps a little state between calls (to recognise a resumption
-/// from the point it last fired at); use one `Event` per guard and reuse it
-/// across calls.
+/// # Detection rule
+///
+/// Each event keeps a *reference sign*: the sign of the last nonzero value
+/// of `g` seen at a checked point. A crossing is a **genuine sign change from
+/// a nonzero value**: `g` had the reference sign at one checked point and has
+/// the opposite (nonzero) sign at a later one. Checked points are the ends of
+/// the accepted steps (and, while an event is still "on the guard", a few
+/// interior points of the step, see below). Touching zero and coming back
+/// (`+, 0, +`) is not a crossing.
+///
+/// * A crossing from negative to positive is *rising*, from positive to
+///   negative *falling*. Crossings that do not match the event's
+///   [`Direction`] only update the reference sign.
+/// * A matching crossing is located by the Anderson–Björck variant of
+///   regula falsi (Illinois-type, with bisection safeguard) on `g(t, u(t))`,
+///   `u` being the dense output of the step, to a bracket of about two ulps
+///   of `t`. The reported time is the end of the final bracket on the *far
+///   side*: `g` there is zero or already has the new sign. Restarting from
+///   the reported point therefore does not find the same crossing again.
+/// * If `g` was exactly zero at the previous step end and the crossing is
+///   detected now, the root is that step end.
+///
+/// **Starting on the guard.** If `g(t0, y0) == 0` exactly (for example just
+/// after a reset map put the state on the guard), there is no reference sign
+/// yet and the zero at `t0` is *not* an event by itself. The direction in
+/// which `g` leaves zero decides:
+///
+/// * it is sampled on the dense output of the following step(s) at
+///   `theta = 2^-10, 2^-8, 2^-6, 2^-4, 1/4, 1/2, 3/4, 1`, so that an early
+///   dip is seen even when the first step is long;
+/// * if the first nonzero sample moves **in the event direction**
+///   ([`Direction::Rising`] and positive, or [`Direction::Falling`] and
+///   negative), the event fires at the last point where `g` was still zero
+///   (normally `t0` itself, with the state `y0`): the trajectory leaves the
+///   guard through the wrong side, which is a genuine event (a foot that
+///   starts on the ground and moves into it);
+/// * otherwise that sample only sets the reference sign; subsequent crossings
+///   are detected as usual (also between the later samples of the same
+///   step);
+/// * for [`Direction::Either`] a zero start is never reported: leaving the
+///   guard is indistinguishable from having been put on it.
+///
+/// **Resuming after a terminal event.** When an integration starts from
+/// exactly the `(t, y)` that this event last returned as
+/// [`Outcome::Event`](super::Outcome::Event) (bitwise equal: the caller
+/// continues without changing the state) and `g` is exactly zero there, the
+/// crossing has already been reported: the reference sign is set to the
+/// post-crossing sign and the event does not fire again at `t0`. After a
+/// reset map the state differs and the rule above applies.
+///
+/// **Rounding after a reset.** A reset map often puts the state only
+/// *nearly* on the guard (`g = ±1e-17`). That value counts as nonzero: it
+/// sets the reference sign, and moving away from the guard afterwards is a
+/// sign change only if the value had the "wrong" sign. For a directional
+/// event that change is in the opposite direction and is ignored, so
+/// [`Direction::Rising`]/[`Direction::Falling`] guards are robust to this;
+/// an [`Direction::Either`] event may fire right after such a restart. Use
+/// directional events for guards that reset maps land on, or make the reset
+/// land exactly on `g = 0`.
+///
+/// Limitation: an even number of sign changes between two checked points
+/// (a short excursion across the guard within one step) is not seen. Limit
+/// the step size ([`Config::hmax`](super::Config::hmax)) if such grazing
+/// matters.
 pub struct Event<'a, const N: usize> {
     g: EventFn<'a, N>,
     direction: Direction,

@@ -37,9 +37,9 @@
 //! accurate as the solution itself are best added as extra state components
 //! (quadrature variables): they are then under error control.
 //!
-//! Events ([`Event`]) are located on the dense output; see the `events`
-//! module documentation (reproduced on [`Event`]) for the exact rule used
-//! when an integration starts on a guard.
+//! Events ([`Event`]) are located on the dense output; the rule that
+//! decides what counts as a crossing, in particular when an integration
+//! starts on a guard, is documented on [`Event`].
 
 mod control;
 mod dop853;
