@@ -6,8 +6,17 @@ fn main() -> Result<(), walker_symbolic::Error> {
     let d = walker_symbolic::Derivation::new()?;
     let elapsed = start.elapsed();
     for k in &d.kernels {
-        let terms: usize = k.outputs.iter().map(|(_, r)| r.num().len() + r.den().len()).sum();
-        println!("{:18} {:3} outputs {:6} terms", k.name, k.outputs.len(), terms);
+        let terms: usize = k
+            .outputs
+            .iter()
+            .map(|(_, r)| r.num().len() + r.den().len())
+            .sum();
+        println!(
+            "{:18} {:3} outputs {:6} terms",
+            k.name,
+            k.outputs.len(),
+            terms
+        );
     }
 
     println!("lambda = {:?}", d.level.lambda);

@@ -6,7 +6,7 @@
 
 use std::collections::HashMap;
 
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, ToPrimitive, Zero};
 
 use crate::error::{Error, Result};
 use crate::poly::{Poly, Q};
@@ -202,16 +202,21 @@ impl Arena {
         if n == 1 {
             return a;
         }
-        if let Some(q) = self.as_num(a).cloned() {
-            if !(q.is_zero() && n < 0) {
-                let r = if n < 0 { num_traits::pow(q.recip(), n.unsigned_abs() as usize) } else { num_traits::pow(q, n as usize) };
-                return self.num(r);
-            }
+        if let Some(q) = self.as_num(a).cloned()
+            && !(q.is_zero() && n < 0)
+        {
+            let e = n.unsigned_abs() as usize;
+            let r = if n < 0 {
+                num_traits::pow(q.recip(), e)
+            } else {
+                num_traits::pow(q, e)
+            };
+            return self.num(r);
         }
-        if let Node::Pow(b, m) = *self.node(a) {
-            if let Some(k) = m.checked_mul(n) {
-                return self.pow(b, k);
-            }
+        if let Node::Pow(b, m) = *self.node(a)
+            && let Some(k) = m.checked_mul(n)
+        {
+            return self.pow(b, k);
         }
         self.intern(Node::Pow(a, n))
     }
@@ -239,9 +244,7 @@ impl Arena {
         }
         let r = match self.node(id).clone() {
             Node::Num(q) => RatFunc::constant(q),
-            Node::Sym(s) => match BaseAngle::of_symbol(s) {
-                Some(_) | None => RatFunc::sym(s),
-            },
+            Node::Sym(s) => RatFunc::sym(s),
             Node::Add(ops) => {
                 let mut acc = RatFunc::zero();
                 for &o in ops.iter() {
@@ -265,7 +268,9 @@ impl Arena {
             }
             Node::Func(f, _) => {
                 return Err(Error::Unsupported {
-                    what: format!("{f:?} has no canonical form; it enters the kernels through an input"),
+                    what: format!(
+                        "{f:?} has no canonical form; it enters the kernels through an input"
+                    ),
                 });
             }
         };
@@ -361,7 +366,9 @@ fn angle_combination(arg: &RatFunc) -> Result<Vec<(BaseAngle, i64)>> {
     for (m, c) in arg.num().terms() {
         let mut factors = m.factors();
         let (Some((slot, 1)), None) = (factors.next(), factors.next()) else {
-            return Err(bad(format!("{arg:?} is not a linear combination of angle symbols")));
+            return Err(bad(format!(
+                "{arg:?} is not a linear combination of angle symbols"
+            )));
         };
         let Some(Atom::Sym(sym)) = Atom::of_slot(slot) else {
             return Err(bad(format!("{arg:?} has a trigonometric atom inside")));
@@ -372,13 +379,17 @@ fn angle_combination(arg: &RatFunc) -> Result<Vec<(BaseAngle, i64)>> {
         let (_, k) = base.symbol_and_multiple();
         let n = c * Q::from_integer(k.into());
         if !n.is_integer() {
-            return Err(bad(format!("{c} * {} is not an integer multiple of its base angle", sym.name())));
+            return Err(bad(format!(
+                "{c} * {} is not an integer multiple of its base angle",
+                sym.name()
+            )));
         }
-        let n = n.to_integer().to_i64().ok_or_else(|| bad("multiple too large".into()))?;
+        let n = n
+            .to_integer()
+            .to_i64()
+            .ok_or_else(|| bad("multiple too large".into()))?;
         combo.push((base, n));
     }
-    // Determinism: the terms come in monomial order already.
-    let _ = Signed::abs(&Q::one());
     Ok(combo)
 }
 
@@ -425,10 +436,16 @@ mod tests {
         let th = a.sym(Sym::Th1);
         let sq = a.pow(th, 2);
         let s = a.sin(sq);
-        assert!(matches!(a.to_ratfunc(s), Err(Error::UnsupportedAngle { .. })));
+        assert!(matches!(
+            a.to_ratfunc(s),
+            Err(Error::UnsupportedAngle { .. })
+        ));
         let m = a.sym(Sym::M1);
         let s = a.sin(m);
-        assert!(matches!(a.to_ratfunc(s), Err(Error::UnsupportedAngle { .. })));
+        assert!(matches!(
+            a.to_ratfunc(s),
+            Err(Error::UnsupportedAngle { .. })
+        ));
     }
 
     #[test]

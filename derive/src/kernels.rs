@@ -113,9 +113,15 @@ fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
     let entries = m.entries().iter().cloned();
     if m.rows() > 1 && m.cols() > 1 {
         let c = m.cols();
-        entries.enumerate().map(|(k, r)| (format!("{prefix}{}{}", k / c, k % c), r)).collect()
+        entries
+            .enumerate()
+            .map(|(k, r)| (format!("{prefix}{}{}", k / c, k % c), r))
+            .collect()
     } else {
-        entries.enumerate().map(|(k, r)| (format!("{prefix}{k}"), r)).collect()
+        entries
+            .enumerate()
+            .map(|(k, r)| (format!("{prefix}{k}"), r))
+            .collect()
     }
 }
 
@@ -190,7 +196,10 @@ impl Derivation {
                 doc: "Scalars A and B of the output-following control, yddot = A u - B",
                 equation: "Eqs. 30-31",
                 args: vec![Th1, Th1d, Mu],
-                outputs: vec![("A".into(), control.a.clone()), ("B".into(), control.b.clone())],
+                outputs: vec![
+                    ("A".into(), control.a.clone()),
+                    ("B".into(), control.b.clone()),
+                ],
                 shape: Shape::Vector(2),
             },
             Kernel {
@@ -270,7 +279,10 @@ impl Derivation {
                 doc: "Kinetic and potential energy",
                 equation: "Section 2.1",
                 args: vec![Z, Th1, Xd, Zd, Th1d, Th2d],
-                outputs: vec![("T".into(), g.kinetic.clone()), ("V".into(), g.potential.clone())],
+                outputs: vec![
+                    ("T".into(), g.kinetic.clone()),
+                    ("V".into(), g.potential.clone()),
+                ],
                 shape: Shape::Vector(2),
             },
         ];
@@ -278,7 +290,10 @@ impl Derivation {
             let free = k.free_symbols();
             if !free.is_empty() {
                 return Err(Error::CheckFailed {
-                    what: format!("kernel {} depends on {:?} which is not an argument", k.name, free),
+                    what: format!(
+                        "kernel {} depends on {:?} which is not an argument",
+                        k.name, free
+                    ),
                 });
             }
         }
@@ -300,6 +315,8 @@ impl Derivation {
         self.kernels
             .iter()
             .find(|k| k.name == name)
-            .ok_or_else(|| Error::UnknownKernel { name: name.to_owned() })
+            .ok_or_else(|| Error::UnknownKernel {
+                name: name.to_owned(),
+            })
     }
 }

@@ -18,24 +18,44 @@ impl Matrix {
         let r = rows.len();
         let c = rows.first().map_or(0, Vec::len);
         if rows.iter().any(|row| row.len() != c) {
-            return Err(Error::Dimension { op: "from_rows", left: (r, c), right: (0, 0) });
+            return Err(Error::Dimension {
+                op: "from_rows",
+                left: (r, c),
+                right: (0, 0),
+            });
         }
-        Ok(Matrix { rows: r, cols: c, data: rows.into_iter().flatten().collect() })
+        Ok(Matrix {
+            rows: r,
+            cols: c,
+            data: rows.into_iter().flatten().collect(),
+        })
     }
 
     /// A column vector.
     pub fn column(entries: Vec<RatFunc>) -> Matrix {
-        Matrix { rows: entries.len(), cols: 1, data: entries }
+        Matrix {
+            rows: entries.len(),
+            cols: 1,
+            data: entries,
+        }
     }
 
     /// A row vector.
     pub fn row(entries: Vec<RatFunc>) -> Matrix {
-        Matrix { rows: 1, cols: entries.len(), data: entries }
+        Matrix {
+            rows: 1,
+            cols: entries.len(),
+            data: entries,
+        }
     }
 
     /// The zero matrix.
     pub fn zeros(rows: usize, cols: usize) -> Matrix {
-        Matrix { rows, cols, data: vec![RatFunc::zero(); rows * cols] }
+        Matrix {
+            rows,
+            cols,
+            data: vec![RatFunc::zero(); rows * cols],
+        }
     }
 
     /// The identity.
@@ -108,7 +128,12 @@ impl Matrix {
         Ok(p)
     }
 
-    fn zip(&self, other: &Matrix, op: &'static str, f: impl Fn(&RatFunc, &RatFunc) -> RatFunc) -> Result<Matrix> {
+    fn zip(
+        &self,
+        other: &Matrix,
+        op: &'static str,
+        f: impl Fn(&RatFunc, &RatFunc) -> RatFunc,
+    ) -> Result<Matrix> {
         if (self.rows, self.cols) != (other.rows, other.cols) {
             return Err(Error::Dimension {
                 op,
@@ -116,8 +141,17 @@ impl Matrix {
                 right: (other.rows, other.cols),
             });
         }
-        let data = self.data.iter().zip(&other.data).map(|(a, b)| f(a, b)).collect();
-        Ok(Matrix { rows: self.rows, cols: self.cols, data })
+        let data = self
+            .data
+            .iter()
+            .zip(&other.data)
+            .map(|(a, b)| f(a, b))
+            .collect();
+        Ok(Matrix {
+            rows: self.rows,
+            cols: self.cols,
+            data,
+        })
     }
 
     /// Sum.
@@ -132,19 +166,31 @@ impl Matrix {
 
     /// Product with a scalar.
     pub fn scale(&self, k: &RatFunc) -> Matrix {
-        Matrix { rows: self.rows, cols: self.cols, data: self.data.iter().map(|a| a.mul(k)).collect() }
+        Matrix {
+            rows: self.rows,
+            cols: self.cols,
+            data: self.data.iter().map(|a| a.mul(k)).collect(),
+        }
     }
 
     /// Applies a fallible map to every entry.
     pub fn try_map(&self, f: impl Fn(&RatFunc) -> Result<RatFunc>) -> Result<Matrix> {
         let data = self.data.iter().map(f).collect::<Result<Vec<_>>>()?;
-        Ok(Matrix { rows: self.rows, cols: self.cols, data })
+        Ok(Matrix {
+            rows: self.rows,
+            cols: self.cols,
+            data,
+        })
     }
 
     /// The single entry of a `1 x 1` matrix.
     pub fn scalar(&self) -> Result<RatFunc> {
         if (self.rows, self.cols) != (1, 1) {
-            return Err(Error::Dimension { op: "scalar", left: (self.rows, self.cols), right: (1, 1) });
+            return Err(Error::Dimension {
+                op: "scalar",
+                left: (self.rows, self.cols),
+                right: (1, 1),
+            });
         }
         Ok(self.data[0].clone())
     }
@@ -164,7 +210,11 @@ impl Matrix {
     /// 4 x 4, and cancellation keeps every minor compact).
     pub fn det(&self) -> Result<RatFunc> {
         if self.rows != self.cols {
-            return Err(Error::Dimension { op: "det", left: (self.rows, self.cols), right: (0, 0) });
+            return Err(Error::Dimension {
+                op: "det",
+                left: (self.rows, self.cols),
+                right: (0, 0),
+            });
         }
         Ok(self.det_unchecked())
     }
@@ -183,7 +233,11 @@ impl Matrix {
                     }
                     let minor = self.minor(0, j).det_unchecked();
                     let term = a.mul(&minor);
-                    acc = if j % 2 == 0 { acc.add(&term) } else { acc.sub(&term) };
+                    acc = if j % 2 == 0 {
+                        acc.add(&term)
+                    } else {
+                        acc.sub(&term)
+                    };
                 }
                 acc
             }
@@ -198,7 +252,11 @@ impl Matrix {
                 data.push(self.get(i, j).clone());
             }
         }
-        Matrix { rows: n - 1, cols: n - 1, data }
+        Matrix {
+            rows: n - 1,
+            cols: n - 1,
+            data,
+        }
     }
 
     /// Inverse by the adjugate: `adj(A) / det(A)`. An error [`Error::SingularMatrix`] when the
@@ -206,7 +264,9 @@ impl Matrix {
     pub fn inverse(&self, name: &str) -> Result<Matrix> {
         let det = self.det()?;
         if det.is_zero() {
-            return Err(Error::SingularMatrix { name: name.to_owned() });
+            return Err(Error::SingularMatrix {
+                name: name.to_owned(),
+            });
         }
         let n = self.rows;
         let inv_det = det.recip()?;

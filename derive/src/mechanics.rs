@@ -105,7 +105,10 @@ pub struct Geometry {
 pub fn geometry() -> Result<Geometry> {
     let (x, z, l) = (sym(Sym::X), sym(Sym::Z), sym(Sym::L));
     let mt = sym(Sym::M1) + &sym(Sym::M2);
-    let hip = [&x + &(&l * &sin(&[(Sym::Th1, 1)])?), &z + &(&l * &cos(&[(Sym::Th1, 1)])?)];
+    let hip = [
+        &x + &(&l * &sin(&[(Sym::Th1, 1)])?),
+        &z + &(&l * &cos(&[(Sym::Th1, 1)])?),
+    ];
     let fore_foot = [
         &hip[0] - &(&l * &sin(&[(Sym::Th1, 1), (Sym::Alpha, -1)])?),
         &hip[1] - &(&l * &cos(&[(Sym::Th1, 1), (Sym::Alpha, -1)])?),
@@ -117,7 +120,12 @@ pub fn geometry() -> Result<Geometry> {
             + &(&(&sym(Sym::I1) * &sym(Sym::Th1d)) * &sym(Sym::Th1d))
             + &(&(&sym(Sym::I2) * &sym(Sym::Th2d)) * &sym(Sym::Th2d)));
     let potential = &(&mt * &sym(Sym::G)) * &hip[1];
-    Ok(Geometry { hip, fore_foot, kinetic, potential })
+    Ok(Geometry {
+        hip,
+        fore_foot,
+        kinetic,
+        potential,
+    })
 }
 
 /// The equations of motion in the form `M(q) qddot + h(q, qdot)` (Eqs. 2, 19, 20).
@@ -145,16 +153,22 @@ pub fn dynamics() -> Result<Dynamics> {
         let p = lagrangian.diff(QD_SYMS[i]);
         let el = &time_derivative(&p) - &lagrangian.diff(Q_SYMS[i]);
         let mut rest = el.clone();
-        for j in 0..4 {
-            let mij = el.diff(QDD_SYMS[j]);
-            rest = &rest - &(&mij * &sym(QDD_SYMS[j]));
+        for (j, qdd) in QDD_SYMS.iter().enumerate() {
+            let mij = el.diff(*qdd);
+            rest = &rest - &(&mij * &sym(*qdd));
             mass.set(i, j, mij);
         }
         bias.push(rest);
     }
     let mass_inv = mass.inverse("M")?;
     let input_map = Matrix::column(vec![int(0), int(0), int(1), int(-1)]);
-    Ok(Dynamics { geometry, mass, mass_inv, bias: Matrix::column(bias), input_map })
+    Ok(Dynamics {
+        geometry,
+        mass,
+        mass_inv,
+        bias: Matrix::column(bias),
+        input_map,
+    })
 }
 
 /// The stance contact and its friction (Eqs. 21, 24, 36, 38).
@@ -214,10 +228,16 @@ pub fn stance(dynamics: &Dynamics, floor: Floor) -> Result<Stance> {
     let forces = su_minus_h.add(&jhat.transpose().scale(&normal_force))?;
     let lambda = &normal_force * contact.jacobian.get(0, 1);
     let accel = dynamics.mass_inv.mul(&forces)?;
-    let projection = Matrix::identity(4).sub(
-        &jhat.transpose().mul(&j_minv)?.scale(&lambda_den.recip()?),
-    )?;
-    Ok(Stance { contact, lambda, normal_force, lambda_den, projection, accel })
+    let projection =
+        Matrix::identity(4).sub(&jhat.transpose().mul(&j_minv)?.scale(&lambda_den.recip()?))?;
+    Ok(Stance {
+        contact,
+        lambda,
+        normal_force,
+        lambda_den,
+        projection,
+        accel,
+    })
 }
 
 /// The output-following control (Section 3.2, Eqs. 30-31).
@@ -231,7 +251,11 @@ pub struct Control {
 
 /// Derives `A` and `B` so that `yddot = A u - B` (Eq. 30).
 pub fn control(dynamics: &Dynamics, stance: &Stance) -> Result<Control> {
-    let st_minv_y = dynamics.input_map.transpose().mul(&dynamics.mass_inv)?.mul(&stance.projection)?;
+    let st_minv_y = dynamics
+        .input_map
+        .transpose()
+        .mul(&dynamics.mass_inv)?
+        .mul(&stance.projection)?;
     Ok(Control {
         a: st_minv_y.mul(&dynamics.input_map)?.scalar()?,
         b: st_minv_y.mul(&dynamics.bias)?.scalar()?,
@@ -269,13 +293,19 @@ pub struct Impact {
 pub fn floor_gap(floor: Floor, x: &RatFunc, z: &RatFunc) -> RatFunc {
     match floor {
         Floor::Level => z.clone(),
-        Floor::Slope => &(z * &RatFunc::cos_of(BaseAngle::Phi)) + &(x * &RatFunc::sin_of(BaseAngle::Phi)),
+        Floor::Slope => {
+            &(z * &RatFunc::cos_of(BaseAngle::Phi)) + &(x * &RatFunc::sin_of(BaseAngle::Phi))
+        }
     }
 }
 
 /// Derives the impact map for a set of constraints (evaluated at the general `th1`; the paper
 /// evaluates at `th1 = alpha/2`, or `alpha/2 + phi` on the slope).
-pub fn impact(dynamics: &Dynamics, floor: Floor, constraints: &[ImpactConstraint]) -> Result<Impact> {
+pub fn impact(
+    dynamics: &Dynamics,
+    floor: Floor,
+    constraints: &[ImpactConstraint],
+) -> Result<Impact> {
     let g = &dynamics.geometry;
     let mut rows = Vec::new();
     for c in constraints {
@@ -287,12 +317,24 @@ pub fn impact(dynamics: &Dynamics, floor: Floor, constraints: &[ImpactConstraint
         rows.push(f);
     }
     let jacobian = Matrix::jacobian(&rows, &Q_SYMS);
-    let x_i = jacobian.mul(&dynamics.mass_inv)?.mul(&jacobian.transpose())?;
+    let x_i = jacobian
+        .mul(&dynamics.mass_inv)?
+        .mul(&jacobian.transpose())?;
     let x_inv = x_i.inverse("X_I")?;
     let qd = Matrix::column(QD_SYMS.iter().map(|s| sym(*s)).collect());
     let impulse = x_inv.mul(&jacobian.mul(&qd)?)?.scale(&int(-1));
-    let velocity = qd.add(&dynamics.mass_inv.mul(&jacobian.transpose())?.mul(&impulse)?)?;
-    Ok(Impact { jacobian, x_i, impulse, velocity })
+    let velocity = qd.add(
+        &dynamics
+            .mass_inv
+            .mul(&jacobian.transpose())?
+            .mul(&impulse)?,
+    )?;
+    Ok(Impact {
+        jacobian,
+        x_i,
+        impulse,
+        velocity,
+    })
 }
 
 /// The desired output `y_d(t)` of Section 3.2 on `0 <= t < T_set`, and its first two time
@@ -328,7 +370,9 @@ pub fn check_desired_output() -> Result<()> {
     ];
     for (got, want, what) in checks {
         if got != want {
-            return Err(Error::CheckFailed { what: what.to_owned() });
+            return Err(Error::CheckFailed {
+                what: what.to_owned(),
+            });
         }
     }
     Ok(())

@@ -65,7 +65,11 @@ impl Mono {
 
     /// Slots with a nonzero exponent, with the exponent.
     pub fn factors(&self) -> impl Iterator<Item = (usize, u8)> + '_ {
-        self.0.iter().enumerate().filter(|(_, e)| **e > 0).map(|(i, e)| (i, *e))
+        self.0
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| **e > 0)
+            .map(|(i, e)| (i, *e))
     }
 }
 
@@ -147,7 +151,13 @@ impl Poly {
 
     /// A constant.
     pub fn constant(c: Q) -> Poly {
-        if c.is_zero() { Poly::zero() } else { Poly { terms: vec![(Mono::ONE, c)] } }
+        if c.is_zero() {
+            Poly::zero()
+        } else {
+            Poly {
+                terms: vec![(Mono::ONE, c)],
+            }
+        }
     }
 
     /// An integer constant.
@@ -157,7 +167,9 @@ impl Poly {
 
     /// An atom to the first power.
     pub fn atom(atom: Atom) -> Poly {
-        Poly { terms: vec![(Mono::atom(atom.slot()), Q::one())] }
+        Poly {
+            terms: vec![(Mono::atom(atom.slot()), Q::one())],
+        }
     }
 
     /// A single term.
@@ -258,7 +270,9 @@ impl Poly {
 
     /// Negation.
     pub fn neg(&self) -> Poly {
-        Poly { terms: self.terms.iter().map(|(m, c)| (*m, -c)).collect() }
+        Poly {
+            terms: self.terms.iter().map(|(m, c)| (*m, -c)).collect(),
+        }
     }
 
     /// Difference.
@@ -271,7 +285,9 @@ impl Poly {
         if k.is_zero() {
             return Poly::zero();
         }
-        Poly { terms: self.terms.iter().map(|(m, c)| (*m, c * k)).collect() }
+        Poly {
+            terms: self.terms.iter().map(|(m, c)| (*m, c * k)).collect(),
+        }
     }
 
     /// Product with one term, without trig reduction (monomial order is preserved).
@@ -279,7 +295,13 @@ impl Poly {
         if k.is_zero() {
             return Poly::zero();
         }
-        Poly { terms: self.terms.iter().map(|(mm, c)| (mm.mul(m), c * k)).collect() }
+        Poly {
+            terms: self
+                .terms
+                .iter()
+                .map(|(mm, c)| (mm.mul(m), c * k))
+                .collect(),
+        }
     }
 
     /// Product in the free polynomial ring (no trig reduction).
@@ -350,7 +372,11 @@ impl Poly {
                     for j in 0..=half {
                         let mut t = base;
                         t.0[s] += 2 * j as u8;
-                        let sign = if j % 2 == 0 { BigInt::one() } else { -BigInt::one() };
+                        let sign = if j % 2 == 0 {
+                            BigInt::one()
+                        } else {
+                            -BigInt::one()
+                        };
                         next.push((t, &cc * Q::from_integer(&binom * sign)));
                         binom = binom * BigInt::from(half - j) / BigInt::from(j + 1);
                     }
@@ -364,12 +390,16 @@ impl Poly {
 
     /// Partial derivative with respect to one atom slot, treating all atoms as independent.
     pub fn diff_atom(&self, slot: usize) -> Poly {
-        let terms = self.terms.iter().filter(|(m, _)| m.0[slot] > 0).map(|(m, c)| {
-            let mut mm = *m;
-            let e = mm.0[slot];
-            mm.0[slot] -= 1;
-            (mm, c * q_int(i64::from(e)))
-        });
+        let terms = self
+            .terms
+            .iter()
+            .filter(|(m, _)| m.0[slot] > 0)
+            .map(|(m, c)| {
+                let mut mm = *m;
+                let e = mm.0[slot];
+                mm.0[slot] -= 1;
+                (mm, c * q_int(i64::from(e)))
+            });
         Poly::from_terms(terms)
     }
 
@@ -394,11 +424,16 @@ impl Poly {
     /// Leading coefficient in one slot.
     fn lc_in(&self, slot: usize) -> Poly {
         let d = self.degree_in(slot);
-        Poly::from_terms(self.terms.iter().filter(|(m, _)| m.0[slot] == d).map(|(m, c)| {
-            let mut mm = *m;
-            mm.0[slot] = 0;
-            (mm, c.clone())
-        }))
+        Poly::from_terms(
+            self.terms
+                .iter()
+                .filter(|(m, _)| m.0[slot] == d)
+                .map(|(m, c)| {
+                    let mut mm = *m;
+                    mm.0[slot] = 0;
+                    (mm, c.clone())
+                }),
+        )
     }
 
     /// Exact quotient in the free polynomial ring, if `divisor` divides `self`.
@@ -634,8 +669,10 @@ fn coprime_by_images(a: &Poly, b: &Poly) -> bool {
         if !(a.contains(slot) && b.contains(slot)) {
             continue;
         }
-        let (Some(ia), Some(ib)) = (univariate_image(a, slot, &point), univariate_image(b, slot, &point))
-        else {
+        let (Some(ia), Some(ib)) = (
+            univariate_image(a, slot, &point),
+            univariate_image(b, slot, &point),
+        ) else {
             return false;
         };
         let degrees_kept = ia.last() != Some(&0) && ib.last() != Some(&0);
@@ -661,7 +698,9 @@ fn prem(a: &Poly, b: &Poly, slot: usize) -> Poly {
         let lr = r.lc_in(slot);
         let mut shift = Mono::ONE;
         shift.0[slot] = dr - db;
-        r = lb.mul_raw(&r).sub(&lr.mul_raw(&b.mul_term(&shift, &Q::one())));
+        r = lb
+            .mul_raw(&r)
+            .sub(&lr.mul_raw(&b.mul_term(&shift, &Q::one())));
     }
     r
 }
@@ -680,8 +719,8 @@ fn gcd(a: &Poly, b: &Poly) -> Poly {
         let ma = a.monomial_content();
         let mb = b.monomial_content();
         let mut e = [0u8; NUM_ATOMS];
-        for i in 0..NUM_ATOMS {
-            e[i] = ma.0[i].min(mb.0[i]);
+        for (x, (p, q)) in e.iter_mut().zip(ma.0.iter().zip(mb.0.iter())) {
+            *x = (*p).min(*q);
         }
         return Poly::term(Mono(e), Q::one());
     }
@@ -694,7 +733,11 @@ fn gcd(a: &Poly, b: &Poly) -> Poly {
     }
     // An atom only one of them contains: the gcd divides every coefficient in it.
     if let Some(slot) = (0..NUM_ATOMS).find(|&s| a.contains(s) != b.contains(s)) {
-        return if a.contains(slot) { gcd_with_coeffs(b, a, slot) } else { gcd_with_coeffs(a, b, slot) };
+        return if a.contains(slot) {
+            gcd_with_coeffs(b, a, slot)
+        } else {
+            gcd_with_coeffs(a, b, slot)
+        };
     }
     // Otherwise eliminate the shared atom of lowest degree: the remainder sequence is shortest.
     let Some(slot) = (0..NUM_ATOMS)
@@ -716,8 +759,11 @@ fn gcd(a: &Poly, b: &Poly) -> Poly {
         return Poly::one();
     };
     let (pa, pb) = (pa.primitive(), pb.primitive());
-    let (mut x, mut y) =
-        if pa.degree_in(slot) >= pb.degree_in(slot) { (pa, pb) } else { (pb, pa) };
+    let (mut x, mut y) = if pa.degree_in(slot) >= pb.degree_in(slot) {
+        (pa, pb)
+    } else {
+        (pb, pa)
+    };
     while !y.is_zero() {
         let r = prem(&x, &y, slot);
         x = y;
@@ -735,7 +781,11 @@ fn gcd(a: &Poly, b: &Poly) -> Poly {
             break;
         }
     }
-    let g = if x.degree_in(slot) == 0 { Poly::one() } else { x };
+    let g = if x.degree_in(slot) == 0 {
+        Poly::one()
+    } else {
+        x
+    };
     normalize(&c.mul_raw(&g))
 }
 

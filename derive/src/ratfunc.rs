@@ -14,8 +14,9 @@ use crate::error::{Error, Result};
 use crate::poly::{Poly, Q};
 use crate::symbol::{Atom, BaseAngle, NUM_ATOMS, Sym};
 
-/// A quotient of two reduced polynomials.
-#[derive(Clone, Hash)]
+/// A quotient of two reduced polynomials. (No `Hash`: equality is semantic, see the module
+/// docs, and a structural hash would disagree with it.)
+#[derive(Clone)]
 pub struct RatFunc {
     num: Poly,
     den: Poly,
@@ -44,7 +45,10 @@ impl Eq for RatFunc {}
 
 impl From<Poly> for RatFunc {
     fn from(p: Poly) -> Self {
-        RatFunc { num: p, den: Poly::one() }
+        RatFunc {
+            num: p,
+            den: Poly::one(),
+        }
     }
 }
 
@@ -102,7 +106,10 @@ impl RatFunc {
             }
         };
         let (content, den) = den.content_primitive();
-        Ok(RatFunc { num: num.scale(&content.recip()), den })
+        Ok(RatFunc {
+            num: num.scale(&content.recip()),
+            den,
+        })
     }
 
     /// The numerator.
@@ -127,7 +134,11 @@ impl RatFunc {
 
     /// The constant value, if constant.
     pub fn as_constant(&self) -> Option<Q> {
-        if self.is_poly() { self.num.as_constant() } else { None }
+        if self.is_poly() {
+            self.num.as_constant()
+        } else {
+            None
+        }
     }
 
     /// Sum, by Henrici's rule: with `g = gcd(b, d)`,
@@ -170,7 +181,10 @@ impl RatFunc {
 
     /// Negation.
     pub fn neg(&self) -> RatFunc {
-        RatFunc { num: self.num.neg(), den: self.den.clone() }
+        RatFunc {
+            num: self.num.neg(),
+            den: self.den.clone(),
+        }
     }
 
     /// Product, cancelling crosswise: `(a/b)(c/d) = ((a/g1)(c/g2)) / ((b/g2)(d/g1))` with
@@ -186,7 +200,13 @@ impl RatFunc {
         let (a, b, c, d) = (&self.num, &self.den, &other.num, &other.den);
         let g1 = a.gcd(d);
         let g2 = c.gcd(b);
-        let split = |p: &Poly, g: &Poly| if g.is_constant() { Some(p.clone()) } else { p.div_exact(g) };
+        let split = |p: &Poly, g: &Poly| {
+            if g.is_constant() {
+                Some(p.clone())
+            } else {
+                p.div_exact(g)
+            }
+        };
         match (split(a, &g1), split(d, &g1), split(c, &g2), split(b, &g2)) {
             (Some(a), Some(d), Some(c), Some(b)) => Self::normalised(a.mul(&c), b.mul(&d)),
             _ => Self::cancelled(a.mul(c), b.mul(d)),
@@ -199,12 +219,18 @@ impl RatFunc {
             return RatFunc::zero();
         }
         let (content, den) = den.content_primitive();
-        RatFunc { num: num.scale(&content.recip()), den }
+        RatFunc {
+            num: num.scale(&content.recip()),
+            den,
+        }
     }
 
     /// Product with a rational constant.
     pub fn scale(&self, k: &Q) -> RatFunc {
-        RatFunc { num: self.num.scale(k), den: self.den.clone() }
+        RatFunc {
+            num: self.num.scale(k),
+            den: self.den.clone(),
+        }
     }
 
     /// Reciprocal; an error for zero.
@@ -221,7 +247,10 @@ impl RatFunc {
     pub fn powi(&self, n: i32) -> Result<RatFunc> {
         let base = if n < 0 { self.recip()? } else { self.clone() };
         let e = n.unsigned_abs();
-        Ok(RatFunc { num: base.num.pow(e), den: base.den.pow(e) })
+        Ok(RatFunc {
+            num: base.num.pow(e),
+            den: base.den.pow(e),
+        })
     }
 
     fn cancelled(num: Poly, den: Poly) -> RatFunc {

@@ -32,8 +32,12 @@ pub const NUM_ANGLES: usize = 4;
 
 impl BaseAngle {
     /// All base angles, in slot order.
-    pub const ALL: [BaseAngle; NUM_ANGLES] =
-        [BaseAngle::Th1, BaseAngle::Th2, BaseAngle::HalfAlpha, BaseAngle::Phi];
+    pub const ALL: [BaseAngle; NUM_ANGLES] = [
+        BaseAngle::Th1,
+        BaseAngle::Th2,
+        BaseAngle::HalfAlpha,
+        BaseAngle::Phi,
+    ];
 
     /// The atom slot of `sin` of this angle.
     pub const fn sin_slot(self) -> usize {
@@ -188,7 +192,9 @@ impl Sym {
             .iter()
             .copied()
             .find(|s| s.name() == name)
-            .ok_or_else(|| Error::UnknownSymbol { name: name.to_owned() })
+            .ok_or_else(|| Error::UnknownSymbol {
+                name: name.to_owned(),
+            })
     }
 }
 
@@ -208,9 +214,17 @@ impl Atom {
     pub fn of_slot(slot: usize) -> Option<Atom> {
         if slot < 2 * NUM_ANGLES {
             let angle = BaseAngle::ALL[slot / 2];
-            return Some(if slot % 2 == 0 { Atom::Sin(angle) } else { Atom::Cos(angle) });
+            return Some(if slot.is_multiple_of(2) {
+                Atom::Sin(angle)
+            } else {
+                Atom::Cos(angle)
+            });
         }
-        Sym::ALL.iter().copied().find(|s| s.slot() == slot).map(Atom::Sym)
+        Sym::ALL
+            .iter()
+            .copied()
+            .find(|s| s.slot() == slot)
+            .map(Atom::Sym)
     }
 
     /// The slot of this atom.

@@ -39,7 +39,11 @@ mod tests {
     fn one_minus_cos_alpha_is_twice_sin_squared_half() {
         let (_, c) = sin_cos_multiple(BaseAngle::HalfAlpha, 2);
         let s = Poly::atom(Atom::Sin(BaseAngle::HalfAlpha));
-        assert_eq!(Poly::one().sub(&c), s.mul(&s).scale(&Poly::int(2).as_constant().unwrap_or_default()));
+        assert_eq!(
+            Poly::one().sub(&c),
+            s.mul(&s)
+                .scale(&Poly::int(2).as_constant().unwrap_or_default())
+        );
     }
 
     #[test]

@@ -61,12 +61,21 @@ fn every_kernel_matches_the_sympy_reference() {
         let json: serde_json::Value = serde_json::from_str(&text).expect("valid json");
         let names: Vec<String> = serde_json::from_value(json["inputs"].clone()).expect("inputs");
         let outs: Vec<String> = serde_json::from_value(json["outputs"].clone()).expect("outputs");
-        assert_eq!(outs.len(), kernel.outputs.len(), "{}: output count", kernel.name);
+        assert_eq!(
+            outs.len(),
+            kernel.outputs.len(),
+            "{}: output count",
+            kernel.name
+        );
         for (o, (name, _)) in outs.iter().zip(&kernel.outputs) {
             assert_eq!(o, name, "{}: output order", kernel.name);
         }
         let points = json["points"].as_array().expect("points");
-        assert!(points.len() >= 200, "{}: at least 200 reference points", kernel.name);
+        assert!(
+            points.len() >= 200,
+            "{}: at least 200 reference points",
+            kernel.name
+        );
         let mut worst = 0.0f64;
         for p in points {
             let parse = |v: &serde_json::Value| -> Vec<f64> {
