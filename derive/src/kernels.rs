@@ -5,7 +5,7 @@ use std::collections::BTreeSet;
 
 use crate::error::{Error, Result};
 use crate::matrix::Matrix;
-use crate::mechanics::{self, Floor, ImpactConstraint};
+use crate::mechanics::{self, Floor, ImpactConstraint, sym};
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, Sym, SymKind};
 
@@ -158,6 +158,18 @@ impl Derivation {
             mechanics::time_derivative(&g.fore_foot[0]),
             mechanics::time_derivative(&g.fore_foot[1]),
         ];
+        // Closed loop (Eq. 27 with u from Eq. 31): with u = (v + B) / A the output obeys
+        // yddot = v exactly, and the accelerations depend on (th1, th1d, mu, v) only.
+        let u_closed = (&sym(V) + &control.b).div(&control.a)?;
+        let closed = level.accel.try_map(|r| r.substitute(Atom::Sym(U), &u_closed))?;
+        let mut closed_outputs = named("qdd", &closed);
+        closed_outputs.push(("u".into(), u_closed.clone()));
+        let closed_jac = Matrix::jacobian(closed.entries(), &[Th1, Th1d, Mu, V]);
+        let slope_accel = substitute_u_zero(&slope.accel)?;
+        let slope_jac = Matrix::jacobian(slope_accel.entries(), &[Th1, Th1d, Mu]);
+        let impact_vars = [Th1, Xd, Zd, Th1d, Th2d];
+        let impact2_jac = Matrix::jacobian(impact2.velocity.entries(), &impact_vars);
+        let impact_slope_jac = Matrix::jacobian(impact_slope.velocity.entries(), &impact_vars);
         let kernels = vec![
             Kernel {
                 name: "mass_matrix",
@@ -260,6 +272,46 @@ impl Derivation {
                 args: impact_args,
                 outputs: impact_outputs(&impact2_slope, vertical(&impact2_slope)),
                 shape: Shape::Parts,
+            },
+            Kernel {
+                name: "closed_loop_level",
+                doc: "Accelerations qddot and torque u of the active walker under the output-following control, with yddot = v",
+                equation: "Eqs. 27, 31",
+                args: vec![Th1, Th1d, Mu, V],
+                outputs: closed_outputs,
+                shape: Shape::Parts,
+            },
+            Kernel {
+                name: "closed_loop_level_jacobian",
+                doc: "Partial derivatives of the closed-loop accelerations by (th1, th1d, mu, v), for implicit integrators and variational equations",
+                equation: "Eqs. 27, 31",
+                args: vec![Th1, Th1d, Mu, V],
+                outputs: named("J", &closed_jac),
+                shape: Shape::Matrix(4, 4),
+            },
+            Kernel {
+                name: "accel_slope_jacobian",
+                doc: "Partial derivatives of the passive wheel's accelerations on the slope by (th1, th1d, mu)",
+                equation: "Eq. 27 with Eqs. 36, 38",
+                args: vec![Th1, Th1d, Mu],
+                outputs: named("J", &slope_jac),
+                shape: Shape::Matrix(4, 3),
+            },
+            Kernel {
+                name: "impact2_level_jacobian",
+                doc: "Partial derivatives of the post-impact velocities (two constraints) by (th1, xd, zd, th1d, th2d)",
+                equation: "Eqs. 12-16",
+                args: impact_vars.to_vec(),
+                outputs: named("J", &impact2_jac),
+                shape: Shape::Matrix(4, 5),
+            },
+            Kernel {
+                name: "impact_slope_jacobian",
+                doc: "Partial derivatives of the post-impact velocities on the slope by (th1, xd, zd, th1d, th2d)",
+                equation: "Eqs. 39-42",
+                args: impact_vars.to_vec(),
+                outputs: named("J", &impact_slope_jac),
+                shape: Shape::Matrix(4, 5),
             },
             Kernel {
                 name: "fore_foot",

@@ -32,6 +32,16 @@ pub enum KernelName {
     ImpactSlope,
     /// `impact2_slope`: slope impact with the rear foot on the slope (Eq. 46).
     Impact2Slope,
+    /// `closed_loop_level`: `qddot` and `u` under the output-following control (Eqs. 27, 31).
+    ClosedLoopLevel,
+    /// `closed_loop_level_jacobian`: partials of the closed-loop `qddot` by `(th1, th1d, mu, v)`.
+    ClosedLoopLevelJacobian,
+    /// `accel_slope_jacobian`: partials of the slope `qddot` by `(th1, th1d, mu)`.
+    AccelSlopeJacobian,
+    /// `impact2_level_jacobian`: partials of `qdot+` (Eqs. 12-16) by `(th1, xd, zd, th1d, th2d)`.
+    Impact2LevelJacobian,
+    /// `impact_slope_jacobian`: partials of `qdot+` (Eqs. 39-42) by `(th1, xd, zd, th1d, th2d)`.
+    ImpactSlopeJacobian,
     /// `fore_foot`: position and velocity of the fore foot (Eqs. 3, 39).
     ForeFoot,
     /// `energy`: kinetic and potential energy.
@@ -39,7 +49,7 @@ pub enum KernelName {
 }
 
 /// `(kernel, name, paper equations)`, in catalogue (and default file) order.
-const TABLE: [(KernelName, &str, &str); 14] = [
+const TABLE: [(KernelName, &str, &str); 19] = [
     (KernelName::MassMatrix, "mass_matrix", "Eq. 2"),
     (KernelName::Bias, "bias", "Eq. 20"),
     (KernelName::LambdaLevel, "lambda_level", "Eqs. 22-23"),
@@ -64,13 +74,34 @@ const TABLE: [(KernelName, &str, &str); 14] = [
     (KernelName::Impact2Level, "impact2_level", "Eqs. 12-16"),
     (KernelName::ImpactSlope, "impact_slope", "Eqs. 39-42"),
     (KernelName::Impact2Slope, "impact2_slope", "Eq. 46"),
+    (KernelName::ClosedLoopLevel, "closed_loop_level", "Eqs. 27, 31"),
+    (
+        KernelName::ClosedLoopLevelJacobian,
+        "closed_loop_level_jacobian",
+        "Eqs. 27, 31",
+    ),
+    (
+        KernelName::AccelSlopeJacobian,
+        "accel_slope_jacobian",
+        "Eq. 27 with Eqs. 36, 38",
+    ),
+    (
+        KernelName::Impact2LevelJacobian,
+        "impact2_level_jacobian",
+        "Eqs. 12-16",
+    ),
+    (
+        KernelName::ImpactSlopeJacobian,
+        "impact_slope_jacobian",
+        "Eqs. 39-42",
+    ),
     (KernelName::ForeFoot, "fore_foot", "Eqs. 3, 39"),
     (KernelName::Energy, "energy", "-"),
 ];
 
 impl KernelName {
     /// Every kernel, in catalogue order.
-    pub const ALL: [KernelName; 14] = [
+    pub const ALL: [KernelName; 19] = [
         KernelName::MassMatrix,
         KernelName::Bias,
         KernelName::LambdaLevel,
@@ -83,6 +114,11 @@ impl KernelName {
         KernelName::Impact2Level,
         KernelName::ImpactSlope,
         KernelName::Impact2Slope,
+        KernelName::ClosedLoopLevel,
+        KernelName::ClosedLoopLevelJacobian,
+        KernelName::AccelSlopeJacobian,
+        KernelName::Impact2LevelJacobian,
+        KernelName::ImpactSlopeJacobian,
         KernelName::ForeFoot,
         KernelName::Energy,
     ];
@@ -126,18 +162,28 @@ impl KernelName {
             | KernelName::ControlLevel
             | KernelName::AccelLevel
             | KernelName::Impact3Level
-            | KernelName::Impact2Level => Some(Floor::Level),
+            | KernelName::Impact2Level
+            | KernelName::ClosedLoopLevel
+            | KernelName::ClosedLoopLevelJacobian
+            | KernelName::Impact2LevelJacobian => Some(Floor::Level),
             KernelName::LambdaSlope
             | KernelName::AccelSlope
             | KernelName::ImpactSlope
-            | KernelName::Impact2Slope => Some(Floor::Slope),
+            | KernelName::Impact2Slope
+            | KernelName::AccelSlopeJacobian
+            | KernelName::ImpactSlopeJacobian => Some(Floor::Slope),
         }
     }
 
     /// Whether the kernel exists only for an actuated torso.
     #[must_use]
     pub fn needs_actuation(self) -> bool {
-        self == KernelName::ControlLevel
+        matches!(
+            self,
+            KernelName::ControlLevel
+                | KernelName::ClosedLoopLevel
+                | KernelName::ClosedLoopLevelJacobian
+        )
     }
 
     /// Whether a walker with this floor and torso has the kernel.
