@@ -1,0 +1,354 @@
+//! The walker models: which generated kernels describe the stance phase and the impact, and the
+//! parameters that go with them.
+//!
+//! Two setups of the paper are modelled: the active walker on level ground (Sections 2-4) and the
+//! passive wheel on a slope (Section 5). Each exists in a fast variant with Table 1 compiled into
+//! the kernels ([`crate::kernels::active_level`], [`crate::kernels::passive_slope`]) and a general
+//! variant that takes every parameter at run time ([`crate::kernels::general_level`],
+//! [`crate::kernels::general_slope`]) for scene files.
+//!
+//! Every physical quantity comes from a kernel; this module only dispatches.
+
+use serde::Serialize;
+
+use crate::kernels::{active_level, general_level, general_slope, passive_slope};
+
+/// The physical parameters of the walker (Table 1 and `g`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Physical {
+    /// Mass of the rimless wheel `m1` (kg).
+    pub m1: f64,
+    /// Mass of the torso `m2` (kg).
+    pub m2: f64,
+    /// Leg length `l` (m).
+    pub l: f64,
+    /// Inertia moment of the wheel `I1` (kg m^2).
+    pub i1: f64,
+    /// Inertia moment of the torso `I2` (kg m^2).
+    pub i2: f64,
+    /// Gravitational acceleration `g` (m/s^2).
+    pub g: f64,
+    /// Angle between neighbouring spokes `alpha` (rad).
+    pub alpha: f64,
+}
+
+impl Physical {
+    /// Table 1 of the paper with `g = 9.81`: the values compiled into the `active_level` and
+    /// `passive_slope` kernels (`scenes/active-level.toml`, `scenes/passive-slope.toml`).
+    pub const TABLE1: Physical = Physical {
+        m1: 2.0,
+        m2: 1.0,
+        l: 1.0,
+        i1: 0.5,
+        i2: 1.0,
+        g: 9.81,
+        alpha: std::f64::consts::PI / 6.0,
+    };
+
+    /// Total mass `m_t = m1 + m2` (Eq. 2), used in the specific resistance.
+    pub fn total_mass(&self) -> f64 {
+        self.m1 + self.m2
+    }
+}
+
+/// Parameters of the friction law and of the output-following control.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Runtime {
+    /// Coefficient of sliding friction `mu0` (Eqs. 26, 37).
+    pub mu0: f64,
+    /// Sharpness `c` of the tanh friction law (s/m).
+    pub c: f64,
+    /// Duration `T_set` of the `y_d` ramp (s; active walker only).
+    pub t_set: f64,
+    /// Proportional gain `K_P` (Eq. 32; active walker only).
+    pub k_p: f64,
+    /// Derivative gain `K_D` (Eq. 32; active walker only).
+    pub k_d: f64,
+    /// Slope angle `phi` (rad; passive wheel only, 0 on level ground).
+    pub phi: f64,
+}
+
+impl Default for Runtime {
+    /// The paper's settings: `c = 100`, `K_P = K_D = 0`, `T_set = 0.3`, `mu0 = 0.4`, `phi = 0`.
+    fn default() -> Self {
+        Self {
+            mu0: 0.4,
+            c: 100.0,
+            t_set: 0.3,
+            k_p: 0.0,
+            k_d: 0.0,
+            phi: 0.0,
+        }
+    }
+}
+
+/// Which floor and torso the model has.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Kind {
+    /// The active walker on level ground (Sections 2-4).
+    ActiveLevel,
+    /// The passive wheel on a slope (Section 5).
+    PassiveSlope,
+}
+
+#[allow(
+    clippy::large_enum_variant,
+    reason = "one model per walk; the prepared constants are read on every kernel call, so they stay inline"
+)]
+#[derive(Clone, Copy, Debug)]
+enum Kernels {
+    ActiveLevel(active_level::Prepared),
+    GeneralLevel(general_level::Prepared),
+    PassiveSlope(passive_slope::Prepared),
+    GeneralSlope(general_slope::Prepared),
+}
+
+/// The result of an impact kernel evaluated at the pre-impact state.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ImpactResult {
+    /// The impulses of the impact that is applied (`impact2_level`: fore foot and torso lock;
+    /// `impact_slope`: fore foot).
+    pub impulses: [f64; 2],
+    /// The rear-foot impulse of the test map with the rear foot kept on the floor
+    /// (`impact3_level`'s `lambda_I[1]`, Eq. 11; `impact2_slope`'s `lambda_I[1]`, Eq. 46):
+    /// non-negative means the walker would stay in double support.
+    pub rear_impulse: f64,
+    /// Post-impact velocities of the old coordinates `[xd, zd, th1d, th2d]`.
+    pub qd: [f64; 4],
+}
+
+/// A walker model: kernels plus the parameters the simulator needs outside the kernels.
+#[derive(Clone, Copy, Debug)]
+pub struct Model {
+    kernels: Kernels,
+    /// Physical parameters (the values compiled into the kernels for the fast variants).
+    pub physical: Physical,
+    /// Friction, control and slope parameters.
+    pub runtime: Runtime,
+}
+
+impl Model {
+    /// The active walker on level ground with Table 1 compiled in (`phi` is ignored).
+    pub fn active_level(runtime: Runtime) -> Self {
+        let p = active_level::prepare(&active_level::Params {
+            mu0: runtime.mu0,
+            c: runtime.c,
+            t_set: runtime.t_set,
+            k_p: runtime.k_p,
+            k_d: runtime.k_d,
+        });
+        Self {
+            kernels: Kernels::ActiveLevel(p),
+            physical: Physical::TABLE1,
+            runtime: Runtime {
+                phi: 0.0,
+                ..runtime
+            },
+        }
+    }
+
+    /// The passive wheel on a slope with Table 1 compiled in.
+    pub fn passive_slope(runtime: Runtime) -> Self {
+        let p = passive_slope::prepare(&passive_slope::Params {
+            phi: runtime.phi,
+            mu0: runtime.mu0,
+            c: runtime.c,
+        });
+        Self {
+            kernels: Kernels::PassiveSlope(p),
+            physical: Physical::TABLE1,
+            runtime,
+        }
+    }
+
+    /// The active walker on level ground with every parameter at run time.
+    pub fn general_level(physical: Physical, runtime: Runtime) -> Self {
+        let p = general_level::prepare(&general_level::Params {
+            m1: physical.m1,
+            m2: physical.m2,
+            l: physical.l,
+            i1: physical.i1,
+            i2: physical.i2,
+            g: physical.g,
+            alpha: physical.alpha,
+            mu0: runtime.mu0,
+            c: runtime.c,
+            t_set: runtime.t_set,
+            k_p: runtime.k_p,
+            k_d: runtime.k_d,
+        });
+        Self {
+            kernels: Kernels::GeneralLevel(p),
+            physical,
+            runtime: Runtime {
+                phi: 0.0,
+                ..runtime
+            },
+        }
+    }
+
+    /// The passive wheel on a slope with every parameter at run time.
+    pub fn general_slope(physical: Physical, runtime: Runtime) -> Self {
+        let p = general_slope::prepare(&general_slope::Params {
+            m1: physical.m1,
+            m2: physical.m2,
+            l: physical.l,
+            i1: physical.i1,
+            i2: physical.i2,
+            g: physical.g,
+            alpha: physical.alpha,
+            phi: runtime.phi,
+            mu0: runtime.mu0,
+            c: runtime.c,
+        });
+        Self {
+            kernels: Kernels::GeneralSlope(p),
+            physical,
+            runtime,
+        }
+    }
+
+    /// Level/active or slope/passive.
+    pub fn kind(&self) -> Kind {
+        match self.kernels {
+            Kernels::ActiveLevel(_) | Kernels::GeneralLevel(_) => Kind::ActiveLevel,
+            Kernels::PassiveSlope(_) | Kernels::GeneralSlope(_) => Kind::PassiveSlope,
+        }
+    }
+
+    /// Whether the torso is driven by the output-following control.
+    pub fn is_active(&self) -> bool {
+        self.kind() == Kind::ActiveLevel
+    }
+
+    /// The stance-leg angle at heel strike: `alpha/2` (level, Eq. 3) or `alpha/2 + phi`
+    /// (slope, Section 5.1).
+    pub fn heel_strike_angle(&self) -> f64 {
+        self.physical.alpha / 2.0 + self.runtime.phi
+    }
+
+    /// The stance-leg angle at which the rear spoke touches the floor: `-alpha/2` (level) or
+    /// `phi - alpha/2` (slope); also the post-impact angle (Eqs. 18, 45 corrected).
+    pub fn rear_contact_angle(&self) -> f64 {
+        self.runtime.phi - self.physical.alpha / 2.0
+    }
+
+    /// Stance accelerations `qdd` (Eq. 27; on the slope with Eqs. 36, 38 and `u = 0`).
+    pub fn accel(&self, th1: f64, th1d: f64, u: f64, xd: f64) -> [f64; 4] {
+        match &self.kernels {
+            Kernels::ActiveLevel(p) => active_level::accel_level(p, th1, th1d, u, xd),
+            Kernels::GeneralLevel(p) => general_level::accel_level(p, th1, th1d, u, xd),
+            Kernels::PassiveSlope(p) => passive_slope::accel_slope(p, th1, th1d, xd),
+            Kernels::GeneralSlope(p) => general_slope::accel_slope(p, th1, th1d, xd),
+        }
+    }
+
+    /// Vertical ground reaction `lambda` (Eqs. 22-23; on the slope the vertical component).
+    pub fn lambda(&self, th1: f64, th1d: f64, u: f64, xd: f64) -> f64 {
+        match &self.kernels {
+            Kernels::ActiveLevel(p) => active_level::lambda_level(p, th1, th1d, u, xd),
+            Kernels::GeneralLevel(p) => general_level::lambda_level(p, th1, th1d, u, xd),
+            Kernels::PassiveSlope(p) => passive_slope::lambda_slope(p, th1, th1d, xd),
+            Kernels::GeneralSlope(p) => general_slope::lambda_slope(p, th1, th1d, xd),
+        }
+    }
+
+    /// `[A, B]` with `yddot = A u - B` (Eqs. 30-31); `None` for the passive wheel.
+    pub fn control(&self, th1: f64, th1d: f64, xd: f64) -> Option<[f64; 2]> {
+        match &self.kernels {
+            Kernels::ActiveLevel(p) => Some(active_level::control_level(p, th1, th1d, xd)),
+            Kernels::GeneralLevel(p) => Some(general_level::control_level(p, th1, th1d, xd)),
+            Kernels::PassiveSlope(_) | Kernels::GeneralSlope(_) => None,
+        }
+    }
+
+    /// The impact map at the pre-impact state `[x, z, th1, th2, xd, zd, th1d, th2d]`:
+    /// `impact2_level` with the test `impact3_level` (level), `impact_slope` with the test
+    /// `impact2_slope` (slope).
+    pub fn impact(&self, s: &[f64; 8]) -> ImpactResult {
+        let (th1, xd, zd, th1d, th2d) = (s[2], s[4], s[5], s[6], s[7]);
+        match &self.kernels {
+            Kernels::ActiveLevel(p) => level_impact(
+                active_level::impact3_level(p, th1, xd, zd, th1d, th2d),
+                active_level::impact2_level(p, th1, xd, zd, th1d, th2d),
+            ),
+            Kernels::GeneralLevel(p) => level_impact(
+                general_level::impact3_level(p, th1, xd, zd, th1d, th2d),
+                general_level::impact2_level(p, th1, xd, zd, th1d, th2d),
+            ),
+            Kernels::PassiveSlope(p) => slope_impact(
+                passive_slope::impact_slope(p, th1, xd, zd, th1d, th2d),
+                passive_slope::impact2_slope(p, th1, xd, zd, th1d, th2d),
+            ),
+            Kernels::GeneralSlope(p) => slope_impact(
+                general_slope::impact_slope(p, th1, xd, zd, th1d, th2d),
+                general_slope::impact2_slope(p, th1, xd, zd, th1d, th2d),
+            ),
+        }
+    }
+
+    /// Position and velocity of the fore foot `[x_f, z_f, xd_f, zd_f]` (Eqs. 3, 39).
+    pub fn fore_foot(&self, x: f64, z: f64, th1: f64, xd: f64, zd: f64, th1d: f64) -> [f64; 4] {
+        match &self.kernels {
+            Kernels::ActiveLevel(p) => active_level::fore_foot(p, x, z, th1, xd, zd, th1d),
+            Kernels::GeneralLevel(p) => general_level::fore_foot(p, x, z, th1, xd, zd, th1d),
+            Kernels::PassiveSlope(p) => passive_slope::fore_foot(p, x, z, th1, xd, zd, th1d),
+            Kernels::GeneralSlope(p) => general_slope::fore_foot(p, x, z, th1, xd, zd, th1d),
+        }
+    }
+
+    /// Kinetic and potential energy `[T, V]` of the state `[x, z, th1, th2, xd, zd, th1d, th2d]`.
+    pub fn energy(&self, s: &[f64; 8]) -> [f64; 2] {
+        let (z, th1, xd, zd, th1d, th2d) = (s[1], s[2], s[4], s[5], s[6], s[7]);
+        match &self.kernels {
+            Kernels::ActiveLevel(p) => active_level::energy(p, z, th1, xd, zd, th1d, th2d),
+            Kernels::GeneralLevel(p) => general_level::energy(p, z, th1, xd, zd, th1d, th2d),
+            Kernels::PassiveSlope(p) => passive_slope::energy(p, z, th1, xd, zd, th1d, th2d),
+            Kernels::GeneralSlope(p) => general_slope::energy(p, z, th1, xd, zd, th1d, th2d),
+        }
+    }
+
+    /// The paper's initial condition: Eq. 33 with `omega0` for the active walker, (P2b)
+    /// (`q = 0`, `qd = [0, 0, 0.5, 0]`; `omega0` replaces the 0.5) for the passive wheel.
+    pub fn initial_state(&self, omega0: f64) -> [f64; 8] {
+        match self.kind() {
+            Kind::ActiveLevel => [
+                0.0,
+                0.0,
+                -self.physical.alpha / 2.0,
+                0.0,
+                0.0,
+                0.0,
+                omega0,
+                omega0,
+            ],
+            Kind::PassiveSlope => [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, omega0, 0.0],
+        }
+    }
+
+    /// The default initial angular velocity: `omega0 = 0.8` (Section 4.1) for the active walker,
+    /// 0.5 (P2b) for the passive wheel.
+    pub fn default_omega0(&self) -> f64 {
+        match self.kind() {
+            Kind::ActiveLevel => 0.8,
+            Kind::PassiveSlope => 0.5,
+        }
+    }
+}
+
+fn level_impact(test: [f64; 7], applied: [f64; 6]) -> ImpactResult {
+    ImpactResult {
+        impulses: [applied[0], applied[1]],
+        rear_impulse: test[1],
+        qd: [applied[2], applied[3], applied[4], applied[5]],
+    }
+}
+
+fn slope_impact(applied: [f64; 5], test: [f64; 6]) -> ImpactResult {
+    ImpactResult {
+        impulses: [applied[0], 0.0],
+        rear_impulse: test[1],
+        qd: [applied[1], applied[2], applied[3], applied[4]],
+    }
+}

@@ -1,0 +1,623 @@
+//! The hybrid simulation: stance phases integrated with [`crate::ode`], heel strikes located as
+//! events, the impact map and the change of stance leg, failure detection, and the per-step
+//! gait descriptors of Section 4.2 (Eqs. 34, 47, the average input power and the specific
+//! resistance).
+//!
+//! The integrated state is `[x, z, th1, th2, xd, zd, th1d, th2d, E]` where `E` is the quadrature
+//! `int_0^t |ydot u| dt` accumulated while `t < T_set` (zero for the passive wheel), so that the
+//! average input power is under the integrator's error control. The time is reset to zero at
+//! every impact; `T_set` is a breakpoint of the integrator (the control switches there).
+
+use serde::Serialize;
+
+use crate::control;
+use crate::model::{Kind, Model};
+use crate::ode::{
+    Direction, Event, Integrator, Method, NoObserver, Observer, OdeSystem, Outcome, Step,
+    Tolerances,
+};
+
+/// Size of the integrated state (8 mechanical components and the input-power quadrature).
+pub const N: usize = 9;
+
+/// Settings of the simulation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SimConfig {
+    /// Integration method: DOP853 by default, RODAS4 for stiff friction (large `mu0 c`).
+    pub method: Method,
+    /// Relative tolerance of the integrator.
+    pub rtol: f64,
+    /// Absolute tolerance of the integrator.
+    pub atol: f64,
+    /// Longest stance phase before [`Failure::NoImpact`] is reported (s).
+    pub max_step_time: f64,
+    /// `|lambda|` above this many times `m_t g` counts as a vanishing denominator of Eq. 23
+    /// ([`Failure::LambdaDenominatorZero`]).
+    pub lambda_blowup: f64,
+}
+
+impl Default for SimConfig {
+    fn default() -> Self {
+        Self {
+            method: Method::Dop853,
+            rtol: 1e-10,
+            atol: 1e-12,
+            max_step_time: 10.0,
+            lambda_blowup: 1e6,
+        }
+    }
+}
+
+/// Why a walk ended early. Every variant carries the step number (0 for the step that starts
+/// at the initial condition), the time since the last impact and the mechanical state
+/// `[x, z, th1, th2, xd, zd, th1d, th2d]` where it happened.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind")]
+pub enum Failure {
+    /// The vertical ground reaction `lambda` became negative during stance (Eq. 23).
+    LiftOff {
+        /// Step number.
+        step: usize,
+        /// Time since the last impact.
+        t: f64,
+        /// `lambda` where the crossing was located (about zero) or at the start of the step.
+        lambda: f64,
+        /// State.
+        state: [f64; 8],
+    },
+    /// The heel struck before the output-following control finished (`t < T_set`).
+    ImpactBeforeTSet {
+        /// Step number.
+        step: usize,
+        /// Time of the heel strike since the last impact.
+        t: f64,
+        /// The ramp duration `T_set`.
+        t_set: f64,
+        /// Pre-impact state.
+        state: [f64; 8],
+    },
+    /// The rear foot's impulse with the rear foot kept on the floor is non-negative: the
+    /// impact would lead to double support (Eq. 11 on level ground, Eq. 46 on the slope).
+    DoubleSupport {
+        /// Step number.
+        step: usize,
+        /// Time of the heel strike.
+        t: f64,
+        /// The rear-foot impulse (`impact3_level`'s or `impact2_slope`'s `lambda_I[1]`).
+        rear_impulse: f64,
+        /// Pre-impact state.
+        state: [f64; 8],
+    },
+    /// `lambda` blew up (the denominator of Eq. 23 vanished: a Painleve-type singularity).
+    LambdaDenominatorZero {
+        /// Step number.
+        step: usize,
+        /// Time since the last impact.
+        t: f64,
+        /// `lambda` there (huge or not finite; non-finite values are reported as `null`).
+        lambda: f64,
+        /// State.
+        state: [f64; 8],
+    },
+    /// The wheel rolled back until the rear spoke reached the floor.
+    FellBackward {
+        /// Step number.
+        step: usize,
+        /// Time since the last impact.
+        t: f64,
+        /// Stance-leg angle (the rear-contact angle).
+        th1: f64,
+        /// State.
+        state: [f64; 8],
+    },
+    /// No heel strike within [`SimConfig::max_step_time`].
+    NoImpact {
+        /// Step number.
+        step: usize,
+        /// The time limit.
+        t: f64,
+        /// State at the limit.
+        state: [f64; 8],
+    },
+    /// A state, an acceleration or a descriptor was not finite.
+    NonFinite {
+        /// Step number.
+        step: usize,
+        /// Time of the last finite state.
+        t: f64,
+        /// Last finite state.
+        state: [f64; 8],
+    },
+    /// The integrator gave up (step size too small or too many steps).
+    Integrator {
+        /// Step number.
+        step: usize,
+        /// Time reached.
+        t: f64,
+        /// What happened.
+        reason: String,
+        /// State reached.
+        state: [f64; 8],
+    },
+}
+
+impl Failure {
+    /// The failure's name as printed by the CLI (`"lift-off"`, ...).
+    pub fn name(&self) -> &'static str {
+        match self {
+            Failure::LiftOff { .. } => "lift-off",
+            Failure::ImpactBeforeTSet { .. } => "impact-before-t-set",
+            Failure::DoubleSupport { .. } => "double-support",
+            Failure::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
+            Failure::FellBackward { .. } => "fell-backward",
+            Failure::NoImpact { .. } => "no-impact",
+            Failure::NonFinite { .. } => "non-finite",
+            Failure::Integrator { .. } => "integrator",
+        }
+    }
+
+    /// The step number at which the failure happened.
+    pub fn step(&self) -> usize {
+        match self {
+            Failure::LiftOff { step, .. }
+            | Failure::ImpactBeforeTSet { step, .. }
+            | Failure::DoubleSupport { step, .. }
+            | Failure::LambdaDenominatorZero { step, .. }
+            | Failure::FellBackward { step, .. }
+            | Failure::NoImpact { step, .. }
+            | Failure::NonFinite { step, .. }
+            | Failure::Integrator { step, .. } => *step,
+        }
+    }
+}
+
+/// Gait descriptors of one step (Section 4.2) and the state right after the impact that ends it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct StepResult {
+    /// Step period `T` (s).
+    #[serde(rename = "T")]
+    pub period: f64,
+    /// Step length `dx` (Eq. 34; on the slope the distance along the slope, Eq. 47) (m).
+    pub dx: f64,
+    /// Average walking speed `V = dx / T` (m/s).
+    #[serde(rename = "V")]
+    pub speed: f64,
+    /// Average input power `p = (1/T) int_0^T_set |ydot u| dt` (W); `None` for the passive wheel.
+    pub p: Option<f64>,
+    /// Specific resistance `SR = p / (m_t g V)`; `None` for the passive wheel.
+    #[serde(rename = "SR")]
+    pub sr: Option<f64>,
+    /// Post-impact position `[x, z, th1, th2]` in the new stance leg's coordinates.
+    pub q_plus: [f64; 4],
+    /// Post-impact velocity `[xd, zd, th1d, th2d]` in the new stance leg's coordinates.
+    pub qd_plus: [f64; 4],
+    /// The new stance foot's velocity normal to the floor right after the impact (should be 0).
+    pub foot_normal_velocity: f64,
+    /// The rear-foot impulse of the double-support test (negative: the rear leg leaves).
+    pub rear_impulse: f64,
+    /// Smallest `lambda` seen at the start of the stance phase, at `T_set` and at the heel strike.
+    pub lambda_min: f64,
+}
+
+impl StepResult {
+    /// The post-impact state `[q_plus, qd_plus]` (the next step's initial state).
+    pub fn state_plus(&self) -> [f64; 8] {
+        let mut s = [0.0; 8];
+        s[..4].copy_from_slice(&self.q_plus);
+        s[4..].copy_from_slice(&self.qd_plus);
+        s
+    }
+}
+
+/// A sample of the continuous motion (for plots).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Sample {
+    /// Time since the start of the walk (s).
+    pub time: f64,
+    /// Step number.
+    pub step: usize,
+    /// State `[x, z, th1, th2, xd, zd, th1d, th2d]`.
+    pub state: [f64; 8],
+    /// Vertical ground reaction `lambda`.
+    pub lambda: f64,
+    /// Control input `u`.
+    pub u: f64,
+}
+
+/// The result of a walk.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Walk {
+    /// The completed steps, in order.
+    pub steps: Vec<StepResult>,
+    /// Why the walk ended early, if it did.
+    pub failure: Option<Failure>,
+    /// Sampled motion (empty unless asked for).
+    #[serde(skip)]
+    pub samples: Vec<Sample>,
+}
+
+impl Walk {
+    /// The post-impact state after the last completed step, if any.
+    pub fn last_state(&self) -> Option<[f64; 8]> {
+        self.steps.last().map(StepResult::state_plus)
+    }
+}
+
+/// The control input `u` of Eq. 31 (`u = (v + B) / A`, `v` from Eq. 32); 0 for the passive wheel.
+pub fn control_input(model: &Model, t: f64, y: &[f64]) -> f64 {
+    let (th1, th2, xd, th1d, th2d) = (y[2], y[3], y[4], y[6], y[7]);
+    match model.control(th1, th1d, xd) {
+        Some([a, b]) => {
+            let r = model.runtime;
+            let d = control::desired(model.physical.alpha, r.t_set, t);
+            let v = control::aux_input(d, th1 - th2, th1d - th2d, r.k_p, r.k_d);
+            (v + b) / a
+        }
+        None => 0.0,
+    }
+}
+
+/// The vertical ground reaction at `(t, y)` with the control input of that point.
+pub fn ground_reaction(model: &Model, t: f64, y: &[f64]) -> f64 {
+    let u = control_input(model, t, y);
+    model.lambda(y[2], y[6], u, y[4])
+}
+
+struct Stance<'a> {
+    model: &'a Model,
+}
+
+impl OdeSystem<N> for Stance<'_> {
+    fn rhs(&mut self, t: f64, y: &[f64; N], dy: &mut [f64; N]) {
+        let u = control_input(self.model, t, y);
+        let qdd = self.model.accel(y[2], y[6], u, y[4]);
+        dy[..4].copy_from_slice(&y[4..8]);
+        dy[4..8].copy_from_slice(&qdd);
+        dy[8] = if self.model.is_active() && t < self.model.runtime.t_set {
+            ((y[6] - y[7]) * u).abs()
+        } else {
+            0.0
+        };
+    }
+
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        let ts = self.model.runtime.t_set;
+        (self.model.is_active() && ts > t).then_some(ts)
+    }
+}
+
+fn mech(y: &[f64; N]) -> [f64; 8] {
+    let mut s = [0.0; 8];
+    s.copy_from_slice(&y[..8]);
+    s
+}
+
+/// Records samples of the motion: every accepted step's end and `interior` points inside it.
+struct Recorder<'a> {
+    model: &'a Model,
+    out: &'a mut Vec<Sample>,
+    t_offset: f64,
+    step: usize,
+    interior: usize,
+}
+
+impl Observer<N> for Recorder<'_> {
+    fn on_step(&mut self, st: &Step<'_, N>) {
+        let mut y = [0.0; N];
+        for k in 1..=self.interior + 1 {
+            let t =
+                st.t_start() + (st.t_end() - st.t_start()) * k as f64 / (self.interior + 1) as f64;
+            st.eval(t, &mut y);
+            let u = control_input(self.model, t, &y);
+            let lambda = self.model.lambda(y[2], y[6], u, y[4]);
+            if y.iter().all(|v| v.is_finite()) && lambda.is_finite() {
+                self.out.push(Sample {
+                    time: self.t_offset + t,
+                    step: self.step,
+                    state: mech(&y),
+                    lambda,
+                    u,
+                });
+            }
+        }
+    }
+}
+
+/// Limits of a walk.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WalkLimits {
+    /// Stop after this many steps.
+    pub max_steps: usize,
+    /// Stop after the step during which the total time passes this value (s).
+    pub duration: f64,
+    /// Record samples of the motion (for plots).
+    pub record: bool,
+}
+
+impl Default for WalkLimits {
+    fn default() -> Self {
+        Self {
+            max_steps: 100,
+            duration: f64::INFINITY,
+            record: false,
+        }
+    }
+}
+
+/// Simulate a walk of `model` from the post-impact state `initial`
+/// (`[x, z, th1, th2, xd, zd, th1d, th2d]`, time 0 = the 0th impact).
+pub fn walk(model: &Model, cfg: &SimConfig, initial: [f64; 8], limits: &WalkLimits) -> Walk {
+    let mut integ = Integrator::<N>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
+    let mut steps = Vec::new();
+    let mut samples = Vec::new();
+    let mut state = initial;
+    let mut time = 0.0;
+    let mut failure = None;
+    if limits.record {
+        samples.push(Sample {
+            time: 0.0,
+            step: 0,
+            state,
+            lambda: ground_reaction(model, 0.0, &state),
+            u: control_input(model, 0.0, &state),
+        });
+    }
+    for k in 0..limits.max_steps {
+        let res = if limits.record {
+            let mut rec = Recorder {
+                model,
+                out: &mut samples,
+                t_offset: time,
+                step: k,
+                interior: 3,
+            };
+            one_step(model, cfg, &mut integ, k, state, &mut rec)
+        } else {
+            one_step(model, cfg, &mut integ, k, state, &mut NoObserver)
+        };
+        match res {
+            Ok(r) => {
+                time += r.period;
+                state = r.state_plus();
+                steps.push(r);
+                if time >= limits.duration {
+                    break;
+                }
+            }
+            Err(f) => {
+                failure = Some(f);
+                break;
+            }
+        }
+    }
+    Walk {
+        steps,
+        failure,
+        samples,
+    }
+}
+
+fn finite(v: &[f64]) -> bool {
+    v.iter().all(|x| x.is_finite())
+}
+
+/// Integrate one stance phase from the post-impact state `s0` and apply the impact.
+fn one_step<O: Observer<N>>(
+    model: &Model,
+    cfg: &SimConfig,
+    integ: &mut Integrator<N>,
+    step: usize,
+    s0: [f64; 8],
+    obs: &mut O,
+) -> Result<StepResult, Failure> {
+    if !finite(&s0) {
+        return Err(Failure::NonFinite {
+            step,
+            t: 0.0,
+            state: s0,
+        });
+    }
+    let mut y0 = [0.0; N];
+    y0[..8].copy_from_slice(&s0);
+    let lambda_max = cfg.lambda_blowup * model.physical.total_mass() * model.physical.g;
+
+    let lambda0 = ground_reaction(model, 0.0, &y0);
+    if !lambda0.is_finite() || lambda0.abs() > lambda_max {
+        return Err(Failure::LambdaDenominatorZero {
+            step,
+            t: 0.0,
+            lambda: lambda0,
+            state: s0,
+        });
+    }
+    if lambda0 < 0.0 {
+        return Err(Failure::LiftOff {
+            step,
+            t: 0.0,
+            lambda: lambda0,
+            state: s0,
+        });
+    }
+
+    let heel = model.heel_strike_angle();
+    let rear = model.rear_contact_angle();
+    let mut lambda_min = lambda0;
+    let mut events = [
+        Event::terminal(Direction::Rising, move |_, y: &[f64; N]| y[2] - heel),
+        Event::terminal(Direction::Falling, |t, y: &[f64; N]| {
+            ground_reaction(model, t, y)
+        }),
+        Event::terminal(Direction::Falling, move |_, y: &[f64; N]| y[2] - rear),
+        Event::terminal(Direction::Rising, |t, y: &[f64; N]| {
+            ground_reaction(model, t, y).abs() - lambda_max
+        }),
+    ];
+    let mut sys = Stance { model };
+    let mut t = 0.0;
+    let mut y = y0;
+    let t_limit = cfg.max_step_time;
+    let (te, ye) = loop {
+        let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events, obs);
+        let lam = ground_reaction(model, out.t(), out.y());
+        if lam.is_finite() {
+            lambda_min = lambda_min.min(lam);
+        }
+        match out {
+            Outcome::Breakpoint { t: tb, y: yb } => {
+                t = tb;
+                y = yb;
+            }
+            Outcome::Event { index: 0, t, y } => break (t, y),
+            Outcome::Event { index: 1, t, y } => {
+                return Err(if lam.abs() > lambda_max * 1e-3 || !lam.is_finite() {
+                    Failure::LambdaDenominatorZero {
+                        step,
+                        t,
+                        lambda: lam,
+                        state: mech(&y),
+                    }
+                } else {
+                    Failure::LiftOff {
+                        step,
+                        t,
+                        lambda: lam,
+                        state: mech(&y),
+                    }
+                });
+            }
+            Outcome::Event { index: 2, t, y } => {
+                return Err(Failure::FellBackward {
+                    step,
+                    t,
+                    th1: y[2],
+                    state: mech(&y),
+                });
+            }
+            Outcome::Event { t, y, .. } => {
+                return Err(Failure::LambdaDenominatorZero {
+                    step,
+                    t,
+                    lambda: lam,
+                    state: mech(&y),
+                });
+            }
+            Outcome::Reached { t, y } => {
+                return Err(Failure::NoImpact {
+                    step,
+                    t,
+                    state: mech(&y),
+                });
+            }
+            Outcome::NonFinite { t, y } => {
+                return Err(if !lam.is_finite() || lam.abs() > lambda_max * 1e-3 {
+                    Failure::LambdaDenominatorZero {
+                        step,
+                        t,
+                        lambda: lam,
+                        state: mech(&y),
+                    }
+                } else {
+                    Failure::NonFinite {
+                        step,
+                        t,
+                        state: mech(&y),
+                    }
+                });
+            }
+            Outcome::StepSizeTooSmall { t, y, .. } | Outcome::MaxSteps { t, y } => {
+                if !lam.is_finite() || lam.abs() > lambda_max * 1e-3 {
+                    return Err(Failure::LambdaDenominatorZero {
+                        step,
+                        t,
+                        lambda: lam,
+                        state: mech(&y),
+                    });
+                }
+                let reason = if matches!(out, Outcome::MaxSteps { .. }) {
+                    "too many steps"
+                } else {
+                    "step size too small"
+                };
+                return Err(Failure::Integrator {
+                    step,
+                    t,
+                    reason: reason.to_owned(),
+                    state: mech(&y),
+                });
+            }
+            Outcome::InvalidInput { t, y, reason } => {
+                return Err(Failure::Integrator {
+                    step,
+                    t,
+                    reason: reason.to_owned(),
+                    state: mech(&y),
+                });
+            }
+        }
+    };
+
+    let pre = mech(&ye);
+    if model.is_active() && te < model.runtime.t_set {
+        return Err(Failure::ImpactBeforeTSet {
+            step,
+            t: te,
+            t_set: model.runtime.t_set,
+            state: pre,
+        });
+    }
+    let imp = model.impact(&pre);
+    if imp.rear_impulse >= 0.0 {
+        return Err(Failure::DoubleSupport {
+            step,
+            t: te,
+            rear_impulse: imp.rear_impulse,
+            state: pre,
+        });
+    }
+    let [x, z, th1, th2, ..] = pre;
+    let [xd, zd, th1d, th2d] = imp.qd;
+    let [xf, zf, xdf, zdf] = model.fore_foot(x, z, th1, xd, zd, th1d);
+    let (z_plus, normal_velocity) = match model.kind() {
+        Kind::ActiveLevel => (0.0, zdf),
+        Kind::PassiveSlope => (zf, zdf + xdf * model.runtime.phi.tan()),
+    };
+    let q_plus = [xf, z_plus, th1 - model.physical.alpha, th2];
+    let qd_plus = [xdf, zdf, th1d, th2d];
+    let dx = (xf - s0[0]) / model.runtime.phi.cos();
+    let speed = dx / te;
+    let (p, sr) = if model.is_active() {
+        let p = ye[8] / te;
+        (
+            Some(p),
+            Some(p / (model.physical.total_mass() * model.physical.g * speed)),
+        )
+    } else {
+        (None, None)
+    };
+    let all = [
+        dx,
+        speed,
+        p.unwrap_or(0.0),
+        sr.unwrap_or(0.0),
+        imp.rear_impulse,
+    ];
+    if !finite(&q_plus) || !finite(&qd_plus) || !finite(&all) {
+        return Err(Failure::NonFinite {
+            step,
+            t: te,
+            state: pre,
+        });
+    }
+    Ok(StepResult {
+        period: te,
+        dx,
+        speed,
+        p,
+        sr,
+        q_plus,
+        qd_plus,
+        foot_normal_velocity: normal_velocity,
+        rear_impulse: imp.rear_impulse,
+        lambda_min,
+    })
+}
