@@ -22,6 +22,10 @@
 //!   `sqrt(n) <= 3`: `(21 * 2 + 20) * 3 ~ 190 < 256`. Near a singular Schur complement
 //!   (`J M^-1 Jhat^T -> 0`) `cond(K)` and the bound grow together; nothing is skipped.
 #![allow(clippy::unwrap_used, reason = "test code")]
+#![allow(
+    clippy::needless_range_loop,
+    reason = "index i names the output component in messages"
+)]
 
 use nalgebra::Vector4;
 use proptest::prelude::*;
