@@ -2,8 +2,11 @@
 //! slippery ground, and of the passive wheel on a slope (Asano, Kikuchi, Shibata),
 //! built on kernels generated from the symbolic derivation.
 
+pub mod app;
 pub mod control;
 pub mod kernels;
 pub mod model;
 pub mod ode;
+pub mod reproduce;
 pub mod sim;
+pub mod sweep;

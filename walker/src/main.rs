@@ -1,0 +1,236 @@
+//! `walker`: simulate the paper's walkers, sweep the friction coefficient, and reproduce the
+//! paper's figures.
+//!
+//! Exit codes: 0 success (also for a walk that ends in a failure: that is a result), 2 invalid
+//! input, 1 an I/O error.
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use walker::app::{self, Overrides};
+use walker::ode::Method;
+use walker::sim::{SimConfig, WalkLimits};
+
+/// Command-line interface.
+#[derive(Parser, Debug)]
+#[command(
+    name = "walker",
+    version,
+    about = "Limit-cycle walking on slippery ground"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// Integrator choice.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+enum MethodArg {
+    /// Dormand-Prince 8(5,3).
+    Dop853,
+    /// Rosenbrock RODAS4 (stiff friction, large mu0 c).
+    Rodas4,
+}
+
+/// Flags shared by the simulation commands.
+#[derive(clap::Args, Debug)]
+struct Common {
+    /// `active-level`, `passive-slope` or a scene FILE.toml.
+    #[arg(long)]
+    scene: String,
+    /// Friction law sharpness c (s/m), > 0.
+    #[arg(long, allow_hyphen_values = true)]
+    c: Option<f64>,
+    /// Integrator.
+    #[arg(long, value_enum, default_value = "dop853")]
+    method: MethodArg,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Simulate one walk.
+    Simulate {
+        #[command(flatten)]
+        common: Common,
+        /// Friction coefficient mu0, >= 0.
+        #[arg(long, allow_hyphen_values = true)]
+        mu0: Option<f64>,
+        /// Ramp duration T_set (s), > 0 (active walker).
+        #[arg(long = "t-set", allow_hyphen_values = true)]
+        t_set: Option<f64>,
+        /// Initial angular velocity omega0 (rad/s).
+        #[arg(long, allow_hyphen_values = true)]
+        omega0: Option<f64>,
+        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
+        #[arg(long, allow_hyphen_values = true)]
+        phi: Option<f64>,
+        /// Stop after the step that passes this time (s).
+        #[arg(long, allow_hyphen_values = true)]
+        duration: Option<f64>,
+        /// Stop after this many steps.
+        #[arg(long = "max-steps", default_value_t = 100)]
+        max_steps: usize,
+    },
+    /// Sweep mu0 (procedures P1a-P5a / P1b-P5b).
+    Sweep {
+        #[command(flatten)]
+        common: Common,
+        /// First mu0.
+        #[arg(long = "mu0-from", allow_hyphen_values = true)]
+        mu0_from: f64,
+        /// Last mu0.
+        #[arg(long = "mu0-to", allow_hyphen_values = true)]
+        mu0_to: f64,
+        /// Increment of mu0, > 0.
+        #[arg(long = "mu0-step", allow_hyphen_values = true)]
+        mu0_step: f64,
+        /// T_set values (active walker; repeat for several chains).
+        #[arg(long = "t-set", allow_hyphen_values = true)]
+        t_set: Vec<f64>,
+        /// Slope angles (passive wheel; repeat for several chains).
+        #[arg(long, allow_hyphen_values = true)]
+        phi: Vec<f64>,
+        /// Start every mu0 from the initial condition instead of the previous steady state.
+        #[arg(long)]
+        restart: bool,
+        /// Walk each mu0 for this long (s).
+        #[arg(long, default_value_t = 100.0, allow_hyphen_values = true)]
+        duration: f64,
+        /// At most this many steps per mu0.
+        #[arg(long = "max-steps", default_value_t = 1000)]
+        max_steps: usize,
+    },
+    /// Reproduce the paper's figures and claims.
+    Reproduce {
+        /// Output directory.
+        #[arg(long, default_value = "reproduce-out")]
+        out: std::path::PathBuf,
+    },
+}
+
+fn config(m: MethodArg) -> SimConfig {
+    match m {
+        MethodArg::Dop853 => SimConfig::default(),
+        MethodArg::Rodas4 => SimConfig {
+            method: Method::Rodas4,
+            rtol: 1e-8,
+            atol: 1e-10,
+            ..SimConfig::default()
+        },
+    }
+}
+
+fn run(cli: Cli) -> Result<(), (u8, String)> {
+    let input = |e: app::InputError| (2, format!("error: {e}"));
+    match cli.command {
+        Command::Simulate {
+            common,
+            mu0,
+            t_set,
+            omega0,
+            phi,
+            duration,
+            max_steps,
+        } => {
+            let ov = Overrides {
+                mu0,
+                c: common.c,
+                t_set,
+                phi,
+            };
+            let setup = app::resolve(&common.scene, &ov).map_err(input)?;
+            if let Some(d) = duration.filter(|d| !(d.is_finite() && *d > 0.0)) {
+                return Err(input(app::InputError {
+                    field: "duration".to_owned(),
+                    message: format!("{d} is outside the valid range (0, inf)"),
+                }));
+            }
+            let limits = WalkLimits {
+                max_steps,
+                duration: duration.unwrap_or(f64::INFINITY),
+                record: false,
+            };
+            let w =
+                app::simulate(&setup, omega0, &limits, &config(common.method)).map_err(input)?;
+            if common.json {
+                println!("{}", app::walk_json(&w));
+            } else {
+                print!("{}", app::walk_text(&w));
+            }
+        }
+        Command::Sweep {
+            common,
+            mu0_from,
+            mu0_to,
+            mu0_step,
+            t_set,
+            phi,
+            restart,
+            duration,
+            max_steps,
+        } => {
+            let ov = Overrides {
+                mu0: Some(mu0_from.max(0.0)),
+                c: common.c,
+                t_set: t_set.first().copied(),
+                phi: phi.first().copied(),
+            };
+            let setup = app::resolve(&common.scene, &ov).map_err(input)?;
+            let active = setup.kind == walker::model::Kind::ActiveLevel;
+            let chains = if active { t_set } else { phi };
+            if !(duration.is_finite() && duration > 0.0) {
+                return Err(input(app::InputError {
+                    field: "duration".to_owned(),
+                    message: format!("{duration} is outside the valid range (0, inf)"),
+                }));
+            }
+            let limits = WalkLimits {
+                max_steps,
+                duration,
+                record: false,
+            };
+            let res = app::sweep(
+                &setup,
+                &chains,
+                mu0_from,
+                mu0_to,
+                mu0_step,
+                restart,
+                &limits,
+                &config(common.method),
+            )
+            .map_err(input)?;
+            if common.json {
+                println!("{}", serde_json::json!({ "chains": res }));
+            } else {
+                print!("{}", app::sweep_text(&res, active));
+            }
+        }
+        Command::Reproduce { out } => {
+            let summary = walker::reproduce::run(&out).map_err(|e| (1, format!("error: {e}")))?;
+            print!("{summary}");
+        }
+    }
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err((code, msg)) => {
+            eprintln!("{msg}");
+            ExitCode::from(code)
+        }
+    }
+}

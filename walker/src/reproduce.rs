@@ -1,0 +1,349 @@
+//! `walker reproduce`: the data of the paper's Figs. 3-8 and 10-14 as CSV files and a summary
+//! of the paper's claims with the values found.
+
+use std::fmt::Write as _;
+use std::fs;
+use std::io;
+use std::path::Path;
+
+use crate::model::{Model, Runtime};
+use crate::sim::{Sample, SimConfig, StepResult, Walk, WalkLimits, walk};
+use crate::sweep::{SweepPoint, mu0_grid, sweep_chains};
+
+fn active(mu0: f64, t_set: f64) -> Model {
+    Model::active_level(Runtime {
+        mu0,
+        t_set,
+        ..Runtime::default()
+    })
+}
+
+fn passive(mu0: f64, phi: f64) -> Model {
+    Model::passive_slope(Runtime {
+        mu0,
+        phi,
+        ..Runtime::default()
+    })
+}
+
+fn limits(max_steps: usize, record: bool) -> WalkLimits {
+    WalkLimits {
+        max_steps,
+        duration: f64::INFINITY,
+        record,
+    }
+}
+
+fn fmt(v: Option<f64>) -> String {
+    v.filter(|x| x.is_finite())
+        .map_or_else(String::new, |x| format!("{x:.12e}"))
+}
+
+fn samples_csv(path: &Path, s: &[Sample]) -> io::Result<()> {
+    let mut out = String::from("time,step,x,z,th1,th2,xd,zd,th1d,th2d,lambda,u\n");
+    for p in s {
+        let _ = write!(out, "{:.9e},{}", p.time, p.step);
+        for v in p.state {
+            let _ = write!(out, ",{v:.9e}");
+        }
+        let _ = writeln!(out, ",{:.9e},{:.9e}", p.lambda, p.u);
+    }
+    fs::write(path, out)
+}
+
+fn steps_header() -> &'static str {
+    "T,dx,V,p,SR,x_plus,z_plus,th1_plus,th2_plus,xd_plus,zd_plus,th1d_plus,th2d_plus"
+}
+
+fn step_row(s: &StepResult) -> String {
+    let mut r = format!(
+        "{},{},{},{},{}",
+        fmt(Some(s.period)),
+        fmt(Some(s.dx)),
+        fmt(Some(s.speed)),
+        fmt(s.p),
+        fmt(s.sr)
+    );
+    for v in s.q_plus.iter().chain(&s.qd_plus) {
+        let _ = write!(r, ",{}", fmt(Some(*v)));
+    }
+    r
+}
+
+fn series_csv(path: &Path, label: &str, walks: &[(f64, Walk)]) -> io::Result<()> {
+    let mut out = format!("{label},step,{}\n", steps_header());
+    for (v, w) in walks {
+        for (k, s) in w.steps.iter().enumerate() {
+            let _ = writeln!(out, "{v},{k},{}", step_row(s));
+        }
+    }
+    fs::write(path, out)
+}
+
+fn sweep_csv(path: &Path, label: &str, chains: &[(f64, Vec<SweepPoint>)]) -> io::Result<()> {
+    let mut out = format!("{label},mu0,steps,status,{}\n", steps_header());
+    for (v, pts) in chains {
+        for p in pts {
+            let status = p.failure.as_ref().map_or("ok", |f| f.name());
+            let row = p.last.as_ref().map_or_else(|| ",".repeat(12), step_row);
+            let _ = writeln!(out, "{v},{:.4},{},{status},{row}", p.mu0, p.steps);
+        }
+    }
+    fs::write(path, out)
+}
+
+/// The collected data of every figure.
+pub struct Data {
+    /// Fig. 3 (`mu0 = 0`) and Fig. 5 (`mu0 = 0.4`) motions, `T_set = 0.3`, `omega0 = 0.8`.
+    pub motion: [Walk; 2],
+    /// Figs. 4 and 6: steps for three `omega0` at `mu0 = 0` and `mu0 = 0.4`.
+    pub omega_series: [Vec<(f64, Walk)>; 2],
+    /// Fig. 7: errors of the post-impact velocities from the steady ones.
+    pub convergence: Vec<[f64; 3]>,
+    /// Fig. 8: sweeps over `mu0` for `T_set` = 0.2, 0.3, 0.4.
+    pub active_sweep: Vec<(f64, Vec<SweepPoint>)>,
+    /// Figs. 10 and 13: sweeps over `mu0` for `phi` = 0.10, 0.15, 0.20.
+    pub passive_sweep: Vec<(f64, Vec<SweepPoint>)>,
+    /// Fig. 11: motions at `phi = 0.2`, `mu0` = 0.2 and 0.5.
+    pub sticks: Vec<(f64, Walk)>,
+    /// Fig. 12: step lengths at `phi = 0.2` for four `mu0`.
+    pub step_lengths: Vec<(f64, Walk)>,
+    /// Fig. 14: the motion at `phi = 0.10`, `mu0 = 0.19`.
+    pub fall: Walk,
+}
+
+/// Omega0 values of Figs. 4 and 6.
+pub const OMEGAS: [f64; 3] = [0.6, 0.7, 0.8];
+/// `T_set` values of Fig. 8.
+pub const T_SETS: [f64; 3] = [0.2, 0.3, 0.4];
+/// Slope angles of Fig. 10.
+pub const PHIS: [f64; 3] = [0.10, 0.15, 0.20];
+
+/// Compute every figure's data.
+pub fn collect() -> Data {
+    let cfg = SimConfig::default();
+    let motion = [0.0, 0.4].map(|mu0| {
+        let m = active(mu0, 0.3);
+        walk(&m, &cfg, m.initial_state(0.8), &limits(6, true))
+    });
+    let omega_series = [0.0, 0.4].map(|mu0| {
+        OMEGAS
+            .iter()
+            .map(|&w0| {
+                let m = active(mu0, 0.3);
+                (w0, walk(&m, &cfg, m.initial_state(w0), &limits(30, false)))
+            })
+            .collect()
+    });
+    // Fig. 7: the steady state, then a start 0.1 rad/s above its angular velocity.
+    let m = active(0.4, 0.3);
+    let steady = walk(&m, &cfg, m.initial_state(0.8), &limits(400, false));
+    let mut convergence = Vec::new();
+    if let Some(eq) = steady.steps.last() {
+        let w0 = eq.qd_plus[2] + 0.1;
+        let w = walk(&m, &cfg, m.initial_state(w0), &limits(30, false));
+        let mut qds = vec![[0.0, 0.0, w0, w0]];
+        qds.extend(w.steps.iter().map(|s| s.qd_plus));
+        for qd in qds {
+            let d: Vec<f64> = qd.iter().zip(&eq.qd_plus).map(|(a, b)| a - b).collect();
+            let norm = d.iter().map(|v| v * v).sum::<f64>().sqrt();
+            convergence.push([norm, d[0], d[2]]);
+        }
+    }
+    let grid = mu0_grid(0.0, 1.0, 0.01);
+    let long = WalkLimits {
+        max_steps: 1000,
+        duration: 100.0,
+        record: false,
+    };
+    let act = sweep_chains(
+        &T_SETS,
+        |ts, mu0| active(mu0, ts),
+        &cfg,
+        &grid,
+        |ts| active(0.0, ts).initial_state(0.8),
+        &long,
+        false,
+    );
+    let active_sweep = T_SETS.iter().copied().zip(act).collect();
+    let pgrid = mu0_grid(0.0, 0.7, 0.01);
+    let pas = sweep_chains(
+        &PHIS,
+        |phi, mu0| passive(mu0, phi),
+        &cfg,
+        &pgrid,
+        |phi| passive(0.0, phi).initial_state(0.5),
+        &limits(20, false),
+        true,
+    );
+    let passive_sweep = PHIS.iter().copied().zip(pas).collect();
+    let sticks = [0.2, 0.5]
+        .iter()
+        .map(|&mu0| {
+            let m = passive(mu0, 0.2);
+            (mu0, walk(&m, &cfg, m.initial_state(0.5), &limits(6, true)))
+        })
+        .collect();
+    let step_lengths = [0.2, 0.3, 0.4, 0.5]
+        .iter()
+        .map(|&mu0| {
+            let m = passive(mu0, 0.2);
+            (
+                mu0,
+                walk(&m, &cfg, m.initial_state(0.5), &limits(20, false)),
+            )
+        })
+        .collect();
+    let m = passive(0.19, 0.10);
+    let fall = walk(&m, &cfg, m.initial_state(0.5), &limits(5, true));
+    Data {
+        motion,
+        omega_series,
+        convergence,
+        active_sweep,
+        passive_sweep,
+        sticks,
+        step_lengths,
+        fall,
+    }
+}
+
+fn write_csvs(out: &Path, d: &Data) -> io::Result<()> {
+    samples_csv(&out.join("fig3_motion_mu0_0.csv"), &d.motion[0].samples)?;
+    samples_csv(&out.join("fig5_motion_mu0_0.4.csv"), &d.motion[1].samples)?;
+    series_csv(
+        &out.join("fig4_steps_mu0_0.csv"),
+        "omega0",
+        &d.omega_series[0],
+    )?;
+    series_csv(
+        &out.join("fig6_steps_mu0_0.4.csv"),
+        "omega0",
+        &d.omega_series[1],
+    )?;
+    let mut c = String::from("impact,norm_dqd,d_xd,d_th1d\n");
+    for (k, r) in d.convergence.iter().enumerate() {
+        let _ = writeln!(c, "{k},{:.12e},{:.12e},{:.12e}", r[0], r[1], r[2]);
+    }
+    fs::write(out.join("fig7_convergence.csv"), c)?;
+    sweep_csv(&out.join("fig8_sweep.csv"), "T_set", &d.active_sweep)?;
+    sweep_csv(&out.join("fig10_sweep.csv"), "phi", &d.passive_sweep)?;
+    for (mu0, w) in &d.sticks {
+        samples_csv(&out.join(format!("fig11_stick_mu0_{mu0}.csv")), &w.samples)?;
+    }
+    series_csv(&out.join("fig12_step_length.csv"), "mu0", &d.step_lengths)?;
+    samples_csv(&out.join("fig14_fall.csv"), &d.fall.samples)?;
+    Ok(())
+}
+
+fn argbest(pts: &[SweepPoint], key: impl Fn(&StepResult) -> Option<f64>, max: bool) -> String {
+    let mut best: Option<(f64, f64)> = None;
+    for p in pts.iter().filter(|p| p.failure.is_none() && p.mu0 > 0.0) {
+        if let Some(v) = p.last.as_ref().and_then(&key) {
+            let better = best.is_none_or(|(_, b)| if max { v > b } else { v < b });
+            if better {
+                best = Some((p.mu0, v));
+            }
+        }
+    }
+    best.map_or_else(
+        || "none".to_owned(),
+        |(m, v)| format!("mu0 = {m:.2} ({v:.6})"),
+    )
+}
+
+/// The summary table of the paper's claims and the values found.
+pub fn summary(d: &Data) -> String {
+    let mut s = String::from("Claims of the paper and values found\n");
+    let steady_v = |w: &Walk| w.steps.last().map_or(f64::NAN, |s| s.speed);
+    let v0: Vec<String> = d.omega_series[0]
+        .iter()
+        .map(|(w0, w)| format!("omega0={w0}: V={:.6}", steady_v(w)))
+        .collect();
+    let v4: Vec<String> = d.omega_series[1]
+        .iter()
+        .map(|(w0, w)| format!("omega0={w0}: V={:.6}", steady_v(w)))
+        .collect();
+    let _ = writeln!(
+        s,
+        "- mu0 = 0: limit cycles not unique (Fig. 4): {}",
+        v0.join(", ")
+    );
+    let _ = writeln!(
+        s,
+        "- mu0 = 0.4: unique limit cycle (Fig. 6), after 30 steps: {}",
+        v4.join(", ")
+    );
+    for (ts, pts) in &d.active_sweep {
+        let fails: Vec<String> = pts
+            .iter()
+            .filter_map(|p| {
+                p.failure
+                    .as_ref()
+                    .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "- T_set = {ts}: failures at mu0 {}",
+            if fails.is_empty() {
+                "none".to_owned()
+            } else {
+                fails.join(" ")
+            }
+        );
+        let _ = writeln!(
+            s,
+            "  max V at {}; min SR at {}",
+            argbest(pts, |r| Some(r.speed), true),
+            argbest(pts, |r| r.sr, false)
+        );
+        if let Some(last) = pts.last().and_then(|p| p.last.as_ref()) {
+            let _ = writeln!(
+                s,
+                "  dx at mu0 = {:.2}: {:.6} (limit 2 l sin(alpha/2) = {:.6})",
+                pts.last().map_or(f64::NAN, |p| p.mu0),
+                last.dx,
+                2.0 * (std::f64::consts::PI / 12.0).sin()
+            );
+        }
+    }
+    for (phi, pts) in &d.passive_sweep {
+        let fails: Vec<String> = pts
+            .iter()
+            .filter_map(|p| {
+                p.failure
+                    .as_ref()
+                    .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "- phi = {phi}: failures at mu0 {}",
+            if fails.is_empty() {
+                "none".to_owned()
+            } else {
+                fails.join(" ")
+            }
+        );
+    }
+    let _ = writeln!(
+        s,
+        "- phi = 0.10, mu0 = 0.19 (Fig. 14): {}",
+        d.fall.failure.as_ref().map_or_else(
+            || "walks".to_owned(),
+            |f| format!("{} at step {}", f.name(), f.step())
+        )
+    );
+    s
+}
+
+/// Run everything and write the CSV files and `summary.txt` into `out`; returns the summary.
+pub fn run(out: &Path) -> io::Result<String> {
+    fs::create_dir_all(out)?;
+    let d = collect();
+    write_csvs(out, &d)?;
+    let s = summary(&d);
+    fs::write(out.join("summary.txt"), &s)?;
+    Ok(s)
+}

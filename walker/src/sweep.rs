@@ -1,0 +1,110 @@
+//! Parameter sweeps over `mu0`: procedures (P1a)-(P5a) (active walker, Section 4.2) and
+//! (P1b)-(P5b) (passive wheel, Section 5.2).
+//!
+//! Each `mu0` is walked for a given duration; its steady post-impact state (with the stance foot
+//! moved back to the origin: the dynamics do not depend on `x`, `z`) is the initial condition of
+//! the next `mu0`, unless the sweep restarts every `mu0` from the initial condition or the
+//! previous run failed. Independent chains (several `T_set` or `phi`) and restarted points run in
+//! parallel with rayon.
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::model::Model;
+use crate::sim::{Failure, SimConfig, StepResult, WalkLimits, walk};
+
+/// The outcome of one `mu0` of a sweep.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SweepPoint {
+    /// The friction coefficient.
+    pub mu0: f64,
+    /// Number of completed steps.
+    pub steps: usize,
+    /// The last completed step (the steady descriptors if the walk converged).
+    pub last: Option<StepResult>,
+    /// The step before the last one (to judge convergence).
+    pub previous: Option<StepResult>,
+    /// Why the walk ended early, if it did.
+    pub failure: Option<Failure>,
+}
+
+/// The `mu0` values `from, from + step, ...` up to `to` (inclusive within rounding).
+///
+/// Returns an empty list when `step` is not a positive finite number or `to < from`.
+pub fn mu0_grid(from: f64, to: f64, step: f64) -> Vec<f64> {
+    if !(step.is_finite() && step > 0.0 && from.is_finite() && to.is_finite()) || to < from {
+        return Vec::new();
+    }
+    let n = ((to - from) / step + 1e-9).floor() as usize;
+    (0..=n).map(|k| from + step * k as f64).collect()
+}
+
+fn moved_to_origin(mut s: [f64; 8]) -> [f64; 8] {
+    s[0] = 0.0;
+    s[1] = 0.0;
+    s
+}
+
+fn point(mu0: f64, walk: crate::sim::Walk) -> SweepPoint {
+    let n = walk.steps.len();
+    SweepPoint {
+        mu0,
+        steps: n,
+        last: walk.steps.last().copied(),
+        previous: n.checked_sub(2).map(|k| walk.steps[k]),
+        failure: walk.failure,
+    }
+}
+
+/// Sweep `mu0` over `grid` for the models `make(mu0)`, from `initial` (the post-impact state of
+/// the 0th impact). With `restart`, every `mu0` starts from `initial` (and the points run in
+/// parallel); otherwise each continues from the previous steady state.
+pub fn sweep<F>(
+    make: F,
+    cfg: &SimConfig,
+    grid: &[f64],
+    initial: [f64; 8],
+    limits: &WalkLimits,
+    restart: bool,
+) -> Vec<SweepPoint>
+where
+    F: Fn(f64) -> Model + Sync,
+{
+    if restart {
+        return grid
+            .par_iter()
+            .map(|&mu0| point(mu0, walk(&make(mu0), cfg, initial, limits)))
+            .collect();
+    }
+    let mut out = Vec::with_capacity(grid.len());
+    let mut state = initial;
+    for &mu0 in grid {
+        let w = walk(&make(mu0), cfg, state, limits);
+        state = match (&w.failure, w.last_state()) {
+            (None, Some(s)) => moved_to_origin(s),
+            _ => initial,
+        };
+        out.push(point(mu0, w));
+    }
+    out
+}
+
+/// Several independent sweeps (one per entry of `chains`, for example one per `T_set`), run in
+/// parallel.
+pub fn sweep_chains<F>(
+    chains: &[f64],
+    make: F,
+    cfg: &SimConfig,
+    grid: &[f64],
+    initial: impl Fn(f64) -> [f64; 8] + Sync,
+    limits: &WalkLimits,
+    restart: bool,
+) -> Vec<Vec<SweepPoint>>
+where
+    F: Fn(f64, f64) -> Model + Sync,
+{
+    chains
+        .par_iter()
+        .map(|&c| sweep(|mu0| make(c, mu0), cfg, grid, initial(c), limits, restart))
+        .collect()
+}

@@ -1,0 +1,173 @@
+//! Tests of the `walker` command line (through the built binary).
+
+use std::process::{Command, Output};
+
+fn walker(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_walker"))
+        .args(args)
+        .output()
+        .expect("the walker binary runs")
+}
+
+#[test]
+fn simulate_json_is_one_object_with_steps() {
+    let o = walker(&[
+        "simulate",
+        "--scene",
+        "active-level",
+        "--mu0",
+        "0.4",
+        "--t-set",
+        "0.3",
+        "--max-steps",
+        "3",
+        "--json",
+    ]);
+    assert!(o.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("stdout is JSON");
+    assert_eq!(v["status"], "ok");
+    assert!(v["failure"].is_null());
+    let steps = v["steps"].as_array().expect("steps");
+    assert_eq!(steps.len(), 3);
+    for s in steps {
+        for k in ["T", "dx", "V", "p", "SR"] {
+            assert!(s[k].as_f64().is_some_and(f64::is_finite), "{k}");
+        }
+        assert_eq!(s["q_plus"].as_array().map(Vec::len), Some(4));
+        assert_eq!(s["qd_plus"].as_array().map(Vec::len), Some(4));
+    }
+}
+
+#[test]
+fn simulate_reports_lift_off_and_passive_has_no_power() {
+    let o = walker(&[
+        "simulate",
+        "--scene",
+        "active-level",
+        "--mu0",
+        "0.05",
+        "--t-set",
+        "0.2",
+        "--json",
+    ]);
+    assert!(o.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(v["status"], "lift-off");
+    assert_eq!(v["failure"]["kind"], "LiftOff");
+
+    let o = walker(&[
+        "simulate",
+        "--scene",
+        "passive-slope",
+        "--phi",
+        "0.2",
+        "--mu0",
+        "0.2",
+        "--max-steps",
+        "2",
+        "--json",
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(v["status"], "ok");
+    assert!(v["steps"][0]["p"].is_null() && v["steps"][0]["SR"].is_null());
+}
+
+#[test]
+fn scene_files_use_the_general_kernels_and_agree_with_the_fast_path() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../scenes/");
+    let run = |scene: &str| {
+        let o = walker(&[
+            "simulate",
+            "--scene",
+            scene,
+            "--mu0",
+            "0.2",
+            "--phi",
+            "0.2",
+            "--max-steps",
+            "2",
+            "--json",
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+        v["steps"][1]["T"].as_f64().unwrap_or(f64::NAN)
+    };
+    let a = run("passive-slope");
+    let b = run(&format!("{root}general-slope.toml"));
+    assert!((a - b).abs() < 1e-8, "{a} {b}");
+}
+
+#[test]
+fn bad_input_exits_2_naming_the_field() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["simulate", "--scene", "nowhere"], "scene"),
+        (
+            &["simulate", "--scene", "active-level", "--mu0", "-1"],
+            "mu0",
+        ),
+        (
+            &["simulate", "--scene", "active-level", "--mu0", "NaN"],
+            "mu0",
+        ),
+        (&["simulate", "--scene", "active-level", "--c", "0"], "c"),
+        (
+            &["simulate", "--scene", "active-level", "--t-set", "0"],
+            "t-set",
+        ),
+        (
+            &["simulate", "--scene", "passive-slope", "--phi", "1.6"],
+            "phi",
+        ),
+        (
+            &["simulate", "--scene", "active-level", "--duration", "inf"],
+            "duration",
+        ),
+        (
+            &[
+                "sweep",
+                "--scene",
+                "active-level",
+                "--mu0-from",
+                "0",
+                "--mu0-to",
+                "0.1",
+                "--mu0-step",
+                "0",
+            ],
+            "mu0-step",
+        ),
+    ];
+    for (args, field) in cases {
+        let o = walker(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains(field), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+}
+
+#[test]
+fn sweep_restart_runs_in_parallel_and_reports_json() {
+    let o = walker(&[
+        "sweep",
+        "--scene",
+        "active-level",
+        "--mu0-from",
+        "0.3",
+        "--mu0-to",
+        "0.4",
+        "--mu0-step",
+        "0.05",
+        "--t-set",
+        "0.3",
+        "--restart",
+        "--duration",
+        "5",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let pts = v["chains"][0]["points"].as_array().expect("points");
+    assert_eq!(pts.len(), 3);
+    assert!(pts.iter().all(|p| p["failure"].is_null()));
+}
