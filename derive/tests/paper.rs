@@ -956,6 +956,32 @@ fn eq37_tangential_speed_is_xd_over_cos_phi() {
 }
 
 #[test]
+fn eq37_38_slope_friction_dissipates() {
+    // The passive wheel on the slope (u = 0, zd = -xd tan phi, qdd of `accel_slope`): the
+    // energy changes by the friction power only, the force [mu, -mu tan phi] lambda (Eq. 38)
+    // times the foot velocity (xd, -xd tan phi):
+    //     dE/dt = mu lambda xd (1 + tan^2 phi) = mu lambda xd / cos^2 phi,
+    // dissipative iff mu xd <= 0, which Eq. 37's -mu0 tanh(c xd / cos phi) is.
+    let energy = &out("energy", "T") + &out("energy", "V");
+    let mut rate = mechanics::time_derivative(&energy);
+    for (k, qdd) in mechanics::QDD_SYMS.iter().enumerate() {
+        rate = rate
+            .substitute(Atom::Sym(*qdd), &out("accel_slope", &format!("qdd{k}")))
+            .expect("substitution");
+    }
+    let zd = -(&s(Sym::Xd) * &tan_phi().expect("tan"));
+    let rate = rate
+        .substitute(Atom::Sym(Sym::Zd), &zd)
+        .expect("substitution");
+    let cp = RatFunc::cos_of(BaseAngle::Phi);
+    let friction_power = div(
+        &(&(&s(Sym::Mu) * &out("lambda_slope", "lambda")) * &s(Sym::Xd)),
+        &(&cp * &cp),
+    );
+    assert_eq!(rate, friction_power);
+}
+
+#[test]
 fn eq39_fore_foot_velocity_as_printed() {
     let (l, w) = (s(Sym::L), s(Sym::Th1d));
     let a_minus_th = [(Sym::Alpha, 1), (Sym::Th1, -1)];
