@@ -1,18 +1,29 @@
 //! `docs/equations.md` is generated from the derivation; this test regenerates it in memory
 //! and fails when the checked-in file differs (the derivation or the printer changed).
 
+use std::sync::OnceLock;
+
 use walker_symbolic::{Derivation, latex};
 
 const REGENERATE: &str = "cargo run -p walker-symbolic --bin walker-equations --release";
 
+/// The derivation and its rendering, once for both tests.
+fn fresh() -> &'static (Derivation, String) {
+    static FRESH: OnceLock<(Derivation, String)> = OnceLock::new();
+    FRESH.get_or_init(|| {
+        let derivation = Derivation::new().expect("derivation");
+        let text = latex::equations_markdown(&derivation).expect("rendering");
+        (derivation, text)
+    })
+}
+
 #[test]
 fn equations_md_is_up_to_date() {
-    let derivation = Derivation::new().expect("derivation");
-    let fresh = latex::equations_markdown(&derivation).expect("rendering");
+    let (_, fresh) = fresh();
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/equations.md");
     let checked_in = std::fs::read_to_string(&path)
         .unwrap_or_else(|e| format!("<cannot read {}: {e}>", path.display()));
-    if checked_in != fresh {
+    if checked_in != *fresh {
         let line = checked_in
             .lines()
             .zip(fresh.lines())
@@ -36,14 +47,13 @@ fn equations_md_is_up_to_date() {
             shown(&fresh)
         );
         assert_eq!(checked_in.len(), fresh.len(), "{message}");
-        assert!(checked_in == fresh, "{message}");
+        assert!(checked_in == *fresh, "{message}");
     }
 }
 
 #[test]
 fn equations_md_has_a_section_for_every_kernel() {
-    let derivation = Derivation::new().expect("derivation");
-    let text = latex::equations_markdown(&derivation).expect("rendering");
+    let (derivation, text) = fresh();
     for k in &derivation.kernels {
         assert!(
             text.contains(&format!("### `{}`", k.name)),

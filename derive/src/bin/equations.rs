@@ -40,6 +40,7 @@ fn main() -> ExitCode {
         eprintln!("cannot write {}: {e}", path.display());
         return ExitCode::FAILURE;
     }
+    let path = path.canonicalize().unwrap_or(path);
     eprintln!(
         "derivation of {} kernels: {:.3} s; rendering: {:.3} s; wrote {} ({} bytes)",
         derivation.kernels.len(),
