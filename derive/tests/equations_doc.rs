@@ -44,7 +44,7 @@ fn equations_md_is_up_to_date() {
             "docs/equations.md is out of date (first difference at line {line}):\n  \
              checked in: {}\n  derived:    {}\nregenerate it with `{REGENERATE}` and commit it",
             shown(&checked_in),
-            shown(&fresh)
+            shown(fresh)
         );
         assert_eq!(checked_in.len(), fresh.len(), "{message}");
         assert!(checked_in == *fresh, "{message}");
