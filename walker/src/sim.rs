@@ -13,7 +13,7 @@ use serde::Serialize;
 use crate::control;
 use crate::model::{Kind, Model};
 use crate::ode::{
-    Direction, Event, Integrator, Method, NoObserver, Observer, OdeSystem, Outcome, Step,
+    Direction, Event, Integrator, Method, NoObserver, Observer, OdeSystem, Outcome, Stats, Step,
     Tolerances,
 };
 
@@ -347,6 +347,17 @@ impl Default for WalkLimits {
 /// Simulate a walk of `model` from the post-impact state `initial`
 /// (`[x, z, th1, th2, xd, zd, th1d, th2d]`, time 0 = the 0th impact).
 pub fn walk(model: &Model, cfg: &SimConfig, initial: [f64; 8], limits: &WalkLimits) -> Walk {
+    walk_with_stats(model, cfg, initial, limits).0
+}
+
+/// [`walk`], also returning the integrator's work counters summed over the whole walk
+/// (right-hand-side evaluations, accepted and rejected steps, events; for benchmarks).
+pub fn walk_with_stats(
+    model: &Model,
+    cfg: &SimConfig,
+    initial: [f64; 8],
+    limits: &WalkLimits,
+) -> (Walk, Stats) {
     let mut integ = Integrator::<N>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut steps = Vec::new();
     let mut samples = Vec::new();
@@ -390,11 +401,14 @@ pub fn walk(model: &Model, cfg: &SimConfig, initial: [f64; 8], limits: &WalkLimi
             }
         }
     }
-    Walk {
-        steps,
-        failure,
-        samples,
-    }
+    (
+        Walk {
+            steps,
+            failure,
+            samples,
+        },
+        *integ.stats(),
+    )
 }
 
 fn finite(v: &[f64]) -> bool {

@@ -1,0 +1,171 @@
+//! Whole jobs: the paper's Fig. 8 and Fig. 10 sweeps, timed in release with rayon over the
+//! independent chains (a `harness = false` bench: `cargo bench -p walker --bench sweeps`).
+//!
+//! - Fig. 8 ((P1a)-(P5a), (P4a) continuation): `mu0 = 0, 0.01, ..., 1` (101 values) for
+//!   `T_set = 0.2, 0.3, 0.4`, 100 s per `mu0`, each `mu0` starting from the previous steady
+//!   post-impact state; the three `T_set` chains run in parallel.
+//! - Fig. 10 ((P1b)-(P5b)): `mu0 = 0, 0.01, ..., 0.7` for `phi = 0.10, 0.15, 0.20`, 100 s each,
+//!   with continuation; the three `phi` chains run in parallel.
+//!
+//! Both run with DOP853 (the simulator's default) at the tolerances `TOLS` (`rtol = atol`);
+//! wall time is the median of `REPS` runs (min and max printed). Accuracy: the relative error
+//! of the last step's descriptors (`T`, `dx`, and `p` on the active walker) of every `mu0`
+//! against the same sweep at `rtol = atol = 1e-13` (itself compared with `1e-12` to show the
+//! reference's own error). `RAYON_NUM_THREADS=1` gives the serial time.
+
+mod common;
+
+use std::time::Instant;
+
+use common::{median, rel};
+use walker::model::{Model, Runtime};
+use walker::ode::Method;
+use walker::sim::{SimConfig, WalkLimits};
+use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
+
+const REPS: usize = 3;
+const TOLS: [f64; 4] = [1e-8, 1e-9, 1e-10, 1e-11];
+const REF_TOL: f64 = 1e-13;
+
+#[derive(Clone, Copy)]
+enum Fig {
+    Fig8,
+    Fig10,
+}
+
+fn run(fig: Fig, tol: f64) -> Vec<Vec<SweepPoint>> {
+    let cfg = SimConfig {
+        method: Method::Dop853,
+        rtol: tol,
+        atol: tol,
+        ..SimConfig::default()
+    };
+    let limits = WalkLimits {
+        max_steps: 100_000,
+        duration: 100.0,
+        record: false,
+    };
+    match fig {
+        Fig::Fig8 => {
+            let grid = mu0_grid(0.0, 1.0, 0.01);
+            sweep_chains(
+                &[0.2, 0.3, 0.4],
+                |t_set, mu0| {
+                    Model::active_level(Runtime {
+                        mu0,
+                        t_set,
+                        ..Runtime::default()
+                    })
+                },
+                &cfg,
+                &grid,
+                |t_set| {
+                    Model::active_level(Runtime {
+                        t_set,
+                        ..Runtime::default()
+                    })
+                    .initial_state(0.8)
+                },
+                &limits,
+                false,
+            )
+        }
+        Fig::Fig10 => {
+            let grid = mu0_grid(0.0, 0.7, 0.01);
+            let make = |phi: f64, mu0: f64| {
+                Model::passive_slope(Runtime {
+                    mu0,
+                    phi,
+                    ..Runtime::default()
+                })
+            };
+            sweep_chains(
+                &[0.10, 0.15, 0.20],
+                make,
+                &cfg,
+                &grid,
+                |phi| {
+                    let m = make(phi, 0.0);
+                    m.initial_state(m.default_omega0())
+                },
+                &limits,
+                false,
+            )
+        }
+    }
+}
+
+/// `(max, median)` relative error of the last descriptors over all points with a last step
+/// in both runs, the number of such points, and the number of points whose outcome (failure
+/// kind or step count) differs.
+fn compare(a: &[Vec<SweepPoint>], b: &[Vec<SweepPoint>]) -> (f64, f64, usize, usize, usize) {
+    let mut errs = Vec::new();
+    let (mut differ_kind, mut differ_steps) = (0, 0);
+    for (ca, cb) in a.iter().zip(b) {
+        for (pa, pb) in ca.iter().zip(cb) {
+            let fa = pa.failure.as_ref().map(|f| f.name());
+            let fb = pb.failure.as_ref().map(|f| f.name());
+            if fa != fb {
+                differ_kind += 1;
+                continue;
+            }
+            if pa.steps != pb.steps {
+                differ_steps += 1;
+            }
+            if let (Some(la), Some(lb)) = (pa.last, pb.last) {
+                let mut e = rel(la.period, lb.period).max(rel(la.dx, lb.dx));
+                if let (Some(x), Some(y)) = (la.p, lb.p) {
+                    e = e.max(rel(x, y));
+                }
+                errs.push(e);
+            }
+        }
+    }
+    let n = errs.len();
+    let mx = errs.iter().copied().fold(0.0, f64::max);
+    (mx, median(&mut errs), n, differ_kind, differ_steps)
+}
+
+fn main() {
+    println!(
+        "threads: {} (rayon), reps {REPS}",
+        rayon::current_num_threads()
+    );
+    for (fig, name) in [(Fig::Fig8, "Fig. 8"), (Fig::Fig10, "Fig. 10")] {
+        let t0 = Instant::now();
+        let reference = run(fig, REF_TOL);
+        let t_ref = t0.elapsed().as_secs_f64();
+        let check = run(fig, REF_TOL * 10.0);
+        let (m, md, n, dk, ds) = compare(&check, &reference);
+        let steps: usize = reference.iter().flatten().map(|p| p.steps).sum();
+        let fails = reference
+            .iter()
+            .flatten()
+            .filter(|p| p.failure.is_some())
+            .count();
+        println!(
+            "{name}: reference tol {REF_TOL:e} took {t_ref:.2} s, {steps} steps, {fails} failed points; tol {:e} vs reference: max {m:.2e} median {md:.2e} over {n} points ({dk} outcome / {ds} step-count differences)",
+            REF_TOL * 10.0
+        );
+        println!(
+            "| {name} | tol | wall median (s) | min | max | max rel err | median rel err | points | outcome diffs | step-count diffs |"
+        );
+        println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+        for tol in TOLS {
+            let mut times = Vec::new();
+            let mut last = Vec::new();
+            for _ in 0..REPS {
+                let t0 = Instant::now();
+                last = run(fig, tol);
+                times.push(t0.elapsed().as_secs_f64());
+            }
+            let tmin = times.iter().copied().fold(f64::INFINITY, f64::min);
+            let tmax = times.iter().copied().fold(0.0, f64::max);
+            let tm = median(&mut times);
+            let (m, md, n, dk, ds) = compare(&last, &reference);
+            println!(
+                "| {name} | {tol:e} | {tm:.3} | {tmin:.3} | {tmax:.3} | {m:.2e} | {md:.2e} | {n} | {dk} | {ds} |"
+            );
+        }
+    }
+}
