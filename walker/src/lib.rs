@@ -7,6 +7,7 @@ pub mod control;
 pub mod kernels;
 pub mod model;
 pub mod ode;
+pub mod plot;
 pub mod reproduce;
 pub mod sim;
 pub mod sweep;

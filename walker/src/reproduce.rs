@@ -6,7 +6,8 @@ use std::fs;
 use std::io;
 use std::path::Path;
 
-use crate::model::{Model, Runtime};
+use crate::model::{Model, Physical, Runtime};
+use crate::plot::{Figure, Series, save};
 use crate::sim::{Sample, SimConfig, StepResult, Walk, WalkLimits, walk};
 use crate::sweep::{SweepPoint, mu0_grid, sweep_chains};
 
@@ -338,11 +339,291 @@ pub fn summary(d: &Data) -> String {
     s
 }
 
-/// Run everything and write the CSV files and `summary.txt` into `out`; returns the summary.
+fn fig(title: &str, x: &str, y: &str, series: Vec<Series>, markers: bool) -> Figure {
+    Figure {
+        title: title.to_owned(),
+        x_label: x.to_owned(),
+        y_label: y.to_owned(),
+        series,
+        markers,
+        equal_axes: false,
+    }
+}
+
+fn motion_fig(title: &str, s: &[Sample]) -> Figure {
+    let pick = |i: usize| s.iter().map(|p| (p.time, p.state[i])).collect();
+    fig(
+        title,
+        "time [s]",
+        "x [m], th1, th2 [rad]",
+        vec![
+            Series::new("x", pick(0)),
+            Series::new("th1", pick(2)),
+            Series::new("th2", pick(3)),
+        ],
+        false,
+    )
+}
+
+fn per_step(walks: &[(f64, Walk)], name: &str, key: fn(&StepResult) -> f64) -> Vec<Series> {
+    walks
+        .iter()
+        .map(|(v, w)| {
+            Series::new(
+                format!("{name} = {v}"),
+                w.steps
+                    .iter()
+                    .enumerate()
+                    .map(|(k, s)| (k as f64, key(s)))
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+fn per_mu0(
+    chains: &[(f64, Vec<SweepPoint>)],
+    name: &str,
+    key: fn(&StepResult) -> Option<f64>,
+    mu0_min: f64,
+) -> Vec<Series> {
+    chains
+        .iter()
+        .map(|(v, pts)| {
+            Series::new(
+                format!("{name} = {v}"),
+                pts.iter()
+                    .filter(|p| p.failure.is_none() && p.mu0 >= mu0_min)
+                    .filter_map(|p| p.last.as_ref().and_then(key).map(|y| (p.mu0, y)))
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+/// Stick diagram: the stance spoke (foot to hip) at every few samples, and the hip path.
+fn stick_fig(title: &str, s: &[Sample], l: f64) -> Figure {
+    let hip = |p: &Sample| {
+        (
+            p.state[0] + l * p.state[2].sin(),
+            p.state[1] + l * p.state[2].cos(),
+        )
+    };
+    let mut series = vec![Series::new("hip", s.iter().map(hip).collect())];
+    for p in s.iter().step_by(6) {
+        series.push(Series::new("", vec![(p.state[0], p.state[1]), hip(p)]));
+    }
+    Figure {
+        equal_axes: true,
+        ..fig(title, "x [m]", "z [m]", series, false)
+    }
+}
+
+fn write_figures(out: &Path, d: &Data) -> Result<(), String> {
+    let t = |s: &StepResult| s.period;
+    let v = |s: &StepResult| s.speed;
+    let figs: Vec<(&str, Figure)> = vec![
+        (
+            "fig3",
+            motion_fig(
+                "Fig. 3: T_set = 0.3, mu0 = 0, omega0 = 0.8",
+                &d.motion[0].samples,
+            ),
+        ),
+        (
+            "fig5",
+            motion_fig(
+                "Fig. 5: T_set = 0.3, mu0 = 0.4, omega0 = 0.8",
+                &d.motion[1].samples,
+            ),
+        ),
+        (
+            "fig4a",
+            fig(
+                "Fig. 4(a): mu0 = 0",
+                "step",
+                "T [s]",
+                per_step(&d.omega_series[0], "omega0", t),
+                true,
+            ),
+        ),
+        (
+            "fig4b",
+            fig(
+                "Fig. 4(b): mu0 = 0",
+                "step",
+                "V [m/s]",
+                per_step(&d.omega_series[0], "omega0", v),
+                true,
+            ),
+        ),
+        (
+            "fig6a",
+            fig(
+                "Fig. 6(a): mu0 = 0.4",
+                "step",
+                "T [s]",
+                per_step(&d.omega_series[1], "omega0", t),
+                true,
+            ),
+        ),
+        (
+            "fig6b",
+            fig(
+                "Fig. 6(b): mu0 = 0.4",
+                "step",
+                "V [m/s]",
+                per_step(&d.omega_series[1], "omega0", v),
+                true,
+            ),
+        ),
+        (
+            "fig7",
+            fig(
+                "Fig. 7: errors after impact (T_set = 0.3, mu0 = 0.4)",
+                "impact",
+                "error",
+                (0..3)
+                    .map(|i| {
+                        Series::new(
+                            ["|qd+ - qd+_eq|", "d xd+", "d th1d+"][i],
+                            d.convergence
+                                .iter()
+                                .enumerate()
+                                .map(|(k, r)| (k as f64, r[i]))
+                                .collect(),
+                        )
+                    })
+                    .collect(),
+                true,
+            ),
+        ),
+        (
+            "fig8a",
+            fig(
+                "Fig. 8(a)",
+                "mu0",
+                "T [s]",
+                per_mu0(&d.active_sweep, "T_set", |s| Some(s.period), 0.0),
+                true,
+            ),
+        ),
+        (
+            "fig8b",
+            fig(
+                "Fig. 8(b)",
+                "mu0",
+                "dx [m]",
+                {
+                    let mut s = per_mu0(&d.active_sweep, "T_set", |s| Some(s.dx), 0.0);
+                    let lim = 2.0 * Physical::TABLE1.l * (Physical::TABLE1.alpha / 2.0).sin();
+                    s.push(Series::new(
+                        "2 l sin(alpha/2)",
+                        vec![(0.0, lim), (1.0, lim)],
+                    ));
+                    s
+                },
+                true,
+            ),
+        ),
+        (
+            "fig8c",
+            fig(
+                "Fig. 8(c)",
+                "mu0",
+                "V [m/s]",
+                per_mu0(&d.active_sweep, "T_set", |s| Some(s.speed), 0.0),
+                true,
+            ),
+        ),
+        (
+            "fig8d",
+            fig(
+                "Fig. 8(d)",
+                "mu0",
+                "SR",
+                per_mu0(&d.active_sweep, "T_set", |s| s.sr, 0.0),
+                true,
+            ),
+        ),
+        (
+            "fig10a",
+            fig(
+                "Fig. 10(a)",
+                "mu0",
+                "T [s]",
+                per_mu0(&d.passive_sweep, "phi", |s| Some(s.period), 0.0),
+                true,
+            ),
+        ),
+        (
+            "fig10b",
+            fig(
+                "Fig. 10(b)",
+                "mu0",
+                "V [m/s]",
+                per_mu0(&d.passive_sweep, "phi", |s| Some(s.speed), 0.0),
+                true,
+            ),
+        ),
+        (
+            "fig13",
+            fig(
+                "Fig. 13: magnified Fig. 10(b)",
+                "mu0",
+                "V [m/s]",
+                per_mu0(&d.passive_sweep, "phi", |s| Some(s.speed), 0.2),
+                true,
+            ),
+        ),
+        (
+            "fig11a",
+            stick_fig(
+                "Fig. 11: phi = 0.2, mu0 = 0.2",
+                &d.sticks[0].1.samples,
+                Physical::TABLE1.l,
+            ),
+        ),
+        (
+            "fig11b",
+            stick_fig(
+                "Fig. 11: phi = 0.2, mu0 = 0.5",
+                &d.sticks[1].1.samples,
+                Physical::TABLE1.l,
+            ),
+        ),
+        (
+            "fig12",
+            fig(
+                "Fig. 12: phi = 0.2",
+                "step",
+                "dx [m]",
+                per_step(&d.step_lengths, "mu0", |s| s.dx),
+                true,
+            ),
+        ),
+        (
+            "fig14",
+            stick_fig(
+                "Fig. 14: phi = 0.10, mu0 = 0.19",
+                &d.fall.samples,
+                Physical::TABLE1.l,
+            ),
+        ),
+    ];
+    for (name, f) in &figs {
+        save(f, &out.join(name))?;
+    }
+    Ok(())
+}
+
+/// Run everything and write the CSV files, the figures (PNG and SVG) and `summary.txt` into
+/// `out`; returns the summary.
 pub fn run(out: &Path) -> io::Result<String> {
     fs::create_dir_all(out)?;
     let d = collect();
     write_csvs(out, &d)?;
+    write_figures(out, &d).map_err(io::Error::other)?;
     let s = summary(&d);
     fs::write(out.join("summary.txt"), &s)?;
     Ok(s)
