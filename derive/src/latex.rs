@@ -10,10 +10,20 @@
 //! polynomial). Everything is a function of the canonical form only, so the output is
 //! deterministic.
 //!
-//! Angles are printed as the engine holds them: `\alpha` through its half, so the paper's
-//! `1 - \cos\alpha` reads `2 \sin^2\frac{\alpha}{2}` and `\sin\alpha` reads
-//! `2 \sin\frac{\alpha}{2} \cos\frac{\alpha}{2}`; powers of cosines above one are reduced
-//! (`\cos^2 = 1 - \sin^2`).
+//! Two rewritings make the trigonometry readable, both exact and only for printing:
+//!
+//! - hidden cosine factors: the reduced form has no `\cos^2`, so `I_1 \cos^2\phi` is held as
+//!   `I_1 - I_1 \sin^2\phi`; a factor `\cos a` is recognised (`p = \cos a \, q` exactly when
+//!   `p \cos a`, reduced, is divisible by `1 - \sin^2 a`) and pulled out, and a group equal to
+//!   `\sin^2 a - 1` is printed `-\cos^2 a`;
+//! - shifted angles: an expression in `\theta_1` and `\alpha` or `\phi` is also written in
+//!   `\theta_1 - \delta` for `\delta` one of `\alpha/2`, `\phi`, `\alpha/2 + \phi`, `\alpha` (the
+//!   bisector of the feet, the slope normal, the fore leg), and the form with the fewest terms
+//!   is printed, e.g. `\sin\left(\theta_1 - \phi\right)` for the slope's stance quantities.
+//!
+//! Otherwise angles are printed as the engine holds them: `\alpha` through its half, so the
+//! paper's `1 - \cos\alpha` reads `2 \sin^2\frac{\alpha}{2}` and `\sin\alpha` reads
+//! `2 \sin\frac{\alpha}{2} \cos\frac{\alpha}{2}`.
 
 use std::fmt::Write as _;
 
@@ -868,7 +878,11 @@ pub fn equations_markdown(d: &Derivation) -> Result<String> {
            on the masses (inertias) only through their sum.\n\
          - $\\alpha$ enters through its half: the paper's $1 - \\cos\\alpha$ is $2\\sin^2\\frac{\\alpha}{2}$ and\n  \
            $\\sin\\alpha$ is $2\\sin\\frac{\\alpha}{2}\\cos\\frac{\\alpha}{2}$. Powers of cosines are reduced by\n  \
-           $\\cos^2 = 1 - \\sin^2$, so $1 - \\cos 2\\theta_1$ reads $2\\sin^2\\theta_1$.\n\
+           $\\cos^2 = 1 - \\sin^2$, so $1 - \\cos 2\\theta_1$ reads $2\\sin^2\\theta_1$; the printer puts\n  \
+           cosine factors hidden by that reduction back ($I_1 - I_1\\sin^2\\phi$ is $I_1\\cos^2\\phi$).\n\
+         - Where it is shorter, an expression is written in the angle $\\theta_1 - \\frac{\\alpha}{2}$ (the\n  \
+           bisector of the feet), $\\theta_1 - \\phi$, $\\theta_1 - \\frac{\\alpha}{2} - \\phi$ or $\\theta_1 - \\alpha$\n  \
+           (the fore leg) instead of $\\theta_1$.\n\
          - $\\mu$ is the friction coefficient with its direction (Eq. 24; Eqs. 26, 37 say what it is).\n\
          - On the slope, $\\lambda$ and the foot impulses are vertical components, as in Eqs. 36 and 42\n  \
            (the normal force is $\\lambda / \\cos\\phi$).\n\
