@@ -7,7 +7,12 @@ use std::path::PathBuf;
 
 /// The scenes the simulator is built with: the paper's two setups with Table 1 fixed (the
 /// fast path), and the same structures with every parameter at run time (scene files).
-const SCENES: [&str; 4] = ["active-level", "passive-slope", "general-level", "general-slope"];
+const SCENES: [&str; 4] = [
+    "active-level",
+    "passive-slope",
+    "general-level",
+    "general-slope",
+];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR")?).join("..");

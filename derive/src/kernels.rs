@@ -161,7 +161,9 @@ impl Derivation {
         // Closed loop (Eq. 27 with u from Eq. 31): with u = (v + B) / A the output obeys
         // yddot = v exactly, and the accelerations depend on (th1, th1d, mu, v) only.
         let u_closed = (&sym(V) + &control.b).div(&control.a)?;
-        let closed = level.accel.try_map(|r| r.substitute(Atom::Sym(U), &u_closed))?;
+        let closed = level
+            .accel
+            .try_map(|r| r.substitute(Atom::Sym(U), &u_closed))?;
         let mut closed_outputs = named("qdd", &closed);
         closed_outputs.push(("u".into(), u_closed.clone()));
         let closed_jac = Matrix::jacobian(closed.entries(), &[Th1, Th1d, Mu, V]);

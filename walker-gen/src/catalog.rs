@@ -74,7 +74,11 @@ const TABLE: [(KernelName, &str, &str); 19] = [
     (KernelName::Impact2Level, "impact2_level", "Eqs. 12-16"),
     (KernelName::ImpactSlope, "impact_slope", "Eqs. 39-42"),
     (KernelName::Impact2Slope, "impact2_slope", "Eq. 46"),
-    (KernelName::ClosedLoopLevel, "closed_loop_level", "Eqs. 27, 31"),
+    (
+        KernelName::ClosedLoopLevel,
+        "closed_loop_level",
+        "Eqs. 27, 31",
+    ),
     (
         KernelName::ClosedLoopLevelJacobian,
         "closed_loop_level_jacobian",

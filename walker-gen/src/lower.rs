@@ -45,8 +45,12 @@ pub fn lower(scene: &Scene) -> Result<Module, Error> {
             kernel: name.name().to_owned(),
             message: e.to_string(),
         })?;
-        let lowered = Lowering { scene, params: &params, kernel: kernel.name }
-            .kernel(&mut module.graph, kernel)?;
+        let lowered = Lowering {
+            scene,
+            params: &params,
+            kernel: kernel.name,
+        }
+        .kernel(&mut module.graph, kernel)?;
         module.kernels.push(lowered);
     }
     Ok(module)
@@ -60,7 +64,10 @@ struct Lowering<'a> {
 
 impl Lowering<'_> {
     fn error(&self, message: impl Into<String>) -> Error {
-        Error::Lower { kernel: self.kernel.to_owned(), message: message.into() }
+        Error::Lower {
+            kernel: self.kernel.to_owned(),
+            message: message.into(),
+        }
     }
 
     fn kernel(&self, g: &mut Graph, k: &walker_symbolic::Kernel) -> Result<Kernel, Error> {
@@ -133,7 +140,10 @@ impl Lowering<'_> {
         let p = Param::from_name(s.name())
             .ok_or_else(|| self.error(format!("`{}` is not a scene parameter", s.name())))?;
         self.params.get(p).ok_or_else(|| {
-            self.error(format!("the scene's structure has no parameter `{}`", s.name()))
+            self.error(format!(
+                "the scene's structure has no parameter `{}`",
+                s.name()
+            ))
         })
     }
 
@@ -145,7 +155,9 @@ impl Lowering<'_> {
     fn is_parameter_atom(slot: usize) -> bool {
         match Atom::of_slot(slot) {
             Some(Atom::Sym(s)) => s.kind() == SymKind::Parameter,
-            Some(Atom::Sin(a) | Atom::Cos(a)) => a.symbol_and_multiple().0.kind() == SymKind::Parameter,
+            Some(Atom::Sin(a) | Atom::Cos(a)) => {
+                a.symbol_and_multiple().0.kind() == SymKind::Parameter
+            }
             None => false,
         }
     }
@@ -174,7 +186,11 @@ impl Lowering<'_> {
         if let Some(v) = self.fixed(s) {
             return Ok(g.constant(f(v / k as f64)));
         }
-        let angle = if s.kind() == SymKind::Parameter { self.param(s)? } else { g.input(s.name()) };
+        let angle = if s.kind() == SymKind::Parameter {
+            self.param(s)?
+        } else {
+            g.input(s.name())
+        };
         let angle = if k == 1 {
             angle
         } else {
@@ -220,7 +236,9 @@ impl Lowering<'_> {
                     state.0[slot] = e;
                 }
             }
-            let c = c.to_f64().ok_or_else(|| self.error("coefficient out of f64 range"))?;
+            let c = c
+                .to_f64()
+                .ok_or_else(|| self.error("coefficient out of f64 range"))?;
             groups.entry(state).or_default().push((param, c));
         }
         let mut terms = Vec::with_capacity(groups.len());
@@ -253,7 +271,9 @@ impl Lowering<'_> {
                 counts[slot] += 1;
             }
         }
-        let best = (0..NUM_ATOMS).filter(|&s| counts[s] > 0).max_by_key(|&s| (counts[s], NUM_ATOMS - s));
+        let best = (0..NUM_ATOMS)
+            .filter(|&s| counts[s] > 0)
+            .max_by_key(|&s| (counts[s], NUM_ATOMS - s));
         let Some(slot) = best else {
             let nodes: Vec<NodeId> = terms.into_iter().map(|(_, n)| n).collect();
             return Ok(g.sum(&nodes));

@@ -64,7 +64,8 @@ fn compare(name: &str, step: &StepResult, r: &serde_json::Value) {
 
 #[test]
 fn one_active_step_matches_the_reference() {
-    let r = load("step_active.json").expect("tests/data/step_active.json is committed (sympy_ref/run.sh writes it)");
+    let r = load("step_active.json")
+        .expect("tests/data/step_active.json is committed (sympy_ref/run.sh writes it)");
     let pr = &r["params"];
     let m = Model::active_level(Runtime {
         mu0: num(&pr["mu0"]),
@@ -89,7 +90,8 @@ fn one_active_step_matches_the_reference() {
 
 #[test]
 fn one_passive_step_matches_the_reference() {
-    let r = load("step_passive.json").expect("tests/data/step_passive.json is committed (sympy_ref/run.sh writes it)");
+    let r = load("step_passive.json")
+        .expect("tests/data/step_passive.json is committed (sympy_ref/run.sh writes it)");
     let pr = &r["params"];
     let m = Model::passive_slope(Runtime {
         mu0: num(&pr["mu0"]),
