@@ -1,0 +1,79 @@
+"""Regenerate every reference file in one process tree.
+
+The symbolic derivation (model.derive) runs once in the parent; the independent jobs (one per
+kernel table, one per step case, the closed forms and the operation counts) then run in
+forked worker processes, one per CPU.  Every output is deterministic (fixed seeds, no timing
+in any file); timings go to stdout only.
+
+Usage: python generate.py [--jobs N]   (writes ../tests/data/*.json, closed_forms.txt,
+                                         opcount.json, report.json)
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import multiprocessing
+import os
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.path.join(os.path.dirname(HERE), "tests", "data")
+sys.path.insert(0, HERE)
+
+import model as md  # noqa: E402
+
+
+def task(spec):
+    kind, arg = spec
+    t0 = time.time()
+    if kind == "kernel":
+        import kernels
+        res = kernels.write_kernel(arg, DATA)
+        line = f"kernel {arg}"
+    elif kind == "step":
+        import steps
+        res, line = steps.write_step(arg, DATA)
+    elif kind == "closed_forms":
+        import closed_forms
+        with open(os.path.join(HERE, "closed_forms.txt"), "w") as fh:
+            fh.write(closed_forms.text())
+        res, line = None, "closed_forms.txt"
+    elif kind == "opcount":
+        import opcount
+        opcount.main(os.path.join(HERE, "opcount.json"))
+        res, line = None, "opcount.json"
+    else:
+        raise KeyError(kind)
+    return spec, res, f"{line}: {time.time() - t0:.1f} s"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    args = ap.parse_args()
+    t0 = time.time()
+    mdl = md.derive()
+    print(f"derivation: {time.time() - t0:.1f} s", flush=True)
+    os.makedirs(DATA, exist_ok=True)
+    # longest first, for load balance
+    specs = [("step", "passive"), ("step", "active"), ("opcount", None),
+             ("closed_forms", None)] + [("kernel", k) for k in mdl.kernels]
+    results = {}
+    ctx = multiprocessing.get_context("fork")
+    with ctx.Pool(args.jobs) as pool:
+        for spec, res, line in pool.imap_unordered(task, specs, chunksize=1):
+            results[spec] = res
+            print(line, flush=True)
+    report = {
+        "kernels": {k: results[("kernel", k)] for k in mdl.kernels},
+        "steps": {c: results[("step", c)] for c in ("active", "passive")},
+    }
+    with open(os.path.join(HERE, "report.json"), "w") as fh:
+        json.dump(report, fh, indent=1)
+        fh.write("\n")
+    print(f"total: {time.time() - t0:.1f} s")
+
+
+if __name__ == "__main__":
+    main()
