@@ -1,0 +1,473 @@
+//! `stress`: the long numerical stress cases of `docs/stability.md`, printed as Markdown tables.
+//!
+//! ```sh
+//! cargo run --release -p walker --bin stress > /tmp/stability-tables.md
+//! cargo run --release -p walker --bin stress -- --long-steps 1000   # a shorter long run
+//! ```
+//!
+//! Cases: small and large spoke angles (the heel-strike impact against its exact closed form),
+//! extreme mass and inertia ratios, stiff friction (DOP853 against RODAS4), the pole of
+//! `lambda` (Eq. 23), near-grazing impacts and impacts at the start of a step, and a long run
+//! of the active walker with the drift of its constraints and gait descriptors. The quick
+//! versions of these cases are `walker/tests/stress_*.rs`.
+
+use std::process::ExitCode;
+use std::time::Instant;
+
+use walker::control;
+use walker::kernels::general_level;
+use walker::model::{Model, Physical, Runtime};
+use walker::ode::Method;
+use walker::sim::{SimConfig, Walk, WalkLimits, walk, walk_with_stats};
+
+fn main() -> ExitCode {
+    let mut long_steps = 100_000_usize;
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match (a.as_str(), it.next().map(|v| v.parse::<usize>())) {
+            ("--long-steps", Some(Ok(n))) => long_steps = n,
+            _ => {
+                eprintln!("usage: stress [--long-steps N]");
+                return ExitCode::from(2);
+            }
+        }
+    }
+    small_angles();
+    ratios();
+    stiffness();
+    singular();
+    grazing();
+    long_run(long_steps);
+    ExitCode::SUCCESS
+}
+
+fn fmt_e(v: f64) -> String {
+    format!("{v:.2e}")
+}
+
+/// The outcome of a walk in one cell: `"n steps"` or `"n steps, then <failure>"`.
+fn outcome(w: &Walk) -> String {
+    match &w.failure {
+        None => format!("{} steps", w.steps.len()),
+        Some(f) => format!("{} steps, then `{}`", w.steps.len(), f.name()),
+    }
+}
+
+/// Whether anything in the walk is NaN or infinite (a defect).
+fn has_non_finite(w: &Walk) -> bool {
+    let steps = w.steps.iter().any(|s| {
+        let scalars = [s.period, s.dx, s.speed, s.rear_impulse, s.lambda_min];
+        !s.q_plus
+            .iter()
+            .chain(&s.qd_plus)
+            .chain(&scalars)
+            .chain(s.p.iter())
+            .chain(s.sr.iter())
+            .all(|v| v.is_finite())
+    });
+    let failure = w
+        .failure
+        .as_ref()
+        .and_then(|f| serde_json::to_string(f).ok())
+        .is_some_and(|j| j.contains("NaN") || j.contains("inf"));
+    steps || failure
+}
+
+fn level_prepared(ph: &Physical, mu0: f64) -> general_level::Prepared {
+    general_level::prepare(&general_level::Params {
+        m1: ph.m1,
+        m2: ph.m2,
+        l: ph.l,
+        i1: ph.i1,
+        i2: ph.i2,
+        g: ph.g,
+        alpha: ph.alpha,
+        mu0,
+        c: 100.0,
+        t_set: 0.3,
+        k_p: 0.0,
+        k_d: 0.0,
+    })
+}
+
+/// The heel strike of a rigid rotation (`th1 = alpha/2`, foot at rest, `th1d = th2d = 1`) in
+/// closed form: `[lambda_I[0], |lambda_I[1]|, w+]` with `k = 1 - cos alpha` exact
+/// (`2 sin^2(alpha/2)`) or naive.
+fn heel_strike_closed_form(ph: &Physical, naive: bool) -> [f64; 3] {
+    let (mt, it, l) = (ph.total_mass(), ph.i1 + ph.i2, ph.l);
+    let s = (ph.alpha / 2.0).sin();
+    let k = if naive {
+        1.0 - ph.alpha.cos()
+    } else {
+        2.0 * s * s
+    };
+    let d = 2.0 * it + mt * l * l * k;
+    [
+        4.0 * mt * l * s * it / d,
+        2.0 * ph.i2 * mt * l * l * k / d,
+        (2.0 * it - mt * l * l * k) / d,
+    ]
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    ((a - b) / b).abs()
+}
+
+fn small_angles() {
+    println!("## Small and large spoke angles: the heel-strike impact\n");
+    println!(
+        "`impact2_level` (general kernels, Table 1 masses) at `th1 = alpha/2`, foot at rest, \
+         `th1d = th2d = 1`, against the exact closed form (`1 - cos alpha = 2 sin^2(alpha/2)`, \
+         relative error a few ulps). \"naive\" evaluates the same closed form with `1 - cos alpha` \
+         computed as written.\n"
+    );
+    println!(
+        "| alpha | torso impulse (exact) | naive rel. err. | kernel rel. err. | fore-foot impulse kernel rel. err. | w+ kernel rel. err. |"
+    );
+    println!("|---|---|---|---|---|---|");
+    for alpha in [1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 0.5, 1.0, 2.0, 2.5] {
+        let ph = Physical {
+            alpha,
+            ..Physical::TABLE1
+        };
+        let exact = heel_strike_closed_form(&ph, false);
+        let naive = heel_strike_closed_form(&ph, true);
+        let p = level_prepared(&ph, 0.0);
+        let out = general_level::impact2_level(&p, alpha / 2.0, 0.0, 0.0, 1.0, 1.0);
+        println!(
+            "| {alpha:e} | {} | {} | {} | {} | {} |",
+            fmt_e(exact[1]),
+            fmt_e(rel(naive[1], exact[1])),
+            fmt_e(rel(out[1].abs(), exact[1])),
+            fmt_e(rel(out[0], exact[0])),
+            fmt_e(rel(out[4], exact[2])),
+        );
+    }
+    println!();
+}
+
+fn ratios() {
+    println!("## Extreme mass and inertia ratios\n");
+    println!(
+        "General level kernels, Table 1 otherwise, `mu0 = 0.4`, `omega0 = 0.8`, 3 steps, \
+         `max_step_time = 2`. Every combination of `m2/m1`, `I1/(m_t l^2)` in \
+         `{{1e-6, 1e-3, 1, 1e3, 1e6}}` and `I2/I1` in `{{1e-6, 1, 1e6}}`.\n"
+    );
+    println!("| m2/m1 | I1/(m_t l^2) | I2/I1 = 1e-6 | I2/I1 = 1 | I2/I1 = 1e6 |");
+    println!("|---|---|---|---|---|");
+    let grid = [1e-6, 1e-3, 1.0, 1e3, 1e6];
+    let mut defects = 0;
+    for &rm in &grid {
+        for &ri1 in &grid {
+            let mut cells = Vec::new();
+            for ri2 in [1e-6, 1.0, 1e6] {
+                let b = Physical::TABLE1;
+                let m2 = b.m1 * rm;
+                let i1 = ri1 * (b.m1 + m2) * b.l * b.l;
+                let ph = Physical {
+                    m2,
+                    i1,
+                    i2: ri2 * i1,
+                    ..b
+                };
+                let model = Model::general_level(ph, Runtime::default());
+                let cfg = SimConfig {
+                    max_step_time: 2.0,
+                    ..SimConfig::default()
+                };
+                let w = walk(&model, &cfg, model.initial_state(0.8), &limits(3));
+                if has_non_finite(&w) {
+                    defects += 1;
+                    cells.push(format!("{} **NaN**", outcome(&w)));
+                } else {
+                    cells.push(outcome(&w));
+                }
+            }
+            println!("| {rm:e} | {ri1:e} | {} |", cells.join(" | "));
+        }
+    }
+    println!("\nNon-finite values in any output: {defects}.\n");
+}
+
+fn limits(n: usize) -> WalkLimits {
+    WalkLimits {
+        max_steps: n,
+        ..WalkLimits::default()
+    }
+}
+
+fn stiffness() {
+    println!("## Stiff friction: DOP853 against RODAS4\n");
+    println!(
+        "Active walker (Table 1, `T_set = 0.3`, `omega0 = 0.8`), 5 steps, `rtol = 1e-8`, \
+         `atol = 1e-10`. `dx` of the last completed step; work summed over the walk.\n"
+    );
+    println!(
+        "| c | mu0 | method | outcome | last dx | accepted | rejected | rhs evals | time (ms) |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for c in [1e2, 1e3, 1e4] {
+        for mu0 in [0.4, 1.0, 2.0] {
+            for method in [Method::Dop853, Method::Rodas4] {
+                let model = Model::active_level(Runtime {
+                    mu0,
+                    c,
+                    ..Runtime::default()
+                });
+                let cfg = SimConfig {
+                    method,
+                    rtol: 1e-8,
+                    atol: 1e-10,
+                    ..SimConfig::default()
+                };
+                let t0 = Instant::now();
+                let (w, st) = walk_with_stats(&model, &cfg, model.initial_state(0.8), &limits(5));
+                let ms = t0.elapsed().as_secs_f64() * 1e3;
+                let dx = w
+                    .steps
+                    .last()
+                    .map_or_else(|| "-".to_owned(), |s| format!("{:.10}", s.dx));
+                let nan = if has_non_finite(&w) { " **NaN**" } else { "" };
+                println!(
+                    "| {c:e} | {mu0} | {method:?} | {}{nan} | {dx} | {} | {} | {} | {ms:.1} |",
+                    outcome(&w),
+                    st.accepted_steps,
+                    st.rejected_steps,
+                    st.rhs_evals,
+                );
+            }
+        }
+    }
+    println!();
+}
+
+fn singular_angles(ph: &Physical, mu: f64) -> Option<[f64; 2]> {
+    let k = ph.i1 / (ph.total_mass() * ph.l * ph.l);
+    let ratio = (1.0 + 2.0 * k) / (1.0 + mu * mu).sqrt();
+    (ratio <= 1.0).then(|| {
+        let (d, a) = (mu.atan2(1.0), ratio.acos());
+        [(d - a) / 2.0, (d + a) / 2.0]
+    })
+}
+
+fn singular() {
+    println!("## The pole of lambda (Eq. 23)\n");
+    println!(
+        "Level ground, Table 1: the denominator `2 I1 + 2 m_t l^2 sin th1 (sin th1 - mu cos th1)` \
+         vanishes where `cos 2th1 + mu sin 2th1 = 1 + 2 I1/(m_t l^2)`, which needs \
+         `|mu| >= 0.882`. `lambda_level` at `u = 0`, `th1d = 1`, `xd = -1` (so `mu = mu0`), at \
+         `th1* -+ eps`; then the passive wheel (`general_slope`, `phi = 0`, so `u = 0`) started at \
+         `th1* - 1e-9` rolling towards the pole.\n"
+    );
+    println!(
+        "| mu | th1* | lambda(th1* - 1e-4) | lambda(th1* + 1e-4) | lambda(th1* - 1e-8) | lambda(th1* + 1e-8) | walk |"
+    );
+    println!("|---|---|---|---|---|---|---|");
+    let ph = Physical::TABLE1;
+    for mu in [0.85, 0.9, 1.0, 2.0] {
+        let Some(roots) = singular_angles(&ph, mu) else {
+            println!("| {mu} | none | - | - | - | - | - |");
+            continue;
+        };
+        let p = level_prepared(&ph, mu);
+        for th in roots {
+            let lam = |t: f64| general_level::lambda_level(&p, t, 1.0, 0.0, -1.0);
+            let model = Model::general_slope(
+                ph,
+                Runtime {
+                    mu0: mu,
+                    phi: 0.0,
+                    ..Runtime::default()
+                },
+            );
+            let start = [0.0, 0.0, th - 1e-9, 0.0, -1.0, 0.0, 1.0, 1.0];
+            let w = walk(&model, &SimConfig::default(), start, &limits(1));
+            let nan = if has_non_finite(&w) { " **NaN**" } else { "" };
+            println!(
+                "| {mu} | {th:.6} | {} | {} | {} | {} | {}{nan} |",
+                fmt_e(lam(th - 1e-4)),
+                fmt_e(lam(th + 1e-4)),
+                fmt_e(lam(th - 1e-8)),
+                fmt_e(lam(th + 1e-8)),
+                outcome(&w)
+            );
+        }
+    }
+    println!();
+}
+
+fn grazing() {
+    println!("## Near-grazing impacts and impacts at the start of a step\n");
+    println!(
+        "Passive wheel on the slope (Table 1, `phi = 0.05`, `mu0 = 0.4`, `c = 100`), one step from \
+         `th1 = alpha/2 + phi - d` with `th1d = w` (the fore foot reaches the floor after about \
+         `d / w` with a normal velocity of order `w`), and the active walker started exactly at \
+         its heel-strike angle.\n"
+    );
+    println!("| case | outcome | T | fore-foot normal velocity after impact | rear impulse |");
+    println!("|---|---|---|---|---|");
+    let rt = Runtime {
+        phi: 0.05,
+        ..Runtime::default()
+    };
+    let model = Model::passive_slope(rt);
+    let heel = model.heel_strike_angle();
+    for (d, w0) in [
+        (1e-3, 1e-3),
+        (1e-6, 1e-6),
+        (1e-9, 1e-9),
+        (1e-12, 1e-12),
+        (0.0, 1e-6),
+        (0.0, 0.0),
+    ] {
+        let start = [0.0, 0.0, heel - d, 0.0, 0.0, 0.0, w0, 0.0];
+        let w = walk(&model, &SimConfig::default(), start, &limits(1));
+        row(&format!("passive, d = {d:e}, w = {w0:e}"), &w);
+    }
+    // Barely passing mid-stance: the smallest omega0 that completes a step (bisection).
+    let level = Model::passive_slope(Runtime {
+        phi: 0.0,
+        ..Runtime::default()
+    });
+    let passes = |om: f64| {
+        let s = [0.0, 0.0, level.rear_contact_angle(), 0.0, 0.0, 0.0, om, 0.0];
+        walk(&level, &SimConfig::default(), s, &limits(1))
+    };
+    let (mut lo, mut hi) = (0.0, 5.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if passes(mid).failure.is_none() {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    row(
+        &format!("passive, level, barely passes mid-stance (omega0 = {hi:.12})"),
+        &passes(hi),
+    );
+    row(
+        &format!("passive, level, barely fails (omega0 = {lo:.12})"),
+        &passes(lo),
+    );
+    let active = Model::active_level(Runtime::default());
+    let mut s = active.initial_state(0.8);
+    s[2] = active.heel_strike_angle();
+    let w = walk(&active, &SimConfig::default(), s, &limits(1));
+    row("active, started at th1 = alpha/2", &w);
+    println!();
+}
+
+fn row(case: &str, w: &Walk) {
+    let nan = if has_non_finite(w) { " **NaN**" } else { "" };
+    let (t, v, r) = w.steps.first().map_or_else(
+        || ("-".to_owned(), "-".to_owned(), "-".to_owned()),
+        |s| {
+            (
+                fmt_e(s.period),
+                fmt_e(s.foot_normal_velocity),
+                fmt_e(s.rear_impulse),
+            )
+        },
+    );
+    println!("| {case} | {}{nan} | {t} | {v} | {r} |", outcome(w));
+}
+
+fn long_run(n: usize) {
+    println!("## Long run: {n} steps of the active walker\n");
+    let model = Model::active_level(Runtime::default());
+    let cfg = SimConfig::default();
+    let chunk = 1000;
+    let mut state = model.initial_state(0.8);
+    let (mut max_z, mut max_zd, mut max_y) = (0.0_f64, 0.0_f64, 0.0_f64);
+    let (mut max_fnv, mut done) = (0.0_f64, 0);
+    let mut first: Option<[f64; 4]> = None;
+    let mut window: Vec<[f64; 4]> = Vec::new();
+    let mut failure = None;
+    let t0 = Instant::now();
+    let alpha = model.physical.alpha;
+    while done < n {
+        let lim = WalkLimits {
+            max_steps: chunk.min(n - done),
+            record: true,
+            ..WalkLimits::default()
+        };
+        let w = walk(&model, &cfg, state, &lim);
+        // time of each step's start within the chunk
+        let mut starts = vec![0.0];
+        for s in &w.steps {
+            let last = starts.last().copied().unwrap_or(0.0);
+            starts.push(last + s.period);
+        }
+        for smp in &w.samples {
+            let t = smp.time - starts.get(smp.step).copied().unwrap_or(0.0);
+            let yd = control::desired(alpha, model.runtime.t_set, t)[0];
+            let [_, z, th1, th2, _, zd, ..] = smp.state;
+            max_z = max_z.max(z.abs());
+            max_zd = max_zd.max(zd.abs());
+            if t >= 0.0 {
+                max_y = max_y.max((th1 - th2 - yd).abs());
+            }
+        }
+        for s in &w.steps {
+            max_fnv = max_fnv.max(s.foot_normal_velocity.abs());
+            let d = [
+                s.period,
+                s.dx,
+                s.p.unwrap_or(f64::NAN),
+                s.sr.unwrap_or(f64::NAN),
+            ];
+            if first.is_none() && done >= 1000 {
+                first = Some(d);
+            }
+            if n - done <= 1000 {
+                window.push(d);
+            }
+            done += 1;
+        }
+        if let Some(f) = w.failure {
+            failure = Some(f);
+            break;
+        }
+        match w.last_state() {
+            Some(s) => state = s,
+            None => break,
+        }
+    }
+    let secs = t0.elapsed().as_secs_f64();
+    println!(
+        "Table 1, `mu0 = 0.4`, `T_set = 0.3`, `omega0 = 0.8`, DOP853 with `rtol = 1e-10`, \
+         `atol = 1e-12`; {done} steps completed in {secs:.1} s (release build, samples \
+         recorded at 4 points per integrator step); failure: {}.\n",
+        failure.map_or_else(|| "none".to_owned(), |f| format!("`{}`", f.name()))
+    );
+    println!("| constraint | max abs. value over the run |");
+    println!("|---|---|");
+    println!("| z (stance foot height) | {} |", fmt_e(max_z));
+    println!("| zd (stance foot vertical velocity) | {} |", fmt_e(max_zd));
+    println!(
+        "| y - y_d (output error, K_P = K_D = 0) | {} |",
+        fmt_e(max_y)
+    );
+    println!(
+        "| new foot's normal velocity after impact | {} |\n",
+        fmt_e(max_fnv)
+    );
+    if let (Some(a), Some(b)) = (first, window.first()) {
+        println!(
+            "Descriptor drift: step 1000 against the last 1000 steps (max abs. difference).\n"
+        );
+        println!("| descriptor | at step 1000 | max abs. difference over the last 1000 steps |");
+        println!("|---|---|---|");
+        for (i, name) in ["T", "dx", "p", "SR"].iter().enumerate() {
+            let dev = window
+                .iter()
+                .map(|d| (d[i] - a[i]).abs())
+                .fold(0.0_f64, f64::max);
+            let _ = b;
+            println!("| {name} | {:.12} | {} |", a[i], fmt_e(dev));
+        }
+    }
+    println!();
+}
