@@ -8,6 +8,7 @@ pub mod kernels;
 pub mod model;
 pub mod ode;
 pub mod plot;
+pub mod poincare;
 pub mod reproduce;
 pub mod sim;
 pub mod sweep;
