@@ -114,7 +114,7 @@ class Case:
         series_acc = [s, c, t1d, muS] + ([[]] if self.active else [])
         if self.active:
             uS = series_acc[4]
-            A, B = None, None
+            A, B, num = None, None, []
             runAB = self.prog_AB.run([s, c, t1d, muS])
             vS = self._shift(self.ydd_poly, t0) if phase == 0 else [ZERO]
         run = self.prog_acc.run(series_acc)
@@ -132,9 +132,8 @@ class Case:
                 else:
                     A.append(Ak)
                     B.append(Bk)
-                vk = vS[k] if k < len(vS) else ZERO
-                num = [vv + bb for vv, bb in zip([*(vS[j] if j < len(vS) else ZERO
-                                                     for j in range(k + 1))], B)]
+                # u = (v + B) / A, coefficient k (v: Taylor coefficients of yd'' at t0)
+                num.append((vS[k] if k < len(vS) else ZERO) + Bk)
                 uS.append(div_coeff(num, A, uS, k))
             out = run.coeff(k)
             for i in range(4):
