@@ -103,6 +103,23 @@ enum Command {
         #[arg(long = "max-steps", default_value_t = 1000)]
         max_steps: usize,
     },
+    /// Find the limit cycle (fixed point of the Poincare map) and its Floquet multipliers.
+    FixedPoint {
+        #[command(flatten)]
+        common: Common,
+        /// Friction coefficient mu0, >= 0.
+        #[arg(long, allow_hyphen_values = true)]
+        mu0: Option<f64>,
+        /// Ramp duration T_set (s), > 0 (active walker).
+        #[arg(long = "t-set", allow_hyphen_values = true)]
+        t_set: Option<f64>,
+        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
+        #[arg(long, allow_hyphen_values = true)]
+        phi: Option<f64>,
+        /// Initial angular velocity omega0 of the warm-up walk (rad/s).
+        #[arg(long, allow_hyphen_values = true)]
+        omega0: Option<f64>,
+    },
     /// Reproduce the paper's figures and claims.
     Reproduce {
         /// Output directory.
@@ -207,6 +224,28 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 println!("{}", serde_json::json!({ "chains": res }));
             } else {
                 print!("{}", app::sweep_text(&res, active));
+            }
+        }
+        Command::FixedPoint {
+            common,
+            mu0,
+            t_set,
+            phi,
+            omega0,
+        } => {
+            let ov = Overrides {
+                mu0,
+                c: common.c,
+                t_set,
+                phi,
+            };
+            let setup = app::resolve(&common.scene, &ov).map_err(input)?;
+            let out = walker::poincare::cli_report(&setup, omega0, &config(common.method))
+                .map_err(input)?;
+            if common.json {
+                println!("{}", out.json);
+            } else {
+                print!("{}", out.text);
             }
         }
         Command::Reproduce { out } => {

@@ -647,3 +647,101 @@ fn residual(model: &Model, m: &MapResult, r: [f64; 2]) -> (f64, [[f64; 2]; 2]) {
         reduced_jacobian(model, &m.jacobian),
     )
 }
+
+/// The output of `walker fixed-point`: the JSON object and the text table.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Report {
+    /// `{"status", "state_plus", "T", "V", "multipliers", ...}`; a failed search is
+    /// `{"status": "failed", "reason"}`.
+    pub json: serde_json::Value,
+    /// Human-readable summary.
+    pub text: String,
+}
+
+/// `walker fixed-point`: validate `omega0` (finite, `> 0`) and the scene (the Jacobian kernels
+/// exist for Table 1 only), search the cycle and format it. A failed search is a result
+/// (status `failed`), not an input error.
+pub fn cli_report(
+    setup: &crate::app::Setup,
+    omega0: Option<f64>,
+    cfg: &SimConfig,
+) -> Result<Report, crate::app::InputError> {
+    let bad = |field: &str, message: String| crate::app::InputError {
+        field: field.to_owned(),
+        message,
+    };
+    if setup.physical != Physical::TABLE1 {
+        return Err(bad(
+            "scene",
+            "fixed-point needs the Table 1 parameters (its Jacobian kernels are generated for \
+             the active-level and passive-slope scenes only)"
+                .to_owned(),
+        ));
+    }
+    let model = setup.model();
+    let mut opts = FixedPointOptions::for_model(&model);
+    if let Some(w) = omega0 {
+        if !(w.is_finite() && w > 0.0) {
+            return Err(bad(
+                "omega0",
+                format!("{w} is outside the valid range (0, inf)"),
+            ));
+        }
+        opts.omega0 = w;
+    }
+    Ok(match fixed_point(&model, cfg, &opts) {
+        Ok(fp) => Report {
+            json: serde_json::to_value(&fp).unwrap_or(serde_json::Value::Null),
+            text: fixed_point_text(&fp),
+        },
+        Err(e) => Report {
+            json: serde_json::json!({ "status": "failed", "reason": e.to_string() }),
+            text: format!("status: failed ({e})\n"),
+        },
+    })
+}
+
+fn fixed_point_text(fp: &FixedPoint) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::new();
+    let status = serde_json::to_value(fp.status)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_owned))
+        .unwrap_or_default();
+    let _ = writeln!(s, "status: {status}");
+    if let Some(f) = &fp.failure {
+        let _ = writeln!(s, "walk on the cycle fails: {f}");
+    }
+    let _ = writeln!(
+        s,
+        "state_plus [x z th1 th2 xd zd th1d th2d]: {:?}",
+        fp.state_plus
+    );
+    let _ = writeln!(
+        s,
+        "T = {:.10} s, V = {:.10} m/s, dx = {:.10} m",
+        fp.period, fp.speed, fp.dx
+    );
+    let _ = writeln!(
+        s,
+        "residual {:.3e} after {} Newton iterations",
+        fp.residual, fp.iterations
+    );
+    let _ = writeln!(s, "multipliers (reduced map in xd+, th1d+):");
+    for m in &fp.multipliers {
+        let _ = writeln!(
+            s,
+            "  {:+.10} {:+.10}i  |.| = {:.10}",
+            m.re,
+            m.im,
+            m.modulus()
+        );
+    }
+    if fp.structural_unit_multiplier {
+        let _ = writeln!(
+            s,
+            "the multiplier at 1 is structural: a family of cycles (conserved horizontal momentum)"
+        );
+    }
+    s
+}
