@@ -808,16 +808,21 @@ fn field_at(src: &str, offset: usize) -> Option<String> {
     let before = src.get(..offset)?;
     let line_start = before.rfind('\n').map_or(0, |i| i + 1);
     let line = src.get(line_start..)?.lines().next()?.trim();
+    // An empty header (`[]`) or key (`= 1`) names nothing: the caller falls back to the file.
     let header = |l: &str| {
         l.trim()
             .strip_prefix('[')
             .and_then(|h| h.split(']').next())
             .map(|h| h.trim().to_owned())
+            .filter(|h| !h.is_empty())
     };
     if let Some(h) = header(line) {
         return Some(h);
     }
     let key = line.split_once('=')?.0.trim().trim_matches('"').to_owned();
+    if key.is_empty() {
+        return None;
+    }
     let table = src.get(..line_start)?.lines().rev().find_map(header);
     Some(match table {
         Some(t) => format!("{t}.{key}"),

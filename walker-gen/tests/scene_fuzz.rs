@@ -5,12 +5,9 @@
 use proptest::prelude::*;
 use walker_gen::Scene;
 
-/// Known defect of `scene.rs`'s `field_at`: a syntax error on a line whose key is empty
-/// (`"="`, `"=\"\"a"`) gives `field() == ""` instead of `<file>`. Set to `false` once fixed.
-const KNOWN_EMPTY_KEY_DEFECT: bool = true;
-
+/// A syntax error on a line whose key is empty (`"="`, `"=\"\"a"`) names the file (found by this
+/// fuzz test: it used to give an empty field).
 #[test]
-#[ignore = "known defect: scene.rs field_at returns an empty key for a line like `=`"]
 fn a_line_with_an_empty_key_names_a_field() {
     for src in ["=", "=\"\"a", "name = \"t\"\n= 1\n"] {
         let e = Scene::from_toml_str(src, "t.toml").err();
@@ -24,10 +21,6 @@ fn check(src: &str) -> Result<(), TestCaseError> {
     if let Err(e) = Scene::from_toml_str(src, "fuzz.toml") {
         let field = e.field();
         let message = e.to_string();
-        if field.is_empty() && KNOWN_EMPTY_KEY_DEFECT {
-            // See `a_line_with_an_empty_key_names_a_field` (ignored until scene.rs is fixed).
-            return Ok(());
-        }
         prop_assert!(!field.is_empty(), "empty field for {src:?}: {message}");
         let leaf = field.rsplit('.').next().unwrap_or(field);
         prop_assert!(
