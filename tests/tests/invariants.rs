@@ -102,11 +102,12 @@ fn energy_conserved_along_frictionless_stance() {
         let e = gs::energy(&ks, y[1], y[2], y[4], y[5], y[6], y[7]);
         e[0] + e[1]
     };
-    let cases: [(
-        &dyn Fn(f64, f64, f64) -> [f64; 4],
-        &dyn Fn(&[f64; 8]) -> f64,
+    type Case<'a> = (
+        &'a dyn Fn(f64, f64, f64) -> [f64; 4],
+        &'a dyn Fn(&[f64; 8]) -> f64,
         [f64; 8],
-    ); 2] = [
+    );
+    let cases: [Case; 2] = [
         (
             &level_acc,
             &level_e,
