@@ -110,6 +110,15 @@ pub enum Failure {
         /// State.
         state: [f64; 8],
     },
+    /// The heel strike happened at the very start of the step (a step of zero duration, so no
+    /// step period, speed or power exists): the state began on the impact guard moving into
+    /// the floor.
+    ImpactAtStart {
+        /// Step number.
+        step: usize,
+        /// Pre-impact state.
+        state: [f64; 8],
+    },
     /// No heel strike within [`SimConfig::max_step_time`].
     NoImpact {
         /// Step number.
@@ -150,6 +159,7 @@ impl Failure {
             Failure::DoubleSupport { .. } => "double-support",
             Failure::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
             Failure::FellBackward { .. } => "fell-backward",
+            Failure::ImpactAtStart { .. } => "impact-at-start",
             Failure::NoImpact { .. } => "no-impact",
             Failure::NonFinite { .. } => "non-finite",
             Failure::Integrator { .. } => "integrator",
@@ -164,6 +174,7 @@ impl Failure {
             | Failure::DoubleSupport { step, .. }
             | Failure::LambdaDenominatorZero { step, .. }
             | Failure::FellBackward { step, .. }
+            | Failure::ImpactAtStart { step, .. }
             | Failure::NoImpact { step, .. }
             | Failure::NonFinite { step, .. }
             | Failure::Integrator { step, .. } => *step,
@@ -571,6 +582,9 @@ fn one_step<O: Observer<N>>(
     };
 
     let pre = mech(&ye);
+    if te <= 0.0 {
+        return Err(Failure::ImpactAtStart { step, state: pre });
+    }
     if model.is_active() && te < model.runtime.t_set {
         return Err(Failure::ImpactBeforeTSet {
             step,
