@@ -563,7 +563,18 @@ pub fn fixed_point(
                 .to_owned(),
         )
     })?;
-    let mut r = reduce(&s0);
+    newton(model, cfg, reduce(&s0), opts)
+}
+
+/// Newton's method of [`fixed_point`] from the reduced guess `r0 = (xd+, th1d+)` (no warm-up
+/// walk): for continuation from a neighbouring cycle.
+pub fn newton(
+    model: &Model,
+    cfg: &SimConfig,
+    r0: [f64; 2],
+    opts: &FixedPointOptions,
+) -> Result<FixedPoint, FixedPointError> {
+    let mut r = r0;
     let mut m = poincare_map(model, cfg, &embed(model, r))?;
     let mut iterations = 0;
     let mut singular = false;
@@ -741,6 +752,134 @@ fn fixed_point_text(fp: &FixedPoint) -> String {
         let _ = writeln!(
             s,
             "the multiplier at 1 is structural: a family of cycles (conserved horizontal momentum)"
+        );
+    }
+    s
+}
+
+/// One point of a continuation in `mu0`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ContinuationPoint {
+    /// The chain's parameter: `T_set` (active walker) or `phi` (passive wheel).
+    pub chain: f64,
+    /// Friction coefficient.
+    pub mu0: f64,
+    /// The cycle, or `None` when the search failed (no step from the initial condition).
+    pub cycle: Option<FixedPoint>,
+}
+
+impl ContinuationPoint {
+    /// A converged, valid gait whose multipliers are all strictly inside the unit circle.
+    pub fn is_stable(&self) -> bool {
+        self.cycle
+            .as_ref()
+            .is_some_and(|c| c.status == Status::Converged && c.max_modulus() < 1.0)
+    }
+}
+
+/// Continuation in `mu0` along `mu0s` for every chain value (`T_set` for the active walker,
+/// `phi` for the passive wheel; `model_for(chain, mu0)` builds the model): each cycle starts
+/// Newton's method from the previous one on the chain, and falls back to the warm-up walk of
+/// [`fixed_point`] when that does not give a converged cycle.
+pub fn continuation(
+    model_for: impl Fn(f64, f64) -> Model,
+    chains: &[f64],
+    mu0s: &[f64],
+    cfg: &SimConfig,
+) -> Vec<ContinuationPoint> {
+    let ok = |c: &FixedPoint| matches!(c.status, Status::Converged | Status::Family);
+    let mut out = Vec::new();
+    for &chain in chains {
+        let mut prev: Option<[f64; 2]> = None;
+        for &mu0 in mu0s {
+            let model = model_for(chain, mu0);
+            let opts = FixedPointOptions::for_model(&model);
+            let from_prev = prev
+                .and_then(|r| newton(&model, cfg, r, &opts).ok())
+                .filter(ok);
+            let cycle = from_prev.or_else(|| fixed_point(&model, cfg, &opts).ok());
+            prev = cycle
+                .as_ref()
+                .filter(|c| ok(c))
+                .map(|c| reduce(&c.state_plus));
+            out.push(ContinuationPoint { chain, mu0, cycle });
+        }
+    }
+    out
+}
+
+/// The continuation as CSV: `chain,mu0,status,T,V,dx,max_modulus,stable` (empty fields when
+/// no cycle was found; never NaN).
+pub fn continuation_csv(points: &[ContinuationPoint]) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::from("chain,mu0,status,T,V,dx,max_modulus,stable\n");
+    for p in points {
+        let _ = match &p.cycle {
+            Some(c) => writeln!(
+                s,
+                "{},{},{},{},{},{},{},{}",
+                p.chain,
+                p.mu0,
+                status_name(c.status),
+                c.period,
+                c.speed,
+                c.dx,
+                c.max_modulus(),
+                p.is_stable()
+            ),
+            None => writeln!(s, "{},{},failed,,,,,false", p.chain, p.mu0),
+        };
+    }
+    s
+}
+
+fn status_name(s: Status) -> &'static str {
+    match s {
+        Status::Converged => "converged",
+        Status::Family => "family",
+        Status::NotConverged => "not-converged",
+        Status::InvalidGait => "invalid-gait",
+    }
+}
+
+/// A stability summary of a continuation: for every chain, the maximal runs of consecutive grid
+/// values of `mu0` on which the gait is stable ([`ContinuationPoint::is_stable`]), e.g.
+/// `T_set = 0.3: stable for mu0 in [0.05, 1] (20/20 points)`. `name` is the chain's
+/// parameter (`T_set` or `phi`).
+pub fn stability_summary(points: &[ContinuationPoint], name: &str) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::new();
+    let mut chains: Vec<f64> = points.iter().map(|p| p.chain).collect();
+    chains.dedup();
+    for chain in chains {
+        let pts: Vec<&ContinuationPoint> = points.iter().filter(|p| p.chain == chain).collect();
+        let mut runs: Vec<(f64, f64)> = Vec::new();
+        let mut open: Option<(f64, f64)> = None;
+        for p in &pts {
+            match (p.is_stable(), open) {
+                (true, None) => open = Some((p.mu0, p.mu0)),
+                (true, Some((a, _))) => open = Some((a, p.mu0)),
+                (false, Some(run)) => {
+                    runs.push(run);
+                    open = None;
+                }
+                (false, None) => {}
+            }
+        }
+        runs.extend(open);
+        let n = pts.iter().filter(|p| p.is_stable()).count();
+        let ranges = if runs.is_empty() {
+            "nowhere on the grid".to_owned()
+        } else {
+            runs.iter()
+                .map(|(a, b)| format!("[{a}, {b}]"))
+                .collect::<Vec<_>>()
+                .join(" and ")
+        };
+        let _ = writeln!(
+            s,
+            "{name} = {chain}: stable for mu0 in {ranges} ({n}/{} points)",
+            pts.len()
         );
     }
     s
