@@ -39,8 +39,8 @@ pub struct GenerateReport {
 }
 
 impl Config {
-    /// A configuration with no scene, `f64`, std, [`Division::SharedReciprocal`], the output
-    /// file `$OUT_DIR/<scene name>.rs` and no `cargo:` lines.
+    /// A configuration with no scene, `f64`, std, [`Division::SharedReciprocal`], checked entry
+    /// points, the output file `$OUT_DIR/<scene name>.rs` and no `cargo:` lines.
     #[must_use]
     pub fn new() -> Config {
         Config::default()
@@ -74,6 +74,15 @@ impl Config {
     /// How divisions by shared denominators are evaluated.
     pub fn division(&mut self, division: Division) -> &mut Config {
         self.options.division = division;
+        self
+    }
+
+    /// Whether to emit checked entry points (default `true`): next to each kernel `k`, a
+    /// `k_checked` returning `Result<_, KernelError>` that names the first non-finite argument
+    /// or output, and once per file the `KernelError` enum. `false` leaves them out (smaller
+    /// code for embedded users); the unchecked kernels are the same either way.
+    pub fn checked(&mut self, checked: bool) -> &mut Config {
+        self.options.checked = checked;
         self
     }
 

@@ -7,7 +7,9 @@
 //! 2. `pub type F = f64;` (or `f32`);
 //! 3. `pub struct Params` (the runtime parameters), `pub struct Prepared` (what `prepare`
 //!    computes from them) and `pub fn prepare(p: &Params) -> Prepared`;
-//! 4. one `pub fn` per kernel taking `p: &Prepared` and its arguments.
+//! 4. one `pub fn` per kernel taking `p: &Prepared` and its arguments (the unchecked fast
+//!    path), followed, when [`EmitOptions::checked`] is set, by `pub fn <kernel>_checked`
+//!    returning `Result<_, KernelError>`, and once per file the `KernelError` enum.
 //!
 //! The output depends only on the module and the options: no paths, no time, no hash-map
 //! order. Floating-point functions are inherent methods (`x.sin()`, `x.sin_cos()`) in std
@@ -50,7 +52,9 @@ impl Float {
 }
 
 /// What the emitter writes.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default)]
+///
+/// The default is `f64`, std, [`Division::SharedReciprocal`] and checked entry points.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
 pub struct EmitOptions {
     /// The float type `F`.
     pub float: Float,
@@ -59,6 +63,21 @@ pub struct EmitOptions {
     pub no_std: bool,
     /// How divisions by shared denominators are evaluated.
     pub division: Division,
+    /// Whether to emit, next to each kernel `k`, a `k_checked` that rejects non-finite
+    /// arguments and outputs with a `KernelError` (emitted once per file). `false` leaves both
+    /// out (smallest code, for embedded users); the plain kernels are the same either way.
+    pub checked: bool,
+}
+
+impl Default for EmitOptions {
+    fn default() -> Self {
+        EmitOptions {
+            float: Float::default(),
+            no_std: false,
+            division: Division::default(),
+            checked: true,
+        }
+    }
 }
 
 /// Emits `module` as formatted Rust source.
@@ -367,6 +386,24 @@ fn doc_attrs(lines: &[String]) -> Vec<TokenStream> {
         .collect()
 }
 
+/// `text` broken at spaces into lines of at most 96 characters (a `/// ` line of at most 100),
+/// for the doc comments of the checked entry points. A longer word stays whole.
+fn wrap(text: &str) -> String {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for word in text.split(' ').filter(|w| !w.is_empty()) {
+        if !line.is_empty() && line.len() + 1 + word.len() > 96 {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    lines.push(line);
+    lines.join("\n")
+}
+
 fn code_list(items: &[String]) -> String {
     items
         .iter()
@@ -489,9 +526,28 @@ fn kernel_fn(
         "Operations per call: {}.",
         stats::block_counts(&plan.graph, &kp.block).summary()
     ));
+    doc.push(String::new());
+    doc.push(wrap(&format!(
+        "Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; \
+         never panics. (A saturating function (a friction law, a sign) can map an infinite input \
+         to a finite output, and an argument the scene does not read has no effect.){}",
+        if options.checked {
+            format!(
+                " [`{}_checked`] rejects non-finite arguments and outputs.",
+                k.name
+            )
+        } else {
+            String::new()
+        }
+    )));
     let docs = doc_attrs(&doc);
     let name = ident(&k.name);
     let constness = const_if_possible(plan, &kp.block);
+    let checked = if options.checked {
+        checked_fn(k, &ret_ty)
+    } else {
+        quote!()
+    };
     Some(quote! {
         #(#docs)*
         #[inline]
@@ -500,7 +556,164 @@ fn kernel_fn(
             #(#lets)*
             #ret
         }
+
+        #checked
     })
+}
+
+/// `pub fn <kernel>_checked`: argument checks in argument order, the unchecked kernel, output
+/// checks in return order, each one line through the private helpers of `KernelError`.
+fn checked_fn(k: &Kernel, ret_ty: &TokenStream) -> TokenStream {
+    let name = ident(&k.name);
+    let checked_name = ident(&format!("{}_checked", k.name));
+    let args: Vec<Ident> = k.args.iter().map(|a| ident(a)).collect();
+    let arg_checks: Vec<TokenStream> = k
+        .args
+        .iter()
+        .map(|a| {
+            let (arg, lit) = (ident(a), Literal::string(a));
+            quote!(KernelError::argument(#lit, #arg)?;)
+        })
+        .collect();
+    let places: Vec<TokenStream> = match k.output_shape {
+        Shape::Scalar => vec![quote!(out)],
+        Shape::Vector(n) => (0..n)
+            .map(|i| {
+                let i = unsuffixed(i);
+                quote!(out[#i])
+            })
+            .collect(),
+        Shape::Matrix(r, c) => (0..r)
+            .flat_map(|i| (0..c).map(move |j| (i, j)))
+            .map(|(i, j)| {
+                let (i, j) = (unsuffixed(i), unsuffixed(j));
+                quote!(out[#i][#j])
+            })
+            .collect(),
+    };
+    let out_checks: Vec<TokenStream> = places
+        .iter()
+        .zip(&k.outputs)
+        .map(|(place, (out_name, _))| {
+            let lit = Literal::string(out_name);
+            quote!(KernelError::output(#lit, #place)?;)
+        })
+        .collect();
+    let arg_order = if k.args.is_empty() {
+        String::new()
+    } else {
+        format!(" (in the order {})", code_list(&k.args))
+    };
+    let out_names: Vec<String> = k.outputs.iter().map(|o| o.0.clone()).collect();
+    let docs = doc_attrs(&[
+        wrap(&format!(
+            "Checked variant of [`{}`]: the same value, or why it would not be finite.",
+            k.name
+        )),
+        String::new(),
+        wrap(&format!(
+            "Every argument is checked, also one the scene does not read. Cost: the unchecked \
+             kernel plus {} finiteness tests. Never panics.",
+            k.args.len() + k.outputs.len()
+        )),
+        String::new(),
+        "# Errors".to_owned(),
+        String::new(),
+        wrap(&format!(
+            "[`KernelError::NonFiniteArgument`] naming the first argument{arg_order} that is \
+             NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output \
+             (in the order {}) that is NaN or infinite, for example where a denominator \
+             vanishes or a parameter given to [`prepare`] is not finite.",
+            code_list(&out_names)
+        )),
+    ]);
+    quote! {
+        #(#docs)*
+        #[inline]
+        pub fn #checked_name(p: &Prepared, #(#args: F),*) -> Result<#ret_ty, KernelError> {
+            #(#arg_checks)*
+            let out = #name(p, #(#args),*);
+            #(#out_checks)*
+            Ok(out)
+        }
+    }
+}
+
+/// The `KernelError` enum of the checked entry points, with `Display` (and, in std mode,
+/// `std::error::Error`).
+fn kernel_error(module: &Module, options: &EmitOptions) -> TokenStream {
+    // Emitted only if used, so that a file whose kernels take no argument has no dead code.
+    let argument = if module.kernels.iter().any(|k| !k.args.is_empty()) {
+        quote! {
+            /// `x`, or `Err(NonFiniteArgument { name })` if the argument `x` is NaN or infinite.
+            #[inline]
+            const fn argument(name: &'static str, x: F) -> Result<F, Self> {
+                if x.is_finite() {
+                    Ok(x)
+                } else {
+                    Err(Self::NonFiniteArgument { name })
+                }
+            }
+        }
+    } else {
+        quote!()
+    };
+    let std_error = if options.no_std {
+        quote!()
+    } else {
+        quote! {
+            impl std::error::Error for KernelError {}
+        }
+    };
+    quote! {
+        /// Why a checked kernel (`<kernel>_checked`) returned no value.
+        ///
+        /// The names are the kernel's argument and output names as in its documentation.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        pub enum KernelError {
+            /// An argument is NaN or infinite (the first such argument in argument order).
+            NonFiniteArgument {
+                /// The argument's name.
+                name: &'static str,
+            },
+            /// Every argument is finite but an output is NaN or infinite (the first such output
+            /// in return order), for example where a denominator vanishes.
+            NonFiniteOutput {
+                /// The output's name.
+                name: &'static str,
+            },
+        }
+
+        impl KernelError {
+            #argument
+
+            /// `x`, or `Err(NonFiniteOutput { name })` if the output `x` is NaN or infinite.
+            #[inline]
+            const fn output(name: &'static str, x: F) -> Result<F, Self> {
+                if x.is_finite() {
+                    Ok(x)
+                } else {
+                    Err(Self::NonFiniteOutput { name })
+                }
+            }
+        }
+
+        impl core::fmt::Display for KernelError {
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                match self {
+                    Self::NonFiniteArgument { name } => {
+                        write!(f, "argument `{name}` is not finite (NaN or infinite)")
+                    }
+                    Self::NonFiniteOutput { name } => write!(
+                        f,
+                        "output `{name}` is not finite (NaN or infinite) for finite arguments"
+                    ),
+                }
+            }
+        }
+
+        #std_error
+    }
 }
 
 fn params_and_prepare(module: &Module, plan: &Plan, options: &EmitOptions) -> TokenStream {
@@ -613,6 +826,14 @@ fn header(module: &Module, options: &EmitOptions) -> String {
             Division::Exact => "exact, one per quotient",
         }
     ));
+    lines.push(format!(
+        "// Checked entry points: {}.",
+        if options.checked {
+            "`<kernel>_checked` returning `Result<_, KernelError>`"
+        } else {
+            "none"
+        }
+    ));
     let mut out = lines.join("\n");
     out.push_str("\n\n");
     out
@@ -657,17 +878,36 @@ pub(crate) fn emit_plan(
     plan: &Plan,
     options: &EmitOptions,
 ) -> Result<String, EmitError> {
+    if options.checked
+        && let Some(k) = module.kernels.iter().find(|k| {
+            k.name
+                .strip_suffix("_checked")
+                .is_some_and(|base| module.kernels.iter().any(|o| o.name == base))
+        })
+    {
+        return Err(EmitError::Duplicate {
+            what: "kernel (a checked entry point has this name)".to_owned(),
+            name: k.name.clone(),
+        });
+    }
     let ty = ident(options.float.name());
     let params = params_and_prepare(module, plan, options);
     let kernels: Vec<TokenStream> = (0..module.kernels.len())
         .filter_map(|i| kernel_fn(module, plan, options, i))
         .collect();
     let sign = sign_helper(plan, options);
+    let kernel_error = if options.checked && !module.kernels.is_empty() {
+        kernel_error(module, options)
+    } else {
+        quote!()
+    };
     let tokens = quote! {
         /// The float type of every value in this file.
         pub type F = #ty;
 
         #params
+
+        #kernel_error
 
         #(#kernels)*
 

@@ -1,7 +1,7 @@
 //! `walker-gen`: the generator as a command-line tool, for builds that are not cargo's.
 //!
 //! ```text
-//! walker-gen emit --scene scenes/active-level.toml [--f32] [--no-std] [--exact-division] [-o kernels.rs]
+//! walker-gen emit --scene scenes/active-level.toml [--f32] [--no-std] [--unchecked] [--exact-division] [-o kernels.rs]
 //! walker-gen stats --scene scenes/active-level.toml [--f32] [--exact-division] [--toml]
 //! ```
 //!
@@ -34,6 +34,9 @@ enum Command {
         /// Use libm instead of std float methods (for `#![no_std]` crates).
         #[arg(long)]
         no_std: bool,
+        /// Leave out the checked entry points (`<kernel>_checked` and `KernelError`).
+        #[arg(long)]
+        unchecked: bool,
         /// Output file (written only if it changes); standard output if absent or `-`.
         #[arg(short = 'o', long = "out")]
         out: Option<PathBuf>,
@@ -93,10 +96,11 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Emit {
             common,
             no_std,
+            unchecked,
             out,
         } => {
             let mut config = common.config();
-            config.no_std(no_std);
+            config.no_std(no_std).checked(!unchecked);
             match out.filter(|p| p.as_os_str() != "-") {
                 Some(path) => {
                     let report = config.out_file(path).generate()?;

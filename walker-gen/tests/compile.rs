@@ -249,10 +249,20 @@ fn no_std_f32_code_builds_in_a_no_std_crate() {
             "/// Generated from scene {scene}.\npub mod {module} {{ include!(\"{module}.rs\"); }}\n"
         ));
     }
+    let src = scene_config("general-level", Float::F32, true)
+        .checked(false)
+        .render()
+        .expect("the scene renders");
+    write(&dir.join("general_level_unchecked.rs"), &src);
+    lib.push_str(
+        "/// Generated from scene general-level, without checked entry points.\n\
+         pub mod general_level_unchecked { include!(\"general_level_unchecked.rs\"); }\n",
+    );
     let options = EmitOptions {
         float: Float::F32,
         no_std: true,
         division: Division::SharedReciprocal,
+        checked: true,
     };
     write(
         &dir.join("exercise.rs"),
@@ -307,14 +317,17 @@ fn generated_code_is_clippy_and_rustdoc_clean() {
             lib.push_str(&including_module(&name, scene));
         }
     }
-    for (name, float, no_std) in [
-        ("exercise", Float::F64, false),
-        ("exercise_nostd32", Float::F32, true),
+    for (name, float, no_std, checked) in [
+        ("exercise", Float::F64, false, true),
+        ("exercise_nostd32", Float::F32, true, true),
+        ("exercise_unchecked", Float::F64, false, false),
+        ("exercise_nostd32_unchecked", Float::F32, true, false),
     ] {
         let options = EmitOptions {
             float,
             no_std,
             division: Division::SharedReciprocal,
+            checked,
         };
         let src = emit(&exercise(), &options).expect("emit");
         write(&dir.join(format!("{name}.rs")), &src);
@@ -344,6 +357,7 @@ fn emitted_code_computes_what_the_ir_says() {
             float,
             no_std,
             division,
+            checked: false,
         };
         write(
             &dir.join(format!("{name}.rs")),
@@ -416,4 +430,133 @@ fn emitted_code_computes_what_the_ir_says() {
         }
     }
     assert_eq!(checked, VARIANTS.len() * POINTS.len() * roots.len());
+}
+
+/// A small module for the checked entry points: a quotient by an argument (a vanishing
+/// denominator), a parameter-scaled scalar, and a matrix whose second entry is a quotient.
+fn checked_module() -> Module {
+    let mut m = Module::new("checked");
+    let a = m.param("a", "Parameter a.");
+    let g = &mut m.graph;
+    let (x, y) = (g.input("x"), g.input("y"));
+    let q = g.div(x, y);
+    let s = g.add(x, a);
+    let v = g.mul(a, x);
+    let yx = g.div(y, x);
+    let args = |names: &[&str]| names.iter().map(|s| (*s).to_owned()).collect::<Vec<_>>();
+    m.kernels = vec![
+        Kernel {
+            name: "ratio".to_owned(),
+            doc: "A quotient by an argument.".to_owned(),
+            equation: String::new(),
+            args: args(&["x", "y"]),
+            outputs: vec![("q".to_owned(), q), ("s".to_owned(), s)],
+            output_shape: Shape::Vector(2),
+        },
+        Kernel {
+            name: "scaled".to_owned(),
+            doc: "A scalar.".to_owned(),
+            equation: String::new(),
+            args: args(&["x"]),
+            outputs: vec![("v".to_owned(), v)],
+            output_shape: Shape::Scalar,
+        },
+        Kernel {
+            name: "grid".to_owned(),
+            doc: "A 1 x 2 matrix.".to_owned(),
+            equation: String::new(),
+            args: args(&["x", "y"]),
+            outputs: vec![("g0".to_owned(), x), ("g1".to_owned(), yx)],
+            output_shape: Shape::Matrix(1, 2),
+        },
+    ];
+    m
+}
+
+#[test]
+fn checked_kernels_name_the_bad_argument_or_output() {
+    let module = checked_module();
+    let dir = tmp().join("walker-gen-checked");
+    let mut main = String::from("//! Throwaway: calls the checked and unchecked kernels.\n");
+    for (name, float, no_std) in [("std64", Float::F64, false), ("nostd32", Float::F32, true)] {
+        let options = EmitOptions {
+            float,
+            no_std,
+            division: Division::SharedReciprocal,
+            checked: true,
+        };
+        write(
+            &dir.join(format!("{name}.rs")),
+            &emit(&module, &options).expect("emit"),
+        );
+        main.push_str(&format!("mod {name} {{ include!(\"{name}.rs\"); }}\n"));
+    }
+    main.push_str(
+        r#"macro_rules! run {
+    ($m:ident, $t:ty) => {{
+        let p = $m::prepare(&$m::Params { a: 1.0 });
+        let nan_p = $m::prepare(&$m::Params { a: <$t>::NAN });
+        let (nan, inf) = (<$t>::NAN, <$t>::INFINITY);
+        let ratio = |x: $t, y: $t| {
+            let c = $m::ratio_checked(&p, x, y);
+            if let Ok(v) = c {
+                assert_eq!(v, $m::ratio(&p, x, y), "checked and unchecked differ");
+            }
+            c
+        };
+        println!("{:?}", ratio(3.0, 2.0));
+        println!("{:?}", ratio(nan, 1.0));
+        println!("{:?}", ratio(1.0, inf));
+        println!("{:?}", ratio(1.0, -inf));
+        println!("{:?}", ratio(-inf, nan));
+        println!("{:?}", ratio(1.0, 0.0));
+        println!("{:?}", ratio(0.0, -0.0));
+        let (c, u) = ($m::scaled_checked(&p, -2.5), $m::scaled(&p, -2.5));
+        println!("{:?} {}", c, c == Ok(u));
+        println!("{:?}", $m::scaled_checked(&nan_p, 1.0));
+        let (c, u) = ($m::grid_checked(&p, 2.0, 1.0), $m::grid(&p, 2.0, 1.0));
+        println!("{:?} {}", c, c == Ok(u));
+        println!("{:?}", $m::grid_checked(&p, 0.0, 1.0));
+        if let Err(e) = ratio(1.0, 0.0) {
+            println!("{e}");
+        }
+        if let Err(e) = ratio(inf, 0.0) {
+            println!("{e}");
+        }
+    }};
+}
+fn main() {
+    println!("std64");
+    run!(std64, f64);
+    let e: Box<dyn std::error::Error> = Box::new(std64::KernelError::NonFiniteArgument { name: "x" });
+    println!("{e}");
+    println!("nostd32");
+    run!(nostd32, f32);
+}
+"#,
+    );
+    write(&dir.join("main.rs"), &main);
+    write(
+        &dir.join("Cargo.toml"),
+        &manifest("walker-gen-checked", "[bin]"),
+    );
+    let stdout = cargo(&dir, &["run"]);
+    let cases = "\
+Ok([1.5, 4.0])
+Err(NonFiniteArgument { name: \"x\" })
+Err(NonFiniteArgument { name: \"y\" })
+Err(NonFiniteArgument { name: \"y\" })
+Err(NonFiniteArgument { name: \"x\" })
+Err(NonFiniteOutput { name: \"q\" })
+Err(NonFiniteOutput { name: \"q\" })
+Ok(-2.5) true
+Err(NonFiniteOutput { name: \"v\" })
+Ok([[2.0, 0.5]]) true
+Err(NonFiniteOutput { name: \"g1\" })
+output `q` is not finite (NaN or infinite) for finite arguments
+argument `x` is not finite (NaN or infinite)
+";
+    let expected =
+        format!("std64\n{cases}argument `x` is not finite (NaN or infinite)\nnostd32\n{cases}");
+    assert_eq!(stdout, expected);
 }

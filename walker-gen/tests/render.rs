@@ -197,3 +197,83 @@ fn stats_count_what_is_emitted() {
         assert!(stats.table().contains("prepare (once)"));
     }
 }
+
+#[test]
+fn checked_entry_points_are_an_option_on_by_default() {
+    for name in SCENES {
+        let mut config = Config::new();
+        config.scene_file(scene_file(name));
+        let on = render(name, &config);
+        assert!(
+            on.contains("pub enum KernelError"),
+            "{name}: no KernelError"
+        );
+        assert_eq!(on.matches("pub enum KernelError").count(), 1, "{name}");
+        let fns: Vec<&str> = on
+            .lines()
+            .filter(|l| l.starts_with("pub fn ") || l.starts_with("pub const fn "))
+            .collect();
+        let checked = fns.iter().filter(|l| l.contains("_checked(")).count();
+        let kernels = fns.len() - checked - 1; // minus `prepare`
+        assert!(kernels > 0);
+        assert_eq!(
+            checked, kernels,
+            "{name}: one checked entry point per kernel"
+        );
+        assert!(on.contains("impl std::error::Error for KernelError {}"));
+        assert!(on.contains("Unchecked fast path: no checks; non-finite inputs propagate"));
+        let off = render(name, config.checked(false));
+        assert!(
+            !off.contains("KernelError"),
+            "{name}: KernelError without checks"
+        );
+        assert!(
+            !off.contains("_checked"),
+            "{name}: a checked entry point without checks"
+        );
+        assert!(off.contains("Checked entry points: none."));
+        // The unchecked kernels themselves do not change.
+        let bodies: Vec<&str> = off
+            .split("\n\n")
+            .filter_map(|item| item.find("#[inline]\n#[must_use]").map(|i| &item[i..]))
+            .collect();
+        assert_eq!(bodies.len(), kernels, "{name}");
+        for body in bodies {
+            assert!(on.contains(body), "{name}: a kernel differs:\n{body}");
+        }
+        let no_std = render(name, config.checked(true).no_std(true));
+        assert!(no_std.contains("pub enum KernelError"));
+        assert!(
+            !no_std.contains("std::error"),
+            "{name}: std::error in no_std code"
+        );
+    }
+}
+
+#[test]
+fn a_kernel_named_like_a_checked_entry_point_is_rejected_only_when_checked() {
+    use walker_gen::{EmitError, EmitOptions, Kernel, Module, Shape, emit};
+    let mut m = Module::new("clash");
+    let x = m.graph.input("x");
+    for name in ["f", "f_checked"] {
+        m.kernels.push(Kernel {
+            name: name.to_owned(),
+            doc: "Identity.".to_owned(),
+            equation: String::new(),
+            args: vec!["x".to_owned()],
+            outputs: vec![("y".to_owned(), x)],
+            output_shape: Shape::Scalar,
+        });
+    }
+    let checked = EmitOptions::default();
+    assert!(checked.checked, "checked entry points are the default");
+    assert!(matches!(
+        emit(&m, &checked),
+        Err(EmitError::Duplicate { name, .. }) if name == "f_checked"
+    ));
+    let unchecked = EmitOptions {
+        checked: false,
+        ..EmitOptions::default()
+    };
+    assert!(emit(&m, &unchecked).is_ok());
+}

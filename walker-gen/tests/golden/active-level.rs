@@ -5,6 +5,7 @@
 // Runtime parameters (fields of `Params`): mu0, c, T_set, K_P, K_D.
 // Float type: f64; float functions: inherent methods (std).
 // Divisions: shared denominators as one reciprocal.
+// Checked entry points: `<kernel>_checked` returning `Result<_, KernelError>`.
 
 /// The float type of every value in this file.
 pub type F = f64;
@@ -43,6 +44,55 @@ pub const fn prepare(p: &Params) -> Prepared {
     Prepared { mu0: p.mu0, c: p.c }
 }
 
+/// Why a checked kernel (`<kernel>_checked`) returned no value.
+///
+/// The names are the kernel's argument and output names as in its documentation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KernelError {
+    /// An argument is NaN or infinite (the first such argument in argument order).
+    NonFiniteArgument {
+        /// The argument's name.
+        name: &'static str,
+    },
+    /// Every argument is finite but an output is NaN or infinite (the first such output
+    /// in return order), for example where a denominator vanishes.
+    NonFiniteOutput {
+        /// The output's name.
+        name: &'static str,
+    },
+}
+
+impl KernelError {
+    /// `x`, or `Err(NonFiniteArgument { name })` if the argument `x` is NaN or infinite.
+    #[inline]
+    const fn argument(name: &'static str, x: F) -> Result<F, Self> {
+        if x.is_finite() { Ok(x) } else { Err(Self::NonFiniteArgument { name }) }
+    }
+    /// `x`, or `Err(NonFiniteOutput { name })` if the output `x` is NaN or infinite.
+    #[inline]
+    const fn output(name: &'static str, x: F) -> Result<F, Self> {
+        if x.is_finite() { Ok(x) } else { Err(Self::NonFiniteOutput { name }) }
+    }
+}
+
+impl core::fmt::Display for KernelError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::NonFiniteArgument { name } => {
+                write!(f, "argument `{name}` is not finite (NaN or infinite)")
+            }
+            Self::NonFiniteOutput { name } => {
+                write!(
+                    f,
+                    "output `{name}` is not finite (NaN or infinite) for finite arguments"
+                )
+            }
+        }
+    }
+}
+
+impl std::error::Error for KernelError {}
+
 /// Inertia matrix M(q) (Eq. 2). Inputs: `th1`. Outputs: `M00`, `M01`, `M02`, `M03`, `M10`, `M11`, `M12`, `M13`, `M20`, `M21`, `M22`, `M23`, `M30`, `M31`, `M32`, `M33`.
 ///
 /// Paper: Eq. 2.
@@ -51,6 +101,11 @@ pub const fn prepare(p: &Params) -> Prepared {
 /// Returns, row-major, `[[M00, M01, M02, M03], [M10, M11, M12, M13], [M20, M21, M22, M23], [M30, M31, M32, M33]]`.
 ///
 /// Operations per call: 2 mul, 1 neg, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`mass_matrix_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
@@ -65,6 +120,41 @@ pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
     ]
 }
 
+/// Checked variant of [`mass_matrix`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 17
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`) that is NaN or
+/// infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in the order
+/// `M00`, `M01`, `M02`, `M03`, `M10`, `M11`, `M12`, `M13`, `M20`, `M21`, `M22`, `M23`, `M30`,
+/// `M31`, `M32`, `M33`) that is NaN or infinite, for example where a denominator vanishes or a
+/// parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn mass_matrix_checked(p: &Prepared, th1: F) -> Result<[[F; 4]; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    let out = mass_matrix(p, th1);
+    KernelError::output("M00", out[0][0])?;
+    KernelError::output("M01", out[0][1])?;
+    KernelError::output("M02", out[0][2])?;
+    KernelError::output("M03", out[0][3])?;
+    KernelError::output("M10", out[1][0])?;
+    KernelError::output("M11", out[1][1])?;
+    KernelError::output("M12", out[1][2])?;
+    KernelError::output("M13", out[1][3])?;
+    KernelError::output("M20", out[2][0])?;
+    KernelError::output("M21", out[2][1])?;
+    KernelError::output("M22", out[2][2])?;
+    KernelError::output("M23", out[2][3])?;
+    KernelError::output("M30", out[3][0])?;
+    KernelError::output("M31", out[3][1])?;
+    KernelError::output("M32", out[3][2])?;
+    KernelError::output("M33", out[3][3])?;
+    Ok(out)
+}
+
 /// Coriolis, centrifugal and gravity vector h(q, qdot) (Eq. 20). Inputs: `th1`, `th1d`. Outputs: `h0`, `h1`, `h2`, `h3`.
 ///
 /// Paper: Eq. 20.
@@ -73,12 +163,40 @@ pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
 /// Returns `[h0, h1, h2, h3]`.
 ///
 /// Operations per call: 1 add/sub, 5 mul, 2 neg, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`bias_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
     let (t0, t1) = th1.sin_cos();
     let t2 = 3.0_f64 * th1d * th1d;
     [-(t0 * t2), 29.43_f64 - t1 * t2, -(29.43_f64 * t0), 0.0_f64]
+}
+
+/// Checked variant of [`bias`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 6
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`) that
+/// is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in the
+/// order `h0`, `h1`, `h2`, `h3`) that is NaN or infinite, for example where a denominator vanishes
+/// or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn bias_checked(p: &Prepared, th1: F, th1d: F) -> Result<[F; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    let out = bias(p, th1, th1d);
+    KernelError::output("h0", out[0])?;
+    KernelError::output("h1", out[1])?;
+    KernelError::output("h2", out[2])?;
+    KernelError::output("h3", out[3])?;
+    Ok(out)
 }
 
 /// Vertical ground reaction lambda on level ground (Eqs. 22-23). Inputs: `th1`, `th1d`, `u`, `xd`. Outputs: `lambda`.
@@ -89,6 +207,11 @@ pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
 /// Returns `lambda`.
 ///
 /// Operations per call: 4 add/sub, 11 mul, 1 div, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`lambda_level_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn lambda_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> F {
@@ -96,6 +219,34 @@ pub fn lambda_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> F {
     let t2 = (p.c * xd).tanh();
     (14.715_f64 - 1.5_f64 * th1d * th1d * t1 - 3.0_f64 * u * t0)
         / (0.5_f64 + t0 * (3.0_f64 * t0 + p.mu0 * t2 * 3.0_f64 * t1))
+}
+
+/// Checked variant of [`lambda_level`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 5
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`, `u`,
+/// `xd`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first
+/// output (in the order `lambda`) that is NaN or infinite, for example where a denominator vanishes
+/// or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn lambda_level_checked(
+    p: &Prepared,
+    th1: F,
+    th1d: F,
+    u: F,
+    xd: F,
+) -> Result<F, KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("u", u)?;
+    KernelError::argument("xd", xd)?;
+    let out = lambda_level(p, th1, th1d, u, xd);
+    KernelError::output("lambda", out)?;
+    Ok(out)
 }
 
 /// Projection Y(q, qdot) that eliminates lambda on level ground (Eqs. 28-29). Inputs: `th1`, `xd`. Outputs: `Y00`, `Y01`, `Y02`, `Y03`, `Y10`, `Y11`, `Y12`, `Y13`, `Y20`, `Y21`, `Y22`, `Y23`, `Y30`, `Y31`, `Y32`, `Y33`.
@@ -106,6 +257,11 @@ pub fn lambda_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> F {
 /// Returns, row-major, `[[Y00, Y01, Y02, Y03], [Y10, Y11, Y12, Y13], [Y20, Y21, Y22, Y23], [Y30, Y31, Y32, Y33]]`.
 ///
 /// Operations per call: 3 add/sub, 18 mul, 1 div, 1 neg, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`projection_level_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn projection_level(p: &Prepared, th1: F, xd: F) -> [[F; 4]; 4] {
@@ -125,6 +281,46 @@ pub fn projection_level(p: &Prepared, th1: F, xd: F) -> [[F; 4]; 4] {
     ]
 }
 
+/// Checked variant of [`projection_level`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 18
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `xd`) that is
+/// NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in the
+/// order `Y00`, `Y01`, `Y02`, `Y03`, `Y10`, `Y11`, `Y12`, `Y13`, `Y20`, `Y21`, `Y22`, `Y23`, `Y30`,
+/// `Y31`, `Y32`, `Y33`) that is NaN or infinite, for example where a denominator vanishes or a
+/// parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn projection_level_checked(
+    p: &Prepared,
+    th1: F,
+    xd: F,
+) -> Result<[[F; 4]; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    let out = projection_level(p, th1, xd);
+    KernelError::output("Y00", out[0][0])?;
+    KernelError::output("Y01", out[0][1])?;
+    KernelError::output("Y02", out[0][2])?;
+    KernelError::output("Y03", out[0][3])?;
+    KernelError::output("Y10", out[1][0])?;
+    KernelError::output("Y11", out[1][1])?;
+    KernelError::output("Y12", out[1][2])?;
+    KernelError::output("Y13", out[1][3])?;
+    KernelError::output("Y20", out[2][0])?;
+    KernelError::output("Y21", out[2][1])?;
+    KernelError::output("Y22", out[2][2])?;
+    KernelError::output("Y23", out[2][3])?;
+    KernelError::output("Y30", out[3][0])?;
+    KernelError::output("Y31", out[3][1])?;
+    KernelError::output("Y32", out[3][2])?;
+    KernelError::output("Y33", out[3][3])?;
+    Ok(out)
+}
+
 /// Scalars A and B of the output-following control, yddot = A u - B (Eqs. 30-31). Inputs: `th1`, `th1d`, `xd`. Outputs: `A`, `B`.
 ///
 /// Paper: Eqs. 30-31.
@@ -133,6 +329,11 @@ pub fn projection_level(p: &Prepared, th1: F, xd: F) -> [[F; 4]; 4] {
 /// Returns `[A, B]`.
 ///
 /// Operations per call: 7 add/sub, 17 mul, 1 div, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`control_level_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn control_level(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 2] {
@@ -149,6 +350,33 @@ pub fn control_level(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 2] {
     ]
 }
 
+/// Checked variant of [`control_level`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 5
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`, `xd`)
+/// that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in
+/// the order `A`, `B`) that is NaN or infinite, for example where a denominator vanishes or a
+/// parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn control_level_checked(
+    p: &Prepared,
+    th1: F,
+    th1d: F,
+    xd: F,
+) -> Result<[F; 2], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("xd", xd)?;
+    let out = control_level(p, th1, th1d, xd);
+    KernelError::output("A", out[0])?;
+    KernelError::output("B", out[1])?;
+    Ok(out)
+}
+
 /// Accelerations qddot of the active walker on level ground (Eq. 27). Inputs: `th1`, `th1d`, `u`, `xd`. Outputs: `qdd0`, `qdd1`, `qdd2`, `qdd3`.
 ///
 /// Paper: Eq. 27.
@@ -157,6 +385,11 @@ pub fn control_level(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 2] {
 /// Returns `[qdd0, qdd1, qdd2, qdd3]`.
 ///
 /// Operations per call: 13 add/sub, 27 mul, 1 div, 1 neg, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`accel_level_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn accel_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> [F; 4] {
@@ -176,6 +409,37 @@ pub fn accel_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> [F; 4] {
     ]
 }
 
+/// Checked variant of [`accel_level`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 8
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`, `u`,
+/// `xd`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first
+/// output (in the order `qdd0`, `qdd1`, `qdd2`, `qdd3`) that is NaN or infinite, for example where
+/// a denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn accel_level_checked(
+    p: &Prepared,
+    th1: F,
+    th1d: F,
+    u: F,
+    xd: F,
+) -> Result<[F; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("u", u)?;
+    KernelError::argument("xd", xd)?;
+    let out = accel_level(p, th1, th1d, u, xd);
+    KernelError::output("qdd0", out[0])?;
+    KernelError::output("qdd1", out[1])?;
+    KernelError::output("qdd2", out[2])?;
+    KernelError::output("qdd3", out[3])?;
+    Ok(out)
+}
+
 /// Impulses and post-impact velocities with the fore foot, the rear foot and the torso lock (Eqs. 6-10). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `lambdaI2`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
 ///
 /// Paper: Eqs. 6-10.
@@ -184,6 +448,11 @@ pub fn accel_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> [F; 4] {
 /// Returns `[lambdaI0, lambdaI1, lambdaI2, qdp0, qdp1, qdp2, qdp3]`.
 ///
 /// Operations per call: 24 add/sub, 43 mul, 2 div, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`impact3_level_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn impact3_level(_p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 7] {
@@ -223,6 +492,43 @@ pub fn impact3_level(_p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [
     ]
 }
 
+/// Checked variant of [`impact3_level`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 12
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `xd`, `zd`,
+/// `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the
+/// first output (in the order `lambdaI0`, `lambdaI1`, `lambdaI2`, `qdp0`, `qdp1`, `qdp2`, `qdp3`)
+/// that is NaN or infinite, for example where a denominator vanishes or a parameter given to
+/// [`prepare`] is not finite.
+#[inline]
+pub fn impact3_level_checked(
+    p: &Prepared,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[F; 7], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = impact3_level(p, th1, xd, zd, th1d, th2d);
+    KernelError::output("lambdaI0", out[0])?;
+    KernelError::output("lambdaI1", out[1])?;
+    KernelError::output("lambdaI2", out[2])?;
+    KernelError::output("qdp0", out[3])?;
+    KernelError::output("qdp1", out[4])?;
+    KernelError::output("qdp2", out[5])?;
+    KernelError::output("qdp3", out[6])?;
+    Ok(out)
+}
+
 /// Impulses and post-impact velocities with the fore foot and the torso lock (Eqs. 12-16). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
 ///
 /// Paper: Eqs. 12-16.
@@ -231,6 +537,11 @@ pub fn impact3_level(_p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [
 /// Returns `[lambdaI0, lambdaI1, qdp0, qdp1, qdp2, qdp3]`.
 ///
 /// Operations per call: 36 add/sub, 54 mul, 1 div, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`impact2_level_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn impact2_level(_p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 6] {
@@ -272,6 +583,42 @@ pub fn impact2_level(_p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [
     ]
 }
 
+/// Checked variant of [`impact2_level`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 11
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `xd`, `zd`,
+/// `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the
+/// first output (in the order `lambdaI0`, `lambdaI1`, `qdp0`, `qdp1`, `qdp2`, `qdp3`) that is NaN
+/// or infinite, for example where a denominator vanishes or a parameter given to [`prepare`] is not
+/// finite.
+#[inline]
+pub fn impact2_level_checked(
+    p: &Prepared,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[F; 6], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = impact2_level(p, th1, xd, zd, th1d, th2d);
+    KernelError::output("lambdaI0", out[0])?;
+    KernelError::output("lambdaI1", out[1])?;
+    KernelError::output("qdp0", out[2])?;
+    KernelError::output("qdp1", out[3])?;
+    KernelError::output("qdp2", out[4])?;
+    KernelError::output("qdp3", out[5])?;
+    Ok(out)
+}
+
 /// Accelerations qddot and torque u of the active walker under the output-following control, with yddot = v (Eqs. 27, 31). Inputs: `th1`, `th1d`, `xd`, `v`. Outputs: `qdd0`, `qdd1`, `qdd2`, `qdd3`, `u`.
 ///
 /// Paper: Eqs. 27, 31.
@@ -280,6 +627,11 @@ pub fn impact2_level(_p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [
 /// Returns `[qdd0, qdd1, qdd2, qdd3, u]`.
 ///
 /// Operations per call: 53 add/sub, 81 mul, 2 div, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`closed_loop_level_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn closed_loop_level(p: &Prepared, th1: F, th1d: F, xd: F, v: F) -> [F; 5] {
@@ -331,6 +683,38 @@ pub fn closed_loop_level(p: &Prepared, th1: F, th1d: F, xd: F, v: F) -> [F; 5] {
     ]
 }
 
+/// Checked variant of [`closed_loop_level`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 9
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`, `xd`,
+/// `v`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output
+/// (in the order `qdd0`, `qdd1`, `qdd2`, `qdd3`, `u`) that is NaN or infinite, for example where a
+/// denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn closed_loop_level_checked(
+    p: &Prepared,
+    th1: F,
+    th1d: F,
+    xd: F,
+    v: F,
+) -> Result<[F; 5], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("v", v)?;
+    let out = closed_loop_level(p, th1, th1d, xd, v);
+    KernelError::output("qdd0", out[0])?;
+    KernelError::output("qdd1", out[1])?;
+    KernelError::output("qdd2", out[2])?;
+    KernelError::output("qdd3", out[3])?;
+    KernelError::output("u", out[4])?;
+    Ok(out)
+}
+
 /// Partial derivatives of the closed-loop accelerations by (th1, th1d, mu, v), for implicit integrators and variational equations (Eqs. 27, 31). Inputs: `th1`, `th1d`, `xd`, `v`. Outputs: `J00`, `J01`, `J02`, `J03`, `J10`, `J11`, `J12`, `J13`, `J20`, `J21`, `J22`, `J23`, `J30`, `J31`, `J32`, `J33`.
 ///
 /// Paper: Eqs. 27, 31.
@@ -339,6 +723,11 @@ pub fn closed_loop_level(p: &Prepared, th1: F, th1d: F, xd: F, v: F) -> [F; 5] {
 /// Returns, row-major, `[[J00, J01, J02, J03], [J10, J11, J12, J13], [J20, J21, J22, J23], [J30, J31, J32, J33]]`.
 ///
 /// Operations per call: 257 add/sub, 444 mul, 2 div, 2 neg, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`closed_loop_level_jacobian_checked`]
+/// rejects non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn closed_loop_level_jacobian(
@@ -602,6 +991,51 @@ pub fn closed_loop_level_jacobian(
     ]
 }
 
+/// Checked variant of [`closed_loop_level_jacobian`]: the same value, or why it would not be
+/// finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 20
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`, `xd`,
+/// `v`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output
+/// (in the order `J00`, `J01`, `J02`, `J03`, `J10`, `J11`, `J12`, `J13`, `J20`, `J21`, `J22`,
+/// `J23`, `J30`, `J31`, `J32`, `J33`) that is NaN or infinite, for example where a denominator
+/// vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn closed_loop_level_jacobian_checked(
+    p: &Prepared,
+    th1: F,
+    th1d: F,
+    xd: F,
+    v: F,
+) -> Result<[[F; 4]; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("v", v)?;
+    let out = closed_loop_level_jacobian(p, th1, th1d, xd, v);
+    KernelError::output("J00", out[0][0])?;
+    KernelError::output("J01", out[0][1])?;
+    KernelError::output("J02", out[0][2])?;
+    KernelError::output("J03", out[0][3])?;
+    KernelError::output("J10", out[1][0])?;
+    KernelError::output("J11", out[1][1])?;
+    KernelError::output("J12", out[1][2])?;
+    KernelError::output("J13", out[1][3])?;
+    KernelError::output("J20", out[2][0])?;
+    KernelError::output("J21", out[2][1])?;
+    KernelError::output("J22", out[2][2])?;
+    KernelError::output("J23", out[2][3])?;
+    KernelError::output("J30", out[3][0])?;
+    KernelError::output("J31", out[3][1])?;
+    KernelError::output("J32", out[3][2])?;
+    KernelError::output("J33", out[3][3])?;
+    Ok(out)
+}
+
 /// Partial derivatives of the post-impact velocities (two constraints) by (th1, xd, zd, th1d, th2d) (Eqs. 12-16). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `J00`, `J01`, `J02`, `J03`, `J04`, `J10`, `J11`, `J12`, `J13`, `J14`, `J20`, `J21`, `J22`, `J23`, `J24`, `J30`, `J31`, `J32`, `J33`, `J34`.
 ///
 /// Paper: Eqs. 12-16.
@@ -611,6 +1045,11 @@ pub fn closed_loop_level_jacobian(
 /// Returns, row-major, `[[J00, J01, J02, J03, J04], [J10, J11, J12, J13, J14], [J20, J21, J22, J23, J24], [J30, J31, J32, J33, J34]]`.
 ///
 /// Operations per call: 66 add/sub, 108 mul, 1 div, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`impact2_level_jacobian_checked`]
+/// rejects non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn impact2_level_jacobian(
@@ -705,6 +1144,56 @@ pub fn impact2_level_jacobian(
     ]
 }
 
+/// Checked variant of [`impact2_level_jacobian`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 25
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `xd`, `zd`,
+/// `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the
+/// first output (in the order `J00`, `J01`, `J02`, `J03`, `J04`, `J10`, `J11`, `J12`, `J13`, `J14`,
+/// `J20`, `J21`, `J22`, `J23`, `J24`, `J30`, `J31`, `J32`, `J33`, `J34`) that is NaN or infinite,
+/// for example where a denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn impact2_level_jacobian_checked(
+    p: &Prepared,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[[F; 5]; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = impact2_level_jacobian(p, th1, xd, zd, th1d, th2d);
+    KernelError::output("J00", out[0][0])?;
+    KernelError::output("J01", out[0][1])?;
+    KernelError::output("J02", out[0][2])?;
+    KernelError::output("J03", out[0][3])?;
+    KernelError::output("J04", out[0][4])?;
+    KernelError::output("J10", out[1][0])?;
+    KernelError::output("J11", out[1][1])?;
+    KernelError::output("J12", out[1][2])?;
+    KernelError::output("J13", out[1][3])?;
+    KernelError::output("J14", out[1][4])?;
+    KernelError::output("J20", out[2][0])?;
+    KernelError::output("J21", out[2][1])?;
+    KernelError::output("J22", out[2][2])?;
+    KernelError::output("J23", out[2][3])?;
+    KernelError::output("J24", out[2][4])?;
+    KernelError::output("J30", out[3][0])?;
+    KernelError::output("J31", out[3][1])?;
+    KernelError::output("J32", out[3][2])?;
+    KernelError::output("J33", out[3][3])?;
+    KernelError::output("J34", out[3][4])?;
+    Ok(out)
+}
+
 /// Position and velocity of the fore-leg end (Eqs. 3, 39). Inputs: `x`, `z`, `th1`, `xd`, `zd`, `th1d`. Outputs: `x_f`, `z_f`, `xd_f`, `zd_f`.
 ///
 /// Paper: Eqs. 3, 39.
@@ -713,6 +1202,11 @@ pub fn impact2_level_jacobian(
 /// Returns `[x_f, z_f, xd_f, zd_f]`.
 ///
 /// Operations per call: 8 add/sub, 6 mul, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`fore_foot_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F; 4] {
@@ -724,6 +1218,41 @@ pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F
     [t3 + x + t4, t5 + z - t2, xd + th1d * (t5 - t2), zd - th1d * (t3 + t4)]
 }
 
+/// Checked variant of [`fore_foot`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 10
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `x`, `z`, `th1`,
+/// `xd`, `zd`, `th1d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming
+/// the first output (in the order `x_f`, `z_f`, `xd_f`, `zd_f`) that is NaN or infinite, for
+/// example where a denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn fore_foot_checked(
+    p: &Prepared,
+    x: F,
+    z: F,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+) -> Result<[F; 4], KernelError> {
+    KernelError::argument("x", x)?;
+    KernelError::argument("z", z)?;
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    let out = fore_foot(p, x, z, th1, xd, zd, th1d);
+    KernelError::output("x_f", out[0])?;
+    KernelError::output("z_f", out[1])?;
+    KernelError::output("xd_f", out[2])?;
+    KernelError::output("zd_f", out[3])?;
+    Ok(out)
+}
+
 /// Kinetic and potential energy (Section 2.1). Inputs: `z`, `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `T`, `V`.
 ///
 /// Paper: Section 2.1.
@@ -732,6 +1261,11 @@ pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F
 /// Returns `[T, V]`.
 ///
 /// Operations per call: 6 add/sub, 14 mul, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`energy_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 2] {
@@ -741,4 +1275,37 @@ pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F
             + th1d * (1.75_f64 * th1d + 3.0_f64 * xd * t1 - 3.0_f64 * zd * t0),
         29.43_f64 * t1 + 29.43_f64 * z,
     ]
+}
+
+/// Checked variant of [`energy`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 8
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `z`, `th1`, `xd`,
+/// `zd`, `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming
+/// the first output (in the order `T`, `V`) that is NaN or infinite, for example where a
+/// denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn energy_checked(
+    p: &Prepared,
+    z: F,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[F; 2], KernelError> {
+    KernelError::argument("z", z)?;
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = energy(p, z, th1, xd, zd, th1d, th2d);
+    KernelError::output("T", out[0])?;
+    KernelError::output("V", out[1])?;
+    Ok(out)
 }

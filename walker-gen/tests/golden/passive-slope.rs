@@ -5,6 +5,7 @@
 // Runtime parameters (fields of `Params`): phi, mu0, c.
 // Float type: f64; float functions: inherent methods (std).
 // Divisions: shared denominators as one reciprocal.
+// Checked entry points: `<kernel>_checked` returning `Result<_, KernelError>`.
 
 /// The float type of every value in this file.
 pub type F = f64;
@@ -3296,6 +3297,55 @@ pub fn prepare(p: &Params) -> Prepared {
     }
 }
 
+/// Why a checked kernel (`<kernel>_checked`) returned no value.
+///
+/// The names are the kernel's argument and output names as in its documentation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KernelError {
+    /// An argument is NaN or infinite (the first such argument in argument order).
+    NonFiniteArgument {
+        /// The argument's name.
+        name: &'static str,
+    },
+    /// Every argument is finite but an output is NaN or infinite (the first such output
+    /// in return order), for example where a denominator vanishes.
+    NonFiniteOutput {
+        /// The output's name.
+        name: &'static str,
+    },
+}
+
+impl KernelError {
+    /// `x`, or `Err(NonFiniteArgument { name })` if the argument `x` is NaN or infinite.
+    #[inline]
+    const fn argument(name: &'static str, x: F) -> Result<F, Self> {
+        if x.is_finite() { Ok(x) } else { Err(Self::NonFiniteArgument { name }) }
+    }
+    /// `x`, or `Err(NonFiniteOutput { name })` if the output `x` is NaN or infinite.
+    #[inline]
+    const fn output(name: &'static str, x: F) -> Result<F, Self> {
+        if x.is_finite() { Ok(x) } else { Err(Self::NonFiniteOutput { name }) }
+    }
+}
+
+impl core::fmt::Display for KernelError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::NonFiniteArgument { name } => {
+                write!(f, "argument `{name}` is not finite (NaN or infinite)")
+            }
+            Self::NonFiniteOutput { name } => {
+                write!(
+                    f,
+                    "output `{name}` is not finite (NaN or infinite) for finite arguments"
+                )
+            }
+        }
+    }
+}
+
+impl std::error::Error for KernelError {}
+
 /// Inertia matrix M(q) (Eq. 2). Inputs: `th1`. Outputs: `M00`, `M01`, `M02`, `M03`, `M10`, `M11`, `M12`, `M13`, `M20`, `M21`, `M22`, `M23`, `M30`, `M31`, `M32`, `M33`.
 ///
 /// Paper: Eq. 2.
@@ -3304,6 +3354,11 @@ pub fn prepare(p: &Params) -> Prepared {
 /// Returns, row-major, `[[M00, M01, M02, M03], [M10, M11, M12, M13], [M20, M21, M22, M23], [M30, M31, M32, M33]]`.
 ///
 /// Operations per call: 2 mul, 1 neg, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`mass_matrix_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
@@ -3318,6 +3373,41 @@ pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
     ]
 }
 
+/// Checked variant of [`mass_matrix`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 17
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`) that is NaN or
+/// infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in the order
+/// `M00`, `M01`, `M02`, `M03`, `M10`, `M11`, `M12`, `M13`, `M20`, `M21`, `M22`, `M23`, `M30`,
+/// `M31`, `M32`, `M33`) that is NaN or infinite, for example where a denominator vanishes or a
+/// parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn mass_matrix_checked(p: &Prepared, th1: F) -> Result<[[F; 4]; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    let out = mass_matrix(p, th1);
+    KernelError::output("M00", out[0][0])?;
+    KernelError::output("M01", out[0][1])?;
+    KernelError::output("M02", out[0][2])?;
+    KernelError::output("M03", out[0][3])?;
+    KernelError::output("M10", out[1][0])?;
+    KernelError::output("M11", out[1][1])?;
+    KernelError::output("M12", out[1][2])?;
+    KernelError::output("M13", out[1][3])?;
+    KernelError::output("M20", out[2][0])?;
+    KernelError::output("M21", out[2][1])?;
+    KernelError::output("M22", out[2][2])?;
+    KernelError::output("M23", out[2][3])?;
+    KernelError::output("M30", out[3][0])?;
+    KernelError::output("M31", out[3][1])?;
+    KernelError::output("M32", out[3][2])?;
+    KernelError::output("M33", out[3][3])?;
+    Ok(out)
+}
+
 /// Coriolis, centrifugal and gravity vector h(q, qdot) (Eq. 20). Inputs: `th1`, `th1d`. Outputs: `h0`, `h1`, `h2`, `h3`.
 ///
 /// Paper: Eq. 20.
@@ -3326,12 +3416,40 @@ pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
 /// Returns `[h0, h1, h2, h3]`.
 ///
 /// Operations per call: 1 add/sub, 5 mul, 2 neg, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`bias_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
     let (t0, t1) = th1.sin_cos();
     let t2 = 3.0_f64 * th1d * th1d;
     [-(t0 * t2), 29.43_f64 - t1 * t2, -(29.43_f64 * t0), 0.0_f64]
+}
+
+/// Checked variant of [`bias`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 6
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`) that
+/// is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in the
+/// order `h0`, `h1`, `h2`, `h3`) that is NaN or infinite, for example where a denominator vanishes
+/// or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn bias_checked(p: &Prepared, th1: F, th1d: F) -> Result<[F; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    let out = bias(p, th1, th1d);
+    KernelError::output("h0", out[0])?;
+    KernelError::output("h1", out[1])?;
+    KernelError::output("h2", out[2])?;
+    KernelError::output("h3", out[3])?;
+    Ok(out)
 }
 
 /// Vertical ground reaction lambda of the passive wheel on the slope (u = 0) (Eq. 22 with Eqs. 36, 38). Inputs: `th1`, `th1d`, `xd`. Outputs: `lambda`.
@@ -3342,6 +3460,11 @@ pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
 /// Returns `lambda`.
 ///
 /// Operations per call: 7 add/sub, 13 mul, 1 div, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`lambda_slope_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn lambda_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> F {
@@ -3353,6 +3476,32 @@ pub fn lambda_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> F {
             + t0 * (t0 * (p.k17 - p.k2 * t3) + t1 * (p.k2 - p.k18 * t3)))
 }
 
+/// Checked variant of [`lambda_slope`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 4
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`, `xd`)
+/// that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in
+/// the order `lambda`) that is NaN or infinite, for example where a denominator vanishes or a
+/// parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn lambda_slope_checked(
+    p: &Prepared,
+    th1: F,
+    th1d: F,
+    xd: F,
+) -> Result<F, KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("xd", xd)?;
+    let out = lambda_slope(p, th1, th1d, xd);
+    KernelError::output("lambda", out)?;
+    Ok(out)
+}
+
 /// Accelerations qddot of the passive wheel on the slope (u = 0) (Eq. 27 with Eqs. 36, 38). Inputs: `th1`, `th1d`, `xd`. Outputs: `qdd0`, `qdd1`, `qdd2`, `qdd3`.
 ///
 /// Paper: Eq. 27 with Eqs. 36, 38.
@@ -3361,6 +3510,11 @@ pub fn lambda_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> F {
 /// Returns `[qdd0, qdd1, qdd2, qdd3]`.
 ///
 /// Operations per call: 30 add/sub, 49 mul, 1 div, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`accel_slope_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn accel_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 4] {
@@ -3387,6 +3541,35 @@ pub fn accel_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 4] {
     ]
 }
 
+/// Checked variant of [`accel_slope`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 7
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`, `xd`)
+/// that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in
+/// the order `qdd0`, `qdd1`, `qdd2`, `qdd3`) that is NaN or infinite, for example where a
+/// denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn accel_slope_checked(
+    p: &Prepared,
+    th1: F,
+    th1d: F,
+    xd: F,
+) -> Result<[F; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("xd", xd)?;
+    let out = accel_slope(p, th1, th1d, xd);
+    KernelError::output("qdd0", out[0])?;
+    KernelError::output("qdd1", out[1])?;
+    KernelError::output("qdd2", out[2])?;
+    KernelError::output("qdd3", out[3])?;
+    Ok(out)
+}
+
 /// Impulse and post-impact velocities of the passive wheel on the slope (Eqs. 39-42). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
 ///
 /// Paper: Eqs. 39-42.
@@ -3395,6 +3578,11 @@ pub fn accel_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 4] {
 /// Returns `[lambdaI0, qdp0, qdp1, qdp2, qdp3]`.
 ///
 /// Operations per call: 29 add/sub, 49 mul, 1 div, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`impact_slope_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn impact_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 5] {
@@ -3419,6 +3607,40 @@ pub fn impact_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F;
     ]
 }
 
+/// Checked variant of [`impact_slope`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 10
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `xd`, `zd`,
+/// `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the
+/// first output (in the order `lambdaI0`, `qdp0`, `qdp1`, `qdp2`, `qdp3`) that is NaN or infinite,
+/// for example where a denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn impact_slope_checked(
+    p: &Prepared,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[F; 5], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = impact_slope(p, th1, xd, zd, th1d, th2d);
+    KernelError::output("lambdaI0", out[0])?;
+    KernelError::output("qdp0", out[1])?;
+    KernelError::output("qdp1", out[2])?;
+    KernelError::output("qdp2", out[3])?;
+    KernelError::output("qdp3", out[4])?;
+    Ok(out)
+}
+
 /// Impulses and post-impact velocities on the slope with the rear foot held (double-support test) (Eq. 46). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
 ///
 /// Paper: Eq. 46.
@@ -3427,6 +3649,11 @@ pub fn impact_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F;
 /// Returns `[lambdaI0, lambdaI1, qdp0, qdp1, qdp2, qdp3]`.
 ///
 /// Operations per call: 40 add/sub, 70 mul, 2 div, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`impact2_slope_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn impact2_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 6] {
@@ -3459,6 +3686,42 @@ pub fn impact2_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F
     ]
 }
 
+/// Checked variant of [`impact2_slope`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 11
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `xd`, `zd`,
+/// `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the
+/// first output (in the order `lambdaI0`, `lambdaI1`, `qdp0`, `qdp1`, `qdp2`, `qdp3`) that is NaN
+/// or infinite, for example where a denominator vanishes or a parameter given to [`prepare`] is not
+/// finite.
+#[inline]
+pub fn impact2_slope_checked(
+    p: &Prepared,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[F; 6], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = impact2_slope(p, th1, xd, zd, th1d, th2d);
+    KernelError::output("lambdaI0", out[0])?;
+    KernelError::output("lambdaI1", out[1])?;
+    KernelError::output("qdp0", out[2])?;
+    KernelError::output("qdp1", out[3])?;
+    KernelError::output("qdp2", out[4])?;
+    KernelError::output("qdp3", out[5])?;
+    Ok(out)
+}
+
 /// Partial derivatives of the passive wheel's accelerations on the slope by (th1, th1d, mu) (Eq. 27 with Eqs. 36, 38). Inputs: `th1`, `th1d`, `xd`. Outputs: `J00`, `J01`, `J02`, `J10`, `J11`, `J12`, `J20`, `J21`, `J22`, `J30`, `J31`, `J32`.
 ///
 /// Paper: Eq. 27 with Eqs. 36, 38.
@@ -3467,6 +3730,11 @@ pub fn impact2_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F
 /// Returns, row-major, `[[J00, J01, J02], [J10, J11, J12], [J20, J21, J22], [J30, J31, J32]]`.
 ///
 /// Operations per call: 118 add/sub, 191 mul, 1 div, 2 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`accel_slope_jacobian_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn accel_slope_jacobian(p: &Prepared, th1: F, th1d: F, xd: F) -> [[F; 3]; 4] {
@@ -3572,6 +3840,44 @@ pub fn accel_slope_jacobian(p: &Prepared, th1: F, th1d: F, xd: F) -> [[F; 3]; 4]
     ]
 }
 
+/// Checked variant of [`accel_slope_jacobian`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 15
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `th1d`, `xd`)
+/// that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first output (in
+/// the order `J00`, `J01`, `J02`, `J10`, `J11`, `J12`, `J20`, `J21`, `J22`, `J30`, `J31`, `J32`)
+/// that is NaN or infinite, for example where a denominator vanishes or a parameter given to
+/// [`prepare`] is not finite.
+#[inline]
+pub fn accel_slope_jacobian_checked(
+    p: &Prepared,
+    th1: F,
+    th1d: F,
+    xd: F,
+) -> Result<[[F; 3]; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("xd", xd)?;
+    let out = accel_slope_jacobian(p, th1, th1d, xd);
+    KernelError::output("J00", out[0][0])?;
+    KernelError::output("J01", out[0][1])?;
+    KernelError::output("J02", out[0][2])?;
+    KernelError::output("J10", out[1][0])?;
+    KernelError::output("J11", out[1][1])?;
+    KernelError::output("J12", out[1][2])?;
+    KernelError::output("J20", out[2][0])?;
+    KernelError::output("J21", out[2][1])?;
+    KernelError::output("J22", out[2][2])?;
+    KernelError::output("J30", out[3][0])?;
+    KernelError::output("J31", out[3][1])?;
+    KernelError::output("J32", out[3][2])?;
+    Ok(out)
+}
+
 /// Partial derivatives of the post-impact velocities on the slope by (th1, xd, zd, th1d, th2d) (Eqs. 39-42). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `J00`, `J01`, `J02`, `J03`, `J04`, `J10`, `J11`, `J12`, `J13`, `J14`, `J20`, `J21`, `J22`, `J23`, `J24`, `J30`, `J31`, `J32`, `J33`, `J34`.
 ///
 /// Paper: Eqs. 39-42.
@@ -3581,6 +3887,11 @@ pub fn accel_slope_jacobian(p: &Prepared, th1: F, th1d: F, xd: F) -> [[F; 3]; 4]
 /// Returns, row-major, `[[J00, J01, J02, J03, J04], [J10, J11, J12, J13, J14], [J20, J21, J22, J23, J24], [J30, J31, J32, J33, J34]]`.
 ///
 /// Operations per call: 70 add/sub, 121 mul, 1 div, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`impact_slope_jacobian_checked`]
+/// rejects non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn impact_slope_jacobian(
@@ -3652,6 +3963,56 @@ pub fn impact_slope_jacobian(
     ]
 }
 
+/// Checked variant of [`impact_slope_jacobian`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 25
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `xd`, `zd`,
+/// `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the
+/// first output (in the order `J00`, `J01`, `J02`, `J03`, `J04`, `J10`, `J11`, `J12`, `J13`, `J14`,
+/// `J20`, `J21`, `J22`, `J23`, `J24`, `J30`, `J31`, `J32`, `J33`, `J34`) that is NaN or infinite,
+/// for example where a denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn impact_slope_jacobian_checked(
+    p: &Prepared,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[[F; 5]; 4], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = impact_slope_jacobian(p, th1, xd, zd, th1d, th2d);
+    KernelError::output("J00", out[0][0])?;
+    KernelError::output("J01", out[0][1])?;
+    KernelError::output("J02", out[0][2])?;
+    KernelError::output("J03", out[0][3])?;
+    KernelError::output("J04", out[0][4])?;
+    KernelError::output("J10", out[1][0])?;
+    KernelError::output("J11", out[1][1])?;
+    KernelError::output("J12", out[1][2])?;
+    KernelError::output("J13", out[1][3])?;
+    KernelError::output("J14", out[1][4])?;
+    KernelError::output("J20", out[2][0])?;
+    KernelError::output("J21", out[2][1])?;
+    KernelError::output("J22", out[2][2])?;
+    KernelError::output("J23", out[2][3])?;
+    KernelError::output("J24", out[2][4])?;
+    KernelError::output("J30", out[3][0])?;
+    KernelError::output("J31", out[3][1])?;
+    KernelError::output("J32", out[3][2])?;
+    KernelError::output("J33", out[3][3])?;
+    KernelError::output("J34", out[3][4])?;
+    Ok(out)
+}
+
 /// Position and velocity of the fore-leg end (Eqs. 3, 39). Inputs: `x`, `z`, `th1`, `xd`, `zd`, `th1d`. Outputs: `x_f`, `z_f`, `xd_f`, `zd_f`.
 ///
 /// Paper: Eqs. 3, 39.
@@ -3660,6 +4021,11 @@ pub fn impact_slope_jacobian(
 /// Returns `[x_f, z_f, xd_f, zd_f]`.
 ///
 /// Operations per call: 8 add/sub, 6 mul, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`fore_foot_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F; 4] {
@@ -3671,6 +4037,41 @@ pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F
     [t3 + x + t2, t5 + z - t4, xd + th1d * (t5 - t4), zd - th1d * (t2 + t3)]
 }
 
+/// Checked variant of [`fore_foot`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 10
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `x`, `z`, `th1`,
+/// `xd`, `zd`, `th1d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming
+/// the first output (in the order `x_f`, `z_f`, `xd_f`, `zd_f`) that is NaN or infinite, for
+/// example where a denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn fore_foot_checked(
+    p: &Prepared,
+    x: F,
+    z: F,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+) -> Result<[F; 4], KernelError> {
+    KernelError::argument("x", x)?;
+    KernelError::argument("z", z)?;
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    let out = fore_foot(p, x, z, th1, xd, zd, th1d);
+    KernelError::output("x_f", out[0])?;
+    KernelError::output("z_f", out[1])?;
+    KernelError::output("xd_f", out[2])?;
+    KernelError::output("zd_f", out[3])?;
+    Ok(out)
+}
+
 /// Kinetic and potential energy (Section 2.1). Inputs: `z`, `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `T`, `V`.
 ///
 /// Paper: Section 2.1.
@@ -3679,6 +4080,11 @@ pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F
 /// Returns `[T, V]`.
 ///
 /// Operations per call: 6 add/sub, 14 mul, 1 transcendental.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
+/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
+/// and an argument the scene does not read has no effect.) [`energy_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 2] {
@@ -3688,4 +4094,37 @@ pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F
             + th1d * (3.0_f64 * xd * t1 + 1.75_f64 * th1d - 3.0_f64 * zd * t0),
         29.43_f64 * t1 + 29.43_f64 * z,
     ]
+}
+
+/// Checked variant of [`energy`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 8
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `z`, `th1`, `xd`,
+/// `zd`, `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming
+/// the first output (in the order `T`, `V`) that is NaN or infinite, for example where a
+/// denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn energy_checked(
+    p: &Prepared,
+    z: F,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[F; 2], KernelError> {
+    KernelError::argument("z", z)?;
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = energy(p, z, th1, xd, zd, th1d, th2d);
+    KernelError::output("T", out[0])?;
+    KernelError::output("V", out[1])?;
+    Ok(out)
 }
