@@ -872,7 +872,7 @@ pub fn stability_summary(points: &[ContinuationPoint], name: &str) -> String {
             "nowhere on the grid".to_owned()
         } else {
             runs.iter()
-                .map(|(a, b)| format!("[{a}, {b}]"))
+                .map(|(a, b)| format!("[{a:.2}, {b:.2}]"))
                 .collect::<Vec<_>>()
                 .join(" and ")
         };

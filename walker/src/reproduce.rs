@@ -624,7 +624,58 @@ pub fn run(out: &Path) -> io::Result<String> {
     let d = collect();
     write_csvs(out, &d)?;
     write_figures(out, &d).map_err(io::Error::other)?;
-    let s = summary(&d);
+    let mut s = summary(&d);
+    s.push_str(&stability(out)?);
     fs::write(out.join("summary.txt"), &s)?;
     Ok(s)
+}
+
+/// Where the gaits are stable: fixed points of the Poincare map and their largest Floquet
+/// multiplier along `mu0` for the paper's three `T_set` and three `phi` (continuation from
+/// cycle to cycle, [`crate::poincare::continuation`]), written to `stability.csv`; returns the
+/// summary lines.
+fn stability(out: &Path) -> io::Result<String> {
+    use crate::poincare::{continuation, continuation_csv, stability_summary};
+    use rayon::prelude::*;
+    let cfg = SimConfig::default();
+    let active_grid = mu0_grid(0.05, 1.0, 0.05);
+    let passive_grid = mu0_grid(0.05, 0.7, 0.05);
+    let jobs: Vec<(bool, f64)> = [0.2, 0.3, 0.4]
+        .map(|t| (true, t))
+        .into_iter()
+        .chain([0.10, 0.15, 0.20].map(|p| (false, p)))
+        .collect();
+    let results: Vec<(bool, Vec<_>)> = jobs
+        .par_iter()
+        .map(|&(is_active, chain)| {
+            let pts = if is_active {
+                continuation(
+                    |t_set, mu0| active(mu0, t_set),
+                    &[chain],
+                    &active_grid,
+                    &cfg,
+                )
+            } else {
+                continuation(|phi, mu0| passive(mu0, phi), &[chain], &passive_grid, &cfg)
+            };
+            (is_active, pts)
+        })
+        .collect();
+    let mut csv = String::new();
+    let mut text =
+        String::from("- Stability from the Floquet multipliers (largest modulus < 1):\n");
+    for (is_active, pts) in &results {
+        let body = continuation_csv(pts);
+        let body = if csv.is_empty() {
+            body.as_str()
+        } else {
+            body.split_once('\n').map_or("", |(_, b)| b)
+        };
+        csv.push_str(body);
+        for line in stability_summary(pts, if *is_active { "T_set" } else { "phi" }).lines() {
+            let _ = writeln!(text, "  {line}");
+        }
+    }
+    fs::write(out.join("stability.csv"), csv)?;
+    Ok(text)
 }

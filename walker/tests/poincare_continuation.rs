@@ -29,6 +29,6 @@ fn continuation_in_mu0_for_the_active_walker() {
     println!("{summary}");
     assert_eq!(
         summary,
-        "T_set = 0.3: stable for mu0 in [0.3, 0.5] (3/4 points)\n"
+        "T_set = 0.3: stable for mu0 in [0.30, 0.50] (3/4 points)\n"
     );
 }
