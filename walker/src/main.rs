@@ -71,7 +71,7 @@ enum Command {
         #[arg(long, allow_hyphen_values = true)]
         duration: Option<f64>,
         /// Stop after this many steps.
-        #[arg(long = "max-steps", default_value_t = 100)]
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 100)]
         max_steps: usize,
     },
     /// Sweep mu0 (procedures P1a-P5a / P1b-P5b).
@@ -100,7 +100,7 @@ enum Command {
         #[arg(long, default_value_t = 100.0, allow_hyphen_values = true)]
         duration: f64,
         /// At most this many steps per mu0.
-        #[arg(long = "max-steps", default_value_t = 1000)]
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 1000)]
         max_steps: usize,
     },
     /// Find the limit cycle (fixed point of the Poincare map) and its Floquet multipliers.
