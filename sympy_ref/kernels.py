@@ -7,12 +7,14 @@ mp.dps = 40.  Every point is also evaluated
   * from the same expressions at mp.dps = 60 (rounding check), and
   * by a second, purely numeric route at mp.dps = 60: M, h, S, J, J_mu, J_I are evaluated as
     matrices and the formulas of the brief (lambda = -J M^-1 (S u - h) / (J M^-1 Jhat^T), ...)
-    are applied with mpmath linear algebra (checks the symbolic simplification).
+    are applied with mpmath linear algebra (checks the symbolic simplification).  The Jacobian
+    kernels (*_jacobian) are checked against the complex-step derivative of that numeric route
+    (Im f(x + i h) / h with h = 1e-40 at dps 60: no cancellation, truncation error ~h^2).
 
 Inputs are drawn as IEEE doubles (so a Rust test reads exactly the same input) and written as
 their exact decimal expansion.  Outputs are written with OUT_DIGITS significant digits.
 
-Usage: python kernels.py OUTDIR
+Usage: python kernels.py OUTDIR [KERNEL ...]   (all kernels when none is named)
 """
 from __future__ import annotations
 
@@ -35,6 +37,13 @@ N_EDGE = 4          # points per edge tag
 OUT_DIGITS = 34     # significant digits written
 CLAIM_DIGITS = 30   # digits claimed in the JSON ("digits")
 COND_MAX = 1e6      # reject points whose denominators have condition number above this
+ALLARGS = md.Q + md.QD + [u, mu, md.v] + md.PARAMS
+JAC_H = mp.mpf(10) ** -40   # complex step of the numeric Jacobian route
+# Jacobian kernel -> (base kernel, slice of the base outputs that are differentiated)
+JACOBIANS = {"closed_loop_level_jacobian": ("closed_loop_level", slice(0, 4)),
+             "accel_slope_jacobian": ("accel_slope", slice(0, 4)),
+             "impact2_level_jacobian": ("impact2_level", slice(2, 6)),
+             "impact_slope_jacobian": ("impact_slope", slice(1, 5))}
 
 TABLE1 = {m1: 2.0, m2: 1.0, l: 1.0, I1: 0.5, I2: 1.0, g: 9.81, alpha: float(mp.pi / 6),
           phi: 0.2}
@@ -88,8 +97,9 @@ class Numeric:
     """Second route: matrices evaluated numerically, formulas applied with mpmath linalg."""
 
     def __init__(self, mdl):
-        args = md.Q + md.QD + [u, mu] + md.PARAMS
+        args = ALLARGS
         self.args = args
+        self.kernels = mdl.kernels
         L = lambda e: sp.lambdify(args, e, modules="mpmath")
         self.M = L(mdl.M)
         self.h = L(mdl.h)
@@ -101,7 +111,14 @@ class Numeric:
         self.energy = L(sp.Matrix([mdl.T, mdl.V]))
 
     def __call__(self, name, vals):
-        a = [mp.mpf(vals.get(s, 0)) for s in self.args]
+        if name in JACOBIANS:
+            # complex step: d out / d s = Im out(s + i h) / h, one column per variable
+            base, rows = JACOBIANS[name]
+            cols = [[mp.im(o) / JAC_H for o in
+                     self(base, {**vals, s: mp.mpc(vals[s], JAC_H)})[rows]]
+                    for s in self.kernels[name]["inputs"]]
+            return [cols[j][i] for i in range(len(cols[0])) for j in range(len(cols))]
+        a = [mp.mpmathify(vals.get(s, 0)) for s in self.args]
         M = mp.matrix(self.M(*a))
         h = mp.matrix(self.h(*a))
         S = mp.matrix(self.S(*a))
@@ -113,7 +130,7 @@ class Numeric:
         if name == "bias":
             return flat(h)
         if name in ("lambda_level", "projection_level", "control_level", "accel_level",
-                    "lambda_slope", "accel_slope"):
+                    "lambda_slope", "accel_slope", "closed_loop_level"):
             kind = "level" if name.endswith("level") else "slope"
             if kind == "slope":
                 U = 0
@@ -122,17 +139,22 @@ class Numeric:
             Minv = mp.inverse(M)
             rhs = S * U - h
             den = (J * Minv * Jh.T)[0, 0]
+            Y = mp.eye(4) - Jh.T * (1 / den) * J * Minv
+            A = (S.T * Minv * Y * S)[0, 0]
+            B = (S.T * Minv * Y * h)[0, 0]
+            if name == "closed_loop_level":
+                U = (a[self.args.index(md.v)] + B) / A     # Eq. 31
+                rhs = S * U - h
             lam = -(J * Minv * rhs)[0, 0] / den
             qdd = Minv * (rhs + Jh.T * lam)
-            Y = mp.eye(4) - Jh.T * (1 / den) * J * Minv
+            if name == "closed_loop_level":
+                return flat(qdd) + [U]
             if name.startswith("lambda"):
                 return [lam]
             if name.startswith("accel"):
                 return flat(qdd)
             if name == "projection_level":
                 return flat(Y)
-            A = (S.T * Minv * Y * S)[0, 0]
-            B = (S.T * Minv * Y * h)[0, 0]
             return [A, B]
         if name.startswith("impact"):
             JI = mp.matrix(self.JI[name](*a))
@@ -172,15 +194,17 @@ def kernel_edges(name, k):
         E.append(("edge:th1=0", setv(th1=lambda v: 0.0)))
     if mu in ins:
         E.append(("edge:mu=0", setv(mu=lambda v: 0.0)))
+    if md.v in ins:
+        E.append(("edge:v=0", setv(v=lambda v: 0.0)))
     if phi in k["params"]:
         E.append(("edge:phi=0", setv(phi=lambda v: 0.0)))
         if name.startswith("impact"):
             E.append(("edge:phi=0,th1=alpha/2", setv(phi=lambda v: 0.0,
                                                      th1=lambda v: v[alpha] / 2)))
-    if name in ("impact3_level", "impact2_level"):
+    if name in ("impact3_level", "impact2_level", "impact2_level_jacobian"):
         E.append(("edge:pre_impact(th1=alpha/2,zd=0,th2d=th1d)",
                   setv(th1=lambda v: v[alpha] / 2, zd=lambda v: 0.0, th2d=lambda v: v[th1d])))
-    if name in ("impact_slope", "impact2_slope"):
+    if name in ("impact_slope", "impact2_slope", "impact_slope_jacobian"):
         E.append(("edge:pre_impact(th1=alpha/2+phi,zd=-xd*tan(phi))",
                   setv(th1=lambda v: v[alpha] / 2 + v[phi],
                        zd=lambda v: float(-mp.mpf(v[xd]) * mp.tan(v[phi])))))
@@ -201,7 +225,7 @@ def table1_states(name, k):
         s = {x: [0.0, 0.25, -0.1, 1.5][i], z: 0.0 if not slope else float(-0.0), th1: t1,
              xd: xdv, zd: 0.0 if not slope else float(-mp.mpf(xdv) * mp.tan(f)),
              th1d: [0.8, 1.1, 0.5, 1.3][i], th2d: [0.8, 0.0, 0.0, -0.2][i],
-             u: [0.0, 2.5, -1.0, 7.0][i], mu: muv}
+             u: [0.0, 2.5, -1.0, 7.0][i], mu: muv, md.v: [0.0, 2.5, -1.0, 7.0][i]}
         out.append(s)
     return out
 
@@ -211,7 +235,7 @@ def make_evaluators(mdl, name, k):
     exprs = [e for _, e in k["outputs"]]
     f = sp.lambdify(args, exprs, modules="mpmath", cse=True)
     # condition number of each denominator factor w.r.t. componentwise relative perturbations
-    allargs = md.Q + md.QD + [u, mu] + md.PARAMS
+    allargs = ALLARGS
     dens = []
     for d in k["den"]:
         grads = [sp.diff(d, s) for s in allargs]
@@ -233,7 +257,7 @@ def cond_ok(dens, vals, allargs):
 
 def run_kernel(mdl, name, k, numeric, stats):
     args, f, dens = make_evaluators(mdl, name, k)
-    allargs = md.Q + md.QD + [u, mu] + md.PARAMS
+    allargs = ALLARGS
     smp = Sampler(SEED + sum(map(ord, name)))
     points = []
     rejected = 0
@@ -243,6 +267,8 @@ def run_kernel(mdl, name, k, numeric, stats):
         while True:
             p = smp.params()
             vals = {**p, **smp.state(p)}
+            if md.v in k["inputs"]:   # drawn only here: the other kernels' streams are unchanged
+                vals[md.v] = smp.uni(-50, 50)
             if modify is not None:
                 vals = modify(vals)
             if cond_ok(dens, vals, allargs):
@@ -347,16 +373,18 @@ def write_kernel(name, outdir):
     return stats[name]
 
 
-def main(outdir):
+def main(outdir, names=None):
     t0 = time.time()
     mdl = md.derive()
     t1 = time.time()
     os.makedirs(outdir, exist_ok=True)
-    for name in mdl.kernels:
-        print(f"{name:18s} {write_kernel(name, outdir)}", flush=True)
+    for name in names or mdl.kernels:
+        t2 = time.time()
+        print(f"{name:18s} {write_kernel(name, outdir)} {time.time() - t2:.1f} s", flush=True)
     print(f"derivation {t1 - t0:.1f} s, evaluation {time.time() - t1:.1f} s")
 
 
 if __name__ == "__main__":
     main(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..",
-                                                             "tests", "data"))
+                                                             "tests", "data"),
+         sys.argv[2:])

@@ -9,7 +9,8 @@ Symbols
 -------
 parameters : m1 m2 l I1 I2 g alpha phi   (PARAMS, in the canonical JSON order)
 state      : x z th1 th2, velocities xd zd th1d th2d
-inputs     : u (joint torque), mu (friction coefficient incl. direction)
+inputs     : u (joint torque), mu (friction coefficient incl. direction),
+             v (auxiliary input of the closed loop, yddot = v, Eq. 32)
 """
 from __future__ import annotations
 
@@ -27,11 +28,12 @@ x, z, th1, th2 = sp.symbols("x z th1 th2", real=True)
 xd, zd, th1d, th2d = sp.symbols("xd zd th1d th2d", real=True)
 xdd, zdd, th1dd, th2dd = sp.symbols("xdd zdd th1dd th2dd", real=True)
 u, mu = sp.symbols("u mu", real=True)
+v = sp.Symbol("v", real=True)
 
 Q = [x, z, th1, th2]
 QD = [xd, zd, th1d, th2d]
 QDD = [xdd, zdd, th1dd, th2dd]
-ALL_INPUT_SYMBOLS = Q + QD + [u, mu]
+ALL_INPUT_SYMBOLS = Q + QD + [u, mu, v]
 
 t = sp.Symbol("t", real=True)
 
@@ -82,6 +84,37 @@ def rsimp(e):
 
 def from_poly(e):
     return e.subs(FROM_POLY)
+
+
+def pdiff(e, s):
+    """Partial derivative of a poly-form rational function by the input symbol `s` (th1 through
+    its stand-ins: d S1/d th1 = C1, d C1/d th1 = -S1).  Quotient rule on numerator/denominator
+    in sympy's sparse polynomial arithmetic (much faster than expanding expressions), numerator
+    reduced modulo C^2 + S^2 - 1 for every angle pair (these leading terms are coprime, so the
+    reduction is a normal form and the zero test is exact); no cancellation."""
+    if e == 0:
+        return sp.Integer(0)
+    n, d = sp.fraction(sp.together(e))
+    gens = set(e.free_symbols) | {s}
+    for c, sn, _ in TRIG_PAIRS:
+        if c in gens or sn in gens or (s == th1 and c == C1):
+            gens |= {c, sn}
+    gens.discard(th1)
+    gens = sorted(gens, key=str)
+    N, D = sp.Poly(n, *gens), sp.Poly(d, *gens)
+    if s == th1:
+        cS, cC = sp.Poly(C1, *gens), sp.Poly(S1, *gens)
+        der = lambda P: P.diff(S1) * cS - P.diff(C1) * cC
+    else:
+        der = lambda P: P.diff(s)
+    num = der(N) * D - N * der(D)
+    for c, sn, _ in TRIG_PAIRS:
+        if c in gens and num.degree(c) >= 2:
+            order = [c] + [y for y in num.gens if y != c]
+            num = num.reorder(*order).rem(sp.Poly(c ** 2 + sn ** 2 - 1, *order))
+    if num.is_zero:
+        return sp.Integer(0)
+    return num.as_expr() / d ** 2
 
 
 def _grad(f):
@@ -287,6 +320,27 @@ def build_kernels(mdl: Model):
         add(name, imp_in, outs)
     xf, zf = mdl.fore
     xfd, zfd = mdl.fore_vel
+    # closed loop (Eqs. 27, 31): u = (v + B) / A substituted into qdd, so that yddot = v
+    u_cl = rsimp((v + B_l) / A_l)
+    qdd_cl = [rsimp(qdd_l[i].subs(u, u_cl)) for i in range(4)]
+    assert rsimp((Sp.T * sp.Matrix(qdd_cl))[0, 0] - v) == 0    # yddot = v
+    add("closed_loop_level", [th1, th1d, mu, v],
+        [(f"qdd{i}", qdd_cl[i]) for i in range(4)] + [("u", u_cl)])
+
+    def jacobian(name, base, rows, wrt):
+        """J<i><j> = d rows[i] / d wrt[j] (poly form, symbolic); the denominator factors for the
+        rejection test are those of the base kernel (the Jacobian's are their squares)."""
+        K[name] = dict(inputs=wrt, den_of=base,
+                       poly=[(f"J{i}{j}", pdiff(r, s)) for i, r in enumerate(rows)
+                             for j, s in enumerate(wrt)])
+
+    poly = lambda name: [e for n, e in K[name]["poly"]]
+    jacobian("closed_loop_level_jacobian", "closed_loop_level",
+             poly("closed_loop_level")[:4], [th1, th1d, mu, v])
+    jacobian("accel_slope_jacobian", "accel_slope", poly("accel_slope"), [th1, th1d, mu])
+    for base in ("impact2_level", "impact_slope"):
+        jacobian(base + "_jacobian", base, [e for n, e in K[base]["poly"] if n.startswith("qdp")],
+                 imp_in)
     add("fore_foot", [x, z, th1, xd, zd, th1d],
         [("x_f", xf), ("z_f", zf), ("xd_f", xfd), ("zd_f", zfd)])
     add("energy", [z, th1, xd, zd, th1d, th2d], [("T", mdl.T), ("V", mdl.V)])
@@ -299,9 +353,14 @@ def build_kernels(mdl: Model):
         extra = syms - set(k["inputs"]) - set(PARAMS)
         assert not extra, (name, extra)
         missing = [s for s in k["inputs"] if s not in syms]
-        assert not missing, (name, missing)
+        # a Jacobian keeps all its variables as inputs even where it is constant in one
+        # (impact2_level_jacobian: qd+ - qd- does not involve xd-)
+        assert not missing or "den_of" in k, (name, missing)
         k["params"] = [p for p in PARAMS if p in syms]
         # denominator factors (for rejecting near-singular points)
+        if "den_of" in k:
+            k["den"] = K[k["den_of"]]["den"]
+            continue
         dens = set()
         for _, e in k["poly"]:
             _, d = sp.fraction(e)
