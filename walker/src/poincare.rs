@@ -91,13 +91,13 @@ fn map_err(t: f64, reason: impl Into<String>) -> MapError {
     reason = "built once per map evaluation and read on every right-hand side"
 )]
 #[derive(Clone, Copy, Debug)]
-enum Jac {
+pub(crate) enum Jac {
     ActiveLevel(active_level::Prepared),
     PassiveSlope(passive_slope::Prepared),
 }
 
 impl Jac {
-    fn new(m: &Model) -> Result<Self, MapError> {
+    pub(crate) fn new(m: &Model) -> Result<Self, MapError> {
         let r = m.runtime;
         if m.physical != Physical::TABLE1 {
             return Err(map_err(
@@ -125,7 +125,7 @@ impl Jac {
 
     /// `d qdd_i / d y_j` (`y` the mechanical state) at `(t, y)`, chain rule through `mu(xd)` and
     /// `v(t, y, ydot)` included.
-    fn accel(&self, model: &Model, t: f64, y: &[f64]) -> [[f64; 8]; 4] {
+    pub(crate) fn accel(&self, model: &Model, t: f64, y: &[f64]) -> [[f64; 8]; 4] {
         let (th1, th2, xd, th1d, th2d) = (y[2], y[3], y[4], y[6], y[7]);
         let r = model.runtime;
         let mut out = [[0.0; 8]; 4];

@@ -276,6 +276,8 @@ pub fn ground_reaction(model: &Model, t: f64, y: &[f64]) -> f64 {
 
 struct Stance<'a> {
     model: &'a Model,
+    /// The generated Jacobian kernels (Table 1 models); `None` falls back to finite differences.
+    jac: Option<crate::poincare::Jac>,
 }
 
 impl OdeSystem<N> for Stance<'_> {
@@ -289,6 +291,36 @@ impl OdeSystem<N> for Stance<'_> {
         } else {
             0.0
         };
+    }
+
+    /// The state Jacobian for the stiff integrator: `d qd / d y` is the identity block, and
+    /// `d qdd / d y` comes from the generated kernels (`closed_loop_level_jacobian`,
+    /// `accel_slope_jacobian`) with the chain rule through `mu(xd)` and `v(t, y, ydot)`. The
+    /// quadrature of `|ydot u|` (row 8, non-smooth where `ydot u` changes sign) is
+    /// differenced forward.
+    fn jacobian(&mut self, t: f64, y: &[f64; N], jac: &mut [[f64; N]; N]) -> bool {
+        let Some(j) = self.jac else {
+            return false;
+        };
+        let a = j.accel(self.model, t, y);
+        for row in jac.iter_mut() {
+            *row = [0.0; N];
+        }
+        for i in 0..4 {
+            jac[i][4 + i] = 1.0;
+            jac[4 + i][..8].copy_from_slice(&a[i]);
+        }
+        let mut f0 = [0.0; N];
+        self.rhs(t, y, &mut f0);
+        for k in 0..8 {
+            let h = f64::EPSILON.sqrt() * y[k].abs().max(1.0);
+            let mut yk = *y;
+            yk[k] += h;
+            let mut fk = [0.0; N];
+            self.rhs(t, &yk, &mut fk);
+            jac[8][k] = (fk[8] - f0[8]) / (yk[k] - y[k]);
+        }
+        true
     }
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
@@ -477,7 +509,10 @@ fn one_step<O: Observer<N>>(
             ground_reaction(model, t, y).abs() - lambda_max
         }),
     ];
-    let mut sys = Stance { model };
+    let mut sys = Stance {
+        model,
+        jac: crate::poincare::Jac::new(model).ok(),
+    };
     let mut t = 0.0;
     let mut y = y0;
     let t_limit = cfg.max_step_time;
