@@ -635,7 +635,7 @@ pub fn run(out: &Path) -> io::Result<String> {
 /// cycle to cycle, [`crate::poincare::continuation`]), written to `stability.csv`; returns the
 /// summary lines.
 fn stability(out: &Path) -> io::Result<String> {
-    use crate::poincare::{continuation, continuation_csv, stability_summary};
+    use crate::poincare::{Status, continuation, continuation_csv, stability_summary};
     use rayon::prelude::*;
     let cfg = SimConfig::default();
     let active_grid = mu0_grid(0.05, 1.0, 0.05);
@@ -661,6 +661,38 @@ fn stability(out: &Path) -> io::Result<String> {
             (is_active, pts)
         })
         .collect();
+    // The largest multiplier's modulus along mu0, one curve per chain (valid gaits only: an
+    // `invalid-gait` cycle, one that lifts off, is not drawn).
+    let curves = |active_chains: bool, name: &str| -> Vec<Series> {
+        results
+            .iter()
+            .filter(|(a, _)| *a == active_chains)
+            .filter_map(|(_, pts)| {
+                let chain = pts.first()?.chain;
+                let points = pts
+                    .iter()
+                    .filter_map(|p| p.cycle.as_ref().map(|c| (p.mu0, c)))
+                    .filter(|(_, c)| matches!(c.status, Status::Converged | Status::Family))
+                    .map(|(mu0, c)| (mu0, c.max_modulus()))
+                    .filter(|(_, m)| m.is_finite())
+                    .collect();
+                Some(Series::new(format!("{name} = {chain}"), points))
+            })
+            .collect()
+    };
+    for (stem, active_chains, name) in [
+        ("stability_active", true, "T_set"),
+        ("stability_passive", false, "phi"),
+    ] {
+        let f = fig(
+            &format!("Largest Floquet multiplier against mu0 ({name})"),
+            "mu0",
+            "max |multiplier| (stable below 1)",
+            curves(active_chains, name),
+            true,
+        );
+        save(&f, &out.join(stem)).map_err(io::Error::other)?;
+    }
     let mut csv = String::new();
     let mut text =
         String::from("- Stability from the Floquet multipliers (largest modulus < 1):\n");
