@@ -117,35 +117,11 @@ fn err_ulps(got: &[f64], reference: &[f64]) -> f64 {
 }
 
 fn gl_prep(p: &Phys) -> gl::Prepared {
-    gl::prepare(&gl::Params {
-        m1: p.m1,
-        m2: p.m2,
-        l: p.l,
-        i1: p.i1,
-        i2: p.i2,
-        g: p.g,
-        alpha: p.alpha,
-        mu0: MU0_REF,
-        c: C_REF,
-        t_set: 0.3,
-        k_p: 0.0,
-        k_d: 0.0,
-    })
+    p.level_kernels((MU0_REF, C_REF), (0.3, 0.0, 0.0))
 }
 
 fn gs_prep(p: &Phys) -> gs::Prepared {
-    gs::prepare(&gs::Params {
-        m1: p.m1,
-        m2: p.m2,
-        l: p.l,
-        i1: p.i1,
-        i2: p.i2,
-        g: p.g,
-        alpha: p.alpha,
-        phi: p.phi,
-        mu0: MU0_REF,
-        c: C_REF,
-    })
+    p.slope_kernels((MU0_REF, C_REF))
 }
 
 fn al_prep() -> al::Prepared {

@@ -19,35 +19,11 @@ use walker::kernels::{
 use walker_tests::{Phys, mu_law};
 
 fn gl_prep(p: &Phys) -> gl::Prepared {
-    gl::prepare(&gl::Params {
-        m1: p.m1,
-        m2: p.m2,
-        l: p.l,
-        i1: p.i1,
-        i2: p.i2,
-        g: p.g,
-        alpha: p.alpha,
-        mu0: MU0,
-        c: C,
-        t_set: 0.3,
-        k_p: 0.0,
-        k_d: 0.0,
-    })
+    p.level_kernels((MU0, C), (0.3, 0.0, 0.0))
 }
 
 fn gs_prep(p: &Phys) -> gs::Prepared {
-    gs::prepare(&gs::Params {
-        m1: p.m1,
-        m2: p.m2,
-        l: p.l,
-        i1: p.i1,
-        i2: p.i2,
-        g: p.g,
-        alpha: p.alpha,
-        phi: p.phi,
-        mu0: MU0,
-        c: C,
-    })
+    p.slope_kernels((MU0, C))
 }
 
 fn qd(x: &Input) -> Vector4<f64> {

@@ -88,6 +88,49 @@ pub struct Phys {
 }
 
 impl Phys {
+    /// The `general_level` kernels prepared at these parameters, the tanh law `(mu0, c)` and the
+    /// control settings `(T_set, K_P, K_D)`.
+    #[must_use]
+    pub fn level_kernels(
+        &self,
+        (mu0, c): (f64, f64),
+        (t_set, k_p, k_d): (f64, f64, f64),
+    ) -> walker::kernels::general_level::Prepared {
+        use walker::kernels::general_level as gl;
+        gl::prepare(&gl::Params {
+            m1: self.m1,
+            m2: self.m2,
+            l: self.l,
+            i1: self.i1,
+            i2: self.i2,
+            g: self.g,
+            alpha: self.alpha,
+            mu0,
+            c,
+            t_set,
+            k_p,
+            k_d,
+        })
+    }
+
+    /// The `general_slope` kernels prepared at these parameters and the tanh law `(mu0, c)`.
+    #[must_use]
+    pub fn slope_kernels(&self, (mu0, c): (f64, f64)) -> walker::kernels::general_slope::Prepared {
+        use walker::kernels::general_slope as gs;
+        gs::prepare(&gs::Params {
+            m1: self.m1,
+            m2: self.m2,
+            l: self.l,
+            i1: self.i1,
+            i2: self.i2,
+            g: self.g,
+            alpha: self.alpha,
+            phi: self.phi,
+            mu0,
+            c,
+        })
+    }
+
     /// Table 1 with `g = 9.81`, `alpha = pi/6` and the given slope angle.
     #[must_use]
     pub fn table1(phi: f64) -> Phys {

@@ -14,35 +14,11 @@ use walker_tests::{EPS, Phys, cases};
 const C: f64 = 256.0;
 
 fn gl_prep(p: &Phys, mu0: f64) -> gl::Prepared {
-    gl::prepare(&gl::Params {
-        m1: p.m1,
-        m2: p.m2,
-        l: p.l,
-        i1: p.i1,
-        i2: p.i2,
-        g: p.g,
-        alpha: p.alpha,
-        mu0,
-        c: 1.0,
-        t_set: 0.5,
-        k_p: 1.0,
-        k_d: 1.0,
-    })
+    p.level_kernels((mu0, 1.0), (0.5, 1.0, 1.0))
 }
 
 fn gs_prep(p: &Phys, mu0: f64) -> gs::Prepared {
-    gs::prepare(&gs::Params {
-        m1: p.m1,
-        m2: p.m2,
-        l: p.l,
-        i1: p.i1,
-        i2: p.i2,
-        g: p.g,
-        alpha: p.alpha,
-        phi: p.phi,
-        mu0,
-        c: 1.0,
-    })
+    p.slope_kernels((mu0, 1.0))
 }
 
 prop_compose! {

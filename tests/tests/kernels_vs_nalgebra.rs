@@ -41,35 +41,11 @@ const MU0: f64 = 2.5;
 const C_LAW: f64 = 1.0;
 
 fn level_params(p: &Phys) -> gl::Prepared {
-    gl::prepare(&gl::Params {
-        m1: p.m1,
-        m2: p.m2,
-        l: p.l,
-        i1: p.i1,
-        i2: p.i2,
-        g: p.g,
-        alpha: p.alpha,
-        mu0: MU0,
-        c: C_LAW,
-        t_set: 0.5,
-        k_p: 1.0,
-        k_d: 1.0,
-    })
+    p.level_kernels((MU0, C_LAW), (0.5, 1.0, 1.0))
 }
 
 fn slope_params(p: &Phys) -> gs::Prepared {
-    gs::prepare(&gs::Params {
-        m1: p.m1,
-        m2: p.m2,
-        l: p.l,
-        i1: p.i1,
-        i2: p.i2,
-        g: p.g,
-        alpha: p.alpha,
-        phi: p.phi,
-        mu0: MU0,
-        c: C_LAW,
-    })
+    p.slope_kernels((MU0, C_LAW))
 }
 
 fn close(what: &str, gen_v: f64, generic: f64, c: f64, scale: f64) -> Result<(), TestCaseError> {
