@@ -37,6 +37,25 @@ pub struct Kernel {
     pub outputs: Vec<(String, RatFunc)>,
     /// Output shape.
     pub shape: Shape,
+    /// An equivalent, cheaper way to evaluate the outputs, if the derivation knows one (see
+    /// [`Staged`]); `outputs` stays the definition.
+    pub staged: Option<Staged>,
+}
+
+/// A kernel's outputs evaluated in stages: first the `locals` in order, each a symbol bound to
+/// an expression in the arguments and the locals before it, then `outputs`, expressions in the
+/// arguments and the locals.
+///
+/// Substituting the locals back (last to first) gives exactly the kernel's `outputs`
+/// ([`Kernel::check_staged`] proves it with exact arithmetic). The staged form exists for
+/// evaluation: a quantity such as `u = (v + B) / A` (Eq. 31) is computed once and then used,
+/// where the flattened quotient of quotients would multiply denominators together.
+#[derive(Clone, Debug)]
+pub struct Staged {
+    /// `(symbol, expression)` pairs, evaluated in order.
+    pub locals: Vec<(Sym, RatFunc)>,
+    /// One expression per output of the kernel, in the kernel's output order.
+    pub outputs: Vec<RatFunc>,
 }
 
 impl Kernel {
@@ -62,6 +81,37 @@ impl Kernel {
             }
         }
         set.into_iter().collect()
+    }
+
+    /// Checks that the staged form, if any, composes to the outputs exactly.
+    ///
+    /// # Errors
+    /// [`Error::CheckFailed`] naming the kernel and the first output that differs, or an
+    /// arithmetic error of the substitution.
+    pub fn check_staged(&self) -> Result<()> {
+        let Some(staged) = &self.staged else {
+            return Ok(());
+        };
+        if staged.outputs.len() != self.outputs.len() {
+            return Err(Error::CheckFailed {
+                what: format!("kernel {}: staged output count", self.name),
+            });
+        }
+        for ((name, want), got) in self.outputs.iter().zip(&staged.outputs) {
+            let mut got = got.clone();
+            for (s, value) in staged.locals.iter().rev() {
+                got = got.substitute(Atom::Sym(*s), value)?;
+            }
+            if &got != want {
+                return Err(Error::CheckFailed {
+                    what: format!(
+                        "kernel {}: staged output {name} differs from its definition",
+                        self.name
+                    ),
+                });
+            }
+        }
+        Ok(())
     }
 
     /// Every symbol the outputs depend on, that is not an argument or a parameter (must be
@@ -180,6 +230,7 @@ impl Derivation {
                 args: vec![Th1],
                 outputs: named("M", &dynamics.mass),
                 shape: Shape::Matrix(4, 4),
+                staged: None,
             },
             Kernel {
                 name: "bias",
@@ -188,6 +239,7 @@ impl Derivation {
                 args: vec![Th1, Th1d],
                 outputs: named("h", &dynamics.bias),
                 shape: Shape::Vector(4),
+                staged: None,
             },
             Kernel {
                 name: "lambda_level",
@@ -196,6 +248,7 @@ impl Derivation {
                 args: vec![Th1, Th1d, U, Mu],
                 outputs: vec![("lambda".into(), level.lambda.clone())],
                 shape: Shape::Scalar,
+                staged: None,
             },
             Kernel {
                 name: "projection_level",
@@ -204,6 +257,7 @@ impl Derivation {
                 args: vec![Th1, Mu],
                 outputs: named("Y", &level.projection),
                 shape: Shape::Matrix(4, 4),
+                staged: None,
             },
             Kernel {
                 name: "control_level",
@@ -215,6 +269,7 @@ impl Derivation {
                     ("B".into(), control.b.clone()),
                 ],
                 shape: Shape::Vector(2),
+                staged: None,
             },
             Kernel {
                 name: "accel_level",
@@ -223,6 +278,7 @@ impl Derivation {
                 args: vec![Th1, Th1d, U, Mu],
                 outputs: named("qdd", &level.accel),
                 shape: Shape::Vector(4),
+                staged: None,
             },
             Kernel {
                 name: "lambda_slope",
@@ -234,6 +290,7 @@ impl Derivation {
                     slope.lambda.substitute(Atom::Sym(U), &RatFunc::zero())?,
                 )],
                 shape: Shape::Scalar,
+                staged: None,
             },
             Kernel {
                 name: "accel_slope",
@@ -242,6 +299,7 @@ impl Derivation {
                 args: vec![Th1, Th1d, Mu],
                 outputs: named("qdd", &substitute_u_zero(&slope.accel)?),
                 shape: Shape::Vector(4),
+                staged: None,
             },
             Kernel {
                 name: "impact3_level",
@@ -250,6 +308,7 @@ impl Derivation {
                 args: impact_args.clone(),
                 outputs: impact_outputs(&impact3, impact3.impulse.clone()),
                 shape: Shape::Parts,
+                staged: None,
             },
             Kernel {
                 name: "impact2_level",
@@ -258,6 +317,7 @@ impl Derivation {
                 args: impact_args.clone(),
                 outputs: impact_outputs(&impact2, impact2.impulse.clone()),
                 shape: Shape::Parts,
+                staged: None,
             },
             Kernel {
                 name: "impact_slope",
@@ -266,6 +326,7 @@ impl Derivation {
                 args: impact_args.clone(),
                 outputs: impact_outputs(&impact_slope, vertical(&impact_slope)),
                 shape: Shape::Parts,
+                staged: None,
             },
             Kernel {
                 name: "impact2_slope",
@@ -274,6 +335,7 @@ impl Derivation {
                 args: impact_args,
                 outputs: impact_outputs(&impact2_slope, vertical(&impact2_slope)),
                 shape: Shape::Parts,
+                staged: None,
             },
             Kernel {
                 name: "closed_loop_level",
@@ -282,6 +344,18 @@ impl Derivation {
                 args: vec![Th1, Th1d, Mu, V],
                 outputs: closed_outputs,
                 shape: Shape::Parts,
+                // u once (Eq. 31), then Eq. 27 with that u: sin_cos, mu and the denominators
+                // of A, B and qdd are shared instead of multiplied together.
+                staged: Some(Staged {
+                    locals: vec![(U, u_closed.clone())],
+                    outputs: level
+                        .accel
+                        .entries()
+                        .iter()
+                        .cloned()
+                        .chain([sym(U)])
+                        .collect(),
+                }),
             },
             Kernel {
                 name: "closed_loop_level_jacobian",
@@ -290,6 +364,7 @@ impl Derivation {
                 args: vec![Th1, Th1d, Mu, V],
                 outputs: named("J", &closed_jac),
                 shape: Shape::Matrix(4, 4),
+                staged: None,
             },
             Kernel {
                 name: "accel_slope_jacobian",
@@ -298,6 +373,7 @@ impl Derivation {
                 args: vec![Th1, Th1d, Mu],
                 outputs: named("J", &slope_jac),
                 shape: Shape::Matrix(4, 3),
+                staged: None,
             },
             Kernel {
                 name: "impact2_level_jacobian",
@@ -306,6 +382,7 @@ impl Derivation {
                 args: impact_vars.to_vec(),
                 outputs: named("J", &impact2_jac),
                 shape: Shape::Matrix(4, 5),
+                staged: None,
             },
             Kernel {
                 name: "impact_slope_jacobian",
@@ -314,6 +391,7 @@ impl Derivation {
                 args: impact_vars.to_vec(),
                 outputs: named("J", &impact_slope_jac),
                 shape: Shape::Matrix(4, 5),
+                staged: None,
             },
             Kernel {
                 name: "fore_foot",
@@ -327,6 +405,7 @@ impl Derivation {
                     ("zd_f".into(), fore_foot_vel[1].clone()),
                 ],
                 shape: Shape::Vector(4),
+                staged: None,
             },
             Kernel {
                 name: "energy",
@@ -338,9 +417,11 @@ impl Derivation {
                     ("V".into(), g.potential.clone()),
                 ],
                 shape: Shape::Vector(2),
+                staged: None,
             },
         ];
         for k in &kernels {
+            k.check_staged()?;
             let free = k.free_symbols();
             if !free.is_empty() {
                 return Err(Error::CheckFailed {

@@ -22,7 +22,7 @@ pub mod symbol;
 pub mod trig;
 
 pub use error::{Error, Result};
-pub use kernels::{Derivation, Kernel, Shape};
+pub use kernels::{Derivation, Kernel, Shape, Staged};
 pub use matrix::Matrix;
 pub use poly::{Poly, Q};
 pub use ratfunc::RatFunc;

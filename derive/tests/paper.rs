@@ -570,6 +570,35 @@ fn eq30_31_output_acceleration_is_a_u_minus_b() {
         div(&(&s(Sym::V) + &b), &a),
         "u of Eq. 31"
     );
+    // The torso's only torque is -u (S = [0, 0, 1, -1], Eqs. 19-20), so th2dd = -u / I2; the
+    // simulator's Jacobian of the input power relies on it.
+    assert_eq!(
+        out("closed_loop_level", "qdd3"),
+        -div(&out("closed_loop_level", "u"), &s(Sym::I2)),
+        "th2dd = -u / I2"
+    );
+}
+
+#[test]
+fn the_staged_closed_loop_composes_to_its_definition_and_a_wrong_one_is_caught() {
+    let k = derivation()
+        .kernel("closed_loop_level")
+        .expect("kernel exists");
+    let staged = k
+        .staged
+        .as_ref()
+        .expect("closed_loop_level has a staged form");
+    assert_eq!(staged.locals.len(), 1, "u is the one local");
+    k.check_staged().expect("u once, then Eq. 27 with it");
+    // The same stages with the wrong sign of v in u must be rejected.
+    let mut wrong = k.clone();
+    if let Some(st) = wrong.staged.as_mut() {
+        let u = st.locals[0].1.clone();
+        st.locals[0].1 = u
+            .substitute(Atom::Sym(Sym::V), &-s(Sym::V))
+            .expect("substitute");
+    }
+    assert!(wrong.check_staged().is_err(), "a wrong staged form passes");
 }
 
 #[test]

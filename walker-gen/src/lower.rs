@@ -84,17 +84,21 @@ impl Lowering<'_> {
             }
         }
         let mut atoms = AtomNodes::default();
+        // The staged form, when the derivation has one: its locals become nodes first and
+        // stand for their symbols in what follows (the same graph, so everything is shared).
+        let exprs: Vec<&RatFunc> = match &k.staged {
+            Some(staged) => {
+                for (s, value) in &staged.locals {
+                    let node = self.ratfunc(g, &mut atoms, value)?;
+                    atoms.0.insert(Atom::Sym(*s).slot(), node);
+                }
+                staged.outputs.iter().collect()
+            }
+            None => k.outputs.iter().map(|(_, r)| r).collect(),
+        };
         let mut outputs = Vec::with_capacity(k.outputs.len());
-        for (name, r) in &k.outputs {
-            let r = self.specialise(r)?;
-            let num = self.poly(g, &mut atoms, r.num())?;
-            let node = if r.is_poly() {
-                num
-            } else {
-                let den = self.poly(g, &mut atoms, r.den())?;
-                g.div(num, den)
-            };
-            outputs.push((name.clone(), node));
+        for ((name, _), r) in k.outputs.iter().zip(exprs) {
+            outputs.push((name.clone(), self.ratfunc(g, &mut atoms, r)?));
         }
         let output_shape = match k.shape {
             walker_symbolic::Shape::Scalar => Shape::Scalar,
@@ -117,6 +121,18 @@ impl Lowering<'_> {
             args,
             outputs,
             output_shape,
+        })
+    }
+
+    /// The node of a specialised rational function: numerator, or numerator over denominator.
+    fn ratfunc(&self, g: &mut Graph, atoms: &mut AtomNodes, r: &RatFunc) -> Result<NodeId, Error> {
+        let r = self.specialise(r)?;
+        let num = self.poly(g, atoms, r.num())?;
+        Ok(if r.is_poly() {
+            num
+        } else {
+            let den = self.poly(g, atoms, r.den())?;
+            g.div(num, den)
         })
     }
 
