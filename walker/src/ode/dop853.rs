@@ -337,10 +337,9 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
         self.stage(sys, st, t, y, h, 1.0, a12, 12);
 
         let k = &self.k;
-        let mut err = 0.0;
-        let mut err2 = 0.0;
+        let mut incr = [0.0; N];
         for i in 0..N {
-            let incr = B1 * k[0][i]
+            incr[i] = B1 * k[0][i]
                 + B6 * k[5][i]
                 + B7 * k[6][i]
                 + B8 * k[7][i]
@@ -348,7 +347,13 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
                 + B10 * k[9][i]
                 + B11 * k[10][i]
                 + B12 * k[11][i];
-            self.y_new[i] = y[i] + h * incr;
+            self.y_new[i] = y[i] + h * incr[i];
+        }
+        let n = sys.controlled_components(t, y, t + h, &self.y_new).min(N);
+        let mut err = 0.0;
+        let mut err2 = 0.0;
+        for i in 0..n {
+            let incr = incr[i];
             let sk = tol.atol + tol.rtol * y[i].abs().max(self.y_new[i].abs());
             // 3rd-order embedded estimate.
             let e3 = incr - BHH1 * k[0][i] - BHH2 * k[8][i] - BHH3 * k[11][i];
@@ -364,14 +369,14 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
                 + ER12 * k[11][i];
             err += (e5 / sk).powi(2);
         }
-        if N == 0 {
+        if n == 0 {
             return 0.0;
         }
         let mut deno = err + 0.01 * err2;
         if deno <= 0.0 {
             deno = 1.0;
         }
-        h.abs() * err * (1.0 / (N as f64 * deno)).sqrt()
+        h.abs() * err * (1.0 / (n as f64 * deno)).sqrt()
     }
 
     fn y_new(&self) -> &[f64; N] {

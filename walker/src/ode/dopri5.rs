@@ -178,7 +178,8 @@ impl<const N: usize> Stepper<N> for Dopri5<N> {
                     + E6 * self.k6[i]
                     + E7 * self.k7[i]);
         }
-        error_norm(&e, y, &self.y_new, tol)
+        let n = sys.controlled_components(t, y, tph, &self.y_new);
+        error_norm(&e, y, &self.y_new, tol, n)
     }
 
     fn y_new(&self) -> &[f64; N] {

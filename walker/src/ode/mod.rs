@@ -48,6 +48,7 @@ mod events;
 mod linalg;
 mod rodas4;
 
+pub(crate) use events::find_root;
 pub use events::{Direction, Event};
 pub use linalg::{Lu, LuError};
 
@@ -81,6 +82,20 @@ pub trait OdeSystem<const N: usize> {
     fn time_derivative(&mut self, t: f64, y: &[f64; N], dfdt: &mut [f64; N]) -> bool {
         let _ = (t, y, dfdt);
         false
+    }
+
+    /// How many leading components the error test of the attempted step from
+    /// `(t0, y0)` to `(t1, y1)` watches (default: all `N`).
+    ///
+    /// The components after them are carried along by the method (typically
+    /// quadratures such as an integral of power, which nothing else depends
+    /// on) but cannot cause a rejection of this attempt; the caller is then
+    /// responsible for their accuracy on this step, for example where their
+    /// integrand has a kink inside it (see [`Observer::wants_step`]). Values
+    /// above `N` count as `N`; zero means no error control for this attempt.
+    fn controlled_components(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> usize {
+        let _ = (t0, y0, t1, y1);
+        N
     }
 
     /// The first time strictly after `t` at which the right-hand side is not
@@ -432,9 +447,20 @@ pub trait Observer<const N: usize> {
     /// output is only built for steps in which an event must be located.
     const WANTS_STEPS: bool = true;
 
-    /// Called after each accepted step, in order, before any event of that
-    /// step is reported. Steps of zero length (an event at the very start of
-    /// a step) are not shown.
+    /// Whether the accepted step from `(t0, y0)` to `(t1, y1)` is to be
+    /// shown to [`Observer::on_step`] (default: every step). Called once per
+    /// accepted step when [`Observer::WANTS_STEPS`] is true, before the dense
+    /// output is built, so an observer that needs only some steps (those in
+    /// which an integrand changes sign, say) saves the interpolation work of
+    /// the others. A terminal event may still shorten the step shown.
+    fn wants_step(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
+        let _ = (t0, y0, t1, y1);
+        true
+    }
+
+    /// Called after each accepted step that [`Observer::wants_step`] asked
+    /// for, in order, before any event of that step is reported. Steps of
+    /// zero length (an event at the very start of a step) are not shown.
     fn on_step(&mut self, step: &Step<'_, N>);
 
     /// Called for each non-terminal event, in time order, after the step
@@ -442,6 +468,54 @@ pub trait Observer<const N: usize> {
     /// [`Outcome::Event`] instead.
     fn on_event(&mut self, index: usize, t: f64, y: &[f64; N]) {
         let _ = (index, t, y);
+    }
+}
+
+/// Two observers as one: each step goes to each observer that asked for it
+/// ([`Observer::wants_step`]), non-terminal events to both.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Pair<A, B> {
+    /// The first observer.
+    pub first: A,
+    /// The second observer.
+    pub second: B,
+    wants: (bool, bool),
+}
+
+impl<A, B> Pair<A, B> {
+    /// Both observers.
+    pub fn new(first: A, second: B) -> Self {
+        Self {
+            first,
+            second,
+            wants: (false, false),
+        }
+    }
+}
+
+impl<const N: usize, A: Observer<N>, B: Observer<N>> Observer<N> for Pair<A, B> {
+    const WANTS_STEPS: bool = A::WANTS_STEPS || B::WANTS_STEPS;
+
+    fn wants_step(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
+        self.wants = (
+            A::WANTS_STEPS && self.first.wants_step(t0, y0, t1, y1),
+            B::WANTS_STEPS && self.second.wants_step(t0, y0, t1, y1),
+        );
+        self.wants.0 || self.wants.1
+    }
+
+    fn on_step(&mut self, step: &Step<'_, N>) {
+        if self.wants.0 {
+            self.first.on_step(step);
+        }
+        if self.wants.1 {
+            self.second.on_step(step);
+        }
+    }
+
+    fn on_event(&mut self, index: usize, t: f64, y: &[f64; N]) {
+        self.first.on_event(index, t, y);
+        self.second.on_event(index, t, y);
     }
 }
 
@@ -526,24 +600,27 @@ pub(crate) fn rhs<S: OdeSystem<N>, const N: usize>(
     sys.rhs(t, y, dy);
 }
 
-/// Weighted RMS norm of `e` with Hairer's scale
-/// `atol + rtol * max(|y_i|, |y_new_i|)`.
+/// Weighted RMS norm of the first `n` components of `e` with Hairer's scale
+/// `atol + rtol * max(|y_i|, |y_new_i|)` (`n` from
+/// [`OdeSystem::controlled_components`], clamped to `N`).
 pub(crate) fn error_norm<const N: usize>(
     e: &[f64; N],
     y: &[f64; N],
     y_new: &[f64; N],
     tol: &Tolerances,
+    n: usize,
 ) -> f64 {
-    if N == 0 {
+    let n = n.min(N);
+    if n == 0 {
         return 0.0;
     }
     let mut sum = 0.0;
-    for i in 0..N {
+    for i in 0..n {
         let sk = tol.atol + tol.rtol * y[i].abs().max(y_new[i].abs());
         let r = e[i] / sk;
         sum += r * r;
     }
-    (sum / N as f64).sqrt()
+    (sum / n as f64).sqrt()
 }
 
 fn all_finite<const N: usize>(y: &[f64; N]) -> bool {
@@ -758,7 +835,7 @@ impl Run<'_> {
             }
             nonfinite_streak = 0;
 
-            let (accepted, mut h_new) = match config.fixed_step {
+            let (accepted, h_new) = match config.fixed_step {
                 Some(hf) => (true, hf),
                 None => controller.propose(err, h),
             };
@@ -771,13 +848,20 @@ impl Run<'_> {
 
             // ---- The step is accepted. ----
             stats.accepted_steps += 1;
+            let h_new = if config.fixed_step.is_none() {
+                let h_new = h_new.min(hmax);
+                if reject { h_new.min(h) } else { h_new }
+            } else {
+                h_new
+            };
             let t_new = if last { target } else { t + h };
             let y_new = *st.y_new();
             let need_events = match events::check_end(events, t_new, &y_new) {
                 Ok(need) => need,
                 Err(()) => return Outcome::NonFinite { t: t_new, y: y_new },
             };
-            st.accept(sys, t, &y, h, need_events || O::WANTS_STEPS, stats);
+            let show = O::WANTS_STEPS && obs.wants_step(t, &y, t_new, &y_new);
+            st.accept(sys, t, &y, h, need_events || show, stats);
 
             let span = events::Span {
                 t0: t,
@@ -805,7 +889,7 @@ impl Run<'_> {
             if hit.is_some() {
                 span.state_at(t_stop, &mut y_stop);
             }
-            if O::WANTS_STEPS && t_stop > t {
+            if show && t_stop > t {
                 obs.on_step(&Step {
                     t_start: t,
                     t_end: t_stop,
@@ -840,12 +924,6 @@ impl Run<'_> {
                 } else {
                     Outcome::Breakpoint { t, y }
                 };
-            }
-            if config.fixed_step.is_none() {
-                h_new = h_new.min(hmax);
-                if reject {
-                    h_new = h_new.min(h);
-                }
             }
             reject = false;
             h = h_new;

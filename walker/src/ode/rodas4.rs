@@ -276,7 +276,8 @@ impl<const N: usize> Stepper<N> for Rodas4<N> {
         for i in 0..N {
             self.y_new[i] = ak[i] + k[5][i];
         }
-        error_norm(&k[5], y, &self.y_new, tol)
+        let n = sys.controlled_components(t, y, t + h, &self.y_new);
+        error_norm(&k[5], y, &self.y_new, tol, n)
     }
 
     fn y_new(&self) -> &[f64; N] {
