@@ -8,16 +8,49 @@
 
 /// `[y_d, yd_d, ydd_d]` at time `t` since the last impact (Section 3.2).
 pub fn desired(alpha: f64, t_set: f64, t: f64) -> [f64; 3] {
-    if t >= t_set {
-        return [alpha / 2.0, 0.0, 0.0];
+    Ramp::new(alpha, t_set).at(t)
+}
+
+/// The ramp `y_d` of Section 3.2 for one `alpha` and `T_set`, with its coefficients computed
+/// once (it is evaluated at every right-hand side of the active walker).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ramp {
+    alpha: f64,
+    t_set: f64,
+    inv_t_set: f64,
+    /// `30 alpha / T_set`, the scale of `yd_d`.
+    c1: f64,
+    /// `60 alpha / T_set^2`, the scale of `ydd_d`.
+    c2: f64,
+}
+
+impl Ramp {
+    /// The ramp from `-alpha/2` to `alpha/2` in `T_set`.
+    pub fn new(alpha: f64, t_set: f64) -> Self {
+        Self {
+            alpha,
+            t_set,
+            inv_t_set: 1.0 / t_set,
+            c1: 30.0 * alpha / t_set,
+            c2: 60.0 * alpha / (t_set * t_set),
+        }
     }
-    let s = t.max(0.0) / t_set;
-    let s2 = s * s;
-    let s3 = s2 * s;
-    let y = alpha * s3 * (10.0 + s * (-15.0 + 6.0 * s)) - alpha / 2.0;
-    let yd = alpha * 30.0 * s2 * (1.0 - 2.0 * s + s2) / t_set;
-    let ydd = alpha * 60.0 * s * (1.0 - 3.0 * s + 2.0 * s2) / (t_set * t_set);
-    [y, yd, ydd]
+
+    /// `[y_d, yd_d, ydd_d]` at time `t` since the last impact: with `s = t / T_set`,
+    /// `y_d = alpha s^3 (10 - 15 s + 6 s^2) - alpha/2`, `yd_d = (30 alpha / T_set) s^2 (1 - s)^2`,
+    /// `ydd_d = (60 alpha / T_set^2) s (1 - s) (1 - 2 s)`; `[alpha/2, 0, 0]` from `T_set` on.
+    pub fn at(&self, t: f64) -> [f64; 3] {
+        if t >= self.t_set {
+            return [0.5 * self.alpha, 0.0, 0.0];
+        }
+        let s = t.max(0.0) * self.inv_t_set;
+        let s2 = s * s;
+        let s3 = s2 * s;
+        let y = self.alpha * s3 * (10.0 + s * (-15.0 + 6.0 * s)) - 0.5 * self.alpha;
+        let yd = self.c1 * s2 * (1.0 - 2.0 * s + s2);
+        let ydd = self.c2 * s * (1.0 - 3.0 * s + 2.0 * s2);
+        [y, yd, ydd]
+    }
 }
 
 /// The auxiliary input `v = ydd_d + K_D (yd_d - ydot) + K_P (y_d - y)` (Eq. 32).

@@ -11,6 +11,7 @@
 
 use serde::Serialize;
 
+use crate::control;
 use crate::kernels::{active_level, general_level, general_slope, passive_slope};
 
 /// The physical parameters of the walker (Table 1 and `g`).
@@ -126,6 +127,8 @@ pub struct Model {
     pub physical: Physical,
     /// Friction, control and slope parameters.
     pub runtime: Runtime,
+    /// `y_d` of Section 3.2 for `physical.alpha` and `runtime.t_set`.
+    ramp: control::Ramp,
 }
 
 impl Model {
@@ -138,14 +141,7 @@ impl Model {
             k_p: runtime.k_p,
             k_d: runtime.k_d,
         });
-        Self {
-            kernels: Kernels::ActiveLevel(p),
-            physical: Physical::TABLE1,
-            runtime: Runtime {
-                phi: 0.0,
-                ..runtime
-            },
-        }
+        Self::with(Kernels::ActiveLevel(p), Physical::TABLE1, runtime, 0.0)
     }
 
     /// The passive wheel on a slope with Table 1 compiled in.
@@ -155,11 +151,12 @@ impl Model {
             mu0: runtime.mu0,
             c: runtime.c,
         });
-        Self {
-            kernels: Kernels::PassiveSlope(p),
-            physical: Physical::TABLE1,
+        Self::with(
+            Kernels::PassiveSlope(p),
+            Physical::TABLE1,
             runtime,
-        }
+            runtime.phi,
+        )
     }
 
     /// The active walker on level ground with every parameter at run time.
@@ -178,14 +175,7 @@ impl Model {
             k_p: runtime.k_p,
             k_d: runtime.k_d,
         });
-        Self {
-            kernels: Kernels::GeneralLevel(p),
-            physical,
-            runtime: Runtime {
-                phi: 0.0,
-                ..runtime
-            },
-        }
+        Self::with(Kernels::GeneralLevel(p), physical, runtime, 0.0)
     }
 
     /// The passive wheel on a slope with every parameter at run time.
@@ -202,11 +192,21 @@ impl Model {
             mu0: runtime.mu0,
             c: runtime.c,
         });
+        Self::with(Kernels::GeneralSlope(p), physical, runtime, runtime.phi)
+    }
+
+    fn with(kernels: Kernels, physical: Physical, runtime: Runtime, phi: f64) -> Self {
         Self {
-            kernels: Kernels::GeneralSlope(p),
+            kernels,
             physical,
-            runtime,
+            runtime: Runtime { phi, ..runtime },
+            ramp: control::Ramp::new(physical.alpha, runtime.t_set),
         }
+    }
+
+    /// `[y_d, yd_d, ydd_d]` (Section 3.2) at time `t` since the last impact.
+    pub fn desired(&self, t: f64) -> [f64; 3] {
+        self.ramp.at(t)
     }
 
     /// Level/active or slope/passive.
@@ -241,6 +241,29 @@ impl Model {
             Kernels::GeneralLevel(p) => general_level::accel_level(p, th1, th1d, u, xd),
             Kernels::PassiveSlope(p) => passive_slope::accel_slope(p, th1, th1d, xd),
             Kernels::GeneralSlope(p) => general_slope::accel_slope(p, th1, th1d, xd),
+        }
+    }
+
+    /// Stance accelerations `qdd` and control input `u` at time `t` since the last impact and
+    /// state `y = [x, z, th1, th2, xd, zd, th1d, th2d, ..]`: for the active walker the output
+    /// control of Eqs. 31-32 with `y_d` of Section 3.2, evaluated by one `closed_loop_level`
+    /// call (Eq. 27 with `u = (v + B) / A`); for the passive wheel Eq. 27 with `u = 0`.
+    pub fn stance(&self, t: f64, y: &[f64]) -> ([f64; 4], f64) {
+        let (th1, th2, xd, th1d, th2d) = (y[2], y[3], y[4], y[6], y[7]);
+        let v = || {
+            let r = &self.runtime;
+            control::aux_input(self.ramp.at(t), th1 - th2, th1d - th2d, r.k_p, r.k_d)
+        };
+        let closed = |o: [f64; 5]| ([o[0], o[1], o[2], o[3]], o[4]);
+        match &self.kernels {
+            Kernels::ActiveLevel(p) => {
+                closed(active_level::closed_loop_level(p, th1, th1d, xd, v()))
+            }
+            Kernels::GeneralLevel(p) => {
+                closed(general_level::closed_loop_level(p, th1, th1d, xd, v()))
+            }
+            Kernels::PassiveSlope(p) => (passive_slope::accel_slope(p, th1, th1d, xd), 0.0),
+            Kernels::GeneralSlope(p) => (general_slope::accel_slope(p, th1, th1d, xd), 0.0),
         }
     }
 

@@ -56,7 +56,7 @@ use crate::control;
 use crate::kernels::{active_level, passive_slope};
 use crate::model::{Kind, Model, Physical};
 use crate::ode::{Direction, Event, Integrator, NoObserver, OdeSystem, Outcome, Tolerances};
-use crate::sim::{SimConfig, WalkLimits, control_input, walk};
+use crate::sim::{SimConfig, WalkLimits, walk};
 
 /// Size of the integrated state: 8 mechanical components and the 8x8 sensitivity matrix.
 const NA: usize = 8 + 64;
@@ -151,7 +151,7 @@ impl Jac {
             }
         };
         let v = || {
-            let d = control::desired(model.physical.alpha, r.t_set, t);
+            let d = model.desired(t);
             control::aux_input(d, th1 - th2, th1d - th2d, r.k_p, r.k_d)
         };
         match self {
@@ -187,8 +187,7 @@ struct Variational<'a> {
 
 impl Variational<'_> {
     fn mech_rhs(&self, t: f64, y: &[f64]) -> [f64; 8] {
-        let u = control_input(self.model, t, y);
-        let qdd = self.model.accel(y[2], y[6], u, y[4]);
+        let (qdd, _) = self.model.stance(t, y);
         [y[4], y[5], y[6], y[7], qdd[0], qdd[1], qdd[2], qdd[3]]
     }
 }

@@ -10,11 +10,12 @@
 
 use serde::Serialize;
 
-use crate::control;
 use crate::model::{Kind, Model};
+use std::cell::Cell;
+
 use crate::ode::{
-    Direction, Event, Integrator, Method, NoObserver, Observer, OdeSystem, Outcome, Stats, Step,
-    Tolerances,
+    Direction, Event, Integrator, Method, NoObserver, Observer, OdeSystem, Outcome, Pair, Stats,
+    Step, Tolerances,
 };
 
 /// Size of the integrated state (8 mechanical components and the input-power quadrature).
@@ -256,16 +257,7 @@ impl Walk {
 
 /// The control input `u` of Eq. 31 (`u = (v + B) / A`, `v` from Eq. 32); 0 for the passive wheel.
 pub fn control_input(model: &Model, t: f64, y: &[f64]) -> f64 {
-    let (th1, th2, xd, th1d, th2d) = (y[2], y[3], y[4], y[6], y[7]);
-    match model.control(th1, th1d, xd) {
-        Some([a, b]) => {
-            let r = model.runtime;
-            let d = control::desired(model.physical.alpha, r.t_set, t);
-            let v = control::aux_input(d, th1 - th2, th1d - th2d, r.k_p, r.k_d);
-            (v + b) / a
-        }
-        None => 0.0,
-    }
+    model.stance(t, y).1
 }
 
 /// The vertical ground reaction at `(t, y)` with the control input of that point.
@@ -274,16 +266,80 @@ pub fn ground_reaction(model: &Model, t: f64, y: &[f64]) -> f64 {
     model.lambda(y[2], y[6], u, y[4])
 }
 
+/// The integrand `ydot u` of the input power (Section 4.2), `ydot = th1d - th2d`.
+fn power_integrand(model: &Model, t: f64, y: &[f64]) -> f64 {
+    (y[6] - y[7]) * control_input(model, t, y)
+}
+
+/// Where the power quadrature (state component 8) has a kink: [`power_integrand`] at the ends
+/// of attempted steps, remembering the last two points (a step's start is the previous step's
+/// end, and the error test and the observer ask about the same ends).
+struct PowerKinks<'a> {
+    model: &'a Model,
+    memo: Cell<[Option<Point>; 2]>,
+}
+
+impl PowerKinks<'_> {
+    fn integrand(&self, t: f64, y: &[f64; N]) -> f64 {
+        let s = mech(y);
+        let mut memo = self.memo.get();
+        if let Some(&Some((_, _, g))) = memo
+            .iter()
+            .find(|m| m.is_some_and(|(tm, sm, _)| tm == t && sm == s))
+        {
+            return g;
+        }
+        let g = power_integrand(self.model, t, y);
+        memo[1] = memo[0];
+        memo[0] = Some((t, s, g));
+        self.memo.set(memo);
+        g
+    }
+
+    /// Whether `ydot u` changes sign from `(t0, y0)` to `(t1, y1)` before `T_set` (the kink of
+    /// `|ydot u|` is then inside the step).
+    fn crossed(&self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
+        self.model.is_active()
+            && t0 < self.model.runtime.t_set
+            && self.integrand(t0, y0) * self.integrand(t1, y1) < 0.0
+    }
+}
+
+/// A remembered value `(t, mechanical state, value)` of a function of the state.
+type Point = (f64, [f64; 8], f64);
+
+/// [`ground_reaction`] with the last value remembered: the lift-off and the blow-up guard
+/// evaluate it at the same points, so each point costs one evaluation.
+struct Reaction<'a> {
+    model: &'a Model,
+    last: Cell<Option<Point>>,
+}
+
+impl Reaction<'_> {
+    fn at(&self, t: f64, y: &[f64; N]) -> f64 {
+        let s = mech(y);
+        if let Some((tl, sl, l)) = self.last.get()
+            && tl == t
+            && sl == s
+        {
+            return l;
+        }
+        let l = ground_reaction(self.model, t, y);
+        self.last.set(Some((t, s, l)));
+        l
+    }
+}
+
 struct Stance<'a> {
     model: &'a Model,
     /// The generated Jacobian kernels (Table 1 models); `None` falls back to finite differences.
     jac: Option<crate::poincare::Jac>,
+    kinks: &'a PowerKinks<'a>,
 }
 
 impl OdeSystem<N> for Stance<'_> {
     fn rhs(&mut self, t: f64, y: &[f64; N], dy: &mut [f64; N]) {
-        let u = control_input(self.model, t, y);
-        let qdd = self.model.accel(y[2], y[6], u, y[4]);
+        let (qdd, u) = self.model.stance(t, y);
         dy[..4].copy_from_slice(&y[4..8]);
         dy[4..8].copy_from_slice(&qdd);
         dy[8] = if self.model.is_active() && t < self.model.runtime.t_set {
@@ -293,11 +349,22 @@ impl OdeSystem<N> for Stance<'_> {
         };
     }
 
+    /// The error test watches the power quadrature (component 8) too, except on a step in
+    /// which `ydot u` changes sign: its absolute value has a kink there, which would only
+    /// cause rejections, and [`PowerQuadrature`] integrates exactly those steps anew.
+    fn controlled_components(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> usize {
+        if self.kinks.crossed(t0, y0, t1, y1) {
+            8
+        } else {
+            N
+        }
+    }
+
     /// The state Jacobian for the stiff integrator: `d qd / d y` is the identity block, and
     /// `d qdd / d y` comes from the generated kernels (`closed_loop_level_jacobian`,
     /// `accel_slope_jacobian`) with the chain rule through `mu(xd)` and `v(t, y, ydot)`. The
-    /// quadrature of `|ydot u|` (row 8, non-smooth where `ydot u` changes sign) is
-    /// differenced forward.
+    /// power quadrature's row is `sign(ydot u) d(ydot u)/dy` with `u = -I2 th2dd` (the torso's
+    /// only torque is `-u`, Eqs. 19-20; the derivation's tests check it).
     fn jacobian(&mut self, t: f64, y: &[f64; N], jac: &mut [[f64; N]; N]) -> bool {
         let Some(j) = self.jac else {
             return false;
@@ -310,15 +377,16 @@ impl OdeSystem<N> for Stance<'_> {
             jac[i][4 + i] = 1.0;
             jac[4 + i][..8].copy_from_slice(&a[i]);
         }
-        let mut f0 = [0.0; N];
-        self.rhs(t, y, &mut f0);
-        for k in 0..8 {
-            let h = f64::EPSILON.sqrt() * y[k].abs().max(1.0);
-            let mut yk = *y;
-            yk[k] += h;
-            let mut fk = [0.0; N];
-            self.rhs(t, &yk, &mut fk);
-            jac[8][k] = (fk[8] - f0[8]) / (yk[k] - y[k]);
+        if self.model.is_active() && t < self.model.runtime.t_set {
+            let ydot = y[6] - y[7];
+            let u = control_input(self.model, t, y);
+            let sign = (ydot * u).signum();
+            let i2 = self.model.physical.i2;
+            for k in 0..8 {
+                jac[8][k] = -sign * ydot * i2 * a[3][k];
+            }
+            jac[8][6] += sign * u;
+            jac[8][7] -= sign * u;
         }
         true
     }
@@ -326,6 +394,87 @@ impl OdeSystem<N> for Stance<'_> {
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
         let ts = self.model.runtime.t_set;
         (self.model.is_active() && ts > t).then_some(ts)
+    }
+}
+
+/// The power quadrature `int |ydot u| dt` on the steps where `ydot u` changes sign.
+///
+/// The integrator carries the quadrature as state component 8 under error control where its
+/// integrand is smooth. Where `ydot u` changes sign within a step, `|ydot u|` has a kink and
+/// the method's quadrature is only first-order accurate, so the error test leaves component 8
+/// out on such a step (see [`Stance::controlled_components`]) and this observer asks for
+/// exactly those steps, locates the zero on the dense output, integrates each side by
+/// 8-point Gauss-Legendre on the dense output, and keeps the difference to the method's value
+/// as a correction.
+struct PowerQuadrature<'a> {
+    model: &'a Model,
+    kinks: &'a PowerKinks<'a>,
+    /// `sum (exact - method)` over the corrected steps.
+    correction: f64,
+}
+
+/// Samples of `ydot u` per corrected step, to find every sign change in it.
+const KINK_SAMPLES: usize = 16;
+
+/// Nodes (on `[-1, 1]`, positive half) and weights of 8-point Gauss-Legendre quadrature.
+const GAUSS8: [(f64, f64); 4] = [
+    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
+    (0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
+];
+
+impl PowerQuadrature<'_> {
+    fn integrand(&self, st: &Step<'_, N>, t: f64) -> f64 {
+        let mut y = [0.0; N];
+        st.eval(t, &mut y);
+        power_integrand(self.model, t, &y)
+    }
+
+    /// `int_a^b |ydot u| dt` on a piece where `ydot u` keeps its sign.
+    fn gauss_abs(&self, st: &Step<'_, N>, a: f64, b: f64) -> f64 {
+        let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+        let mut sum = 0.0;
+        for (x, w) in GAUSS8 {
+            sum += w * (self.integrand(st, mid - half * x) + self.integrand(st, mid + half * x));
+        }
+        (sum * half).abs()
+    }
+}
+
+impl Observer<N> for PowerQuadrature<'_> {
+    fn wants_step(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
+        self.kinks.crossed(t0, y0, t1, y1)
+    }
+
+    fn on_step(&mut self, st: &Step<'_, N>) {
+        let (a, b) = (st.t_start(), st.t_end());
+        // Near a reversal of the foot `u` swings within a fraction of the step, and `ydot u`
+        // can cross zero several times between ends of opposite sign: sample the step and
+        // take every sign change between neighbouring samples as a kink.
+        let mut exact = 0.0;
+        let mut piece = a;
+        let (mut t0, mut g0) = (a, self.integrand(st, a));
+        for k in 1..=KINK_SAMPLES {
+            let t1 = if k == KINK_SAMPLES {
+                b
+            } else {
+                a + (b - a) * (k as f64 / KINK_SAMPLES as f64)
+            };
+            let g1 = self.integrand(st, t1);
+            if g0 * g1 < 0.0 {
+                let root = crate::ode::find_root(t0, g0, t1, g1, &mut |t| {
+                    Ok::<f64, ()>(self.integrand(st, t))
+                })
+                .unwrap_or(0.5 * (t0 + t1));
+                exact += self.gauss_abs(st, piece, root);
+                piece = root;
+            }
+            (t0, g0) = (t1, g1);
+        }
+        exact += self.gauss_abs(st, piece, b);
+        let method = st.y_end()[8] - st.y_start()[8];
+        self.correction += exact - method;
     }
 }
 
@@ -418,16 +567,16 @@ pub fn walk_with_stats(
     }
     for k in 0..limits.max_steps {
         let res = if limits.record {
-            let mut rec = Recorder {
+            let rec = Recorder {
                 model,
                 out: &mut samples,
                 t_offset: time,
                 step: k,
                 interior: 3,
             };
-            one_step(model, cfg, &mut integ, k, state, &mut rec)
+            one_step(model, cfg, &mut integ, k, state, rec)
         } else {
-            one_step(model, cfg, &mut integ, k, state, &mut NoObserver)
+            one_step(model, cfg, &mut integ, k, state, NoObserver)
         };
         match res {
             Ok(r) => {
@@ -465,7 +614,7 @@ fn one_step<O: Observer<N>>(
     integ: &mut Integrator<N>,
     step: usize,
     s0: [f64; 8],
-    obs: &mut O,
+    obs: O,
 ) -> Result<StepResult, Failure> {
     if !finite(&s0) {
         return Err(Failure::NonFinite {
@@ -499,25 +648,40 @@ fn one_step<O: Observer<N>>(
     let heel = model.heel_strike_angle();
     let rear = model.rear_contact_angle();
     let mut lambda_min = lambda0;
+    let reaction = Reaction {
+        model,
+        last: Cell::new(None),
+    };
     let mut events = [
         Event::terminal(Direction::Rising, move |_, y: &[f64; N]| y[2] - heel),
-        Event::terminal(Direction::Falling, |t, y: &[f64; N]| {
-            ground_reaction(model, t, y)
-        }),
+        Event::terminal(Direction::Falling, |t, y: &[f64; N]| reaction.at(t, y)),
         Event::terminal(Direction::Falling, move |_, y: &[f64; N]| y[2] - rear),
         Event::terminal(Direction::Rising, |t, y: &[f64; N]| {
-            ground_reaction(model, t, y).abs() - lambda_max
+            reaction.at(t, y).abs() - lambda_max
         }),
     ];
+    let kinks = PowerKinks {
+        model,
+        memo: Cell::new([None; 2]),
+    };
+    let mut obs = Pair::new(
+        PowerQuadrature {
+            model,
+            kinks: &kinks,
+            correction: 0.0,
+        },
+        obs,
+    );
     let mut sys = Stance {
         model,
         jac: crate::poincare::Jac::new(model).ok(),
+        kinks: &kinks,
     };
     let mut t = 0.0;
     let mut y = y0;
     let t_limit = cfg.max_step_time;
     let (te, ye) = loop {
-        let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events, obs);
+        let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events, &mut obs);
         let lam = ground_reaction(model, out.t(), out.y());
         if lam.is_finite() {
             lambda_min = lambda_min.min(lam);
@@ -649,7 +813,7 @@ fn one_step<O: Observer<N>>(
     let dx = (xf - s0[0]) / model.runtime.phi.cos();
     let speed = dx / te;
     let (p, sr) = if model.is_active() {
-        let p = ye[8] / te;
+        let p = (ye[8] + obs.first.correction) / te;
         (
             Some(p),
             Some(p / (model.physical.total_mass() * model.physical.g * speed)),

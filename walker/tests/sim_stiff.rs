@@ -7,7 +7,9 @@ use walker::sim::{SimConfig, WalkLimits, walk_with_stats};
 /// With Table 1 the state Jacobian comes from `closed_loop_level_jacobian` (no finite-difference
 /// Jacobian is formed), and on a stiff friction law (`c = 1e4`, `mu0 = 1`) RODAS4 needs far
 /// fewer right-hand sides than DOP853 for the same steps, with the same step descriptors to the
-/// accuracy both were asked for.
+/// accuracy both were asked for. The input power `p` checks the Jacobian's row of the power
+/// quadrature: a Rosenbrock method is only as accurate as its Jacobian (with that row zero,
+/// RODAS4 does not even finish the walk: its error estimate of the quadrature stays too large).
 #[test]
 fn rodas4_uses_the_generated_jacobian_on_stiff_friction() {
     let m = Model::active_level(Runtime {
@@ -43,5 +45,7 @@ fn rodas4_uses_the_generated_jacobian_on_stiff_friction() {
         // Both at rtol 1e-9: the descriptors agree to well within 1e-6 relative.
         assert!((x.period - y.period).abs() < 1e-6 * x.period, "{x:?} {y:?}");
         assert!((x.dx - y.dx).abs() < 1e-6 * x.dx.abs(), "{x:?} {y:?}");
+        let (px, py) = (x.p.unwrap_or(f64::NAN), y.p.unwrap_or(f64::NAN));
+        assert!((px - py).abs() < 1e-6 * px, "p: {px} vs {py}");
     }
 }
