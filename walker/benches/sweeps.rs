@@ -68,6 +68,7 @@ fn run(fig: Fig, tol: f64) -> Vec<Vec<SweepPoint>> {
                 },
                 &limits,
                 false,
+                &|| {},
             )
         }
         Fig::Fig10 => {
@@ -90,6 +91,7 @@ fn run(fig: Fig, tol: f64) -> Vec<Vec<SweepPoint>> {
                 },
                 &limits,
                 false,
+                &|| {},
             )
         }
     }

@@ -7,6 +7,7 @@ use serde_json::json;
 use walker_gen::scene::{Floor, Friction, Param, Scene, Torso};
 
 use crate::model::{Kind, Model, Physical, Runtime};
+use crate::progress::Progress;
 use crate::sim::{SimConfig, StepResult, Walk, WalkLimits, walk};
 use crate::sweep::{SweepPoint, mu0_grid, sweep_chains};
 
@@ -338,7 +339,11 @@ pub fn sweep(
         let m = make(c, 0.0);
         m.initial_state(m.default_omega0())
     };
-    let res = sweep_chains(&chains, make, cfg, &grid, initial, limits, restart);
+    let bar = Progress::new("sweep", chains.len() * grid.len());
+    let res = sweep_chains(&chains, make, cfg, &grid, initial, limits, restart, &|| {
+        bar.tick()
+    });
+    bar.finish();
     Ok(chains
         .iter()
         .zip(res)

@@ -9,6 +9,7 @@ pub mod model;
 pub mod ode;
 pub mod plot;
 pub mod poincare;
+pub mod progress;
 pub mod reproduce;
 pub mod sim;
 pub mod sweep;

@@ -8,6 +8,7 @@ use std::path::Path;
 
 use crate::model::{Model, Physical, Runtime};
 use crate::plot::{Figure, Series, save};
+use crate::progress::Progress;
 use crate::sim::{Sample, SimConfig, StepResult, Walk, WalkLimits, walk};
 use crate::sweep::{SweepPoint, mu0_grid, sweep_chains};
 
@@ -157,6 +158,7 @@ pub fn collect() -> Data {
         duration: 100.0,
         record: false,
     };
+    let bar = Progress::new("Fig. 8 sweep", T_SETS.len() * grid.len());
     let act = sweep_chains(
         &T_SETS,
         |ts, mu0| active(mu0, ts),
@@ -165,9 +167,12 @@ pub fn collect() -> Data {
         |ts| active(0.0, ts).initial_state(0.8),
         &long,
         false,
+        &|| bar.tick(),
     );
+    bar.finish();
     let active_sweep = T_SETS.iter().copied().zip(act).collect();
     let pgrid = mu0_grid(0.0, 0.7, 0.01);
+    let bar = Progress::new("Fig. 10 sweep", PHIS.len() * pgrid.len());
     let pas = sweep_chains(
         &PHIS,
         |phi, mu0| passive(mu0, phi),
@@ -176,7 +181,9 @@ pub fn collect() -> Data {
         |phi| passive(0.0, phi).initial_state(0.5),
         &limits(20, false),
         true,
+        &|| bar.tick(),
     );
+    bar.finish();
     let passive_sweep = PHIS.iter().copied().zip(pas).collect();
     let sticks = [0.2, 0.5]
         .iter()

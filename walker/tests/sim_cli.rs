@@ -171,3 +171,45 @@ fn sweep_restart_runs_in_parallel_and_reports_json() {
     assert_eq!(pts.len(), 3);
     assert!(pts.iter().all(|p| p["failure"].is_null()));
 }
+
+/// Three `T_set` chains with continuation, as Fig. 8: one chain per thread, the chains in the
+/// order given, and (stderr not being a terminal here) no progress bar in the output.
+#[test]
+fn sweep_chains_keep_their_order_and_a_pipe_gets_no_progress_bar() {
+    let o = walker(&[
+        "sweep",
+        "--scene",
+        "active-level",
+        "--mu0-from",
+        "0.3",
+        "--mu0-to",
+        "0.4",
+        "--mu0-step",
+        "0.1",
+        "--t-set",
+        "0.4",
+        "--t-set",
+        "0.2",
+        "--t-set",
+        "0.3",
+        "--duration",
+        "3",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.stderr.is_empty(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let chains = v["chains"].as_array().expect("chains");
+    let values: Vec<f64> = chains.iter().filter_map(|c| c["value"].as_f64()).collect();
+    assert_eq!(values, [0.4, 0.2, 0.3]);
+    for c in chains {
+        let mu0: Vec<f64> = c["points"]
+            .as_array()
+            .expect("points")
+            .iter()
+            .filter_map(|p| p["mu0"].as_f64())
+            .collect();
+        assert_eq!(mu0.len(), 2);
+        assert!((mu0[0] - 0.3).abs() < 1e-12 && (mu0[1] - 0.4).abs() < 1e-12);
+    }
+}
