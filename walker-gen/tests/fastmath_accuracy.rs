@@ -1,6 +1,7 @@
 //! Accuracy of the float functions walker-gen writes into generated files
 //! (`FloatFunctions::Inline`): `sin_cos` and `tanh`, compiled here from the very
-//! files the emitter will append (`src/fastmath/*.rs`, `include!`d below).
+//! files the emitter appends (`src/fastmath/*.rs`, `include!`d below; the test
+//! `emitted_text_is_the_tested_text` checks that a rendered file contains them byte for byte).
 //!
 //! The oracle is independent of the code under test: double-double arithmetic (about 104 bits),
 //! `x - n pi/2` as an *exact* floating-point expansion with `pi/2` in 24-bit parts taken from
@@ -747,6 +748,66 @@ fn tanh_special_values() {
     }
     for x in [f64::from_bits(1), -f64::from_bits(1), f64::MIN_POSITIVE] {
         assert_eq!(tanh(x).to_bits(), x.to_bits(), "tanh({x:?})");
+    }
+}
+
+/// A rendered file carries exactly the source tested above, and only what its kernels call.
+#[test]
+fn emitted_text_is_the_tested_text() {
+    use walker_gen::{Config, Float, FloatFunctions};
+    let scene = |name: &str| {
+        PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("../scenes")
+            .join(format!("{name}.toml"))
+    };
+    let render = |name: &str, f: &dyn Fn(&mut Config)| {
+        let mut config = Config::new();
+        config.scene_file(scene(name));
+        f(&mut config);
+        config.render().expect("the scene renders")
+    };
+    // Both functions, verbatim, once each, at the end.
+    let src = render("active-level", &|_| {});
+    assert_eq!(src.matches(SIN_COS_SOURCE).count(), 1);
+    assert_eq!(src.matches(TANH_SOURCE).count(), 1);
+    assert!(src.ends_with(TANH_SOURCE));
+    assert!(src.contains("sin_cos(th1)") && src.contains("tanh(p.c * xd)"));
+    // std's methods remain only in sin_cos's cold branch for huge arguments.
+    assert_eq!(src.matches(".sin_cos()").count(), 1);
+    assert_eq!(src.matches(".tanh()").count(), 0);
+    // No friction: no tanh anywhere.
+    let src = render("active-level-frictionless", &|_| {});
+    assert!(src.contains(SIN_COS_SOURCE));
+    assert!(
+        !src.contains("tanh"),
+        "a file without tanh must not contain fn tanh"
+    );
+    // Std, f32 and no-std: neither function.
+    for (what, src) in [
+        (
+            "std",
+            render("active-level", &|c| {
+                c.float_functions(FloatFunctions::Std);
+            }),
+        ),
+        (
+            "f32",
+            render("active-level", &|c| {
+                c.float(Float::F32);
+            }),
+        ),
+        (
+            "no_std",
+            render("active-level", &|c| {
+                c.no_std(true);
+            }),
+        ),
+    ] {
+        assert!(
+            !src.contains("fn sin_cos(") && !src.contains("fn tanh("),
+            "{what}"
+        );
+        assert!(!src.contains("SunPro"), "{what}");
     }
 }
 
