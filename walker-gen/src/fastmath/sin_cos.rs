@@ -19,8 +19,9 @@
 /// `__ieee754_rem_pio2` subtracts `n pi/2`, `n` the nearest integer to `x 2/pi`, with `pi/2`
 /// split into 33-bit parts (Cody-Waite; a second and a third part when cancellation needs
 /// them) and leaves the remainder as a double-double `y0 + y1`, which the kernels take; `n mod 4`
-/// selects and negates the results. Larger `|x|`, infinities and NaN go to `f64::sin_cos`
-/// (a cold branch; NaN for infinities and NaN). `sin(-0) = -0`.
+/// swaps and negates the results (bit operations, no branch). Below `2^-27 sqrt(2)`, `(x, 1)`.
+/// Larger `|x|`, infinities and NaN go to `f64::sin_cos` (a cold branch; NaN for infinities and
+/// NaN). `sin(-0) = -0`.
 ///
 /// Accuracy, measured by walker-gen's test `fastmath_accuracy` against a double-double oracle
 /// over 1.3 million points (`|x| <= 2`, near multiples of `pi/4`, up to `2^20 pi/2`), in ulps
@@ -53,59 +54,66 @@ fn sin_cos(x: f64) -> (f64, f64) {
     // 1.5 * 2^52: adding it rounds to an integer, which lands in the low bits of the sum.
     const TO_INT: f64 = f64::from_bits(0x4338_0000_0000_0000);
 
+    /// `__kernel_sin(y0, y1)` and `__kernel_cos(y0, y1)` for `|y0 + y1| <~ pi/4`, sharing `y0^2`.
+    #[inline]
+    fn kernels(y0: f64, y1: f64) -> (f64, f64) {
+        let z = y0 * y0;
+        let z2 = z * z;
+        let rs = S2 + z * (S3 + z * S4) + z * z2 * (S5 + z * S6);
+        let y03 = z * y0;
+        let sin = y0 - ((z * (0.5 * y1 - y03 * rs) - y1) - y03 * S1);
+        let rc = z * (C1 + z * (C2 + z * C3)) + z2 * z2 * (C4 + z * (C5 + z * C6));
+        let hz = 0.5 * z;
+        let one_hz = 1.0 - hz;
+        let cos = one_hz + (((1.0 - one_hz) - hz) + (z * rc - y0 * y1));
+        (sin, cos)
+    }
+
     // The high word of |x|, as fdlibm compares it.
     let hx = (x.to_bits() >> 32) & 0x7fff_ffff;
-    let (quadrant, y0, y1) = if hx <= 0x3fe9_21fb {
+    if hx <= 0x3fe9_21fb {
         // |x| <~ pi/4: no reduction.
         if hx < 0x3e46_a09e {
             // |x| < 2^-27 sqrt(2): sin x = x and cos x = 1 after rounding (also +-0, subnormals).
             return (x, 1.0);
         }
-        (0, x, 0.0)
-    } else if hx < 0x4139_21fb {
-        // pi/4 <~ |x| <~ 2^20 pi/2: fdlibm's medium reduction.
-        let tmp = x * INV_PIO2 + TO_INT;
-        let f_n = tmp - TO_INT; // rint(x 2/pi), exact
-        let quadrant = tmp.to_bits() & 3; // n mod 4, also for negative n
-        let mut r = x - f_n * PIO2_1; // exact: f_n has at most 21 bits, PIO2_1 33
-        let mut w = f_n * PIO2_1T; // first round, good to 85 bits
-        let mut y0 = r - w;
-        let ex = hx >> 20;
-        if ex > ((y0.to_bits() >> 52) & 0x7ff) + 16 {
-            // Cancellation of more than 16 bits: second round, good to 118 bits.
-            let t = r;
-            w = f_n * PIO2_2;
-            r = t - w;
-            w = f_n * PIO2_2T - ((t - r) - w);
-            y0 = r - w;
-            if ex > ((y0.to_bits() >> 52) & 0x7ff) + 49 {
-                // Third round, good to 151 bits, covers all cases.
-                let t = r;
-                w = f_n * PIO2_3;
-                r = t - w;
-                w = f_n * PIO2_3T - ((t - r) - w);
-                y0 = r - w;
-            }
-        }
-        (quadrant, y0, (r - y0) - w)
-    } else {
-        // Huge, infinite or NaN: std's Payne-Hanek reduction (NaN for infinities and NaN).
-        return x.sin_cos();
-    };
-    // __kernel_sin(y0, y1) and __kernel_cos(y0, y1), sharing y0^2 and y0^4.
-    let z = y0 * y0;
-    let z2 = z * z;
-    let rs = S2 + z * (S3 + z * S4) + z * z2 * (S5 + z * S6);
-    let y03 = z * y0;
-    let sin = y0 - ((z * (0.5 * y1 - y03 * rs) - y1) - y03 * S1);
-    let rc = z * (C1 + z * (C2 + z * C3)) + z2 * z2 * (C4 + z * (C5 + z * C6));
-    let hz = 0.5 * z;
-    let one_hz = 1.0 - hz;
-    let cos = one_hz + (((1.0 - one_hz) - hz) + (z * rc - y0 * y1));
-    match quadrant {
-        0 => (sin, cos),
-        1 => (cos, -sin),
-        2 => (-sin, -cos),
-        _ => (-cos, sin),
+        return kernels(x, 0.0);
     }
+    if hx >= 0x4139_21fb {
+        // |x| >~ 2^20 pi/2, infinite or NaN: std's reduction (NaN for infinities and NaN).
+        return x.sin_cos();
+    }
+    // pi/4 <~ |x| <~ 2^20 pi/2: fdlibm's medium reduction.
+    let tmp = x * INV_PIO2 + TO_INT;
+    let f_n = tmp - TO_INT; // rint(x 2/pi), exact
+    let quadrant = tmp.to_bits() & 3; // n mod 4, also for negative n
+    let mut r = x - f_n * PIO2_1; // exact: f_n has at most 21 bits, PIO2_1 33
+    let mut w = f_n * PIO2_1T; // first round, good to 85 bits
+    let mut y0 = r - w;
+    let ex = hx >> 20;
+    if ex > ((y0.to_bits() >> 52) & 0x7ff) + 16 {
+        // Cancellation of more than 16 bits: second round, good to 118 bits.
+        let t = r;
+        w = f_n * PIO2_2;
+        r = t - w;
+        w = f_n * PIO2_2T - ((t - r) - w);
+        y0 = r - w;
+        if ex > ((y0.to_bits() >> 52) & 0x7ff) + 49 {
+            // Third round, good to 151 bits, covers all cases.
+            let t = r;
+            w = f_n * PIO2_3;
+            r = t - w;
+            w = f_n * PIO2_3T - ((t - r) - w);
+            y0 = r - w;
+        }
+    }
+    let (sin, cos) = kernels(y0, (r - y0) - w);
+    // Quadrant n mod 4, without branches (unpredictable for spread-out arguments): odd
+    // quadrants swap sin and cos; the sign of sin flips with n & 2, that of cos with (n + 1) & 2.
+    let (sin, cos) = (sin.to_bits(), cos.to_bits());
+    let swap = (quadrant & 1).wrapping_neg() & (sin ^ cos);
+    (
+        f64::from_bits(sin ^ swap ^ ((quadrant & 2) << 62)),
+        f64::from_bits(cos ^ swap ^ (((quadrant + 1) & 2) << 62)),
+    )
 }
