@@ -2,7 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::emit::{EmitOptions, Float, emit_plan};
+use crate::emit::{EmitOptions, Float, FloatFunctions, emit_plan};
 use crate::error::Error;
 use crate::ir::Module;
 use crate::lower::lower;
@@ -40,7 +40,8 @@ pub struct GenerateReport {
 
 impl Config {
     /// A configuration with no scene, `f64`, std, [`Division::SharedReciprocal`], checked entry
-    /// points, the output file `$OUT_DIR/<scene name>.rs` and no `cargo:` lines.
+    /// points, [`FloatFunctions::Inline`], the output file `$OUT_DIR/<scene name>.rs` and no
+    /// `cargo:` lines.
     #[must_use]
     pub fn new() -> Config {
         Config::default()
@@ -83,6 +84,14 @@ impl Config {
     /// code for embedded users); the unchecked kernels are the same either way.
     pub fn checked(&mut self, checked: bool) -> &mut Config {
         self.options.checked = checked;
+        self
+    }
+
+    /// How `sin_cos` and `tanh` are evaluated in `f64` std code (default
+    /// [`FloatFunctions::Inline`]: the file's own accurate and fast functions;
+    /// [`FloatFunctions::Std`]: std's methods). No effect on `f32` or no-std code.
+    pub fn float_functions(&mut self, float_functions: FloatFunctions) -> &mut Config {
+        self.options.float_functions = float_functions;
         self
     }
 

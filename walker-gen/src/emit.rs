@@ -12,11 +12,16 @@
 //!    returning `Result<_, KernelError>`, and once per file the `KernelError` enum.
 //!
 //! The output depends only on the module and the options: no paths, no time, no hash-map
-//! order. Floating-point functions are inherent methods (`x.sin()`, `x.sin_cos()`) in std
+//! order. Floating-point functions are inherent methods (`x.sin()`, `x.sqrt()`) in std
 //! mode and `libm` calls (`libm::sin`, `libm::sincos`; `libm::sinf`... for `f32`) in no-std
 //! mode; `abs` is `core`'s inherent method in both modes (an exact bit operation), and the sign
 //! function of Eq. 25 is a small private `const fn sign` written into the file when a kernel
-//! uses it (`f64::signum` would give `1` at `0`). Constants are
+//! uses it (`f64::signum` would give `1` at `0`). In std mode with `f64`, `sin_cos` and `tanh`
+//! are by default ([`FloatFunctions::Inline`]) private functions written into the file when a
+//! kernel uses them, `fn sin_cos` (fdlibm's kernels with one shared argument reduction) and
+//! `fn tanh` (Cephes' rational below 0.625, `exp` above): their source is
+//! `src/fastmath/{sin_cos,tanh}.rs`, appended verbatim (comments, licence notice and measured
+//! accuracy included) and tested as such by `tests/fastmath_accuracy.rs`. Constants are
 //! written with the shortest digits that round-trip (`{:?}`), suffixed with the float type;
 //! a constant equal to one of `core::f64::consts` is written by that name.
 
@@ -51,9 +56,31 @@ impl Float {
     }
 }
 
+/// How generated `f64` code in std mode evaluates `sin_cos` and `tanh`.
+///
+/// Profiles of the simulator showed std's `tanh` (glibc goes through `expm1`, about 18 ns) and
+/// `sin_cos` (two library calls with two argument reductions, about 10 ns) taking about half the
+/// run time of the stance kernels, whose arithmetic takes about 15 ns.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default)]
+pub enum FloatFunctions {
+    /// Private `fn sin_cos` and `fn tanh` written into the file when a kernel uses them (the
+    /// default): fdlibm's `__kernel_sin`/`__kernel_cos` with one shared Cody-Waite reduction
+    /// (std's `sin_cos` above `2^20 pi/2`), and Cephes' rational for `|x| < 0.625`,
+    /// `1 - 2/(exp(2|x|) + 1)` above. Measured errors: at most 0.78 ulp (sin, cos) and 1.32 ulp
+    /// (tanh); the tests assert 1 and 2 (`tests/fastmath_accuracy.rs`). Other float functions
+    /// (`sqrt`, a lone `sin` or `cos`) stay std methods.
+    /// Applies only to `f64` in std mode; `f32` and no-std code are as with [`Self::Std`].
+    #[default]
+    Inline,
+    /// std's inherent methods `x.sin_cos()` and `x.tanh()` (results depend on the platform's
+    /// `libm`).
+    Std,
+}
+
 /// What the emitter writes.
 ///
-/// The default is `f64`, std, [`Division::SharedReciprocal`] and checked entry points.
+/// The default is `f64`, std, [`Division::SharedReciprocal`], checked entry points and
+/// [`FloatFunctions::Inline`].
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
 pub struct EmitOptions {
     /// The float type `F`.
@@ -67,6 +94,18 @@ pub struct EmitOptions {
     /// arguments and outputs with a `KernelError` (emitted once per file). `false` leaves both
     /// out (smallest code, for embedded users); the plain kernels are the same either way.
     pub checked: bool,
+    /// Whether `sin_cos` and `tanh` are private functions of the file or std methods (only for
+    /// `f64` in std mode).
+    pub float_functions: FloatFunctions,
+}
+
+impl EmitOptions {
+    /// Whether `sin_cos` and `tanh` are the file's own functions: [`FloatFunctions::Inline`]
+    /// with `f64` in std mode.
+    #[must_use]
+    pub fn inline_float_functions(&self) -> bool {
+        self.float_functions == FloatFunctions::Inline && !self.no_std && self.float == Float::F64
+    }
 }
 
 impl Default for EmitOptions {
@@ -76,6 +115,7 @@ impl Default for EmitOptions {
             no_std: false,
             division: Division::default(),
             checked: true,
+            float_functions: FloatFunctions::default(),
         }
     }
 }
@@ -87,6 +127,63 @@ impl Default for EmitOptions {
 pub fn emit(module: &Module, options: &EmitOptions) -> Result<String, EmitError> {
     let plan = Plan::new(module, options.division)?;
     emit_plan(module, &plan, options)
+}
+
+/// The private float functions of [`FloatFunctions::Inline`]: name and source, in the order
+/// they are appended to a file. The source is written verbatim (it is `rustfmt`-formatted, and
+/// its comments carry fdlibm's notice); `tests/fastmath_accuracy.rs` includes the same files.
+const INLINE_HELPERS: [(&str, &str); 2] = [
+    ("sin_cos", include_str!("fastmath/sin_cos.rs")),
+    ("tanh", include_str!("fastmath/tanh.rs")),
+];
+
+/// The names of the inline float functions `block` calls, in [`INLINE_HELPERS`] order (none
+/// unless [`EmitOptions::inline_float_functions`]).
+fn inline_calls(plan: &Plan, block: &Block, options: &EmitOptions) -> Vec<&'static str> {
+    if !options.inline_float_functions() {
+        return Vec::new();
+    }
+    INLINE_HELPERS
+        .iter()
+        .map(|h| h.0)
+        .filter(|&name| match name {
+            "sin_cos" => block.steps.iter().any(|s| matches!(s, Step::SinCos { .. })),
+            "tanh" => block
+                .nodes
+                .iter()
+                .any(|&n| matches!(plan.graph.node(n), Node::Tanh(_))),
+            _ => false,
+        })
+        .collect()
+}
+
+/// The names of the inline float functions any block of `plan` calls.
+fn inline_calls_of_file(plan: &Plan, options: &EmitOptions) -> Vec<&'static str> {
+    let mut used: Vec<&'static str> = plan
+        .kernels
+        .iter()
+        .map(|k| &k.block)
+        .chain([&plan.prepare])
+        .flat_map(|b| inline_calls(plan, b, options))
+        .collect();
+    used.sort_by_key(|name| INLINE_HELPERS.iter().position(|h| h.0 == *name));
+    used.dedup();
+    used
+}
+
+/// A second line for an operation count whose transcendental calls include the file's own
+/// functions (`"\nTranscendental calls inline in this file: `sin_cos`, `tanh`."`), else nothing.
+fn inline_note(plan: &Plan, block: &Block, options: &EmitOptions) -> String {
+    let used = inline_calls(plan, block, options);
+    if used.is_empty() {
+        String::new()
+    } else {
+        let names: Vec<String> = used.iter().map(|s| (*s).to_owned()).collect();
+        format!(
+            "\nTranscendental calls inline in this file: {}.",
+            code_list(&names)
+        )
+    }
 }
 
 // Precedence levels, loosest first.
@@ -260,9 +357,14 @@ impl Writer<'_> {
         }
     }
 
-    /// A float function: an inherent method in std mode, `libm::<name>` in no-std mode.
+    /// A float function: an inherent method in std mode, `libm::<name>` in no-std mode, or the
+    /// file's own function (`tanh`) with [`FloatFunctions::Inline`].
     fn call(&self, arg: NodeId, name: &str) -> (TokenStream, u8) {
-        if self.options.no_std {
+        if self.options.inline_float_functions() && INLINE_HELPERS.iter().any(|h| h.0 == name) {
+            let f = ident(name);
+            let (a, _) = self.expr(arg);
+            (quote!(#f(#a)), POSTFIX)
+        } else if self.options.no_std {
             let f = ident(&self.libm_name(name));
             let (a, _) = self.expr(arg);
             (quote!(libm::#f(#a)), POSTFIX)
@@ -356,7 +458,10 @@ impl Writer<'_> {
                 Step::SinCos { sin, cos, arg } => {
                     let s = ident(self.names.get(&sin).map_or("_", String::as_str));
                     let c = ident(self.names.get(&cos).map_or("_", String::as_str));
-                    let value = if self.options.no_std {
+                    let value = if self.options.inline_float_functions() {
+                        let (a, _) = self.expr(arg);
+                        quote!(sin_cos(#a))
+                    } else if self.options.no_std {
                         let f = ident(&self.libm_name("sin_cos"));
                         let (a, _) = self.expr(arg);
                         quote!(libm::#f(#a))
@@ -523,8 +628,9 @@ fn kernel_fn(
     doc.push(returns_doc(k));
     doc.push(String::new());
     doc.push(format!(
-        "Operations per call: {}.",
-        stats::block_counts(&plan.graph, &kp.block).summary()
+        "Operations per call: {}.{}",
+        stats::block_counts(&plan.graph, &kp.block).summary(),
+        inline_note(plan, &kp.block, options)
     ));
     doc.push(String::new());
     doc.push(wrap(&format!(
@@ -770,8 +876,9 @@ fn params_and_prepare(module: &Module, plan: &Plan, options: &EmitOptions) -> To
         "Call once per parameter set, then pass the result to every kernel.".to_owned(),
         String::new(),
         format!(
-            "Operations: {}.",
-            stats::block_counts(&plan.graph, &plan.prepare).summary()
+            "Operations: {}.{}",
+            stats::block_counts(&plan.graph, &plan.prepare).summary(),
+            inline_note(plan, &plan.prepare, options)
         ),
     ]);
     let params_derive = derives(fields.is_empty());
@@ -799,7 +906,7 @@ fn params_and_prepare(module: &Module, plan: &Plan, options: &EmitOptions) -> To
     }
 }
 
-fn header(module: &Module, options: &EmitOptions) -> String {
+fn header(module: &Module, options: &EmitOptions, inline: &[&str]) -> String {
     let mut lines = vec![
         format!(
             "// @generated by walker-gen from scene {}. Do not edit by hand.",
@@ -810,13 +917,19 @@ fn header(module: &Module, options: &EmitOptions) -> String {
     for note in module.notes.iter().flat_map(|n| n.lines()) {
         lines.push(format!("// {note}").trim_end().to_owned());
     }
+    let names: Vec<String> = inline.iter().map(|s| (*s).to_owned()).collect();
     lines.push(format!(
-        "// Float type: {}; float functions: {}.",
+        "// Float type: {}; float functions: {}{}.",
         options.float.name(),
         if options.no_std {
             "libm (no_std)"
         } else {
             "inherent methods (std)"
+        },
+        if names.is_empty() {
+            String::new()
+        } else {
+            format!("; inline (end of file): {}", code_list(&names))
         }
     ));
     lines.push(format!(
@@ -929,7 +1042,13 @@ pub(crate) fn emit_plan(
             })
         })
         .collect();
-    let mut out = header(module, options);
+    let inline = inline_calls_of_file(plan, options);
+    let mut out = header(module, options, &inline);
     out.push_str(&items.join("\n"));
+    // Verbatim, after the formatted items: comments (the licence notice) survive.
+    for (_, source) in INLINE_HELPERS.iter().filter(|h| inline.contains(&h.0)) {
+        out.push('\n');
+        out.push_str(source);
+    }
     Ok(out)
 }

@@ -14,7 +14,7 @@ pub mod stats;
 pub use bind::ParamNodes;
 pub use catalog::KernelName;
 pub use config::{Config, GenerateReport};
-pub use emit::{EmitOptions, Float, emit};
+pub use emit::{EmitOptions, Float, FloatFunctions, emit};
 pub use error::{EmitError, Error};
 pub use ir::{Graph, Kernel, Module, Node, NodeId, ParamDecl, ParamId, Shape};
 pub use plan::Division;

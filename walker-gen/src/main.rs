@@ -1,7 +1,8 @@
 //! `walker-gen`: the generator as a command-line tool, for builds that are not cargo's.
 //!
 //! ```text
-//! walker-gen emit --scene scenes/active-level.toml [--f32] [--no-std] [--unchecked] [--exact-division] [-o kernels.rs]
+//! walker-gen emit --scene scenes/active-level.toml [--f32] [--no-std] [--unchecked] [--exact-division]
+//!                 [--float-functions inline|std] [-o kernels.rs]
 //! walker-gen stats --scene scenes/active-level.toml [--f32] [--exact-division] [--toml]
 //! ```
 //!
@@ -11,8 +12,8 @@ use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Args, Parser, Subcommand};
-use walker_gen::{Config, Division, Error, Float, SceneError};
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use walker_gen::{Config, Division, Error, Float, FloatFunctions, SceneError};
 
 #[derive(Parser)]
 #[command(
@@ -37,6 +38,10 @@ enum Command {
         /// Leave out the checked entry points (`<kernel>_checked` and `KernelError`).
         #[arg(long)]
         unchecked: bool,
+        /// How `f64` std code evaluates `sin_cos` and `tanh`: the file's own functions
+        /// (`inline`) or std's methods (`std`). No effect with `--f32` or `--no-std`.
+        #[arg(long, value_enum, default_value_t = FloatFunctionsArg::Inline)]
+        float_functions: FloatFunctionsArg,
         /// Output file (written only if it changes); standard output if absent or `-`.
         #[arg(short = 'o', long = "out")]
         out: Option<PathBuf>,
@@ -49,6 +54,24 @@ enum Command {
         #[arg(long)]
         toml: bool,
     },
+}
+
+/// `--float-functions`, the command-line face of [`FloatFunctions`].
+#[derive(Clone, Copy, ValueEnum)]
+enum FloatFunctionsArg {
+    /// Private accurate and fast `sin_cos` and `tanh` written into the file.
+    Inline,
+    /// std's `x.sin_cos()` and `x.tanh()`.
+    Std,
+}
+
+impl From<FloatFunctionsArg> for FloatFunctions {
+    fn from(arg: FloatFunctionsArg) -> FloatFunctions {
+        match arg {
+            FloatFunctionsArg::Inline => FloatFunctions::Inline,
+            FloatFunctionsArg::Std => FloatFunctions::Std,
+        }
+    }
 }
 
 #[derive(Args)]
@@ -97,10 +120,14 @@ fn run(cli: Cli) -> Result<(), CliError> {
             common,
             no_std,
             unchecked,
+            float_functions,
             out,
         } => {
             let mut config = common.config();
-            config.no_std(no_std).checked(!unchecked);
+            config
+                .no_std(no_std)
+                .checked(!unchecked)
+                .float_functions(float_functions.into());
             match out.filter(|p| p.as_os_str() != "-") {
                 Some(path) => {
                     let report = config.out_file(path).generate()?;

@@ -109,6 +109,12 @@ pub(crate) struct Plan {
     pub kernels: Vec<KernelPlan>,
 }
 
+/// Names of functions a generated file may define besides the kernels: `prepare`, the sign
+/// helper and the inline float functions ([`crate::FloatFunctions::Inline`]). No kernel may take
+/// them, nor an argument, except `prepare` (an argument would shadow the function in the
+/// kernel's body).
+const RESERVED_FNS: [&str; 4] = ["prepare", "sign", "sin_cos", "tanh"];
+
 /// Reserved generated names: `t<digits>` (lets) and `k<digits>` (fields).
 fn is_generated_name(s: &str) -> bool {
     let mut chars = s.chars();
@@ -165,7 +171,7 @@ fn validate(module: &Module) -> Result<(), EmitError> {
     }
     let mut names = BTreeSet::new();
     for k in &module.kernels {
-        if !is_snake_ident(&k.name) || k.name == "prepare" || k.name == "sign" {
+        if !is_snake_ident(&k.name) || RESERVED_FNS.contains(&k.name.as_str()) {
             return Err(EmitError::BadName {
                 what: "kernel".to_owned(),
                 name: k.name.clone(),
@@ -179,7 +185,10 @@ fn validate(module: &Module) -> Result<(), EmitError> {
         }
         let mut args = BTreeSet::new();
         for a in &k.args {
-            let reserved = ["p", "sign"].contains(&a.as_str()) || a.starts_with('_');
+            // `prepare` is never called from a kernel, so it may be shadowed.
+            let reserved = a == "p"
+                || (a != "prepare" && RESERVED_FNS.contains(&a.as_str()))
+                || a.starts_with('_');
             if !is_snake_ident(a) || is_generated_name(a) || reserved {
                 return Err(EmitError::BadName {
                     what: format!("argument of kernel `{}`", k.name),
@@ -612,12 +621,24 @@ mod tests {
 
     #[test]
     fn reserved_and_duplicate_names_are_rejected() {
-        let mut m = module_with(|m| vec![m.graph.input("x")]);
-        m.kernels[0].args = vec!["sign".to_owned()];
-        assert!(matches!(
-            Plan::new(&m, Division::Exact),
-            Err(EmitError::BadName { .. })
-        ));
+        for name in ["sign", "sin_cos", "tanh", "prepare"] {
+            let mut m = module_with(|m| vec![m.graph.input("x")]);
+            m.kernels[0].args = vec![name.to_owned()];
+            assert_eq!(
+                matches!(
+                    Plan::new(&m, Division::Exact),
+                    Err(EmitError::BadName { .. })
+                ),
+                name != "prepare",
+                "argument {name}"
+            );
+            let mut m = module_with(|m| vec![m.graph.input("x")]);
+            m.kernels[0].name = name.to_owned();
+            assert!(matches!(
+                Plan::new(&m, Division::Exact),
+                Err(EmitError::BadName { .. })
+            ));
+        }
         let mut m = module_with(|m| vec![m.graph.input("x")]);
         m.declare_param("k0", "");
         assert!(matches!(

@@ -138,3 +138,36 @@ fn usage_errors_exit_with_2() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--scene"));
 }
+
+#[test]
+fn float_functions_flag_selects_inline_or_std() {
+    let emit = |extra: &[&str]| {
+        let scene = scene("active-level");
+        let mut args = vec!["emit", "--scene", scene.as_str()];
+        args.extend_from_slice(extra);
+        let out = walker_gen(&args);
+        assert!(
+            out.status.success(),
+            "{extra:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let default = emit(&[]);
+    assert_eq!(default, emit(&["--float-functions", "inline"]));
+    assert!(default.contains("fn sin_cos(x: f64) -> (f64, f64) {"));
+    assert!(default.contains("fn tanh(x: f64) -> f64 {"));
+    assert!(default.contains("tanh(p.c * xd)") && !default.contains(".tanh()"));
+    let std = emit(&["--float-functions", "std"]);
+    assert!(!std.contains("fn sin_cos(") && !std.contains("fn tanh("));
+    assert!(std.contains("th1.sin_cos()") && std.contains("(p.c * xd).tanh()"));
+    let out = walker_gen(&[
+        "emit",
+        "--scene",
+        &scene("active-level"),
+        "--float-functions",
+        "fast",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--float-functions"));
+}

@@ -7,7 +7,9 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use walker_gen::{Config, Division, EmitOptions, Float, Kernel, Module, NodeId, Shape, emit};
+use walker_gen::{
+    Config, Division, EmitOptions, Float, FloatFunctions, Kernel, Module, NodeId, Shape, emit,
+};
 
 fn tmp() -> PathBuf {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
@@ -202,14 +204,32 @@ const POINTS: [(f64, f64); 5] = [
 const PARAMS: [f64; 2] = [1.3, 0.7];
 
 /// The variants compared, with their tolerance relative to `max(1, |expected|)`; `0` means
-/// bit-identical.
-const VARIANTS: [(&str, Float, bool, Division, f64); 4] = [
-    ("exact64", Float::F64, false, Division::Exact, 0.0),
+/// bit-identical (std's float functions and exact division evaluate what the IR interpreter
+/// evaluates, operation for operation). The inline `sin_cos` and `tanh` differ from std's by a
+/// few ulps at most (`tests/fastmath_accuracy.rs`).
+const VARIANTS: [(&str, Float, bool, Division, FloatFunctions, f64); 5] = [
+    (
+        "exact64",
+        Float::F64,
+        false,
+        Division::Exact,
+        FloatFunctions::Std,
+        0.0,
+    ),
+    (
+        "inline64",
+        Float::F64,
+        false,
+        Division::Exact,
+        FloatFunctions::Inline,
+        1e-14,
+    ),
     (
         "std64",
         Float::F64,
         false,
         Division::SharedReciprocal,
+        FloatFunctions::Inline,
         1e-14,
     ),
     (
@@ -217,6 +237,7 @@ const VARIANTS: [(&str, Float, bool, Division, f64); 4] = [
         Float::F64,
         true,
         Division::SharedReciprocal,
+        FloatFunctions::Inline,
         1e-13,
     ),
     (
@@ -224,6 +245,7 @@ const VARIANTS: [(&str, Float, bool, Division, f64); 4] = [
         Float::F32,
         true,
         Division::SharedReciprocal,
+        FloatFunctions::Inline,
         1e-5,
     ),
 ];
@@ -263,6 +285,7 @@ fn no_std_f32_code_builds_in_a_no_std_crate() {
         no_std: true,
         division: Division::SharedReciprocal,
         checked: true,
+        ..EmitOptions::default()
     };
     write(
         &dir.join("exercise.rs"),
@@ -317,17 +340,37 @@ fn generated_code_is_clippy_and_rustdoc_clean() {
             lib.push_str(&including_module(&name, scene));
         }
     }
-    for (name, float, no_std, checked) in [
-        ("exercise", Float::F64, false, true),
-        ("exercise_nostd32", Float::F32, true, true),
-        ("exercise_unchecked", Float::F64, false, false),
-        ("exercise_nostd32_unchecked", Float::F32, true, false),
+    for (name, float, no_std, checked, float_functions) in [
+        ("exercise", Float::F64, false, true, FloatFunctions::Inline),
+        ("exercise_std", Float::F64, false, true, FloatFunctions::Std),
+        (
+            "exercise_nostd32",
+            Float::F32,
+            true,
+            true,
+            FloatFunctions::Inline,
+        ),
+        (
+            "exercise_unchecked",
+            Float::F64,
+            false,
+            false,
+            FloatFunctions::Inline,
+        ),
+        (
+            "exercise_nostd32_unchecked",
+            Float::F32,
+            true,
+            false,
+            FloatFunctions::Inline,
+        ),
     ] {
         let options = EmitOptions {
             float,
             no_std,
             division: Division::SharedReciprocal,
             checked,
+            float_functions,
         };
         let src = emit(&exercise(), &options).expect("emit");
         write(&dir.join(format!("{name}.rs")), &src);
@@ -352,12 +395,13 @@ fn emitted_code_computes_what_the_ir_says() {
     let module = exercise();
     let dir = tmp().join("walker-gen-run");
     let mut main = String::from("//! Throwaway: prints every kernel output.\n");
-    for (name, float, no_std, division, _) in VARIANTS {
+    for (name, float, no_std, division, float_functions, _) in VARIANTS {
         let options = EmitOptions {
             float,
             no_std,
             division,
             checked: false,
+            float_functions,
         };
         write(
             &dir.join(format!("{name}.rs")),
@@ -379,6 +423,7 @@ fn emitted_code_computes_what_the_ir_says() {
         fn main() {{
             for (i, (x, y)) in {POINTS:?}.into_iter().enumerate() {{
                 run!(exact64, f64, i, x, y);
+                run!(inline64, f64, i, x, y);
                 run!(std64, f64, i, x, y);
                 run!(nostd64, f64, i, x, y);
                 run!(nostd32, f32, i, x, y);
@@ -413,7 +458,7 @@ fn emitted_code_computes_what_the_ir_says() {
         let tol = VARIANTS
             .iter()
             .find(|v| v.0 == variant)
-            .map(|v| v.4)
+            .map(|v| v.5)
             .expect("known variant");
         assert_eq!(got.len(), want.len(), "{line}");
         for (i, (g, w)) in got.iter().zip(&want).enumerate() {
@@ -484,6 +529,7 @@ fn checked_kernels_name_the_bad_argument_or_output() {
             no_std,
             division: Division::SharedReciprocal,
             checked: true,
+            ..EmitOptions::default()
         };
         write(
             &dir.join(format!("{name}.rs")),

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use walker_gen::{Config, Division, Float};
+use walker_gen::{Config, Division, Float, FloatFunctions};
 
 const SCENES: [&str; 4] = [
     "active-level",
@@ -21,20 +21,28 @@ fn scene_file(name: &str) -> PathBuf {
 /// The option combinations worth rendering.
 fn variants(name: &str) -> Vec<(String, Config)> {
     let mut out = Vec::new();
-    for (float, no_std, division) in [
-        (Float::F64, false, Division::SharedReciprocal),
-        (Float::F64, false, Division::Exact),
-        (Float::F64, true, Division::SharedReciprocal),
-        (Float::F32, true, Division::SharedReciprocal),
+    let inline = FloatFunctions::Inline;
+    for (float, no_std, division, functions) in [
+        (Float::F64, false, Division::SharedReciprocal, inline),
+        (Float::F64, false, Division::Exact, inline),
+        (
+            Float::F64,
+            false,
+            Division::SharedReciprocal,
+            FloatFunctions::Std,
+        ),
+        (Float::F64, true, Division::SharedReciprocal, inline),
+        (Float::F32, true, Division::SharedReciprocal, inline),
     ] {
         let mut config = Config::new();
         config
             .scene_file(scene_file(name))
             .float(float)
             .no_std(no_std)
-            .division(division);
+            .division(division)
+            .float_functions(functions);
         out.push((
-            format!("{name} {float:?} no_std={no_std} {division:?}"),
+            format!("{name} {float:?} no_std={no_std} {division:?} {functions:?}"),
             config,
         ));
     }

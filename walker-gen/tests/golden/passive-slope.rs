@@ -3,7 +3,7 @@
 // Structure: floor = "slope", friction = "tanh", torso = "passive".
 // Fixed at generation time: m1 = 2.0, m2 = 1.0, l = 1.0, I1 = 0.5, I2 = 1.0, g = 9.81, alpha = 0.5235987755982989.
 // Runtime parameters (fields of `Params`): phi, mu0, c.
-// Float type: f64; float functions: inherent methods (std).
+// Float type: f64; float functions: inherent methods (std); inline (end of file): `sin_cos`, `tanh`.
 // Divisions: shared denominators as one reciprocal.
 // Checked entry points: `<kernel>_checked` returning `Result<_, KernelError>`.
 
@@ -315,9 +315,10 @@ pub struct Prepared {
 /// Call once per parameter set, then pass the result to every kernel.
 ///
 /// Operations: 5610 add/sub, 2848 mul, 1 div, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
 #[must_use]
 pub fn prepare(p: &Params) -> Prepared {
-    let (t0, t1) = p.phi.sin_cos();
+    let (t0, t1) = sin_cos(p.phi);
     let t2 = t0 * t1;
     let t3 = 2.0_f64 * t2;
     let t4 = 0.5_f64 * t3;
@@ -3354,6 +3355,7 @@ impl std::error::Error for KernelError {}
 /// Returns, row-major, `[[M00, M01, M02, M03], [M10, M11, M12, M13], [M20, M21, M22, M23], [M30, M31, M32, M33]]`.
 ///
 /// Operations per call: 2 mul, 1 neg, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -3362,7 +3364,7 @@ impl std::error::Error for KernelError {}
 #[inline]
 #[must_use]
 pub fn mass_matrix(_p: &Prepared, th1: F) -> [[F; 4]; 4] {
-    let (t0, t1) = th1.sin_cos();
+    let (t0, t1) = sin_cos(th1);
     let t2 = 3.0_f64 * t1;
     let t3 = -(3.0_f64 * t0);
     [
@@ -3416,6 +3418,7 @@ pub fn mass_matrix_checked(p: &Prepared, th1: F) -> Result<[[F; 4]; 4], KernelEr
 /// Returns `[h0, h1, h2, h3]`.
 ///
 /// Operations per call: 1 add/sub, 5 mul, 2 neg, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -3424,7 +3427,7 @@ pub fn mass_matrix_checked(p: &Prepared, th1: F) -> Result<[[F; 4]; 4], KernelEr
 #[inline]
 #[must_use]
 pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
-    let (t0, t1) = th1.sin_cos();
+    let (t0, t1) = sin_cos(th1);
     let t2 = 3.0_f64 * th1d * th1d;
     [-(t0 * t2), 29.43_f64 - t1 * t2, -(29.43_f64 * t0), 0.0_f64]
 }
@@ -3460,6 +3463,7 @@ pub fn bias_checked(p: &Prepared, th1: F, th1d: F) -> Result<[F; 4], KernelError
 /// Returns `lambda`.
 ///
 /// Operations per call: 7 add/sub, 13 mul, 1 div, 2 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -3468,8 +3472,8 @@ pub fn bias_checked(p: &Prepared, th1: F, th1d: F) -> Result<[F; 4], KernelError
 #[inline]
 #[must_use]
 pub fn lambda_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> F {
-    let (t0, t1) = th1.sin_cos();
-    let t2 = (p.c * xd * p.k279).tanh();
+    let (t0, t1) = sin_cos(th1);
+    let t2 = tanh(p.c * xd * p.k279);
     let t3 = p.mu0 * t2;
     (p.k16 + th1d * (t0 * p.k1 + t1 * p.k15) * th1d)
         / (p.k3 * t3 - p.k19
@@ -3510,6 +3514,7 @@ pub fn lambda_slope_checked(
 /// Returns `[qdd0, qdd1, qdd2, qdd3]`.
 ///
 /// Operations per call: 30 add/sub, 49 mul, 1 div, 2 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -3518,10 +3523,10 @@ pub fn lambda_slope_checked(
 #[inline]
 #[must_use]
 pub fn accel_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 4] {
-    let (t0, t1) = th1.sin_cos();
+    let (t0, t1) = sin_cos(th1);
     let t2 = th1d * p.k5 * th1d - t1 * p.k4;
     let t3 = t0 * p.k4;
-    let t4 = (p.c * xd * p.k279).tanh();
+    let t4 = tanh(p.c * xd * p.k279);
     let t5 = p.mu0 * t4;
     let t6 = p.k2 * t5;
     let t7 = p.k2 - p.k18 * t5;
@@ -3578,6 +3583,7 @@ pub fn accel_slope_checked(
 /// Returns `[lambdaI0, qdp0, qdp1, qdp2, qdp3]`.
 ///
 /// Operations per call: 29 add/sub, 49 mul, 1 div, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -3586,7 +3592,7 @@ pub fn accel_slope_checked(
 #[inline]
 #[must_use]
 pub fn impact_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 5] {
-    let (t0, t1) = th1.sin_cos();
+    let (t0, t1) = sin_cos(th1);
     let t2 = zd * p.k37;
     let t3 = xd * p.k45;
     let t4 = xd * p.k47;
@@ -3649,6 +3655,7 @@ pub fn impact_slope_checked(
 /// Returns `[lambdaI0, lambdaI1, qdp0, qdp1, qdp2, qdp3]`.
 ///
 /// Operations per call: 40 add/sub, 70 mul, 2 div, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -3657,7 +3664,7 @@ pub fn impact_slope_checked(
 #[inline]
 #[must_use]
 pub fn impact2_slope(p: &Prepared, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 6] {
-    let (t0, t1) = th1.sin_cos();
+    let (t0, t1) = sin_cos(th1);
     let t2 = 1.0_f64 / (p.k68 + t0 * (t0 * p.k66 + t1 * p.k67));
     let t3 = 1.0_f64 / (p.k90 + t0 * (t0 * p.k88 + t1 * p.k89));
     [
@@ -3730,6 +3737,7 @@ pub fn impact2_slope_checked(
 /// Returns, row-major, `[[J00, J01, J02], [J10, J11, J12], [J20, J21, J22], [J30, J31, J32]]`.
 ///
 /// Operations per call: 118 add/sub, 191 mul, 1 div, 2 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -3738,8 +3746,8 @@ pub fn impact2_slope_checked(
 #[inline]
 #[must_use]
 pub fn accel_slope_jacobian(p: &Prepared, th1: F, th1d: F, xd: F) -> [[F; 3]; 4] {
-    let (t0, t1) = th1.sin_cos();
-    let t2 = (p.c * xd * p.k279).tanh();
+    let (t0, t1) = sin_cos(th1);
+    let t2 = tanh(p.c * xd * p.k279);
     let t3 = p.mu0 * t2;
     let t4 = 1.0_f64
         / (t3 * (p.k129 + p.k128 * t3) - p.k130
@@ -3887,6 +3895,7 @@ pub fn accel_slope_jacobian_checked(
 /// Returns, row-major, `[[J00, J01, J02, J03, J04], [J10, J11, J12, J13, J14], [J20, J21, J22, J23, J24], [J30, J31, J32, J33, J34]]`.
 ///
 /// Operations per call: 70 add/sub, 121 mul, 1 div, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -3902,7 +3911,7 @@ pub fn impact_slope_jacobian(
     th1d: F,
     _th2d: F,
 ) -> [[F; 5]; 4] {
-    let (t0, t1) = th1.sin_cos();
+    let (t0, t1) = sin_cos(th1);
     let t2 = t0 * (t0 * p.k204 + t1 * p.k205);
     let t3 = t0 * (t0 * p.k247 + t1 * p.k248);
     let t4 = 1.0_f64
@@ -4021,6 +4030,7 @@ pub fn impact_slope_jacobian_checked(
 /// Returns `[x_f, z_f, xd_f, zd_f]`.
 ///
 /// Operations per call: 8 add/sub, 6 mul, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -4029,7 +4039,7 @@ pub fn impact_slope_jacobian_checked(
 #[inline]
 #[must_use]
 pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F; 4] {
-    let (t0, t1) = th1.sin_cos();
+    let (t0, t1) = sin_cos(th1);
     let t2 = 0.13397459621556138_f64 * t0;
     let t3 = 0.5000000000000001_f64 * t1;
     let t4 = 0.5000000000000001_f64 * t0;
@@ -4080,6 +4090,7 @@ pub fn fore_foot_checked(
 /// Returns `[T, V]`.
 ///
 /// Operations per call: 6 add/sub, 14 mul, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
 ///
 /// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
 /// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
@@ -4088,7 +4099,7 @@ pub fn fore_foot_checked(
 #[inline]
 #[must_use]
 pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 2] {
-    let (t0, t1) = th1.sin_cos();
+    let (t0, t1) = sin_cos(th1);
     [
         1.5_f64 * zd * zd + 0.5_f64 * th2d * th2d + 1.5_f64 * xd * xd
             + th1d * (3.0_f64 * xd * t1 + 1.75_f64 * th1d - 3.0_f64 * zd * t0),
@@ -4127,4 +4138,168 @@ pub fn energy_checked(
     KernelError::output("T", out[0])?;
     KernelError::output("V", out[1])?;
     Ok(out)
+}
+
+// The polynomials and the argument reduction of `sin_cos` are fdlibm's (FreeBSD msun k_sin.c,
+// k_cos.c, e_rem_pio2.c, as in musl and the Rust `libm` crate 0.2.16), under this notice:
+//
+// ====================================================
+// Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved.
+//
+// Developed at SunPro, a Sun Microsystems, Inc. business.
+// Permission to use, copy, modify, and distribute this
+// software is freely granted, provided that this notice
+// is preserved.
+// ====================================================
+
+/// `(sin x, cos x)` with one shared argument reduction, in place of `f64::sin_cos` (two library
+/// calls, two reductions). Written by walker-gen (`FloatFunctions::Inline`).
+///
+/// Algorithm (fdlibm, see the notice above): for `|x| <= pi/4` the polynomials of
+/// `__kernel_sin` (degree 13) and `__kernel_cos` (degree 14), whose approximation error is below
+/// `2^-58`, are evaluated directly. For `pi/4 < |x| < 2^20 pi/2` the medium path of
+/// `__ieee754_rem_pio2` subtracts `n pi/2`, `n` the nearest integer to `x 2/pi`, with `pi/2`
+/// split into 33-bit parts (Cody-Waite; a second and a third part when cancellation needs
+/// them) and leaves the remainder as a double-double `y0 + y1`, which the kernels take; `n mod 4`
+/// swaps and negates the results (bit operations, no branch). Below `2^-27 sqrt(2)`, `(x, 1)`.
+/// Larger `|x|`, infinities and NaN go to `f64::sin_cos` (a cold branch; NaN for infinities and
+/// NaN). `sin(-0) = -0`.
+///
+/// Accuracy, measured by walker-gen's test `fastmath_accuracy` against a double-double oracle
+/// over 1.3 million points (`|x| <= 2`, near multiples of `pi/4`, up to `2^20 pi/2`), in ulps
+/// of the exact value: sin at most 0.78 (mean 0.25), cos at most 0.76 (mean 0.25); the test
+/// asserts at most 1. `sin_cos(-x)` is exactly `(-sin x, cos x)`.
+#[inline]
+fn sin_cos(x: f64) -> (f64, f64) {
+    // __kernel_sin: sin(y) ~ y + S1 y^3 + ... + S6 y^13 on [-pi/4, pi/4].
+    const S1: f64 = f64::from_bits(0xBFC5_5555_5555_5549); // -1.66666666666666324348e-01
+    const S2: f64 = f64::from_bits(0x3F81_1111_1110_F8A6); // 8.33333333332248946124e-03
+    const S3: f64 = f64::from_bits(0xBF2A_01A0_19C1_61D5); // -1.98412698298579493134e-04
+    const S4: f64 = f64::from_bits(0x3EC7_1DE3_57B1_FE7D); // 2.75573137070700676789e-06
+    const S5: f64 = f64::from_bits(0xBE5A_E5E6_8A2B_9CEB); // -2.50507602534068634195e-08
+    const S6: f64 = f64::from_bits(0x3DE5_D93A_5ACF_D57C); // 1.58969099521155010221e-10
+    // __kernel_cos: cos(y) ~ 1 - y^2/2 + C1 y^4 + ... + C6 y^14 on [-pi/4, pi/4].
+    const C1: f64 = f64::from_bits(0x3FA5_5555_5555_554C); // 4.16666666666666019037e-02
+    const C2: f64 = f64::from_bits(0xBF56_C16C_16C1_5177); // -1.38888888888741095749e-03
+    const C3: f64 = f64::from_bits(0x3EFA_01A0_19CB_1590); // 2.48015872894767294178e-05
+    const C4: f64 = f64::from_bits(0xBE92_7E4F_809C_52AD); // -2.75573143513906633035e-07
+    const C5: f64 = f64::from_bits(0x3E21_EE9E_BDB4_B1C4); // 2.08757232129817482790e-09
+    const C6: f64 = f64::from_bits(0xBDA8_FAE9_BE88_38D4); // -1.13596475577881948265e-11
+    // __ieee754_rem_pio2: 53 bits of 2/pi; pi/2 in 33-bit parts PIO2_k and tails PIO2_kT.
+    const INV_PIO2: f64 = f64::from_bits(0x3FE4_5F30_6DC9_C883); // 6.36619772367581382433e-01
+    const PIO2_1: f64 = f64::from_bits(0x3FF9_21FB_5440_0000); // 1.57079632673412561417e+00
+    const PIO2_1T: f64 = f64::from_bits(0x3DD0_B461_1A62_6331); // 6.07710050650619224932e-11
+    const PIO2_2: f64 = f64::from_bits(0x3DD0_B461_1A60_0000); // 6.07710050630396597660e-11
+    const PIO2_2T: f64 = f64::from_bits(0x3BA3_198A_2E03_7073); // 2.02226624879595063154e-21
+    const PIO2_3: f64 = f64::from_bits(0x3BA3_198A_2E00_0000); // 2.02226624871116645580e-21
+    const PIO2_3T: f64 = f64::from_bits(0x397B_839A_2520_49C1); // 8.47842766036889956997e-32
+    // 1.5 * 2^52: adding it rounds to an integer, which lands in the low bits of the sum.
+    const TO_INT: f64 = f64::from_bits(0x4338_0000_0000_0000);
+
+    /// `__kernel_sin(y0, y1)` and `__kernel_cos(y0, y1)` for `|y0 + y1| <~ pi/4`, sharing `y0^2`.
+    #[inline]
+    fn kernels(y0: f64, y1: f64) -> (f64, f64) {
+        let z = y0 * y0;
+        let z2 = z * z;
+        let rs = S2 + z * (S3 + z * S4) + z * z2 * (S5 + z * S6);
+        let y03 = z * y0;
+        let sin = y0 - ((z * (0.5 * y1 - y03 * rs) - y1) - y03 * S1);
+        let rc = z * (C1 + z * (C2 + z * C3)) + z2 * z2 * (C4 + z * (C5 + z * C6));
+        let hz = 0.5 * z;
+        let one_hz = 1.0 - hz;
+        let cos = one_hz + (((1.0 - one_hz) - hz) + (z * rc - y0 * y1));
+        (sin, cos)
+    }
+
+    // The high word of |x|, as fdlibm compares it.
+    let hx = (x.to_bits() >> 32) & 0x7fff_ffff;
+    if hx <= 0x3fe9_21fb {
+        // |x| <~ pi/4: no reduction.
+        if hx < 0x3e46_a09e {
+            // |x| < 2^-27 sqrt(2): sin x = x and cos x = 1 after rounding (also +-0, subnormals).
+            return (x, 1.0);
+        }
+        return kernels(x, 0.0);
+    }
+    if hx >= 0x4139_21fb {
+        // |x| >~ 2^20 pi/2, infinite or NaN: std's reduction (NaN for infinities and NaN).
+        return x.sin_cos();
+    }
+    // pi/4 <~ |x| <~ 2^20 pi/2: fdlibm's medium reduction.
+    let tmp = x * INV_PIO2 + TO_INT;
+    let f_n = tmp - TO_INT; // rint(x 2/pi), exact
+    let quadrant = tmp.to_bits() & 3; // n mod 4, also for negative n
+    let mut r = x - f_n * PIO2_1; // exact: f_n has at most 21 bits, PIO2_1 33
+    let mut w = f_n * PIO2_1T; // first round, good to 85 bits
+    let mut y0 = r - w;
+    let ex = hx >> 20;
+    if ex > ((y0.to_bits() >> 52) & 0x7ff) + 16 {
+        // Cancellation of more than 16 bits: second round, good to 118 bits.
+        let t = r;
+        w = f_n * PIO2_2;
+        r = t - w;
+        w = f_n * PIO2_2T - ((t - r) - w);
+        y0 = r - w;
+        if ex > ((y0.to_bits() >> 52) & 0x7ff) + 49 {
+            // Third round, good to 151 bits, covers all cases.
+            let t = r;
+            w = f_n * PIO2_3;
+            r = t - w;
+            w = f_n * PIO2_3T - ((t - r) - w);
+            y0 = r - w;
+        }
+    }
+    let (sin, cos) = kernels(y0, (r - y0) - w);
+    // Quadrant n mod 4, without branches (unpredictable for spread-out arguments): odd
+    // quadrants swap sin and cos; the sign of sin flips with n & 2, that of cos with (n + 1) & 2.
+    let (sin, cos) = (sin.to_bits(), cos.to_bits());
+    let swap = (quadrant & 1).wrapping_neg() & (sin ^ cos);
+    (
+        f64::from_bits(sin ^ swap ^ ((quadrant & 2) << 62)),
+        f64::from_bits(cos ^ swap ^ (((quadrant + 1) & 2) << 62)),
+    )
+}
+
+/// `tanh x`, in place of `f64::tanh` (which goes through `expm1`). Written by walker-gen
+/// (`FloatFunctions::Inline`).
+///
+/// Algorithm: for `|x| < 0.625` the odd rational `x + x z P(z)/Q(z)`, `z = x^2`, `P` of degree
+/// 2 and `Q` of degree 3, with the coefficients of Cephes' `tanh.c` (Stephen L. Moshier, Cephes
+/// Math Library 2.8, the set Go's `math.Tanh` uses; Cephes states a peak relative error of
+/// `2.5e-16` on `[-2, 2]`); below `2^-27`, `x` itself (`x^3/3` is under half an ulp; keeps
+/// `+-0` and subnormals). For `0.625 <= |x| <= 22`, `1 - 2/(exp(2|x|) + 1)` with `f64::exp`,
+/// the sign of `x` restored; above 22 (where `tanh` rounds to 1) exactly `+-1`. NaN propagates.
+///
+/// Accuracy, measured by walker-gen's test `fastmath_accuracy` against a double-double oracle
+/// over a million points (`|x| <= 30`, dense near 0, 0.625 and 22), in ulps of the exact value:
+/// at most 0.83 (mean 0.24) below 0.625, at most 1.32 (mean 0.19) above, with glibc 2.36's `exp`
+/// (glibc's own `tanh` reached 2.07 on the same points); the test asserts at most 2.
+/// `tanh(-x)` is exactly `-tanh x`.
+#[inline]
+fn tanh(x: f64) -> f64 {
+    // Cephes tanh.c, P (highest degree first) and Q (monic, the leading 1 left out).
+    const P0: f64 = f64::from_bits(0xBFEE_DC5B_AAFD_6F4B); // -9.64399179425052238628e-1
+    const P1: f64 = f64::from_bits(0xC058_D26A_0E26_682D); // -9.92877231001918586564e1
+    const P2: f64 = f64::from_bits(0xC099_3AC0_3058_0563); // -1.61468768441708447952e3
+    const Q0: f64 = f64::from_bits(0x405C_33F2_8A58_1B86); // 1.12811678491632931402e2
+    const Q1: f64 = f64::from_bits(0x40A1_76FA_0E55_35FA); // 2.23548839060100448583e3
+    const Q2: f64 = f64::from_bits(0x40B2_EC10_2442_040C); // 4.84406305325125486048e3
+    const TINY: f64 = f64::from_bits(0x3E40_0000_0000_0000); // 2^-27
+
+    let ax = x.abs();
+    if ax < 0.625 {
+        if ax < TINY {
+            return x;
+        }
+        let z = x * x;
+        let p = (P0 * z + P1) * z + P2;
+        let q = ((z + Q0) * z + Q1) * z + Q2;
+        x + x * z * (p / q)
+    } else if ax > 22.0 {
+        1.0_f64.copysign(x)
+    } else {
+        // Also NaN: exp(NaN) is NaN.
+        let e = (2.0 * ax).exp();
+        (1.0 - 2.0 / (e + 1.0)).copysign(x)
+    }
 }
