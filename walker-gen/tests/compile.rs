@@ -26,14 +26,17 @@ fn write(path: &Path, contents: &str) {
     std::fs::write(path, contents).expect("write a throwaway crate file");
 }
 
+/// The manifest of a throwaway crate. A binary is named after its package: the crates share one
+/// target directory and their tests run in parallel, so two binaries of the same name would
+/// overwrite each other (one test then runs the other's program).
 fn manifest(name: &str, kind: &str) -> String {
     format!(
         "[package]\nname = \"{name}\"\nversion = \"0.0.0\"\nedition = \"2024\"\npublish = false\n\n\
          [{kind}]\npath = \"main.rs\"\n{}\n[dependencies]\nlibm = \"0.2\"\n\n[workspace]\n",
         if kind == "[bin]" {
-            "name = \"check\""
+            format!("name = \"{name}\"")
         } else {
-            ""
+            String::new()
         }
     )
 }
