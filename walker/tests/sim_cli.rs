@@ -197,7 +197,11 @@ fn sweep_chains_keep_their_order_and_a_pipe_gets_no_progress_bar() {
         "--json",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    assert!(o.stderr.is_empty(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        o.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
     let chains = v["chains"].as_array().expect("chains");
     let values: Vec<f64> = chains.iter().filter_map(|c| c["value"].as_f64()).collect();
