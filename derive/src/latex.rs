@@ -687,6 +687,8 @@ pub fn output_label(kernel: &Kernel, k: usize) -> String {
     let (stem, index) = split_index(name);
     let fixed = match name.as_str() {
         "lambda" => Some("\\lambda".to_owned()),
+        "lambda_t" => Some("\\lambda_t".to_owned()),
+        "lambda_n" => Some("\\lambda_n".to_owned()),
         "x_f" => Some("\\bar{x}".to_owned()),
         "z_f" => Some("\\bar{z}".to_owned()),
         "xd_f" => Some("\\dot{\\bar{x}}".to_owned()),
