@@ -165,7 +165,7 @@ fn validate(module: &Module) -> Result<(), EmitError> {
     }
     let mut names = BTreeSet::new();
     for k in &module.kernels {
-        if !is_snake_ident(&k.name) || k.name == "prepare" || k.name == "sign" {
+        if !is_snake_ident(&k.name) || k.name == "prepare" {
             return Err(EmitError::BadName {
                 what: "kernel".to_owned(),
                 name: k.name.clone(),
@@ -179,7 +179,7 @@ fn validate(module: &Module) -> Result<(), EmitError> {
         }
         let mut args = BTreeSet::new();
         for a in &k.args {
-            let reserved = ["p", "sign"].contains(&a.as_str()) || a.starts_with('_');
+            let reserved = a == "p" || a.starts_with('_');
             if !is_snake_ident(a) || is_generated_name(a) || reserved {
                 return Err(EmitError::BadName {
                     what: format!("argument of kernel `{}`", k.name),
@@ -613,7 +613,7 @@ mod tests {
     #[test]
     fn reserved_and_duplicate_names_are_rejected() {
         let mut m = module_with(|m| vec![m.graph.input("x")]);
-        m.kernels[0].args = vec!["sign".to_owned()];
+        m.kernels[0].args = vec!["p".to_owned()];
         assert!(matches!(
             Plan::new(&m, Division::Exact),
             Err(EmitError::BadName { .. })

@@ -131,10 +131,16 @@ fn no_friction_with_friction_parameters() {
 }
 
 #[test]
-fn sign_friction_with_c() {
-    let sign = BASE.replace("\"tanh\"", "\"sign\"");
-    rejects(&fixed(&sign, "c = 100.0"), "fixed.c");
-    assert!(Scene::from_toml_str(&fixed(&sign, "mu0 = 0.4"), "t").is_ok());
+fn coulomb_friction_with_c() {
+    let coulomb = BASE.replace("\"tanh\"", "\"coulomb\"");
+    rejects(&fixed(&coulomb, "c = 100.0"), "fixed.c");
+    assert!(Scene::from_toml_str(&fixed(&coulomb, "mu0 = 0.4"), "t").is_ok());
+}
+
+#[test]
+fn the_old_sign_law_is_gone() {
+    // Renamed to "coulomb" (stick-slip and a sliding-direction argument), with no alias.
+    rejects(&BASE.replace("\"tanh\"", "\"sign\""), "friction");
 }
 
 #[test]
