@@ -681,12 +681,12 @@ impl Scene {
                         reason: format!("kernel `{k}` is listed twice"),
                     });
                 }
-                if !k.applies_to(self.floor, self.torso) {
+                if !k.applies_to(self.floor, self.friction, self.torso) {
                     return Err(SceneError::KernelNotInStructure {
                         name: k.name().to_owned(),
                         structure: self.structure(),
                         valid: join(
-                            KernelName::for_structure(self.floor, self.torso)
+                            KernelName::for_structure(self.floor, self.friction, self.torso)
                                 .iter()
                                 .map(|k| k.name()),
                         ),
@@ -711,7 +711,7 @@ impl Scene {
     pub fn kernels(&self) -> Vec<KernelName> {
         self.kernels
             .clone()
-            .unwrap_or_else(|| KernelName::for_structure(self.floor, self.torso))
+            .unwrap_or_else(|| KernelName::for_structure(self.floor, self.friction, self.torso))
     }
 
     /// The parameters the structure has, in canonical order.

@@ -185,6 +185,31 @@ fn kernel_of_another_structure() {
         &format!("{SLOPE}kernels = [\"impact3_level\"]\n"),
         "kernels",
     );
+    // The stick kernels exist only with Coulomb friction, each for its floor and torso.
+    for kernel in ["stick_level", "closed_loop_stick_level"] {
+        rejects(&format!("{BASE}kernels = [\"{kernel}\"]\n"), "kernels");
+    }
+    rejects(&format!("{SLOPE}kernels = [\"stick_slope\"]\n"), "kernels");
+    let coulomb = BASE.replace("\"tanh\"", "\"coulomb\"");
+    assert!(
+        Scene::from_toml_str(
+            &format!("{coulomb}kernels = [\"stick_level\", \"closed_loop_stick_level\"]\n"),
+            "t"
+        )
+        .is_ok()
+    );
+    rejects(
+        &format!("{coulomb}kernels = [\"stick_slope\"]\n"),
+        "kernels",
+    );
+    let passive = coulomb.replace("\"actuated\"", "\"passive\"");
+    assert!(Scene::from_toml_str(&format!("{passive}kernels = [\"stick_level\"]\n"), "t").is_ok());
+    rejects(
+        &format!("{passive}kernels = [\"closed_loop_stick_level\"]\n"),
+        "kernels",
+    );
+    let slope = SLOPE.replace("\"tanh\"", "\"coulomb\"");
+    assert!(Scene::from_toml_str(&format!("{slope}kernels = [\"stick_slope\"]\n"), "t").is_ok());
 }
 
 #[test]
