@@ -118,11 +118,15 @@ impl Lowering<'_> {
             outs.join("`, `")
         );
         if args.iter().any(|a| a == "sigma") {
-            doc.push_str(
+            let forward = match self.scene.floor {
+                Floor::Level => "forward",
+                Floor::Slope => "down the slope",
+            };
+            doc.push_str(&format!(
                 " `sigma` is the direction the stance foot slides in, `+1` towards `+x` \
-                 (forward; down the slope), `-1` backwards; the friction coefficient is \
-                 `mu = -mu0 sigma` (Eq. 25 with the sign that opposes sliding).",
-            );
+                 ({forward}), `-1` backwards; the friction coefficient is `mu = -mu0 sigma` \
+                 (Eq. 25 with the sign that opposes sliding)."
+            ));
         }
         Ok(Kernel {
             name: k.name.to_owned(),

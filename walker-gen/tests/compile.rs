@@ -306,6 +306,8 @@ fn generated_code_is_clippy_and_rustdoc_clean() {
         "passive-slope",
         "active-level-frictionless",
         "general-level",
+        "general-level-coulomb",
+        "general-slope-coulomb",
     ] {
         for (suffix, float, no_std) in [("", Float::F64, false), ("_nostd32", Float::F32, true)] {
             let name = format!("{}{suffix}", scene.replace('-', "_"));

@@ -44,6 +44,9 @@ fn valid_scene_files_load() {
         "passive-slope",
         "active-level-frictionless",
         "general-level",
+        "general-slope",
+        "general-level-coulomb",
+        "general-slope-coulomb",
     ] {
         let scene = Scene::from_file(dir.join(format!("{name}.toml")));
         assert!(scene.is_ok(), "{name}: {scene:?}");
