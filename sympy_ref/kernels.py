@@ -156,6 +156,36 @@ class Numeric:
             if name == "projection_level":
                 return flat(Y)
             return [A, B]
+        if name.startswith("stick") or name == "closed_loop_stick_level":
+            # the foot held: KKT system [[M, -Jp^T], [Jp, 0]] [qdd; F] = [S u - h; 0] for the
+            # Cartesian ground force F on the foot, solved by mpmath's LU, then F resolved
+            # along the floor's unit tangent and normal
+            ph = a[self.args.index(phi)] if name == "stick_slope" else mp.mpf(0)
+
+            def solve(uu):
+                K = mp.zeros(6, 6)
+                r = S * uu - h
+                b = mp.zeros(6, 1)
+                for i in range(4):
+                    for j in range(4):
+                        K[i, j] = M[i, j]
+                    b[i] = r[i]
+                for c in range(2):       # Jp = [[1, 0, 0, 0], [0, 1, 0, 0]]
+                    K[c, 4 + c] = -1
+                    K[4 + c, c] = 1
+                sol = mp.lu_solve(K, b)
+                return [sol[i] for i in range(4)], (sol[4], sol[5])
+
+            if name == "stick_slope":
+                U = 0
+            if name == "closed_loop_stick_level":
+                ydd = lambda q: q[2] - q[3]
+                y0 = ydd(solve(0)[0])
+                A = ydd(solve(1)[0]) - y0
+                U = (a[self.args.index(md.v)] - y0) / A      # yddot = A u + y0 = v
+            qdd, (fx, fz) = solve(U)
+            lam = [fx * mp.cos(ph) - fz * mp.sin(ph), fx * mp.sin(ph) + fz * mp.cos(ph)]
+            return qdd + ([U] if name == "closed_loop_stick_level" else []) + lam
         if name.startswith("impact"):
             JI = mp.matrix(self.JI[name](*a))
             Minv = mp.inverse(M)
@@ -196,6 +226,8 @@ def kernel_edges(name, k):
         E.append(("edge:mu=0", setv(mu=lambda v: 0.0)))
     if md.v in ins:
         E.append(("edge:v=0", setv(v=lambda v: 0.0)))
+    if "stick" in name:   # the foot at rest and the wheel momentarily still
+        E.append(("edge:th1d=0", setv(th1d=lambda v: 0.0)))
     if phi in k["params"]:
         E.append(("edge:phi=0", setv(phi=lambda v: 0.0)))
         if name.startswith("impact"):

@@ -11,6 +11,9 @@ parameters : m1 m2 l I1 I2 g alpha phi   (PARAMS, in the canonical JSON order)
 state      : x z th1 th2, velocities xd zd th1d th2d
 inputs     : u (joint torque), mu (friction coefficient incl. direction),
              v (auxiliary input of the closed loop, yddot = v, Eq. 32)
+stick phase: the stick_* kernels (foot at rest, not in the paper) output qdd and the ground
+             force [lambda_t, lambda_n]: along the floor's unit tangent (cos phi, -sin phi)
+             and along its unit normal (sin phi, cos phi)
 """
 from __future__ import annotations
 
@@ -233,6 +236,33 @@ def constrained_dynamics(Minv, h, S, J, Jmu, uval):
     return den, lam, qdd, Y, A, B
 
 
+def stuck_foot(Minv, h, S, uval, slope_angle):
+    """The stance foot stuck to the floor (stick phase of Coulomb friction; not in the paper).
+
+    Route, chosen to differ from the Rust derivation (which constrains the foot's coordinates
+    along the floor's tangent and normal): the foot *position* (x, z) is held, c(q) = (x, z) -
+    const, whatever the floor; its multipliers are the Cartesian ground force F = (F_x, F_z) on
+    the foot, with M qdd + h = S u + Jp^T F and Jp qdd = 0 (Jp = d(x, z)/dq is constant, so this
+    is the acceleration-level constraint).  The floor enters only when F is resolved into the
+    reported components: lambda_t = F . tau along the unit tangent tau = (cos phi, -sin phi)
+    (the floor's +x direction, down the slope) and lambda_n = F . n along the unit normal
+    n = (sin phi, cos phi).  Returns (qdd, [lambda_t, lambda_n]) in poly form.
+    """
+    Jp = sp.Matrix([_grad(x), _grad(z)])
+    assert all(sp.diff(e, q) == 0 for e in Jp for q in Q + QD)   # constant: Jdot = 0
+    rhs = S * uval - h
+    W = _rs_mat(Jp * Minv * Jp.T)
+    detW = rsimp(W.det(method="berkowitz"))
+    Winv = _rs_mat(W.adjugate() / detW)
+    F = _rs_mat(-Winv * Jp * Minv * rhs)
+    qdd = _rs_mat(Minv * (rhs + Jp.T * F))
+    assert _rs_mat(Jp * qdd) == sp.zeros(2, 1)
+    tau = sp.Matrix([sp.cos(slope_angle), -sp.sin(slope_angle)]).applyfunc(to_poly)
+    nrm = sp.Matrix([sp.sin(slope_angle), sp.cos(slope_angle)]).applyfunc(to_poly)
+    lam = [rsimp(F.dot(tau)), rsimp(F.dot(nrm))]
+    return qdd, lam
+
+
 def impact(Minv, JI):
     """lambda_I = -(J_I M^-1 J_I^T)^-1 J_I qd-, qd+ = qd- + M^-1 J_I^T lambda_I (poly form)."""
     qdm = sp.Matrix(QD)
@@ -341,6 +371,28 @@ def build_kernels(mdl: Model):
     for base in ("impact2_level", "impact_slope"):
         jacobian(base + "_jacobian", base, [e for n, e in K[base]["poly"] if n.startswith("qdp")],
                  imp_in)
+    # Stick phase (not in the paper): the foot held, see stuck_foot.  Level floor with the
+    # torque u; its closed loop with u from yddot = A_s u - B_s = v, where A_s and B_s are read
+    # off S^T qdd, which is affine in u (no projection matrix); the passive wheel on the slope.
+    qdd_st, lam_st = stuck_foot(Minv, hp, Sp, u, sp.Integer(0))
+    add("stick_level", [th1, th1d, u],
+        [(f"qdd{i}", qdd_st[i]) for i in range(4)]
+        + [("lambda_t", lam_st[0]), ("lambda_n", lam_st[1])])
+    ydd_st = rsimp((Sp.T * qdd_st)[0, 0])
+    A_st = rsimp(sp.diff(ydd_st, u))
+    B_st = rsimp(A_st * u - ydd_st)
+    assert sp.diff(B_st, u) == 0
+    u_st = rsimp((v + B_st) / A_st)
+    qdd_stc = [rsimp(qdd_st[i].subs(u, u_st)) for i in range(4)]
+    assert rsimp(qdd_stc[2] - qdd_stc[3] - v) == 0    # yddot = v
+    add("closed_loop_stick_level", [th1, th1d, v],
+        [(f"qdd{i}", qdd_stc[i]) for i in range(4)] + [("u", u_st)]
+        + [("lambda_t", rsimp(lam_st[0].subs(u, u_st))),
+           ("lambda_n", rsimp(lam_st[1].subs(u, u_st)))])
+    qdd_ss, lam_ss = stuck_foot(Minv, hp, Sp, sp.Integer(0), phi)
+    add("stick_slope", [th1, th1d],
+        [(f"qdd{i}", qdd_ss[i]) for i in range(4)]
+        + [("lambda_t", lam_ss[0]), ("lambda_n", lam_ss[1])])
     add("fore_foot", [x, z, th1, xd, zd, th1d],
         [("x_f", xf), ("z_f", zf), ("xd_f", xfd), ("zd_f", zfd)])
     add("energy", [z, th1, xd, zd, th1d, th2d], [("T", mdl.T), ("V", mdl.V)])

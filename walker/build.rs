@@ -6,12 +6,15 @@
 use std::path::PathBuf;
 
 /// The scenes the simulator is built with: the paper's two setups with Table 1 fixed (the
-/// fast path), and the same structures with every parameter at run time (scene files).
-const SCENES: [&str; 4] = [
+/// fast path), the same structures with every parameter at run time (scene files), and both
+/// under exact Coulomb friction with stick-slip (every parameter at run time).
+const SCENES: [&str; 6] = [
     "active-level",
     "passive-slope",
     "general-level",
     "general-slope",
+    "general-level-coulomb",
+    "general-slope-coulomb",
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

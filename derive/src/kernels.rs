@@ -155,6 +155,12 @@ pub struct Derivation {
     pub impact_slope: mechanics::Impact,
     /// Impact on the slope with the rear foot held (Eq. 46).
     pub impact2_slope: mechanics::Impact,
+    /// Stick phase on level ground (the foot held; not in the paper).
+    pub stick_level: mechanics::Stick,
+    /// Stick phase on the slope (not in the paper).
+    pub stick_slope: mechanics::Stick,
+    /// Control terms `A_s`, `B_s` of the stick phase on level ground.
+    pub stick_control: mechanics::Control,
     /// The kernels.
     pub kernels: Vec<Kernel>,
 }
@@ -175,6 +181,14 @@ fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
     }
 }
 
+/// The equation reference of the stick kernels: the stick phase is not in the paper.
+const STICK_EQUATION: &str =
+    "stick phase, not in the paper; Eq. 19 with both foot coordinates held";
+
+/// The equation reference of the stuck foot's closed loop.
+const STICK_CONTROL_EQUATION: &str =
+    "stick phase, not in the paper; Eqs. 30-31 with both foot coordinates held";
+
 fn substitute_u_zero(m: &Matrix) -> Result<Matrix> {
     m.try_map(|r| r.substitute(Atom::Sym(Sym::U), &RatFunc::zero()))
 }
@@ -193,6 +207,9 @@ impl Derivation {
         let impact2 = mechanics::impact(&dynamics, Floor::Level, &[ForeFoot, TorsoLock])?;
         let impact_slope = mechanics::impact(&dynamics, Floor::Slope, &[ForeFoot])?;
         let impact2_slope = mechanics::impact(&dynamics, Floor::Slope, &[ForeFoot, RearFoot])?;
+        let stick_level = mechanics::stick(&dynamics, Floor::Level)?;
+        let stick_slope = mechanics::stick(&dynamics, Floor::Slope)?;
+        let stick_control = mechanics::stick_control(&dynamics, &stick_level)?;
         let g = &dynamics.geometry;
         let impact_args = vec![Th1, Xd, Zd, Th1d, Th2d];
         // On the slope the paper scales foot impulses to their vertical component (Eq. 42 has
@@ -220,6 +237,28 @@ impl Derivation {
         let slope_accel = substitute_u_zero(&slope.accel)?;
         let slope_jac = Matrix::jacobian(slope_accel.entries(), &[Th1, Th1d, Mu]);
         let impact_vars = [Th1, Xd, Zd, Th1d, Th2d];
+        // Stick phase (not in the paper): qdd, then [lambda_t, lambda_n].
+        let mut level_stick_outputs = named("qdd", &stick_level.accel);
+        level_stick_outputs.push(("lambda_t".into(), stick_level.forces.get(0, 0).clone()));
+        level_stick_outputs.push(("lambda_n".into(), stick_level.forces.get(1, 0).clone()));
+        // The stuck foot's closed loop: u = (v + B_s) / A_s (Eqs. 30-31 with Y_s), so that
+        // yddot = v, then the stick accelerations and forces with that u.
+        let u_stick = (&sym(V) + &stick_control.b).div(&stick_control.a)?;
+        let with_u_stick = |r: &RatFunc| r.substitute(Atom::Sym(U), &u_stick);
+        let mut closed_stick_outputs = named("qdd", &stick_level.accel.try_map(with_u_stick)?);
+        closed_stick_outputs.push(("u".into(), u_stick.clone()));
+        closed_stick_outputs.push((
+            "lambda_t".into(),
+            with_u_stick(stick_level.forces.get(0, 0))?,
+        ));
+        closed_stick_outputs.push((
+            "lambda_n".into(),
+            with_u_stick(stick_level.forces.get(1, 0))?,
+        ));
+        let slope_stick_forces = substitute_u_zero(&stick_slope.forces)?;
+        let mut slope_stick_outputs = named("qdd", &substitute_u_zero(&stick_slope.accel)?);
+        slope_stick_outputs.push(("lambda_t".into(), slope_stick_forces.get(0, 0).clone()));
+        slope_stick_outputs.push(("lambda_n".into(), slope_stick_forces.get(1, 0).clone()));
         let impact2_jac = Matrix::jacobian(impact2.velocity.entries(), &impact_vars);
         let impact_slope_jac = Matrix::jacobian(impact_slope.velocity.entries(), &impact_vars);
         let kernels = vec![
@@ -394,6 +433,44 @@ impl Derivation {
                 staged: None,
             },
             Kernel {
+                name: "stick_level",
+                doc: "Accelerations qddot and the ground force [lambda_t, lambda_n] with the stance foot stuck to the level floor (lambda_t horizontal along +x, lambda_n vertical)",
+                equation: STICK_EQUATION,
+                args: vec![Th1, Th1d, U],
+                outputs: level_stick_outputs,
+                shape: Shape::Parts,
+                staged: None,
+            },
+            Kernel {
+                name: "closed_loop_stick_level",
+                doc: "Accelerations qddot, torque u and the ground force [lambda_t, lambda_n] of the active walker with the stance foot stuck to the level floor, under the output-following control with yddot = v",
+                equation: STICK_CONTROL_EQUATION,
+                args: vec![Th1, Th1d, V],
+                outputs: closed_stick_outputs,
+                shape: Shape::Parts,
+                // u once (Eqs. 30-31 with Y_s), then stick_level with that u.
+                staged: Some(Staged {
+                    locals: vec![(U, u_stick.clone())],
+                    outputs: stick_level
+                        .accel
+                        .entries()
+                        .iter()
+                        .cloned()
+                        .chain([sym(U)])
+                        .chain(stick_level.forces.entries().iter().cloned())
+                        .collect(),
+                }),
+            },
+            Kernel {
+                name: "stick_slope",
+                doc: "Accelerations qddot and the ground force [lambda_t, lambda_n] of the passive wheel with the stance foot stuck to the slope (u = 0; lambda_t along the slope, positive down it, lambda_n normal to it)",
+                equation: STICK_EQUATION,
+                args: vec![Th1, Th1d],
+                outputs: slope_stick_outputs,
+                shape: Shape::Parts,
+                staged: None,
+            },
+            Kernel {
                 name: "fore_foot",
                 doc: "Position and velocity of the fore-leg end",
                 equation: "Eqs. 3, 39",
@@ -441,6 +518,9 @@ impl Derivation {
             impact2,
             impact_slope,
             impact2_slope,
+            stick_level,
+            stick_slope,
+            stick_control,
             kernels,
         })
     }

@@ -687,6 +687,8 @@ pub fn output_label(kernel: &Kernel, k: usize) -> String {
     let (stem, index) = split_index(name);
     let fixed = match name.as_str() {
         "lambda" => Some("\\lambda".to_owned()),
+        "lambda_t" => Some("\\lambda_t".to_owned()),
+        "lambda_n" => Some("\\lambda_n".to_owned()),
         "x_f" => Some("\\bar{x}".to_owned()),
         "z_f" => Some("\\bar{z}".to_owned()),
         "xd_f" => Some("\\dot{\\bar{x}}".to_owned()),
@@ -886,6 +888,9 @@ pub fn equations_markdown(d: &Derivation) -> Result<String> {
          - $\\mu$ is the friction coefficient with its direction (Eq. 24; Eqs. 26, 37 say what it is).\n\
          - On the slope, $\\lambda$ and the foot impulses are vertical components, as in Eqs. 36 and 42\n  \
            (the normal force is $\\lambda / \\cos\\phi$).\n\
+         - The stick kernels (the stance foot at rest; not in the paper) report the ground force as\n  \
+           $\\lambda_t$ along the floor's unit tangent $(\\cos\\phi, -\\sin\\phi)$ and $\\lambda_n$ along its unit\n  \
+           normal $(\\sin\\phi, \\cos\\phi)$: on the slope $\\lambda_n$ is the normal force itself.\n\
          - Impact kernels take the general $\\theta_1$ and pre-impact velocities; $\\dot{x}^+, \\dot{z}^+,\n  \
            \\dot{\\theta}_1^+, \\dot{\\theta}_2^+$ are the velocities of the old coordinates right after impact.\n\
          - Outputs of more than ",

@@ -240,6 +240,83 @@ pub fn stance(dynamics: &Dynamics, floor: Floor) -> Result<Stance> {
     })
 }
 
+/// The stance foot stuck to the floor: the stick phase of Coulomb friction with stick-slip.
+///
+/// Not in the paper, which models sliding only (Eq. 25 "without considering the static friction
+/// effect"); this is Eq. 19 with both foot coordinates held instead of one:
+/// `M qdd + h = S u + J_s^T [lambda_t, lambda_n]`, `J_s qdd = 0`.
+#[derive(Clone, Debug)]
+pub struct Stick {
+    /// `J_s`, two rows: the gradient of the foot's coordinate along the floor (unit tangent
+    /// `(cos phi, -sin phi)`, `+x` on level ground) and of its signed distance from the floor
+    /// (unit normal). Constant: the constraints are scleronomic and linear in `q`, so
+    /// `d/dt (J_s qdot) = J_s qddot` (checked by [`stick`]).
+    pub jacobian: Matrix,
+    /// `[lambda_t, lambda_n]` (a column): the tangential force on the foot along the floor's
+    /// `+x` direction and the normal force.
+    pub forces: Matrix,
+    /// `qddot` (a column); `xdd = zdd = 0`.
+    pub accel: Matrix,
+    /// `Y_s = I - J_s^T (J_s M^-1 J_s^T)^-1 J_s M^-1`, so that `M qdd = Y_s (S u - h)` (the stick
+    /// counterpart of Eq. 28).
+    pub projection: Matrix,
+}
+
+/// The foot's coordinate along the floor: `x` on level ground, `x cos phi - z sin phi` on the
+/// slope (along the unit tangent `(cos phi, -sin phi)`, positive down the slope).
+pub fn floor_tangent(floor: Floor, x: &RatFunc, z: &RatFunc) -> RatFunc {
+    match floor {
+        Floor::Level => x.clone(),
+        Floor::Slope => {
+            &(x * &RatFunc::cos_of(BaseAngle::Phi)) - &(z * &RatFunc::sin_of(BaseAngle::Phi))
+        }
+    }
+}
+
+/// Derives the stick phase on a floor (see [`Stick`]): the constraint Jacobian by
+/// differentiation of the contact geometry (foot coordinate along the floor, then
+/// [`floor_gap`]), the multipliers `lambda = -(J_s M^-1 J_s^T)^-1 J_s M^-1 (S u - h)` and
+/// `qdd = M^-1 (S u - h + J_s^T lambda)`.
+///
+/// # Errors
+/// [`Error::CheckFailed`] if `J_s` were not constant along the motion (then `J_s qdd = 0`
+/// would not be the acceleration-level constraint), or an arithmetic error.
+pub fn stick(dynamics: &Dynamics, floor: Floor) -> Result<Stick> {
+    let (x, z) = (sym(Sym::X), sym(Sym::Z));
+    let jacobian = Matrix::jacobian(
+        &[floor_tangent(floor, &x, &z), floor_gap(floor, &x, &z)],
+        &Q_SYMS,
+    );
+    // The acceleration-level constraint is J_s qdd + Jdot_s qd = 0; it is J_s qdd = 0 only
+    // because every entry of J_s is constant along the motion.
+    if jacobian
+        .entries()
+        .iter()
+        .any(|e| !time_derivative(e).is_zero())
+    {
+        return Err(Error::CheckFailed {
+            what: "the stick constraint Jacobian is constant".to_owned(),
+        });
+    }
+    let j_minv = jacobian.mul(&dynamics.mass_inv)?;
+    let schur_inv = j_minv
+        .mul(&jacobian.transpose())?
+        .inverse("J_s M^-1 J_s^T")?;
+    let su_minus_h = dynamics.input_map.scale(&sym(Sym::U)).sub(&dynamics.bias)?;
+    let forces = schur_inv.mul(&j_minv.mul(&su_minus_h)?)?.scale(&int(-1));
+    let accel = dynamics
+        .mass_inv
+        .mul(&su_minus_h.add(&jacobian.transpose().mul(&forces)?)?)?;
+    let projection =
+        Matrix::identity(4).sub(&jacobian.transpose().mul(&schur_inv)?.mul(&j_minv)?)?;
+    Ok(Stick {
+        jacobian,
+        forces,
+        accel,
+        projection,
+    })
+}
+
 /// The output-following control (Section 3.2, Eqs. 30-31).
 #[derive(Clone, Debug)]
 pub struct Control {
@@ -250,12 +327,29 @@ pub struct Control {
 }
 
 /// Derives `A` and `B` so that `yddot = A u - B` (Eq. 30).
+///
+/// # Errors
+/// An arithmetic error of the matrix products.
 pub fn control(dynamics: &Dynamics, stance: &Stance) -> Result<Control> {
+    control_through(dynamics, &stance.projection)
+}
+
+/// `A_s` and `B_s` of the stick phase, `yddot = A_s u - B_s`: Eqs. 30-31 with the stick
+/// projection `Y_s` in place of `Y` (not in the paper).
+///
+/// # Errors
+/// An arithmetic error of the matrix products.
+pub fn stick_control(dynamics: &Dynamics, stick: &Stick) -> Result<Control> {
+    control_through(dynamics, &stick.projection)
+}
+
+/// `A = S^T M^-1 Y S`, `B = S^T M^-1 Y h` for a projection `Y` with `M qdd = Y (S u - h)`.
+fn control_through(dynamics: &Dynamics, projection: &Matrix) -> Result<Control> {
     let st_minv_y = dynamics
         .input_map
         .transpose()
         .mul(&dynamics.mass_inv)?
-        .mul(&stance.projection)?;
+        .mul(projection)?;
     Ok(Control {
         a: st_minv_y.mul(&dynamics.input_map)?.scalar()?,
         b: st_minv_y.mul(&dynamics.bias)?.scalar()?,

@@ -10,7 +10,15 @@
 //! - `lambda` also by Eq. 22 (with `M^-1` applied by LU), `Y` by Eq. 28 with
 //!   `M.try_inverse()`, `A` and `B` by Eqs. 30-31;
 //! - every impact map by solving Eq. 1 with its constraints as one linear system
-//!   `[[M, -J_I^T], [J_I, 0]] [qd+; lambda_I] = [M qd-; 0]`.
+//!   `[[M, -J_I^T], [J_I, 0]] [qd+; lambda_I] = [M qd-; 0]`;
+//! - the stick phase (the stance foot at rest; not in the paper) by the KKT system with the two
+//!   rows that hold the foot's position, `[[M, -J_p^T], [J_p, 0]] [qdd; F] = [S u - h; 0]`,
+//!   `J_p = d(x, z)/dq`, the Cartesian ground force `F` resolved along the floor's unit tangent
+//!   and normal afterwards (the derivation constrains the tangent and normal coordinates
+//!   directly);
+//! - the closed loops (Eq. 31 sliding, and its stick counterpart) by three KKT solves:
+//!   `A = S^T x_S`, `B = S^T x_h` from the right-hand sides `[S; 0]`, `[h; 0]`, then
+//!   `u = (v + B) / A` and the system solved again at that `u`.
 //!
 //! Next to each value the generic path returns an *error scale* `s` (documented per function):
 //! a conditioning-based magnitude such that a backward-stable evaluation of the same quantity,
@@ -22,7 +30,9 @@
 //! The integration tests:
 //!
 //! - `kernels_vs_nalgebra`: proptest over wide random parameters and states, every kernel of
-//!   `general_level` / `general_slope` against this generic path;
+//!   `general_level` / `general_slope` and of the Coulomb scenes `general_level_coulomb` /
+//!   `general_slope_coulomb` against this generic path, and the Coulomb sliding kernels
+//!   against the tanh ones where `tanh` saturates;
 //! - `kernels_vs_sympy`: every kernel of the same modules against the 30-digit SymPy
 //!   reference values in `tests/data/<kernel>.json`, with a per-kernel report of the worst
 //!   error in ulps (printed, and written to `target/kernel_ulps.txt`);
@@ -128,6 +138,51 @@ impl Phys {
             phi: self.phi,
             mu0,
             c,
+        })
+    }
+
+    /// The `general_level_coulomb` kernels prepared at these parameters, the Coulomb
+    /// coefficient `mu0` and the control settings `(T_set, K_P, K_D)`.
+    #[must_use]
+    pub fn level_coulomb_kernels(
+        &self,
+        mu0: f64,
+        (t_set, k_p, k_d): (f64, f64, f64),
+    ) -> walker::kernels::general_level_coulomb::Prepared {
+        use walker::kernels::general_level_coulomb as glc;
+        glc::prepare(&glc::Params {
+            m1: self.m1,
+            m2: self.m2,
+            l: self.l,
+            i1: self.i1,
+            i2: self.i2,
+            g: self.g,
+            alpha: self.alpha,
+            mu0,
+            t_set,
+            k_p,
+            k_d,
+        })
+    }
+
+    /// The `general_slope_coulomb` kernels prepared at these parameters and the Coulomb
+    /// coefficient `mu0`.
+    #[must_use]
+    pub fn slope_coulomb_kernels(
+        &self,
+        mu0: f64,
+    ) -> walker::kernels::general_slope_coulomb::Prepared {
+        use walker::kernels::general_slope_coulomb as gsc;
+        gsc::prepare(&gsc::Params {
+            m1: self.m1,
+            m2: self.m2,
+            l: self.l,
+            i1: self.i1,
+            i2: self.i2,
+            g: self.g,
+            alpha: self.alpha,
+            phi: self.phi,
+            mu0,
         })
     }
 
@@ -408,6 +463,167 @@ pub fn control(p: &Phys, th1: f64, th1d: f64, mu: f64) -> Result<[f64; 4], Strin
     let rs_abs = rs.abs();
     let n_s = s.norm();
     Ok([a, bb, n_s * sa.scale(&rs_abs), n_s * sb.scale(&rh_abs)])
+}
+
+/// The stick KKT matrix `[[M, -J_p^T], [J_p, 0]]`, `J_p = d(x, z)/dq = [[1, 0, 0, 0],
+/// [0, 1, 0, 0]]`: the foot's position held, whatever the floor (not in the paper).
+#[must_use]
+pub fn stick_kkt(p: &Phys, th1: f64) -> DMatrix<f64> {
+    let m = mass_matrix(p, th1);
+    let mut k = DMatrix::zeros(6, 6);
+    k.view_mut((0, 0), (4, 4)).copy_from(&m);
+    for c in 0..2 {
+        k[(c, 4 + c)] = -1.0;
+        k[(4 + c, c)] = 1.0;
+    }
+    k
+}
+
+/// Which contact the foot makes: sliding with friction coefficient `mu` (one constraint row,
+/// Eqs. 19, 21-24, 36-38) or stuck (two rows, see [`stick_kkt`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Contact {
+    /// Sliding, `mu` the friction coefficient with its direction (Eq. 24).
+    Slide(f64),
+    /// Stuck (the stick phase of Coulomb friction; not in the paper).
+    Stick,
+}
+
+impl Contact {
+    /// The KKT matrix of the contact.
+    #[must_use]
+    pub fn kkt(self, p: &Phys, th1: f64) -> DMatrix<f64> {
+        match self {
+            Contact::Slide(mu) => stance_kkt(p, th1, mu),
+            Contact::Stick => stick_kkt(p, th1),
+        }
+    }
+}
+
+/// The stick phase by the generic path.
+#[derive(Debug, Clone)]
+pub struct Stick {
+    /// Accelerations (the first two are zero up to rounding).
+    pub qdd: Vector4<f64>,
+    /// `[lambda_t, lambda_n]`: the ground force along the floor's unit tangent
+    /// `(cos phi, -sin phi)` and its unit normal `(sin phi, cos phi)`.
+    pub lambda: [f64; 2],
+    /// Error scale ([`Solved::scale`] of the KKT system; the rotation of the force into
+    /// tangent and normal is orthogonal and adds a few roundings only).
+    pub scale: f64,
+    /// `cond_2` of the KKT matrix.
+    pub cond: f64,
+}
+
+/// The ground force `F = (F_x, F_z)` on the foot resolved along the floor's unit tangent and
+/// normal: `[F . (cos phi, -sin phi), F . (sin phi, cos phi)]`.
+#[must_use]
+pub fn resolve_on_floor(phi: f64, fx: f64, fz: f64) -> [f64; 2] {
+    let (s, c) = phi.sin_cos();
+    [fx * c - fz * s, fx * s + fz * c]
+}
+
+/// Solves the stick phase at `th1`, `th1d` with torque `u` (`u = 0` for the passive wheel).
+///
+/// # Errors
+/// The KKT matrix is exactly singular.
+pub fn stick(p: &Phys, th1: f64, th1d: f64, u: f64) -> Result<Stick, String> {
+    let (h, habs) = bias(p, th1, th1d);
+    let su = s_vec() * u;
+    let mut b = DVector::zeros(6);
+    let mut b_abs = DVector::zeros(6);
+    for i in 0..4 {
+        b[i] = su[i] - h[i];
+        b_abs[i] = su[i].abs() + habs[i];
+    }
+    let sol = solve(&stick_kkt(p, th1), &b)?;
+    Ok(Stick {
+        qdd: Vector4::new(sol.x[0], sol.x[1], sol.x[2], sol.x[3]),
+        lambda: resolve_on_floor(p.phi, sol.x[4], sol.x[5]),
+        scale: sol.scale(&b_abs),
+        cond: sol.cond,
+    })
+}
+
+/// A closed loop (Eq. 31 and its stick counterpart) by the generic path.
+#[derive(Debug, Clone)]
+pub struct ClosedLoop {
+    /// `A`, `B` with `yddot = A u - B` (Eq. 30).
+    pub a: f64,
+    /// See `a`.
+    pub b: f64,
+    /// `u = (v + B) / A` (Eq. 31).
+    pub u: f64,
+    /// Accelerations at that `u`.
+    pub qdd: Vector4<f64>,
+    /// The multipliers at that `u`: for sliding the one reaction `lambda` (vertical, Eqs.
+    /// 22-23, as [`stance_kkt`] scales its row); for sticking `[lambda_t, lambda_n]` (the
+    /// Cartesian force resolved by [`resolve_on_floor`]).
+    pub lambda: Vec<f64>,
+    /// Error scale of `u`: `(|v| + s_B + |u| s_A) / |A|` with `s_A`, `s_B` the error scales of
+    /// `A`, `B` (`||S|| Solved::scale` of their systems): first-order propagation through
+    /// `u = (v + B) / A`, the `|v|` for the rounding of `v + B`.
+    pub scale_u: f64,
+    /// Error scale of `qdd` and the multipliers: [`Solved::scale`] of the system at `u`, plus
+    /// `||x_S|| scale_u`, `x_S` the solution for `[S; 0]` (how an error of `u` moves them).
+    pub scale: f64,
+    /// `cond_2` of the KKT matrix.
+    pub cond: f64,
+}
+
+/// Solves the closed loop with auxiliary input `v` for a contact: `A`, `B` by two KKT solves,
+/// `u = (v + B) / A`, then the KKT system at that `u`.
+///
+/// # Errors
+/// The KKT matrix is exactly singular.
+pub fn closed_loop(
+    p: &Phys,
+    th1: f64,
+    th1d: f64,
+    v: f64,
+    contact: Contact,
+) -> Result<ClosedLoop, String> {
+    let k = contact.kkt(p, th1);
+    let n = k.nrows();
+    let (h, habs) = bias(p, th1, th1d);
+    let s = s_vec();
+    let mut rs = DVector::zeros(n);
+    let mut rh = DVector::zeros(n);
+    let mut rh_abs = DVector::zeros(n);
+    for i in 0..4 {
+        rs[i] = s[i];
+        rh[i] = h[i];
+        rh_abs[i] = habs[i];
+    }
+    let xs = solve(&k, &rs)?;
+    let xh = solve(&k, &rh)?;
+    let ydd = |x: &DVector<f64>| x[2] - x[3];
+    let (a, b) = (ydd(&xs.x), ydd(&xh.x));
+    let n_s = s.norm();
+    let (sa, sb) = (n_s * xs.scale(&rs.abs()), n_s * xh.scale(&rh_abs));
+    let u = (v + b) / a;
+    let scale_u = (v.abs() + sb + u.abs() * sa) / a.abs();
+    let mut r = DVector::zeros(n);
+    let mut r_abs = DVector::zeros(n);
+    for i in 0..4 {
+        r[i] = s[i] * u - h[i];
+        r_abs[i] = (s[i] * u).abs() + habs[i];
+    }
+    let sol = solve(&k, &r)?;
+    let lambda = match contact {
+        Contact::Slide(_) => vec![sol.x[4]],
+        Contact::Stick => resolve_on_floor(p.phi, sol.x[4], sol.x[5]).to_vec(),
+    };
+    Ok(ClosedLoop {
+        a,
+        b,
+        u,
+        qdd: Vector4::new(sol.x[0], sol.x[1], sol.x[2], sol.x[3]),
+        lambda,
+        scale_u,
+        scale: sol.scale(&r_abs) + xs.x.norm() * scale_u,
+        cond: sol.cond,
+    })
 }
 
 /// An impact by the generic path.

@@ -1,5 +1,7 @@
-//! Every kernel of `general_level` / `general_slope` against the generic nalgebra path of
-//! `walker_tests`, over wide random parameters and states (proptest).
+//! Every kernel of `general_level` / `general_slope` and of the Coulomb scenes
+//! `general_level_coulomb` / `general_slope_coulomb` against the generic nalgebra path of
+//! `walker_tests`, over wide random parameters and states (proptest); and the Coulomb sliding
+//! kernels against the tanh ones where `tanh` saturates.
 //!
 //! Case count: `walker_tests::cases()` (256 by default; `PROPTEST_CASES=N` replaces 256 and
 //! `WALKER_LONG_TESTS=1` multiplies by `walker_tests::LONG_FACTOR`).
@@ -21,6 +23,17 @@
 //!   `||dx|| <= ||K^-1|| (||dK|| ||x|| + ||db||)`. Entrywise-to-2-norm conversion costs
 //!   `sqrt(n) <= 3`: `(21 * 2 + 20) * 3 ~ 190 < 256`. Near a singular Schur complement
 //!   (`J M^-1 Jhat^T -> 0`) `cond(K)` and the bound grow together; nothing is skipped.
+//!   The stick phase is a 6x6 KKT system (`3n = 18`), inside the same argument. The closed
+//!   loops compose a solve for `A`, `B`, the quotient `u = (v + B) / A` and a solve at that `u`:
+//!   their scale ([`walker_tests::ClosedLoop`]) adds the first-order propagation of the errors
+//!   of `A` and `B` through `u` (`(|v| + s_B + |u| s_A) / |A|`) and of `u` into the solution
+//!   (`||x_S||` times that), each of those terms itself a `C_SOLVE`-type bound, so the same
+//!   `C_SOLVE` covers the sum. Where `A -> 0` (the sliding loop at large `|mu|`) the scale
+//!   grows as `1 / |A|^2`, again with the conditioning.
+//!
+//! Coulomb friction: the kernels take the sliding direction `sigma = ±1` and compute
+//! `mu = -mu0 sigma`; a random `mu` is realised exactly with `mu0 = |mu|`, `sigma = -sign(mu)`
+//! (one product with `±1`), so the generic path sees exactly the kernel's `mu`.
 #![allow(clippy::unwrap_used, reason = "test code")]
 #![allow(
     clippy::needless_range_loop,
@@ -30,8 +43,11 @@
 use nalgebra::Vector4;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
-use walker::kernels::{general_level as gl, general_slope as gs};
-use walker_tests::{EPS, Phys, cases, mu_law, xd_for_mu};
+use walker::kernels::{
+    general_level as gl, general_level_coulomb as glc, general_slope as gs,
+    general_slope_coulomb as gsc,
+};
+use walker_tests::{Contact, EPS, Phys, cases, mu_law, xd_for_mu};
 
 const C_DIRECT: f64 = 32.0;
 const C_SOLVE: f64 = 256.0;
@@ -166,6 +182,85 @@ fn check_impact(
     Ok(())
 }
 
+/// `(mu0, sigma)` of the Coulomb law that gives exactly the friction coefficient `mu`:
+/// `mu = -mu0 sigma` with `mu0 = |mu|` and `sigma = -sign(mu)` (`+1` for `mu = 0`).
+fn coulomb_for_mu(mu: f64) -> (f64, f64) {
+    (mu.abs(), if mu > 0.0 { -1.0 } else { 1.0 })
+}
+
+/// The stick kernel's outputs `[qdd0..3, lambda_t, lambda_n]` against the generic stick solve.
+fn check_stick(name: &str, out: &[f64; 6], st: &walker_tests::Stick) -> Result<(), TestCaseError> {
+    let tag = format!("(cond {:e})", st.cond);
+    for i in 0..4 {
+        close(
+            &format!("{name} qdd{i} {tag}"),
+            out[i],
+            st.qdd[i],
+            C_SOLVE,
+            st.scale,
+        )?;
+    }
+    // The foot does not move: exactly, in the generated code.
+    prop_assert!(
+        out[0] == 0.0 && out[1] == 0.0,
+        "{name}: xdd, zdd = {}, {}",
+        out[0],
+        out[1]
+    );
+    close(
+        &format!("{name} lambda_t {tag}"),
+        out[4],
+        st.lambda[0],
+        C_SOLVE,
+        st.scale,
+    )?;
+    close(
+        &format!("{name} lambda_n {tag}"),
+        out[5],
+        st.lambda[1],
+        C_SOLVE,
+        st.scale,
+    )?;
+    Ok(())
+}
+
+/// A closed-loop kernel's outputs `[qdd0..3, u]` (`closed_loop_level`) or `[qdd0..3, u,
+/// lambda_t, lambda_n]` (`closed_loop_stick_level`) against the generic closed loop.
+fn check_closed_loop(
+    name: &str,
+    out: &[f64],
+    cl: &walker_tests::ClosedLoop,
+) -> Result<(), TestCaseError> {
+    let tag = format!("(cond {:e}, A {:e})", cl.cond, cl.a);
+    for i in 0..4 {
+        close(
+            &format!("{name} qdd{i} {tag}"),
+            out[i],
+            cl.qdd[i],
+            C_SOLVE,
+            cl.scale,
+        )?;
+    }
+    close(
+        &format!("{name} u {tag}"),
+        out[4],
+        cl.u,
+        C_SOLVE,
+        cl.scale_u,
+    )?;
+    for (k, got) in out.iter().enumerate().skip(5) {
+        let lam = cl.lambda.get(k - 5).copied().unwrap_or(f64::NAN);
+        close(
+            &format!("{name} lambda[{}] {tag}", k - 5),
+            *got,
+            lam,
+            C_SOLVE,
+            cl.scale,
+        )?;
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(cases()))]
 
@@ -239,5 +334,139 @@ proptest! {
 
         check_impact("impact_slope", &p, th1, &s, &gs::impact_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
         check_impact("impact2_slope", &p, th1, &s, &gs::impact2_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+    }
+
+    #[test]
+    fn general_level_coulomb_matches_generic(p in phys(false), s in state()) {
+        let (mu0, sigma) = coulomb_for_mu(s.mu);
+        let k = p.level_coulomb_kernels(mu0, (0.5, 1.0, 1.0));
+        let th1 = s.th1_frac * (p.alpha / 2.0 + 0.3);
+        let mu = -mu0 * sigma;
+        prop_assert!(mu == s.mu || (mu == 0.0 && s.mu == 0.0));
+        // v of the closed loops: the state's u (same range).
+        let v = s.u;
+
+        let ff = glc::fore_foot(&k, s.x, s.z, th1, s.xd, s.zd, s.th1d);
+        let en = glc::energy(&k, s.z, th1, s.xd, s.zd, s.th1d, s.th2d);
+        let (f, fabs) = walker_tests::fore_foot(&p, s.x, s.z, th1, s.xd, s.zd, s.th1d);
+        for i in 0..4 {
+            close(&format!("fore_foot[{i}]"), ff[i], f[i], C_DIRECT, fabs[i])?;
+        }
+        let (e, eabs) = walker_tests::energy(&p, s.z, th1, Vector4::new(s.xd, s.zd, s.th1d, s.th2d));
+        for i in 0..2 {
+            close(&format!("energy[{i}]"), en[i], e[i], C_DIRECT, eabs[i])?;
+        }
+
+        // Sliding in direction sigma.
+        let st = walker_tests::stance(&p, th1, s.th1d, s.u, mu).map_err(TestCaseError::fail)?;
+        let tag = format!("(cond {:e})", st.cond);
+        close(&format!("lambda_level {tag}"), glc::lambda_level(&k, th1, s.th1d, s.u, sigma), st.lambda_eq22, C_SOLVE, st.scale)?;
+        let qdd = glc::accel_level(&k, th1, s.th1d, s.u, sigma);
+        for i in 0..4 {
+            close(&format!("accel_level qdd{i} {tag}"), qdd[i], st.qdd[i], C_SOLVE, st.scale)?;
+        }
+        let [a, b, sa, sb] = walker_tests::control(&p, th1, s.th1d, mu).map_err(TestCaseError::fail)?;
+        let ab = glc::control_level(&k, th1, s.th1d, sigma);
+        close(&format!("A {tag}"), ab[0], a, C_SOLVE, sa)?;
+        close(&format!("B {tag}"), ab[1], b, C_SOLVE, sb)?;
+        let cl = walker_tests::closed_loop(&p, th1, s.th1d, v, Contact::Slide(mu)).map_err(TestCaseError::fail)?;
+        check_closed_loop("closed_loop_level", &glc::closed_loop_level(&k, th1, s.th1d, sigma, v), &cl)?;
+
+        // Stuck.
+        let st = walker_tests::stick(&p, th1, s.th1d, s.u).map_err(TestCaseError::fail)?;
+        check_stick("stick_level", &glc::stick_level(&k, th1, s.th1d, s.u), &st)?;
+        let cl = walker_tests::closed_loop(&p, th1, s.th1d, v, Contact::Stick).map_err(TestCaseError::fail)?;
+        let out = glc::closed_loop_stick_level(&k, th1, s.th1d, v);
+        check_closed_loop("closed_loop_stick_level", &out, &cl)?;
+        prop_assert!(out[0] == 0.0 && out[1] == 0.0);
+
+        check_impact("impact3_level", &p, th1, &s, &glc::impact3_level(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+        check_impact("impact2_level", &p, th1, &s, &glc::impact2_level(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+    }
+
+    #[test]
+    fn general_slope_coulomb_matches_generic(p in phys(true), s in state()) {
+        let (mu0, sigma) = coulomb_for_mu(s.mu);
+        let k = p.slope_coulomb_kernels(mu0);
+        let th1 = s.th1_frac * (p.alpha / 2.0 + 0.3);
+        let mu = -mu0 * sigma;
+
+        let ff = gsc::fore_foot(&k, s.x, s.z, th1, s.xd, s.zd, s.th1d);
+        let en = gsc::energy(&k, s.z, th1, s.xd, s.zd, s.th1d, s.th2d);
+        let (f, fabs) = walker_tests::fore_foot(&p, s.x, s.z, th1, s.xd, s.zd, s.th1d);
+        for i in 0..4 {
+            close(&format!("fore_foot[{i}]"), ff[i], f[i], C_DIRECT, fabs[i])?;
+        }
+        let (e, eabs) = walker_tests::energy(&p, s.z, th1, Vector4::new(s.xd, s.zd, s.th1d, s.th2d));
+        for i in 0..2 {
+            close(&format!("energy[{i}]"), en[i], e[i], C_DIRECT, eabs[i])?;
+        }
+
+        // The passive wheel: u = 0.
+        let st = walker_tests::stance(&p, th1, s.th1d, 0.0, mu).map_err(TestCaseError::fail)?;
+        let tag = format!("(cond {:e})", st.cond);
+        close(&format!("lambda_slope {tag}"), gsc::lambda_slope(&k, th1, s.th1d, sigma), st.lambda_eq22, C_SOLVE, st.scale)?;
+        let qdd = gsc::accel_slope(&k, th1, s.th1d, sigma);
+        for i in 0..4 {
+            close(&format!("accel_slope qdd{i} {tag}"), qdd[i], st.qdd[i], C_SOLVE, st.scale)?;
+        }
+        let st = walker_tests::stick(&p, th1, s.th1d, 0.0).map_err(TestCaseError::fail)?;
+        check_stick("stick_slope", &gsc::stick_slope(&k, th1, s.th1d), &st)?;
+
+        check_impact("impact_slope", &p, th1, &s, &gsc::impact_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+        check_impact("impact2_slope", &p, th1, &s, &gsc::impact2_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+    }
+
+    /// Where `tanh` saturates, the tanh law is the Coulomb law: `tanh(c xd)` with `c xd = ±40`
+    /// rounds to exactly `±1` (`1 - tanh 40 = 3.6e-35`, below half an ulp of 1), so the tanh
+    /// scene at `xd = 40 sigma / c` (`40 sigma cos phi / c` on the slope, Eq. 37) and the
+    /// Coulomb scene at `sigma` have the same `mu = -mu0 sigma` in `f64` (asserted) and
+    /// evaluate the same rational function there: the values agree to the rounding of the two
+    /// evaluations, each within `C_SOLVE eps s` of the exact value, so within
+    /// `2 C_SOLVE eps s`.
+    #[test]
+    fn coulomb_sliding_kernels_are_the_saturated_tanh_kernels(
+        p in phys(false), slope_phi in 0.0f64..0.5, s in state(), forward in proptest::bool::ANY,
+    ) {
+        prop_assert_eq!(40f64.tanh(), 1.0);
+        let sigma: f64 = if forward { 1.0 } else { -1.0 };
+        let mu0 = s.mu.abs();
+        let mu = -mu0 * sigma;
+        let th1 = s.th1_frac * (p.alpha / 2.0 + 0.3);
+        let v = s.u;
+        // Level: c = 1, xd = 40 sigma.
+        let kt = p.level_kernels((mu0, C_LAW), (0.5, 1.0, 1.0));
+        let kc = p.level_coulomb_kernels(mu0, (0.5, 1.0, 1.0));
+        let xd = 40.0 * sigma / C_LAW;
+        prop_assert_eq!(mu_law(mu0, C_LAW, 0.0, xd), mu);
+        let st = walker_tests::stance(&p, th1, s.th1d, s.u, mu).map_err(TestCaseError::fail)?;
+        let c2 = 2.0 * C_SOLVE;
+        close("lambda_level", gl::lambda_level(&kt, th1, s.th1d, s.u, xd), glc::lambda_level(&kc, th1, s.th1d, s.u, sigma), c2, st.scale)?;
+        let (qt, qc) = (gl::accel_level(&kt, th1, s.th1d, s.u, xd), glc::accel_level(&kc, th1, s.th1d, s.u, sigma));
+        for i in 0..4 {
+            close(&format!("accel_level qdd{i}"), qt[i], qc[i], c2, st.scale)?;
+        }
+        let [_, _, sa, sb] = walker_tests::control(&p, th1, s.th1d, mu).map_err(TestCaseError::fail)?;
+        let (at, ac) = (gl::control_level(&kt, th1, s.th1d, xd), glc::control_level(&kc, th1, s.th1d, sigma));
+        close("A", at[0], ac[0], c2, sa)?;
+        close("B", at[1], ac[1], c2, sb)?;
+        let cl = walker_tests::closed_loop(&p, th1, s.th1d, v, Contact::Slide(mu)).map_err(TestCaseError::fail)?;
+        let (ct, cc) = (gl::closed_loop_level(&kt, th1, s.th1d, xd, v), glc::closed_loop_level(&kc, th1, s.th1d, sigma, v));
+        for i in 0..4 {
+            close(&format!("closed_loop_level qdd{i}"), ct[i], cc[i], c2, cl.scale)?;
+        }
+        close("closed_loop_level u", ct[4], cc[4], c2, cl.scale_u)?;
+        // Slope: xd = 40 sigma cos(phi) / c, so that c xd / cos phi = 40 sigma up to rounding.
+        let ps = Phys { phi: slope_phi, ..p };
+        let kt = ps.slope_kernels((mu0, C_LAW));
+        let kc = ps.slope_coulomb_kernels(mu0);
+        let xd = 40.0 * sigma * slope_phi.cos() / C_LAW;
+        prop_assert_eq!(mu_law(mu0, C_LAW, slope_phi, xd), mu);
+        let st = walker_tests::stance(&ps, th1, s.th1d, 0.0, mu).map_err(TestCaseError::fail)?;
+        close("lambda_slope", gs::lambda_slope(&kt, th1, s.th1d, xd), gsc::lambda_slope(&kc, th1, s.th1d, sigma), c2, st.scale)?;
+        let (qt, qc) = (gs::accel_slope(&kt, th1, s.th1d, xd), gsc::accel_slope(&kc, th1, s.th1d, sigma));
+        for i in 0..4 {
+            close(&format!("accel_slope qdd{i}"), qt[i], qc[i], c2, st.scale)?;
+        }
     }
 }

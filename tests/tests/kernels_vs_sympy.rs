@@ -1,8 +1,10 @@
-//! Every kernel of `general_level` / `general_slope` (all parameters at run time) against the
+//! Every kernel of `general_level` / `general_slope` and of the Coulomb scenes
+//! `general_level_coulomb` / `general_slope_coulomb` (all parameters at run time) against the
 //! 30-digit SymPy reference values in `tests/data/<kernel>.json` (format: docs/kernels.md).
 //!
 //! Prints (`--nocapture`) and writes to `target/kernel_ulps.txt` a table of the worst error
-//! per kernel: in ulps of the reference, relative, and as a fraction of the asserted bound.
+//! per kernel and scene: in ulps of the reference, relative, and as a fraction of the asserted
+//! bound.
 //!
 //! # Tolerance argument
 //!
@@ -29,6 +31,15 @@
 //! one product: below `4 eps (|mu| + mu0)`). The resulting output error
 //! `|d out / d mu| * dmu` is added to the bound, `d out / d mu` by a central difference of the
 //! generic path (step `1e-6`, accurate to far better than the factor 2 applied).
+//!
+//! The Coulomb scenes take the sliding direction `sigma` and compute `mu = -mu0 sigma`: a
+//! reference `mu` is realised exactly with `mu0 = |mu|`, `sigma = -sign(mu)` (a product with
+//! `±1`), so `dmu = 0` there. The stick kernels have no `mu`.
+//!
+//! Closed loops (`closed_loop_level`, `closed_loop_stick_level`): the scale is that of
+//! [`walker_tests::ClosedLoop`], the solve at `u` plus the first-order propagation of the
+//! errors of `A`, `B` through `u = (v + B) / A`; the same `C_SOLVE` (see
+//! `kernels_vs_nalgebra.rs` for the argument).
 #![allow(clippy::unwrap_used, clippy::panic, reason = "test code")]
 #![allow(
     clippy::neg_cmp_op_on_partial_ord,
@@ -40,21 +51,26 @@ use std::fmt::Write as _;
 
 use nalgebra::Vector4;
 use serde_json::Value;
-use walker::kernels::{general_level as gl, general_slope as gs};
-use walker_tests::{EPS, Phys, mu_law, ulp, xd_for_mu};
+use walker::kernels::{
+    general_level as gl, general_level_coulomb as glc, general_slope as gs,
+    general_slope_coulomb as gsc,
+};
+use walker_tests::{Contact, EPS, Phys, mu_law, ulp, xd_for_mu};
 
 const C_DIRECT: f64 = 16.0;
 const C_SOLVE: f64 = 64.0;
 const MU0: f64 = 2.5;
 const C_LAW: f64 = 1.0;
 
-const KERNELS: [&str; 14] = [
+/// The kernels of the tanh scenes `general_level` / `general_slope` checked here.
+const KERNELS: [&str; 15] = [
     "mass_matrix",
     "bias",
     "lambda_level",
     "projection_level",
     "control_level",
     "accel_level",
+    "closed_loop_level",
     "lambda_slope",
     "accel_slope",
     "impact3_level",
@@ -65,8 +81,60 @@ const KERNELS: [&str; 14] = [
     "energy",
 ];
 
+/// The kernels of `general_level_coulomb`.
+const COULOMB_LEVEL: [&str; 10] = [
+    "lambda_level",
+    "control_level",
+    "accel_level",
+    "closed_loop_level",
+    "stick_level",
+    "closed_loop_stick_level",
+    "impact3_level",
+    "impact2_level",
+    "fore_foot",
+    "energy",
+];
+
+/// The kernels of `general_slope_coulomb`.
+const COULOMB_SLOPE: [&str; 7] = [
+    "lambda_slope",
+    "accel_slope",
+    "stick_slope",
+    "impact_slope",
+    "impact2_slope",
+    "fore_foot",
+    "energy",
+];
+
+/// Which generated module a kernel is taken from.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Module {
+    /// `general_level` or `general_slope` (by the kernel's name), `mu` through the tanh law.
+    Tanh,
+    /// `general_level_coulomb`, `mu = -mu0 sigma`.
+    CoulombLevel,
+    /// `general_slope_coulomb`, `mu = -mu0 sigma`.
+    CoulombSlope,
+}
+
+impl Module {
+    fn name(self, kernel: &str) -> &'static str {
+        match self {
+            Module::Tanh if is_slope(kernel) => "general_slope",
+            Module::Tanh => "general_level",
+            Module::CoulombLevel => "general_level_coulomb",
+            Module::CoulombSlope => "general_slope_coulomb",
+        }
+    }
+}
+
 fn is_slope(kernel: &str) -> bool {
     kernel.ends_with("_slope")
+}
+
+/// `(mu0, sigma)` of the Coulomb law that gives exactly `mu = -mu0 sigma`.
+fn coulomb_for_mu(mu: f64) -> (f64, f64) {
+    (mu.abs(), if mu > 0.0 { -1.0 } else { 1.0 })
 }
 
 struct Point {
@@ -102,8 +170,92 @@ impl Point {
     }
 }
 
+/// The generated kernel of a Coulomb scene at the point (`mu` realised exactly through
+/// `mu0 = |mu|` and `sigma`).
+fn generated_coulomb(kernel: &str, module: Module, pt: &Point) -> Vec<f64> {
+    let p = pt.phys(module == Module::CoulombSlope);
+    let (mu0, sigma) = coulomb_for_mu(pt.or("mu", 0.0));
+    let th1 = pt.get("th1");
+    let th1d = || pt.get("th1d");
+    let imp = || (pt.get("xd"), pt.get("zd"), pt.get("th1d"), pt.get("th2d"));
+    let ff = || {
+        (
+            pt.get("x"),
+            pt.get("z"),
+            pt.get("xd"),
+            pt.get("zd"),
+            pt.get("th1d"),
+        )
+    };
+    let en = || {
+        (
+            pt.get("z"),
+            pt.get("xd"),
+            pt.get("zd"),
+            pt.get("th1d"),
+            pt.get("th2d"),
+        )
+    };
+    if module == Module::CoulombSlope {
+        let k = p.slope_coulomb_kernels(mu0);
+        return match kernel {
+            "lambda_slope" => vec![gsc::lambda_slope(&k, th1, th1d(), sigma)],
+            "accel_slope" => gsc::accel_slope(&k, th1, th1d(), sigma).to_vec(),
+            "stick_slope" => gsc::stick_slope(&k, th1, th1d()).to_vec(),
+            "impact_slope" => {
+                let (a, b, c, d) = imp();
+                gsc::impact_slope(&k, th1, a, b, c, d).to_vec()
+            }
+            "impact2_slope" => {
+                let (a, b, c, d) = imp();
+                gsc::impact2_slope(&k, th1, a, b, c, d).to_vec()
+            }
+            "fore_foot" => {
+                let (x, z, xd, zd, w) = ff();
+                gsc::fore_foot(&k, x, z, th1, xd, zd, w).to_vec()
+            }
+            "energy" => {
+                let (z, xd, zd, w1, w2) = en();
+                gsc::energy(&k, z, th1, xd, zd, w1, w2).to_vec()
+            }
+            _ => panic!("unknown kernel {kernel}"),
+        };
+    }
+    let k = p.level_coulomb_kernels(mu0, (0.5, 1.0, 1.0));
+    match kernel {
+        "lambda_level" => vec![glc::lambda_level(&k, th1, th1d(), pt.get("u"), sigma)],
+        "control_level" => glc::control_level(&k, th1, th1d(), sigma).to_vec(),
+        "accel_level" => glc::accel_level(&k, th1, th1d(), pt.get("u"), sigma).to_vec(),
+        "closed_loop_level" => glc::closed_loop_level(&k, th1, th1d(), sigma, pt.get("v")).to_vec(),
+        "stick_level" => glc::stick_level(&k, th1, th1d(), pt.get("u")).to_vec(),
+        "closed_loop_stick_level" => {
+            glc::closed_loop_stick_level(&k, th1, th1d(), pt.get("v")).to_vec()
+        }
+        "impact3_level" => {
+            let (a, b, c, d) = imp();
+            glc::impact3_level(&k, th1, a, b, c, d).to_vec()
+        }
+        "impact2_level" => {
+            let (a, b, c, d) = imp();
+            glc::impact2_level(&k, th1, a, b, c, d).to_vec()
+        }
+        "fore_foot" => {
+            let (x, z, xd, zd, w) = ff();
+            glc::fore_foot(&k, x, z, th1, xd, zd, w).to_vec()
+        }
+        "energy" => {
+            let (z, xd, zd, w1, w2) = en();
+            glc::energy(&k, z, th1, xd, zd, w1, w2).to_vec()
+        }
+        _ => panic!("unknown kernel {kernel}"),
+    }
+}
+
 /// The generated kernel at the point (mu realised through `xd`).
-fn generated(kernel: &str, pt: &Point) -> Vec<f64> {
+fn generated(kernel: &str, module: Module, pt: &Point) -> Vec<f64> {
+    if module != Module::Tanh {
+        return generated_coulomb(kernel, module, pt);
+    }
     let slope = is_slope(kernel);
     let p = pt.phys(slope);
     let kl = gl::prepare(&gl::Params {
@@ -148,6 +300,9 @@ fn generated(kernel: &str, pt: &Point) -> Vec<f64> {
         "projection_level" => gl::projection_level(&kl, th1, xmu()).concat(),
         "control_level" => gl::control_level(&kl, th1, pt.get("th1d"), xmu()).to_vec(),
         "accel_level" => gl::accel_level(&kl, th1, pt.get("th1d"), pt.get("u"), xmu()).to_vec(),
+        "closed_loop_level" => {
+            gl::closed_loop_level(&kl, th1, pt.get("th1d"), xmu(), pt.get("v")).to_vec()
+        }
         "lambda_slope" => vec![gs::lambda_slope(&ks, th1, pt.get("th1d"), xmu())],
         "accel_slope" => gs::accel_slope(&ks, th1, pt.get("th1d"), xmu()).to_vec(),
         "impact3_level" => {
@@ -191,8 +346,8 @@ fn generated(kernel: &str, pt: &Point) -> Vec<f64> {
 }
 
 /// The generic values (at friction coefficient `mu`) and their bounds' `C * scale`.
-fn generic(kernel: &str, pt: &Point, mu: f64) -> (Vec<f64>, Vec<f64>) {
-    let slope = is_slope(kernel);
+fn generic(kernel: &str, module: Module, pt: &Point, mu: f64) -> (Vec<f64>, Vec<f64>) {
+    let slope = is_slope(kernel) || module == Module::CoulombSlope;
     let p = pt.phys(slope);
     let th1 = pt.get("th1");
     let n_out = |n: usize, c: f64, s: f64| vec![c * s; n];
@@ -221,6 +376,31 @@ fn generic(kernel: &str, pt: &Point, mu: f64) -> (Vec<f64>, Vec<f64>) {
                     n_out(4, C_SOLVE, st.scale),
                 )
             }
+        }
+        "closed_loop_level" | "closed_loop_stick_level" => {
+            let contact = if kernel == "closed_loop_level" {
+                Contact::Slide(mu)
+            } else {
+                Contact::Stick
+            };
+            let cl = walker_tests::closed_loop(&p, th1, pt.get("th1d"), pt.get("v"), contact)
+                .expect("closed-loop solves");
+            let mut v: Vec<f64> = cl.qdd.iter().copied().collect();
+            let mut s = vec![C_SOLVE * cl.scale; 4];
+            v.push(cl.u);
+            s.push(C_SOLVE * cl.scale_u);
+            if contact == Contact::Stick {
+                v.extend(&cl.lambda);
+                s.extend([C_SOLVE * cl.scale; 2]);
+            }
+            (v, s)
+        }
+        "stick_level" | "stick_slope" => {
+            let u = pt.or("u", 0.0);
+            let st = walker_tests::stick(&p, th1, pt.get("th1d"), u).expect("stick solve");
+            let mut v: Vec<f64> = st.qdd.iter().copied().collect();
+            v.extend(st.lambda);
+            (v, n_out(6, C_SOLVE, st.scale))
         }
         "projection_level" => {
             let (y, s) = walker_tests::projection(&p, th1, mu).expect("projection");
@@ -278,11 +458,16 @@ fn kernels_match_sympy_reference() {
     let mut table = String::new();
     let _ = writeln!(
         table,
-        "{:<18} {:>6} {:>12} {:>12} {:>12} {:>12}  worst-ratio point",
-        "kernel", "points", "worst ulps", "worst rel", "err/bound", "max s/|ref|"
+        "{:<24} {:<22} {:>6} {:>12} {:>12} {:>12} {:>12}  worst-ratio point",
+        "kernel", "module", "points", "worst ulps", "worst rel", "err/bound", "max s/|ref|"
     );
     let mut failures = Vec::new();
-    for kernel in KERNELS {
+    let cases = KERNELS
+        .iter()
+        .map(|k| (*k, Module::Tanh))
+        .chain(COULOMB_LEVEL.iter().map(|k| (*k, Module::CoulombLevel)))
+        .chain(COULOMB_SLOPE.iter().map(|k| (*k, Module::CoulombSlope)));
+    for (kernel, module) in cases {
         let text = std::fs::read_to_string(data.join(format!("{kernel}.json")))
             .expect("reference file readable");
         let json: Value = serde_json::from_str(&text).expect("reference file is JSON");
@@ -316,22 +501,25 @@ fn kernels_match_sympy_reference() {
             let pt = Point {
                 v: inputs.iter().cloned().zip(ins.iter().copied()).collect(),
             };
-            let gen_out = generated(kernel, &pt);
+            let gen_out = generated(kernel, module, &pt);
             assert_eq!(gen_out.len(), refs.len(), "{kernel}: output count");
             let has_mu = pt.v.contains_key("mu");
             let phi = pt.phys(is_slope(kernel)).phi;
-            let (mu, dmu) = if has_mu {
-                let mu = pt.get("mu");
-                let eff = mu_law(MU0, C_LAW, phi, xd_for_mu(mu, MU0, C_LAW, phi));
-                (mu, (eff - mu).abs() + 4.0 * EPS * (mu.abs() + MU0))
-            } else {
-                (0.0, 0.0)
+            let (mu, dmu) = match (has_mu, module) {
+                (false, _) => (0.0, 0.0),
+                (true, Module::Tanh) => {
+                    let mu = pt.get("mu");
+                    let eff = mu_law(MU0, C_LAW, phi, xd_for_mu(mu, MU0, C_LAW, phi));
+                    (mu, (eff - mu).abs() + 4.0 * EPS * (mu.abs() + MU0))
+                }
+                // -|mu| * (-sign(mu)) is mu exactly.
+                (true, _) => (pt.get("mu"), 0.0),
             };
-            let (_, bound_c) = generic(kernel, &pt, mu);
-            let dfdmu: Vec<f64> = if has_mu {
+            let (_, bound_c) = generic(kernel, module, &pt, mu);
+            let dfdmu: Vec<f64> = if dmu > 0.0 {
                 let hstep = 1e-6;
-                let (vp, _) = generic(kernel, &pt, mu + hstep);
-                let (vm, _) = generic(kernel, &pt, mu - hstep);
+                let (vp, _) = generic(kernel, module, &pt, mu + hstep);
+                let (vm, _) = generic(kernel, module, &pt, mu - hstep);
                 vp.iter()
                     .zip(&vm)
                     .map(|(a, b)| (a - b) / (2.0 * hstep))
@@ -355,16 +543,25 @@ fn kernels_match_sympy_reference() {
                 }
                 if !(err <= bound) {
                     failures.push(format!(
-                        "{kernel} [{tag}] out[{i}]: generated {:e} reference {:e} err {err:e} > bound {bound:e}",
-                        gen_out[i], refs[i]
+                        "{kernel} ({}) [{tag}] out[{i}]: generated {:e} reference {:e} err {err:e} > bound {bound:e}",
+                        module.name(kernel),
+                        gen_out[i],
+                        refs[i]
                     ));
                 }
             }
         }
         let _ = writeln!(
             table,
-            "{:<18} {:>6} {:>12.1} {:>12.3e} {:>12.3e} {:>12.3e}  {}",
-            kernel, w.points, w.ulps, w.rel, w.ratio, w.rel_scale, w.ratio_where
+            "{:<24} {:<22} {:>6} {:>12.1} {:>12.3e} {:>12.3e} {:>12.3e}  {}",
+            kernel,
+            module.name(kernel),
+            w.points,
+            w.ulps,
+            w.rel,
+            w.ratio,
+            w.rel_scale,
+            w.ratio_where
         );
     }
     println!("{table}");

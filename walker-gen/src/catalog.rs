@@ -3,7 +3,7 @@
 //! This table only says *which* kernels exist and where they apply; what they compute is the
 //! derivation's business (see `docs/kernels.md` for inputs, outputs and sign conventions).
 
-use crate::scene::{Floor, Torso};
+use crate::scene::{Floor, Friction, Torso};
 
 /// A kernel of the contract in `docs/kernels.md`.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
@@ -42,6 +42,16 @@ pub enum KernelName {
     Impact2LevelJacobian,
     /// `impact_slope_jacobian`: partials of `qdot+` (Eqs. 39-42) by `(th1, xd, zd, th1d, th2d)`.
     ImpactSlopeJacobian,
+    /// `stick_level`: `qddot` and the ground force `[lambda_t, lambda_n]` with the stance foot
+    /// stuck to the level floor (Coulomb friction's stick phase; not in the paper).
+    StickLevel,
+    /// `closed_loop_stick_level`: `qddot`, `u` and `[lambda_t, lambda_n]` with the foot stuck,
+    /// under the output-following control recomputed for it (Eqs. 30-31 with the foot held;
+    /// not in the paper).
+    ClosedLoopStickLevel,
+    /// `stick_slope`: `qddot` and `[lambda_t, lambda_n]` of the passive wheel with the foot
+    /// stuck to the slope (not in the paper).
+    StickSlope,
     /// `fore_foot`: position and velocity of the fore foot (Eqs. 3, 39).
     ForeFoot,
     /// `energy`: kinetic and potential energy.
@@ -49,7 +59,7 @@ pub enum KernelName {
 }
 
 /// `(kernel, name, paper equations)`, in catalogue (and default file) order.
-const TABLE: [(KernelName, &str, &str); 19] = [
+const TABLE: [(KernelName, &str, &str); 22] = [
     (KernelName::MassMatrix, "mass_matrix", "Eq. 2"),
     (KernelName::Bias, "bias", "Eq. 20"),
     (KernelName::LambdaLevel, "lambda_level", "Eqs. 22-23"),
@@ -99,13 +109,28 @@ const TABLE: [(KernelName, &str, &str); 19] = [
         "impact_slope_jacobian",
         "Eqs. 39-42",
     ),
+    (
+        KernelName::StickLevel,
+        "stick_level",
+        "stick phase, not in the paper; Eq. 19 with both foot coordinates held",
+    ),
+    (
+        KernelName::ClosedLoopStickLevel,
+        "closed_loop_stick_level",
+        "stick phase, not in the paper; Eqs. 30-31 with both foot coordinates held",
+    ),
+    (
+        KernelName::StickSlope,
+        "stick_slope",
+        "stick phase, not in the paper; Eq. 19 with both foot coordinates held",
+    ),
     (KernelName::ForeFoot, "fore_foot", "Eqs. 3, 39"),
     (KernelName::Energy, "energy", "-"),
 ];
 
 impl KernelName {
     /// Every kernel, in catalogue order.
-    pub const ALL: [KernelName; 19] = [
+    pub const ALL: [KernelName; 22] = [
         KernelName::MassMatrix,
         KernelName::Bias,
         KernelName::LambdaLevel,
@@ -123,6 +148,9 @@ impl KernelName {
         KernelName::AccelSlopeJacobian,
         KernelName::Impact2LevelJacobian,
         KernelName::ImpactSlopeJacobian,
+        KernelName::StickLevel,
+        KernelName::ClosedLoopStickLevel,
+        KernelName::StickSlope,
         KernelName::ForeFoot,
         KernelName::Energy,
     ];
@@ -169,13 +197,29 @@ impl KernelName {
             | KernelName::Impact2Level
             | KernelName::ClosedLoopLevel
             | KernelName::ClosedLoopLevelJacobian
-            | KernelName::Impact2LevelJacobian => Some(Floor::Level),
+            | KernelName::Impact2LevelJacobian
+            | KernelName::StickLevel
+            | KernelName::ClosedLoopStickLevel => Some(Floor::Level),
             KernelName::LambdaSlope
             | KernelName::AccelSlope
             | KernelName::ImpactSlope
             | KernelName::Impact2Slope
             | KernelName::AccelSlopeJacobian
-            | KernelName::ImpactSlopeJacobian => Some(Floor::Slope),
+            | KernelName::ImpactSlopeJacobian
+            | KernelName::StickSlope => Some(Floor::Slope),
+        }
+    }
+
+    /// The friction law the kernel exists for; `None` if it applies to every law. The stick
+    /// kernels exist only with exact Coulomb friction, the only law under which the foot can
+    /// stick (the tanh law of Eq. 26 always slides, however slowly).
+    #[must_use]
+    pub fn friction(self) -> Option<Friction> {
+        match self {
+            KernelName::StickLevel | KernelName::ClosedLoopStickLevel | KernelName::StickSlope => {
+                Some(Friction::Coulomb)
+            }
+            _ => None,
         }
     }
 
@@ -187,22 +231,24 @@ impl KernelName {
             KernelName::ControlLevel
                 | KernelName::ClosedLoopLevel
                 | KernelName::ClosedLoopLevelJacobian
+                | KernelName::ClosedLoopStickLevel
         )
     }
 
-    /// Whether a walker with this floor and torso has the kernel.
+    /// Whether a walker with this floor, friction law and torso has the kernel.
     #[must_use]
-    pub fn applies_to(self, floor: Floor, torso: Torso) -> bool {
+    pub fn applies_to(self, floor: Floor, friction: Friction, torso: Torso) -> bool {
         self.floor().is_none_or(|f| f == floor)
+            && self.friction().is_none_or(|f| f == friction)
             && (!self.needs_actuation() || torso == Torso::Actuated)
     }
 
-    /// The kernels a walker with this floor and torso has, in catalogue order.
+    /// The kernels a walker with this floor, friction law and torso has, in catalogue order.
     #[must_use]
-    pub fn for_structure(floor: Floor, torso: Torso) -> Vec<KernelName> {
+    pub fn for_structure(floor: Floor, friction: Friction, torso: Torso) -> Vec<KernelName> {
         Self::ALL
             .into_iter()
-            .filter(|k| k.applies_to(floor, torso))
+            .filter(|k| k.applies_to(floor, friction, torso))
             .collect()
     }
 }
@@ -226,10 +272,33 @@ mod tests {
 
     #[test]
     fn control_only_when_actuated() {
-        let passive = KernelName::for_structure(Floor::Level, Torso::Passive);
+        let passive = KernelName::for_structure(Floor::Level, Friction::Tanh, Torso::Passive);
         assert!(!passive.contains(&KernelName::ControlLevel));
-        let active = KernelName::for_structure(Floor::Level, Torso::Actuated);
+        let active = KernelName::for_structure(Floor::Level, Friction::Tanh, Torso::Actuated);
         assert!(active.contains(&KernelName::ControlLevel));
         assert!(!active.contains(&KernelName::AccelSlope));
+    }
+
+    #[test]
+    fn stick_kernels_only_with_coulomb_friction() {
+        use KernelName::{ClosedLoopStickLevel, StickLevel, StickSlope};
+        let stick = [StickLevel, ClosedLoopStickLevel, StickSlope];
+        for floor in [Floor::Level, Floor::Slope] {
+            for torso in [Torso::Actuated, Torso::Passive] {
+                for friction in [Friction::None, Friction::Tanh] {
+                    let ks = KernelName::for_structure(floor, friction, torso);
+                    assert!(stick.iter().all(|k| !ks.contains(k)), "{friction}");
+                }
+            }
+        }
+        let level = |torso| KernelName::for_structure(Floor::Level, Friction::Coulomb, torso);
+        assert!(level(Torso::Actuated).contains(&StickLevel));
+        assert!(level(Torso::Actuated).contains(&ClosedLoopStickLevel));
+        assert!(level(Torso::Passive).contains(&StickLevel));
+        assert!(!level(Torso::Passive).contains(&ClosedLoopStickLevel));
+        assert!(!level(Torso::Actuated).contains(&StickSlope));
+        let slope = KernelName::for_structure(Floor::Slope, Friction::Coulomb, Torso::Passive);
+        assert!(slope.contains(&StickSlope));
+        assert!(!slope.contains(&StickLevel));
     }
 }

@@ -14,14 +14,12 @@
 //! The output depends only on the module and the options: no paths, no time, no hash-map
 //! order. Floating-point functions are inherent methods (`x.sin()`, `x.sqrt()`) in std
 //! mode and `libm` calls (`libm::sin`, `libm::sincos`; `libm::sinf`... for `f32`) in no-std
-//! mode; `abs` is `core`'s inherent method in both modes (an exact bit operation), and the sign
-//! function of Eq. 25 is a small private `const fn sign` written into the file when a kernel
-//! uses it (`f64::signum` would give `1` at `0`). In std mode with `f64`, `sin_cos` and `tanh`
-//! are by default ([`FloatFunctions::Inline`]) private functions written into the file when a
-//! kernel uses them, `fn sin_cos` (fdlibm's kernels with one shared argument reduction) and
-//! `fn tanh` (Cephes' rational below 0.625, `exp` above): their source is
-//! `src/fastmath/{sin_cos,tanh}.rs`, appended verbatim (comments, licence notice and measured
-//! accuracy included) and tested as such by `tests/fastmath_accuracy.rs`. Constants are
+//! mode; `abs` is `core`'s inherent method in both modes (an exact bit operation). In std mode
+//! with `f64`, `sin_cos` and `tanh` are by default ([`FloatFunctions::Inline`]) private
+//! functions written into the file when a kernel uses them, `fn sin_cos` (fdlibm's kernels with
+//! one shared argument reduction) and `fn tanh` (Cephes' rational below 0.625, `exp` above):
+//! their source is `src/fastmath/{sin_cos,tanh}.rs`, appended verbatim (comments, licence notice
+//! and measured accuracy included) and tested as such by `tests/fastmath_accuracy.rs`. Constants are
 //! written with the shortest digits that round-trip (`{:?}`), suffixed with the float type;
 //! a constant equal to one of `core::f64::consts` is written by that name.
 
@@ -436,10 +434,6 @@ impl Writer<'_> {
             Node::Sin(a) => self.call(a, "sin"),
             Node::Cos(a) => self.call(a, "cos"),
             Node::Tanh(a) => self.call(a, "tanh"),
-            Node::Signum(a) => {
-                let (a, _) = self.expr(a);
-                (quote!(sign(#a)), POSTFIX)
-            }
             Node::Abs(a) => self.method(a, "abs"),
         }
     }
@@ -532,7 +526,7 @@ fn returns_doc(k: &Kernel) -> String {
     }
 }
 
-/// `const` if the block calls no float function (arithmetic, `abs` and `sign` are `const`).
+/// `const` if the block calls no float function (arithmetic and `abs` are `const`).
 fn const_if_possible(plan: &Plan, block: &Block) -> TokenStream {
     let calls = block.nodes.iter().any(|&n| {
         matches!(
@@ -952,40 +946,6 @@ fn header(module: &Module, options: &EmitOptions, inline: &[&str]) -> String {
     out
 }
 
-/// The private `sign` helper, if some block uses [`Node::Signum`].
-fn sign_helper(plan: &Plan, options: &EmitOptions) -> TokenStream {
-    let used = plan
-        .kernels
-        .iter()
-        .map(|k| &k.block)
-        .chain([&plan.prepare])
-        .flat_map(|b| &b.nodes)
-        .any(|&n| matches!(plan.graph.node(n), Node::Signum(_)));
-    if !used {
-        return quote!();
-    }
-    let lit = |v: f64| {
-        let s = format!("{v:?}_{}", options.float.name());
-        s.parse::<Literal>()
-            .map_or_else(|_| quote!(F::NAN), |l| quote!(#l))
-    };
-    let (zero, one) = (lit(0.0), lit(1.0));
-    quote! {
-        /// The sign function of Eq. 25: `1` for `x > 0`, `-1` for `x < 0`, and `x` itself for
-        /// zero and NaN (so `sign(0) = 0`, unlike `F::signum`).
-        #[inline]
-        const fn sign(x: F) -> F {
-            if x > #zero {
-                #one
-            } else if x < #zero {
-                -#one
-            } else {
-                x
-            }
-        }
-    }
-}
-
 pub(crate) fn emit_plan(
     module: &Module,
     plan: &Plan,
@@ -1008,7 +968,6 @@ pub(crate) fn emit_plan(
     let kernels: Vec<TokenStream> = (0..module.kernels.len())
         .filter_map(|i| kernel_fn(module, plan, options, i))
         .collect();
-    let sign = sign_helper(plan, options);
     let kernel_error = if options.checked && !module.kernels.is_empty() {
         kernel_error(module, options)
     } else {
@@ -1023,8 +982,6 @@ pub(crate) fn emit_plan(
         #kernel_error
 
         #(#kernels)*
-
-        #sign
     };
     let file: syn::File = syn::parse2(tokens).map_err(|e| EmitError::Syntax {
         message: e.to_string(),

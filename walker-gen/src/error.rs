@@ -8,7 +8,7 @@ use crate::scene::SceneError;
 #[derive(Debug, thiserror::Error)]
 pub enum EmitError {
     /// A name that is not a lower-case Rust identifier, is a keyword, or is reserved (`p`,
-    /// `prepare`, `sign`, `t<digits>`, `k<digits>`, a leading `_`).
+    /// `prepare`, `t<digits>`, `k<digits>`, a leading `_`).
     #[error(
         "{what} `{name}` is not a usable name (lower-case identifier, no keyword, not reserved)"
     )]

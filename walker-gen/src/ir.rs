@@ -19,7 +19,7 @@
 //! | `-a * b`, `a / -b`, `c * x` with `c < 0` | `-(a * b)`, ... | negations pulled out, so `a*b` is shared |
 //! | `x / 2^k`                     | `x * 2^-k`               | exact                             |
 //! | `powi(x, 0)`, `powi(x, 1)`, `powi(-x, n)` | `1`, `x`, `±powi(x, n)` |                   |
-//! | `abs(-x)`, `abs(abs x)`, `signum(-x)` | `abs x`, `abs x`, `-signum x` | sign is odd, also at 0 |
+//! | `abs(-x)`, `abs(abs x)`       | `abs x`, `abs x`         |                                   |
 //!
 //! Operands of `+` and `*` are put in a canonical order (constants first, then by id), so `a*b` and
 //! `b*a` are one node. Transcendental functions of constants are *not* folded: the host's `sin` is
@@ -118,9 +118,6 @@ pub enum Node {
     Cos(NodeId),
     /// `tanh(a)`.
     Tanh(NodeId),
-    /// `sign(a)` as in Eq. 25: `1` for `a > 0`, `-1` for `a < 0`, and `a` itself for `±0` and
-    /// NaN (so `sign(0) = 0`, unlike Rust's `f64::signum`; see [`sign`]).
-    Signum(NodeId),
     /// `|a|`.
     Abs(NodeId),
 }
@@ -138,7 +135,6 @@ impl Node {
             | Node::Sin(a)
             | Node::Cos(a)
             | Node::Tanh(a)
-            | Node::Signum(a)
             | Node::Abs(a) => ([a, a], 1),
         };
         Children { arr, len, pos: 0 }
@@ -500,18 +496,6 @@ impl Graph {
         self.intern(Node::Tanh(a))
     }
 
-    /// `sign(a)`, zero at zero (see [`Node::Signum`]).
-    pub fn signum(&mut self, a: NodeId) -> NodeId {
-        if let Some(r) = self.fold1(a, sign) {
-            return r;
-        }
-        if let Some(x) = self.negated(a) {
-            let s = self.signum(x);
-            return self.neg(s);
-        }
-        self.intern(Node::Signum(a))
-    }
-
     /// `|a|`.
     pub fn abs(&mut self, a: NodeId) -> NodeId {
         if let Some(r) = self.fold1(a, f64::abs) {
@@ -586,10 +570,6 @@ impl Graph {
                 let a = f(a);
                 self.tanh(a)
             }
-            Node::Signum(a) => {
-                let a = f(a);
-                self.signum(a)
-            }
             Node::Abs(a) => {
                 let a = f(a);
                 self.abs(a)
@@ -621,7 +601,6 @@ impl Graph {
                 Node::Sin(a) => v(a).sin(),
                 Node::Cos(a) => v(a).cos(),
                 Node::Tanh(a) => v(a).tanh(),
-                Node::Signum(a) => sign(v(a)),
                 Node::Abs(a) => v(a).abs(),
             };
             debug_assert_eq!(values.len(), i);
@@ -631,19 +610,6 @@ impl Graph {
             .iter()
             .map(|r| values.get(r.index()).copied().unwrap_or(f64::NAN))
             .collect()
-    }
-}
-
-/// The sign function of [`Node::Signum`]: `1` for `x > 0`, `-1` for `x < 0`, `x` for `±0` and
-/// NaN. This is what the generated code computes.
-#[must_use]
-pub fn sign(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        x
     }
 }
 

@@ -109,11 +109,11 @@ pub(crate) struct Plan {
     pub kernels: Vec<KernelPlan>,
 }
 
-/// Names of functions a generated file may define besides the kernels: `prepare`, the sign
-/// helper and the inline float functions ([`crate::FloatFunctions::Inline`]). No kernel may take
+/// Names of functions a generated file may define besides the kernels: `prepare` and the
+/// inline float functions ([`crate::FloatFunctions::Inline`]). No kernel may take
 /// them, nor an argument, except `prepare` (an argument would shadow the function in the
 /// kernel's body).
-const RESERVED_FNS: [&str; 4] = ["prepare", "sign", "sin_cos", "tanh"];
+const RESERVED_FNS: [&str; 3] = ["prepare", "sin_cos", "tanh"];
 
 /// Reserved generated names: `t<digits>` (lets) and `k<digits>` (fields).
 fn is_generated_name(s: &str) -> bool {
@@ -621,7 +621,7 @@ mod tests {
 
     #[test]
     fn reserved_and_duplicate_names_are_rejected() {
-        for name in ["sign", "sin_cos", "tanh", "prepare"] {
+        for name in ["sin_cos", "tanh", "prepare"] {
             let mut m = module_with(|m| vec![m.graph.input("x")]);
             m.kernels[0].args = vec![name.to_owned()];
             assert_eq!(
@@ -639,6 +639,12 @@ mod tests {
                 Err(EmitError::BadName { .. })
             ));
         }
+        let mut m = module_with(|m| vec![m.graph.input("x")]);
+        m.kernels[0].args = vec!["p".to_owned()];
+        assert!(matches!(
+            Plan::new(&m, Division::Exact),
+            Err(EmitError::BadName { .. })
+        ));
         let mut m = module_with(|m| vec![m.graph.input("x")]);
         m.declare_param("k0", "");
         assert!(matches!(

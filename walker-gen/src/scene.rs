@@ -5,7 +5,7 @@
 //! ```toml
 //! name = "active-level"     # used in the @generated line and the default file name
 //! floor = "level"           # "level" | "slope"
-//! friction = "tanh"         # "none" | "tanh" (Eqs. 26, 37) | "sign" (Eq. 25)
+//! friction = "tanh"         # "none" | "tanh" (Eqs. 26, 37) | "coulomb" (Eq. 25, stick-slip)
 //! torso = "actuated"        # "actuated" (output-following control, Eqs. 30-32) | "passive" (u = 0)
 //! kernels = ["accel_level", "lambda_level"]   # optional; default: every kernel of the structure
 //!
@@ -60,8 +60,13 @@ pub enum Friction {
     None,
     /// `mu = -mu0 tanh(c xd)` (Eq. 26), on the slope `-mu0 tanh(c xd / cos phi)` (Eq. 37).
     Tanh,
-    /// `mu = -mu0 sign(xd)` (Eq. 25 with the sign that opposes sliding).
-    Sign,
+    /// Exact Coulomb friction with stick-slip, static coefficient = sliding coefficient `mu0`
+    /// (Eq. 25 with the sign that opposes sliding). While the foot slides, `mu = -mu0 sigma`
+    /// and the sliding kernels take the sliding direction `sigma` (`+1` towards `+x`, `-1`
+    /// backwards) instead of `xd`: the simulator holds it as a discrete mode, where
+    /// `sign(xd)` would be `0` at the start of every slide. While it sticks, the stick kernels
+    /// (not in the paper) give the accelerations and the ground force.
+    Coulomb,
 }
 
 /// Whether the torso is driven.
@@ -88,7 +93,7 @@ impl fmt::Display for Friction {
         f.write_str(match self {
             Friction::None => "none",
             Friction::Tanh => "tanh",
-            Friction::Sign => "sign",
+            Friction::Coulomb => "coulomb",
         })
     }
 }
@@ -676,12 +681,12 @@ impl Scene {
                         reason: format!("kernel `{k}` is listed twice"),
                     });
                 }
-                if !k.applies_to(self.floor, self.torso) {
+                if !k.applies_to(self.floor, self.friction, self.torso) {
                     return Err(SceneError::KernelNotInStructure {
                         name: k.name().to_owned(),
                         structure: self.structure(),
                         valid: join(
-                            KernelName::for_structure(self.floor, self.torso)
+                            KernelName::for_structure(self.floor, self.friction, self.torso)
                                 .iter()
                                 .map(|k| k.name()),
                         ),
@@ -706,7 +711,7 @@ impl Scene {
     pub fn kernels(&self) -> Vec<KernelName> {
         self.kernels
             .clone()
-            .unwrap_or_else(|| KernelName::for_structure(self.floor, self.torso))
+            .unwrap_or_else(|| KernelName::for_structure(self.floor, self.friction, self.torso))
     }
 
     /// The parameters the structure has, in canonical order.

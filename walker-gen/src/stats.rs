@@ -33,21 +33,15 @@ pub struct OpCounts {
     pub sqrt: usize,
     /// Transcendental calls (`sin`, `cos`, `sin_cos` counted once, `tanh`).
     pub transcendental: usize,
-    /// `abs` and `sign` (a bit operation and two comparisons).
-    pub abs_sign: usize,
+    /// `abs` (a bit operation).
+    pub abs: usize,
 }
 
 impl OpCounts {
     /// The sum of all counts.
     #[must_use]
     pub fn total(&self) -> usize {
-        self.add_sub
-            + self.mul
-            + self.div
-            + self.neg
-            + self.sqrt
-            + self.transcendental
-            + self.abs_sign
+        self.add_sub + self.mul + self.div + self.neg + self.sqrt + self.transcendental + self.abs
     }
 
     /// A one-line summary, for example `3 add/sub, 5 mul, 1 div, 1 transcendental`; zero counts
@@ -61,7 +55,7 @@ impl OpCounts {
             (self.neg, "neg"),
             (self.sqrt, "sqrt"),
             (self.transcendental, "transcendental"),
-            (self.abs_sign, "abs/sign"),
+            (self.abs, "abs"),
         ]
         .iter()
         .filter(|(n, _)| *n > 0)
@@ -86,7 +80,7 @@ impl Add for OpCounts {
             neg: self.neg + o.neg,
             sqrt: self.sqrt + o.sqrt,
             transcendental: self.transcendental + o.transcendental,
-            abs_sign: self.abs_sign + o.abs_sign,
+            abs: self.abs + o.abs,
         }
     }
 }
@@ -150,7 +144,7 @@ pub(crate) fn block_counts(g: &Graph, block: &Block) -> OpCounts {
             Node::Sqrt(_) => c.sqrt += 1,
             Node::Sin(_) if block.paired_sin.contains(&n) => {}
             Node::Sin(_) | Node::Cos(_) | Node::Tanh(_) => c.transcendental += 1,
-            Node::Signum(_) | Node::Abs(_) => c.abs_sign += 1,
+            Node::Abs(_) => c.abs += 1,
         }
     }
     c
@@ -197,7 +191,7 @@ fn row(out: &mut String, name: &str, c: &OpCounts, extra: &str) {
         c.neg,
         c.sqrt,
         c.transcendental,
-        c.abs_sign,
+        c.abs,
         c.total()
     );
     let _ = writeln!(out, "{}", line.trim_end());
@@ -207,7 +201,7 @@ fn header(out: &mut String, title: &str) {
     let _ = writeln!(
         out,
         "{title:<22} {:>7} {:>5} {:>5} {:>5} {:>5} {:>7} {:>7} {:>7}",
-        "add/sub", "mul", "div", "neg", "sqrt", "transc", "abs/sgn", "total"
+        "add/sub", "mul", "div", "neg", "sqrt", "transc", "abs", "total"
     );
 }
 

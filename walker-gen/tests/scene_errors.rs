@@ -44,6 +44,9 @@ fn valid_scene_files_load() {
         "passive-slope",
         "active-level-frictionless",
         "general-level",
+        "general-slope",
+        "general-level-coulomb",
+        "general-slope-coulomb",
     ] {
         let scene = Scene::from_file(dir.join(format!("{name}.toml")));
         assert!(scene.is_ok(), "{name}: {scene:?}");
@@ -131,10 +134,16 @@ fn no_friction_with_friction_parameters() {
 }
 
 #[test]
-fn sign_friction_with_c() {
-    let sign = BASE.replace("\"tanh\"", "\"sign\"");
-    rejects(&fixed(&sign, "c = 100.0"), "fixed.c");
-    assert!(Scene::from_toml_str(&fixed(&sign, "mu0 = 0.4"), "t").is_ok());
+fn coulomb_friction_with_c() {
+    let coulomb = BASE.replace("\"tanh\"", "\"coulomb\"");
+    rejects(&fixed(&coulomb, "c = 100.0"), "fixed.c");
+    assert!(Scene::from_toml_str(&fixed(&coulomb, "mu0 = 0.4"), "t").is_ok());
+}
+
+#[test]
+fn the_old_sign_law_is_gone() {
+    // Renamed to "coulomb" (stick-slip and a sliding-direction argument), with no alias.
+    rejects(&BASE.replace("\"tanh\"", "\"sign\""), "friction");
 }
 
 #[test]
@@ -179,6 +188,31 @@ fn kernel_of_another_structure() {
         &format!("{SLOPE}kernels = [\"impact3_level\"]\n"),
         "kernels",
     );
+    // The stick kernels exist only with Coulomb friction, each for its floor and torso.
+    for kernel in ["stick_level", "closed_loop_stick_level"] {
+        rejects(&format!("{BASE}kernels = [\"{kernel}\"]\n"), "kernels");
+    }
+    rejects(&format!("{SLOPE}kernels = [\"stick_slope\"]\n"), "kernels");
+    let coulomb = BASE.replace("\"tanh\"", "\"coulomb\"");
+    assert!(
+        Scene::from_toml_str(
+            &format!("{coulomb}kernels = [\"stick_level\", \"closed_loop_stick_level\"]\n"),
+            "t"
+        )
+        .is_ok()
+    );
+    rejects(
+        &format!("{coulomb}kernels = [\"stick_slope\"]\n"),
+        "kernels",
+    );
+    let passive = coulomb.replace("\"actuated\"", "\"passive\"");
+    assert!(Scene::from_toml_str(&format!("{passive}kernels = [\"stick_level\"]\n"), "t").is_ok());
+    rejects(
+        &format!("{passive}kernels = [\"closed_loop_stick_level\"]\n"),
+        "kernels",
+    );
+    let slope = SLOPE.replace("\"tanh\"", "\"coulomb\"");
+    assert!(Scene::from_toml_str(&format!("{slope}kernels = [\"stick_slope\"]\n"), "t").is_ok());
 }
 
 #[test]

@@ -129,7 +129,7 @@ fn valid() -> impl Strategy<Value = String> {
             Just(("level", "passive")),
             Just(("slope", "passive")),
         ],
-        proptest::sample::select(&["none", "tanh", "sign"][..]),
+        proptest::sample::select(&["none", "tanh", "coulomb"][..]),
         proptest::collection::vec(proptest::bool::ANY, 14),
         proptest::collection::vec(1e-3..1e3_f64, 14),
         0.01..3.1_f64,

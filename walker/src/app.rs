@@ -206,10 +206,10 @@ fn from_scene_file(path: &str) -> Result<Setup, InputError> {
     match scene.friction {
         Friction::Tanh => {}
         Friction::None => runtime.mu0 = 0.0,
-        Friction::Sign => {
+        Friction::Coulomb => {
             return Err(bad(
                 "friction",
-                "the sign friction law (Eq. 25) is not simulated; use friction = \"tanh\"",
+                "the coulomb friction law (Eq. 25) is not simulated; use friction = \"tanh\"",
             ));
         }
     }

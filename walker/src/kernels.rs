@@ -36,3 +36,21 @@ generated!(
     general_slope,
     "general_slope.rs"
 );
+generated!(
+    /// The active walker on level ground under exact Coulomb friction with stick-slip (Eq. 25;
+    /// the stick phase is not in the paper), every parameter at run time
+    /// (`scenes/general-level-coulomb.toml`). The sliding kernels take the sliding direction
+    /// `sigma = ±1` (`mu = -mu0 sigma`); `stick_level` and `closed_loop_stick_level` give the
+    /// motion and the ground force `[lambda_t, lambda_n]` with the stance foot stuck.
+    general_level_coulomb,
+    "general_level_coulomb.rs"
+);
+generated!(
+    /// The passive wheel on a slope under exact Coulomb friction with stick-slip (Eq. 25; the
+    /// stick phase is not in the paper), every parameter at run time
+    /// (`scenes/general-slope-coulomb.toml`). The sliding kernels take the sliding direction
+    /// `sigma = ±1` (`+1` down the slope); `stick_slope` gives the motion and the ground force
+    /// with the stance foot stuck.
+    general_slope_coulomb,
+    "general_slope_coulomb.rs"
+);
