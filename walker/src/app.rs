@@ -6,7 +6,7 @@ use serde::Serialize;
 use serde_json::json;
 use walker_gen::scene::{Floor, Friction, Param, Scene, Torso};
 
-use crate::model::{Kind, Model, Physical, Runtime};
+use crate::model::{FrictionLaw, Kind, Model, Physical, Runtime};
 use crate::progress::Progress;
 use crate::sim::{SimConfig, StepResult, Walk, WalkLimits, walk};
 use crate::sweep::{SweepPoint, mu0_grid, sweep_chains};
@@ -39,6 +39,8 @@ pub struct Overrides {
     pub t_set: Option<f64>,
     /// `--phi`.
     pub phi: Option<f64>,
+    /// `--friction`.
+    pub friction: Option<FrictionLaw>,
 }
 
 /// A resolved scene: how to build the model for given runtime parameters.
@@ -46,8 +48,10 @@ pub struct Overrides {
 pub struct Setup {
     /// Level/active or slope/passive.
     pub kind: Kind,
-    /// Whether the fast kernels with Table 1 compiled in are used.
+    /// Whether the fast kernels with Table 1 compiled in are used (tanh friction only).
     pub fast: bool,
+    /// The friction law.
+    pub friction: FrictionLaw,
     /// Physical parameters.
     pub physical: Physical,
     /// Runtime parameters (defaults, scene values, then flags).
@@ -57,11 +61,21 @@ pub struct Setup {
 impl Setup {
     /// Build the model with the runtime parameters `runtime`.
     pub fn model_with(&self, runtime: Runtime) -> Model {
-        match (self.kind, self.fast) {
-            (Kind::ActiveLevel, true) => Model::active_level(runtime),
-            (Kind::PassiveSlope, true) => Model::passive_slope(runtime),
-            (Kind::ActiveLevel, false) => Model::general_level(self.physical, runtime),
-            (Kind::PassiveSlope, false) => Model::general_slope(self.physical, runtime),
+        match (self.kind, self.friction, self.fast) {
+            (Kind::ActiveLevel, FrictionLaw::Coulomb, _) => {
+                Model::coulomb_level(self.physical, runtime)
+            }
+            (Kind::PassiveSlope, FrictionLaw::Coulomb, _) => {
+                Model::coulomb_slope(self.physical, runtime)
+            }
+            (Kind::ActiveLevel, FrictionLaw::Tanh, true) => Model::active_level(runtime),
+            (Kind::PassiveSlope, FrictionLaw::Tanh, true) => Model::passive_slope(runtime),
+            (Kind::ActiveLevel, FrictionLaw::Tanh, false) => {
+                Model::general_level(self.physical, runtime)
+            }
+            (Kind::PassiveSlope, FrictionLaw::Tanh, false) => {
+                Model::general_slope(self.physical, runtime)
+            }
         }
     }
 
@@ -121,12 +135,14 @@ pub fn resolve(scene: &str, ov: &Overrides) -> Result<Setup, InputError> {
         "active-level" => Setup {
             kind: Kind::ActiveLevel,
             fast: true,
+            friction: FrictionLaw::Tanh,
             physical: Physical::TABLE1,
             runtime: Runtime::default(),
         },
         "passive-slope" => Setup {
             kind: Kind::PassiveSlope,
             fast: true,
+            friction: FrictionLaw::Tanh,
             physical: Physical::TABLE1,
             runtime: Runtime {
                 phi: 0.2,
@@ -142,6 +158,9 @@ pub fn resolve(scene: &str, ov: &Overrides) -> Result<Setup, InputError> {
             ));
         }
     };
+    if let Some(f) = ov.friction {
+        setup.friction = f;
+    }
     let r = &mut setup.runtime;
     if let Some(v) = ov.mu0 {
         r.mu0 = v;
@@ -203,19 +222,18 @@ fn from_scene_file(path: &str) -> Result<Setup, InputError> {
             if kind == Kind::PassiveSlope { 0.2 } else { 0.0 },
         ),
     };
-    match scene.friction {
-        Friction::Tanh => {}
-        Friction::None => runtime.mu0 = 0.0,
-        Friction::Coulomb => {
-            return Err(bad(
-                "friction",
-                "the coulomb friction law (Eq. 25) is not simulated; use friction = \"tanh\"",
-            ));
+    let friction = match scene.friction {
+        Friction::Tanh => FrictionLaw::Tanh,
+        Friction::None => {
+            runtime.mu0 = 0.0;
+            FrictionLaw::Tanh
         }
-    }
+        Friction::Coulomb => FrictionLaw::Coulomb,
+    };
     Ok(Setup {
         kind,
         fast: false,
+        friction,
         physical,
         runtime,
     })

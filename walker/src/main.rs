@@ -8,6 +8,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use walker::app::{self, Overrides};
+use walker::model::FrictionLaw;
 use walker::ode::Method;
 use walker::sim::{SimConfig, WalkLimits};
 
@@ -32,12 +33,31 @@ enum MethodArg {
     Rodas4,
 }
 
+/// Friction law choice.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+enum FrictionArg {
+    /// mu = -mu0 tanh(c xd) (Eqs. 26, 37): the paper's simulations.
+    Tanh,
+    /// Exact Coulomb friction (Eq. 25) with stick-slip.
+    Coulomb,
+}
+
+fn friction(f: FrictionArg) -> FrictionLaw {
+    match f {
+        FrictionArg::Tanh => FrictionLaw::Tanh,
+        FrictionArg::Coulomb => FrictionLaw::Coulomb,
+    }
+}
+
 /// Flags shared by the simulation commands.
 #[derive(clap::Args, Debug)]
 struct Common {
     /// `active-level`, `passive-slope` or a scene FILE.toml.
     #[arg(long)]
     scene: String,
+    /// Friction law (default: the scene's; tanh for the built-in scenes).
+    #[arg(long, value_enum)]
+    friction: Option<FrictionArg>,
     /// Friction law sharpness c (s/m), > 0.
     #[arg(long, allow_hyphen_values = true)]
     c: Option<f64>,
@@ -157,6 +177,7 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 c: common.c,
                 t_set,
                 phi,
+                friction: common.friction.map(friction),
             };
             let setup = app::resolve(&common.scene, &ov).map_err(input)?;
             if let Some(d) = duration.filter(|d| !(d.is_finite() && *d > 0.0)) {
@@ -194,6 +215,7 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 c: common.c,
                 t_set: t_set.first().copied(),
                 phi: phi.first().copied(),
+                friction: common.friction.map(friction),
             };
             let setup = app::resolve(&common.scene, &ov).map_err(input)?;
             let active = setup.kind == walker::model::Kind::ActiveLevel;
@@ -238,6 +260,7 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 c: common.c,
                 t_set,
                 phi,
+                friction: common.friction.map(friction),
             };
             let setup = app::resolve(&common.scene, &ov).map_err(input)?;
             let out = walker::poincare::cli_report(&setup, omega0, &config(common.method))

@@ -5,14 +5,20 @@
 //! passive wheel on a slope (Section 5). Each exists in a fast variant with Table 1 compiled into
 //! the kernels ([`crate::kernels::active_level`], [`crate::kernels::passive_slope`]) and a general
 //! variant that takes every parameter at run time ([`crate::kernels::general_level`],
-//! [`crate::kernels::general_slope`]) for scene files.
+//! [`crate::kernels::general_slope`]) for scene files; both with the smooth friction law of
+//! Eqs. 26 and 37. With exact Coulomb friction (Eq. 25, [`FrictionLaw::Coulomb`]) the foot
+//! slides or sticks ([`Contact`]); those models use [`crate::kernels::general_level_coulomb`]
+//! and [`crate::kernels::general_slope_coulomb`].
 //!
 //! Every physical quantity comes from a kernel; this module only dispatches.
 
 use serde::Serialize;
 
 use crate::control;
-use crate::kernels::{active_level, general_level, general_slope, passive_slope};
+use crate::kernels::{
+    active_level, general_level, general_level_coulomb, general_slope, general_slope_coulomb,
+    passive_slope,
+};
 
 /// The physical parameters of the walker (Table 1 and `g`).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -93,6 +99,86 @@ pub enum Kind {
     PassiveSlope,
 }
 
+/// The stance foot's friction law.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FrictionLaw {
+    /// `mu = -mu0 tanh(c xd)` (Eq. 26; `-mu0 tanh(c xd / cos phi)` on the slope, Eq. 37), or no
+    /// friction with `mu0 = 0`: the foot always slides, and [`Contact::Smooth`] is its only
+    /// contact.
+    Tanh,
+    /// Exact Coulomb friction (Eq. 25 with the sign that opposes sliding, the paper's static
+    /// coefficient equal to the sliding one, `mu0`): the foot slides with friction `mu0` times
+    /// the normal force against its motion, or sticks while the tangential force it needs is at
+    /// most that ([`Contact::Sliding`], [`Contact::Stuck`]).
+    Coulomb,
+}
+
+/// The direction in which the stance foot slides.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Slide {
+    /// Towards `+x` (forwards; down the slope).
+    Forward,
+    /// Towards `-x`.
+    Backward,
+}
+
+impl Slide {
+    /// `sigma = sign(xd)` of Eq. 25: `1` forwards, `-1` backwards.
+    pub fn sigma(self) -> f64 {
+        match self {
+            Slide::Forward => 1.0,
+            Slide::Backward => -1.0,
+        }
+    }
+
+    /// The direction of a nonzero number's sign.
+    pub fn of(x: f64) -> Slide {
+        if x > 0.0 {
+            Slide::Forward
+        } else {
+            Slide::Backward
+        }
+    }
+}
+
+/// How the stance foot touches the floor.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "mode", content = "direction")]
+pub enum Contact {
+    /// The smooth friction law ([`FrictionLaw::Tanh`]): `mu` a function of `xd`.
+    Smooth,
+    /// Coulomb friction, sliding: `mu = -mu0 sigma` (Eq. 25).
+    Sliding(Slide),
+    /// Coulomb friction, stuck: `xd = 0` (the stance foot cannot move along the floor).
+    Stuck,
+}
+
+impl Contact {
+    /// `sigma` of a sliding contact (0 otherwise).
+    pub fn sigma(self) -> f64 {
+        match self {
+            Contact::Sliding(s) => s.sigma(),
+            Contact::Smooth | Contact::Stuck => 0.0,
+        }
+    }
+}
+
+/// The ground's force on the stance foot.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Reaction {
+    /// The paper's `lambda`: the vertical component of the reaction without friction
+    /// (Eqs. 22-23; on the slope the normal force times `cos phi`, Section 5.1). For a stuck
+    /// foot the vertical component of the whole force.
+    pub lambda: f64,
+    /// The force along the floor's normal (negative: the foot would lift off).
+    pub normal: f64,
+    /// The force along the floor, positive towards `+x` (down the slope): `mu` times the normal
+    /// force while sliding, what holds the foot while stuck.
+    pub tangential: f64,
+}
+
 #[allow(
     clippy::large_enum_variant,
     reason = "one model per walk; the prepared constants are read on every kernel call, so they stay inline"
@@ -103,6 +189,8 @@ enum Kernels {
     GeneralLevel(general_level::Prepared),
     PassiveSlope(passive_slope::Prepared),
     GeneralSlope(general_slope::Prepared),
+    CoulombLevel(general_level_coulomb::Prepared),
+    CoulombSlope(general_slope_coulomb::Prepared),
 }
 
 /// The result of an impact kernel evaluated at the pre-impact state.
@@ -209,11 +297,59 @@ impl Model {
         self.ramp.at(t)
     }
 
+    /// The active walker on level ground with exact Coulomb friction (Eq. 25) and stick-slip,
+    /// every parameter at run time (`c` is not used).
+    pub fn coulomb_level(physical: Physical, runtime: Runtime) -> Self {
+        let p = general_level_coulomb::prepare(&general_level_coulomb::Params {
+            m1: physical.m1,
+            m2: physical.m2,
+            l: physical.l,
+            i1: physical.i1,
+            i2: physical.i2,
+            g: physical.g,
+            alpha: physical.alpha,
+            mu0: runtime.mu0,
+            t_set: runtime.t_set,
+            k_p: runtime.k_p,
+            k_d: runtime.k_d,
+        });
+        Self::with(Kernels::CoulombLevel(p), physical, runtime, 0.0)
+    }
+
+    /// The passive wheel on a slope with exact Coulomb friction (Eq. 25) and stick-slip, every
+    /// parameter at run time (`c` is not used).
+    pub fn coulomb_slope(physical: Physical, runtime: Runtime) -> Self {
+        let p = general_slope_coulomb::prepare(&general_slope_coulomb::Params {
+            m1: physical.m1,
+            m2: physical.m2,
+            l: physical.l,
+            i1: physical.i1,
+            i2: physical.i2,
+            g: physical.g,
+            alpha: physical.alpha,
+            phi: runtime.phi,
+            mu0: runtime.mu0,
+        });
+        Self::with(Kernels::CoulombSlope(p), physical, runtime, runtime.phi)
+    }
+
+    /// The friction law of the model's kernels.
+    pub fn friction_law(&self) -> FrictionLaw {
+        match self.kernels {
+            Kernels::CoulombLevel(_) | Kernels::CoulombSlope(_) => FrictionLaw::Coulomb,
+            _ => FrictionLaw::Tanh,
+        }
+    }
+
     /// Level/active or slope/passive.
     pub fn kind(&self) -> Kind {
         match self.kernels {
-            Kernels::ActiveLevel(_) | Kernels::GeneralLevel(_) => Kind::ActiveLevel,
-            Kernels::PassiveSlope(_) | Kernels::GeneralSlope(_) => Kind::PassiveSlope,
+            Kernels::ActiveLevel(_) | Kernels::GeneralLevel(_) | Kernels::CoulombLevel(_) => {
+                Kind::ActiveLevel
+            }
+            Kernels::PassiveSlope(_) | Kernels::GeneralSlope(_) | Kernels::CoulombSlope(_) => {
+                Kind::PassiveSlope
+            }
         }
     }
 
@@ -234,55 +370,138 @@ impl Model {
         self.runtime.phi - self.physical.alpha / 2.0
     }
 
-    /// Stance accelerations `qdd` (Eq. 27; on the slope with Eqs. 36, 38 and `u = 0`).
-    pub fn accel(&self, th1: f64, th1d: f64, u: f64, xd: f64) -> [f64; 4] {
-        match &self.kernels {
-            Kernels::ActiveLevel(p) => active_level::accel_level(p, th1, th1d, u, xd),
-            Kernels::GeneralLevel(p) => general_level::accel_level(p, th1, th1d, u, xd),
-            Kernels::PassiveSlope(p) => passive_slope::accel_slope(p, th1, th1d, xd),
-            Kernels::GeneralSlope(p) => general_slope::accel_slope(p, th1, th1d, xd),
-        }
+    /// The auxiliary input `v` of Eq. 32 at time `t` since the last impact and state `y`
+    /// (`y = th1 - th2`, `y_d` of Section 3.2).
+    fn aux_input(&self, t: f64, y: &[f64]) -> f64 {
+        let r = &self.runtime;
+        control::aux_input(self.ramp.at(t), y[2] - y[3], y[6] - y[7], r.k_p, r.k_d)
     }
 
     /// Stance accelerations `qdd` and control input `u` at time `t` since the last impact and
-    /// state `y = [x, z, th1, th2, xd, zd, th1d, th2d, ..]`: for the active walker the output
-    /// control of Eqs. 31-32 with `y_d` of Section 3.2, evaluated by one `closed_loop_level`
-    /// call (Eq. 27 with `u = (v + B) / A`); for the passive wheel Eq. 27 with `u = 0`.
-    pub fn stance(&self, t: f64, y: &[f64]) -> ([f64; 4], f64) {
-        let (th1, th2, xd, th1d, th2d) = (y[2], y[3], y[4], y[6], y[7]);
-        let v = || {
-            let r = &self.runtime;
-            control::aux_input(self.ramp.at(t), th1 - th2, th1d - th2d, r.k_p, r.k_d)
-        };
+    /// state `y = [x, z, th1, th2, xd, zd, th1d, th2d, ..]` in the contact `contact`: for the
+    /// active walker under the output control of Eqs. 31-32 with `y_d` of Section 3.2 (one
+    /// `closed_loop_level` call, Eq. 27 with `u = (v + B) / A`; stuck, `closed_loop_stick_level`,
+    /// the same control with both foot coordinates held), for the passive wheel Eq. 27 with
+    /// `u = 0` (stuck: `stick_slope`). Smooth-law models ignore `contact`; a Coulomb model given
+    /// [`Contact::Smooth`] is treated as stuck.
+    pub fn stance(&self, t: f64, y: &[f64], contact: Contact) -> ([f64; 4], f64) {
+        let (th1, xd, th1d) = (y[2], y[4], y[6]);
+        let v = || self.aux_input(t, y);
         let closed = |o: [f64; 5]| ([o[0], o[1], o[2], o[3]], o[4]);
-        match &self.kernels {
-            Kernels::ActiveLevel(p) => {
+        let head = |o: &[f64]| [o[0], o[1], o[2], o[3]];
+        match (&self.kernels, contact) {
+            (Kernels::ActiveLevel(p), _) => {
                 closed(active_level::closed_loop_level(p, th1, th1d, xd, v()))
             }
-            Kernels::GeneralLevel(p) => {
+            (Kernels::GeneralLevel(p), _) => {
                 closed(general_level::closed_loop_level(p, th1, th1d, xd, v()))
             }
-            Kernels::PassiveSlope(p) => (passive_slope::accel_slope(p, th1, th1d, xd), 0.0),
-            Kernels::GeneralSlope(p) => (general_slope::accel_slope(p, th1, th1d, xd), 0.0),
+            (Kernels::PassiveSlope(p), _) => (passive_slope::accel_slope(p, th1, th1d, xd), 0.0),
+            (Kernels::GeneralSlope(p), _) => (general_slope::accel_slope(p, th1, th1d, xd), 0.0),
+            (Kernels::CoulombLevel(p), Contact::Sliding(s)) => closed(
+                general_level_coulomb::closed_loop_level(p, th1, th1d, s.sigma(), v()),
+            ),
+            (Kernels::CoulombLevel(p), Contact::Stuck | Contact::Smooth) => {
+                let o = general_level_coulomb::closed_loop_stick_level(p, th1, th1d, v());
+                (head(&o), o[4])
+            }
+            (Kernels::CoulombSlope(p), Contact::Sliding(s)) => (
+                general_slope_coulomb::accel_slope(p, th1, th1d, s.sigma()),
+                0.0,
+            ),
+            (Kernels::CoulombSlope(p), Contact::Stuck | Contact::Smooth) => {
+                (head(&general_slope_coulomb::stick_slope(p, th1, th1d)), 0.0)
+            }
         }
     }
 
-    /// Vertical ground reaction `lambda` (Eqs. 22-23; on the slope the vertical component).
-    pub fn lambda(&self, th1: f64, th1d: f64, u: f64, xd: f64) -> f64 {
+    /// For a Coulomb model, the normal force at `(t, y)` with the friction switched off (`mu = 0`,
+    /// the control recomputed for it); `None` for smooth-law models. Where a sliding foot's
+    /// normal force is negative but this one is not, it is the sliding friction that pulls the
+    /// foot off the floor: Painleve's paradox, not a lift-off.
+    pub fn frictionless_normal(&self, t: f64, y: &[f64]) -> Option<f64> {
+        let (th1, th1d) = (y[2], y[6]);
         match &self.kernels {
-            Kernels::ActiveLevel(p) => active_level::lambda_level(p, th1, th1d, u, xd),
-            Kernels::GeneralLevel(p) => general_level::lambda_level(p, th1, th1d, u, xd),
-            Kernels::PassiveSlope(p) => passive_slope::lambda_slope(p, th1, th1d, xd),
-            Kernels::GeneralSlope(p) => general_slope::lambda_slope(p, th1, th1d, xd),
+            Kernels::CoulombLevel(p) => {
+                let u = general_level_coulomb::closed_loop_level(
+                    p,
+                    th1,
+                    th1d,
+                    0.0,
+                    self.aux_input(t, y),
+                )[4];
+                Some(general_level_coulomb::lambda_level(p, th1, th1d, u, 0.0))
+            }
+            Kernels::CoulombSlope(p) => Some(
+                general_slope_coulomb::lambda_slope(p, th1, th1d, 0.0) / self.runtime.phi.cos(),
+            ),
+            _ => None,
         }
     }
 
-    /// `[A, B]` with `yddot = A u - B` (Eqs. 30-31); `None` for the passive wheel.
-    pub fn control(&self, th1: f64, th1d: f64, xd: f64) -> Option<[f64; 2]> {
-        match &self.kernels {
-            Kernels::ActiveLevel(p) => Some(active_level::control_level(p, th1, th1d, xd)),
-            Kernels::GeneralLevel(p) => Some(general_level::control_level(p, th1, th1d, xd)),
-            Kernels::PassiveSlope(_) | Kernels::GeneralSlope(_) => None,
+    /// The ground's force on the stance foot at `(t, y)` in the contact `contact`, with the
+    /// control input of that point: sliding, `lambda` of Eqs. 22-23 (`lambda_level`,
+    /// `lambda_slope`) and `mu` times the normal force along the floor (Eqs. 24, 38); stuck, the
+    /// two forces of `stick_level` / `stick_slope`.
+    pub fn reaction(&self, t: f64, y: &[f64], contact: Contact) -> Reaction {
+        let (th1, xd, th1d) = (y[2], y[4], y[6]);
+        let r = &self.runtime;
+        let u = || self.stance(t, y, contact).1;
+        let level = |lambda: f64, mu: f64| Reaction {
+            lambda,
+            normal: lambda,
+            tangential: mu * lambda,
+        };
+        let (sphi, cphi) = r.phi.sin_cos();
+        let slope = |lambda: f64, mu: f64| Reaction {
+            lambda,
+            normal: lambda / cphi,
+            tangential: mu * lambda / cphi,
+        };
+        let tanh_mu = |arg: f64| -r.mu0 * (r.c * arg).tanh();
+        let stuck = |tangential: f64, normal: f64| Reaction {
+            lambda: normal * cphi - tangential * sphi,
+            normal,
+            tangential,
+        };
+        match (&self.kernels, contact) {
+            (Kernels::ActiveLevel(p), _) => level(
+                active_level::lambda_level(p, th1, th1d, u(), xd),
+                tanh_mu(xd),
+            ),
+            (Kernels::GeneralLevel(p), _) => level(
+                general_level::lambda_level(p, th1, th1d, u(), xd),
+                tanh_mu(xd),
+            ),
+            (Kernels::PassiveSlope(p), _) => slope(
+                passive_slope::lambda_slope(p, th1, th1d, xd),
+                tanh_mu(xd / cphi),
+            ),
+            (Kernels::GeneralSlope(p), _) => slope(
+                general_slope::lambda_slope(p, th1, th1d, xd),
+                tanh_mu(xd / cphi),
+            ),
+            (Kernels::CoulombLevel(p), Contact::Sliding(s)) => level(
+                general_level_coulomb::lambda_level(p, th1, th1d, u(), s.sigma()),
+                -r.mu0 * s.sigma(),
+            ),
+            (Kernels::CoulombLevel(p), Contact::Stuck | Contact::Smooth) => {
+                let o = general_level_coulomb::closed_loop_stick_level(
+                    p,
+                    th1,
+                    th1d,
+                    self.aux_input(t, y),
+                );
+                stuck(o[5], o[6])
+            }
+            (Kernels::CoulombSlope(p), Contact::Sliding(s)) => slope(
+                general_slope_coulomb::lambda_slope(p, th1, th1d, s.sigma()),
+                -r.mu0 * s.sigma(),
+            ),
+            (Kernels::CoulombSlope(p), Contact::Stuck | Contact::Smooth) => {
+                let o = general_slope_coulomb::stick_slope(p, th1, th1d);
+                stuck(o[4], o[5])
+            }
         }
     }
 
@@ -308,6 +527,14 @@ impl Model {
                 general_slope::impact_slope(p, th1, xd, zd, th1d, th2d),
                 general_slope::impact2_slope(p, th1, xd, zd, th1d, th2d),
             ),
+            Kernels::CoulombLevel(p) => level_impact(
+                general_level_coulomb::impact3_level(p, th1, xd, zd, th1d, th2d),
+                general_level_coulomb::impact2_level(p, th1, xd, zd, th1d, th2d),
+            ),
+            Kernels::CoulombSlope(p) => slope_impact(
+                general_slope_coulomb::impact_slope(p, th1, xd, zd, th1d, th2d),
+                general_slope_coulomb::impact2_slope(p, th1, xd, zd, th1d, th2d),
+            ),
         }
     }
 
@@ -318,6 +545,12 @@ impl Model {
             Kernels::GeneralLevel(p) => general_level::fore_foot(p, x, z, th1, xd, zd, th1d),
             Kernels::PassiveSlope(p) => passive_slope::fore_foot(p, x, z, th1, xd, zd, th1d),
             Kernels::GeneralSlope(p) => general_slope::fore_foot(p, x, z, th1, xd, zd, th1d),
+            Kernels::CoulombLevel(p) => {
+                general_level_coulomb::fore_foot(p, x, z, th1, xd, zd, th1d)
+            }
+            Kernels::CoulombSlope(p) => {
+                general_slope_coulomb::fore_foot(p, x, z, th1, xd, zd, th1d)
+            }
         }
     }
 
@@ -329,6 +562,12 @@ impl Model {
             Kernels::GeneralLevel(p) => general_level::energy(p, z, th1, xd, zd, th1d, th2d),
             Kernels::PassiveSlope(p) => passive_slope::energy(p, z, th1, xd, zd, th1d, th2d),
             Kernels::GeneralSlope(p) => general_slope::energy(p, z, th1, xd, zd, th1d, th2d),
+            Kernels::CoulombLevel(p) => {
+                general_level_coulomb::energy(p, z, th1, xd, zd, th1d, th2d)
+            }
+            Kernels::CoulombSlope(p) => {
+                general_slope_coulomb::energy(p, z, th1, xd, zd, th1d, th2d)
+            }
         }
     }
 

@@ -54,7 +54,7 @@ use serde::Serialize;
 
 use crate::control;
 use crate::kernels::{active_level, passive_slope};
-use crate::model::{Kind, Model, Physical};
+use crate::model::{Contact, FrictionLaw, Kind, Model, Physical};
 use crate::ode::{Direction, Event, Integrator, NoObserver, OdeSystem, Outcome, Tolerances};
 use crate::sim::{SimConfig, WalkLimits, walk};
 
@@ -103,6 +103,12 @@ impl Jac {
             return Err(map_err(
                 0.0,
                 "the Jacobian kernels are generated for the Table 1 parameters only",
+            ));
+        }
+        if m.friction_law() != FrictionLaw::Tanh {
+            return Err(map_err(
+                0.0,
+                "the Jacobian kernels are generated for the tanh friction law only",
             ));
         }
         Ok(match m.kind() {
@@ -187,7 +193,7 @@ struct Variational<'a> {
 
 impl Variational<'_> {
     fn mech_rhs(&self, t: f64, y: &[f64]) -> [f64; 8] {
-        let (qdd, _) = self.model.stance(t, y);
+        let (qdd, _) = self.model.stance(t, y, Contact::Smooth);
         [y[4], y[5], y[6], y[7], qdd[0], qdd[1], qdd[2], qdd[3]]
     }
 }
@@ -685,6 +691,14 @@ pub fn cli_report(
             "scene",
             "fixed-point needs the Table 1 parameters (its Jacobian kernels are generated for \
              the active-level and passive-slope scenes only)"
+                .to_owned(),
+        ));
+    }
+    if setup.friction != FrictionLaw::Tanh {
+        return Err(bad(
+            "friction",
+            "fixed-point needs the tanh friction law (its Jacobian kernels are generated for \
+             it only; a stick-slip cycle under Coulomb friction is not differentiable there)"
                 .to_owned(),
         ));
     }

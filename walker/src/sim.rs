@@ -10,12 +10,12 @@
 
 use serde::Serialize;
 
-use crate::model::{Kind, Model};
+use crate::model::{Contact, FrictionLaw, Kind, Model, Reaction, Slide};
 use std::cell::Cell;
 
 use crate::ode::{
-    Direction, Event, Integrator, Method, NoObserver, Observer, OdeSystem, Outcome, Pair, Stats,
-    Step, Tolerances,
+    Direction, Event, Integrator, Method, Observer, OdeSystem, Outcome, Pair, Stats, Step,
+    Tolerances,
 };
 
 /// Size of the integrated state (8 mechanical components and the input-power quadrature).
@@ -63,6 +63,22 @@ pub enum Failure {
         t: f64,
         /// `lambda` where the crossing was located (about zero) or at the start of the step.
         lambda: f64,
+        /// State.
+        state: [f64; 8],
+    },
+    /// Coulomb friction (Eq. 25): the stance foot is at rest, the tangential force that would
+    /// hold it exceeds `mu0` times the normal force, and sliding the way that force pushes
+    /// would accelerate the foot the other way: no contact mode is consistent (Painleve's
+    /// paradox of sliding friction).
+    ContactInconsistent {
+        /// Step number.
+        step: usize,
+        /// Time since the last impact.
+        t: f64,
+        /// The normal force with the foot held.
+        normal: f64,
+        /// The tangential force with the foot held.
+        tangential: f64,
         /// State.
         state: [f64; 8],
     },
@@ -156,6 +172,7 @@ impl Failure {
     pub fn name(&self) -> &'static str {
         match self {
             Failure::LiftOff { .. } => "lift-off",
+            Failure::ContactInconsistent { .. } => "contact-inconsistent",
             Failure::ImpactBeforeTSet { .. } => "impact-before-t-set",
             Failure::DoubleSupport { .. } => "double-support",
             Failure::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
@@ -171,6 +188,7 @@ impl Failure {
     pub fn step(&self) -> usize {
         match self {
             Failure::LiftOff { step, .. }
+            | Failure::ContactInconsistent { step, .. }
             | Failure::ImpactBeforeTSet { step, .. }
             | Failure::DoubleSupport { step, .. }
             | Failure::LambdaDenominatorZero { step, .. }
@@ -209,6 +227,8 @@ pub struct StepResult {
     pub rear_impulse: f64,
     /// Smallest `lambda` seen at the start of the stance phase, at `T_set` and at the heel strike.
     pub lambda_min: f64,
+    /// Time the stance foot spent stuck during the step (Coulomb friction; 0 otherwise) (s).
+    pub stuck_time: f64,
 }
 
 impl StepResult {
@@ -255,44 +275,78 @@ impl Walk {
     }
 }
 
-/// The control input `u` of Eq. 31 (`u = (v + B) / A`, `v` from Eq. 32); 0 for the passive wheel.
-pub fn control_input(model: &Model, t: f64, y: &[f64]) -> f64 {
-    model.stance(t, y).1
+/// The control input `u` of Eq. 31 (`u = (v + B) / A`, `v` from Eq. 32) in the contact
+/// `contact`; 0 for the passive wheel.
+pub fn control_input(model: &Model, t: f64, y: &[f64], contact: Contact) -> f64 {
+    model.stance(t, y, contact).1
 }
 
-/// The vertical ground reaction at `(t, y)` with the control input of that point.
-pub fn ground_reaction(model: &Model, t: f64, y: &[f64]) -> f64 {
-    let u = control_input(model, t, y);
-    model.lambda(y[2], y[6], u, y[4])
+/// The ground's force on the stance foot at `(t, y)` in the contact `contact`, with the control
+/// input of that point.
+pub fn ground_reaction(model: &Model, t: f64, y: &[f64], contact: Contact) -> Reaction {
+    model.reaction(t, y, contact)
 }
 
 /// The integrand `ydot u` of the input power (Section 4.2), `ydot = th1d - th2d`.
-fn power_integrand(model: &Model, t: f64, y: &[f64]) -> f64 {
-    (y[6] - y[7]) * control_input(model, t, y)
+fn power_integrand(model: &Model, t: f64, y: &[f64], contact: Contact) -> f64 {
+    (y[6] - y[7]) * control_input(model, t, y, contact)
 }
 
-/// Where the power quadrature (state component 8) has a kink: [`power_integrand`] at the ends
-/// of attempted steps, remembering the last two points (a step's start is the previous step's
-/// end, and the error test and the observer ask about the same ends).
-struct PowerKinks<'a> {
+/// A remembered value of a function of `(t, mechanical state, contact)`.
+type Memo<T> = Option<(f64, [f64; 8], Contact, T)>;
+
+/// The stance foot during one stance phase: the model, the current contact (it changes only
+/// between integration segments, at stick-slip transitions), and remembered values of what
+/// several users evaluate at the same points.
+struct Foot<'a> {
     model: &'a Model,
-    memo: Cell<[Option<Point>; 2]>,
+    contact: Cell<Contact>,
+    /// The last ground reaction: the lift-off, blow-up and slip guards share it.
+    reaction: Cell<Memo<Reaction>>,
+    /// The last two values of `ydot u` (a step's start is the previous step's end, and the
+    /// error test and the power observer ask about the same ends).
+    power: Cell<[Memo<f64>; 2]>,
 }
 
-impl PowerKinks<'_> {
-    fn integrand(&self, t: f64, y: &[f64; N]) -> f64 {
-        let s = mech(y);
-        let mut memo = self.memo.get();
-        if let Some(&Some((_, _, g))) = memo
+impl<'a> Foot<'a> {
+    fn new(model: &'a Model, contact: Contact) -> Self {
+        Self {
+            model,
+            contact: Cell::new(contact),
+            reaction: Cell::new(None),
+            power: Cell::new([None; 2]),
+        }
+    }
+
+    fn contact(&self) -> Contact {
+        self.contact.get()
+    }
+
+    fn reaction(&self, t: f64, y: &[f64; N]) -> Reaction {
+        let (s, c) = (mech(y), self.contact());
+        if let Some((tm, sm, cm, r)) = self.reaction.get()
+            && (tm, sm, cm) == (t, s, c)
+        {
+            return r;
+        }
+        let r = ground_reaction(self.model, t, y, c);
+        self.reaction.set(Some((t, s, c, r)));
+        r
+    }
+
+    fn power(&self, t: f64, y: &[f64; N]) -> f64 {
+        let (s, c) = (mech(y), self.contact());
+        let mut memo = self.power.get();
+        if let Some(&Some((_, _, _, g))) = memo
             .iter()
-            .find(|m| m.is_some_and(|(tm, sm, _)| tm == t && sm == s))
+            .find(|m| m.is_some_and(|(tm, sm, cm, _)| (tm, sm, cm) == (t, s, c)))
         {
             return g;
         }
-        let g = power_integrand(self.model, t, y);
+        let g = power_integrand(self.model, t, y, c);
         memo[1] = memo[0];
-        memo[0] = Some((t, s, g));
-        self.memo.set(memo);
+        memo[0] = Some((t, s, c, g));
+        self.power.set(memo);
         g
     }
 
@@ -301,32 +355,7 @@ impl PowerKinks<'_> {
     fn crossed(&self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
         self.model.is_active()
             && t0 < self.model.runtime.t_set
-            && self.integrand(t0, y0) * self.integrand(t1, y1) < 0.0
-    }
-}
-
-/// A remembered value `(t, mechanical state, value)` of a function of the state.
-type Point = (f64, [f64; 8], f64);
-
-/// [`ground_reaction`] with the last value remembered: the lift-off and the blow-up guard
-/// evaluate it at the same points, so each point costs one evaluation.
-struct Reaction<'a> {
-    model: &'a Model,
-    last: Cell<Option<Point>>,
-}
-
-impl Reaction<'_> {
-    fn at(&self, t: f64, y: &[f64; N]) -> f64 {
-        let s = mech(y);
-        if let Some((tl, sl, l)) = self.last.get()
-            && tl == t
-            && sl == s
-        {
-            return l;
-        }
-        let l = ground_reaction(self.model, t, y);
-        self.last.set(Some((t, s, l)));
-        l
+            && self.power(t0, y0) * self.power(t1, y1) < 0.0
     }
 }
 
@@ -334,12 +363,12 @@ struct Stance<'a> {
     model: &'a Model,
     /// The generated Jacobian kernels (Table 1 models); `None` falls back to finite differences.
     jac: Option<crate::poincare::Jac>,
-    kinks: &'a PowerKinks<'a>,
+    foot: &'a Foot<'a>,
 }
 
 impl OdeSystem<N> for Stance<'_> {
     fn rhs(&mut self, t: f64, y: &[f64; N], dy: &mut [f64; N]) {
-        let (qdd, u) = self.model.stance(t, y);
+        let (qdd, u) = self.model.stance(t, y, self.foot.contact());
         dy[..4].copy_from_slice(&y[4..8]);
         dy[4..8].copy_from_slice(&qdd);
         dy[8] = if self.model.is_active() && t < self.model.runtime.t_set {
@@ -353,7 +382,7 @@ impl OdeSystem<N> for Stance<'_> {
     /// which `ydot u` changes sign: its absolute value has a kink there, which would only
     /// cause rejections, and [`PowerQuadrature`] integrates exactly those steps anew.
     fn controlled_components(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> usize {
-        if self.kinks.crossed(t0, y0, t1, y1) {
+        if self.foot.crossed(t0, y0, t1, y1) {
             8
         } else {
             N
@@ -379,7 +408,7 @@ impl OdeSystem<N> for Stance<'_> {
         }
         if self.model.is_active() && t < self.model.runtime.t_set {
             let ydot = y[6] - y[7];
-            let u = control_input(self.model, t, y);
+            let u = control_input(self.model, t, y, self.foot.contact());
             let sign = (ydot * u).signum();
             let i2 = self.model.physical.i2;
             for k in 0..8 {
@@ -407,8 +436,7 @@ impl OdeSystem<N> for Stance<'_> {
 /// 8-point Gauss-Legendre on the dense output, and keeps the difference to the method's value
 /// as a correction.
 struct PowerQuadrature<'a> {
-    model: &'a Model,
-    kinks: &'a PowerKinks<'a>,
+    foot: &'a Foot<'a>,
     /// `sum (exact - method)` over the corrected steps.
     correction: f64,
 }
@@ -428,7 +456,7 @@ impl PowerQuadrature<'_> {
     fn integrand(&self, st: &Step<'_, N>, t: f64) -> f64 {
         let mut y = [0.0; N];
         st.eval(t, &mut y);
-        power_integrand(self.model, t, &y)
+        power_integrand(self.foot.model, t, &y, self.foot.contact())
     }
 
     /// `int_a^b |ydot u| dt` on a piece where `ydot u` keeps its sign.
@@ -444,7 +472,7 @@ impl PowerQuadrature<'_> {
 
 impl Observer<N> for PowerQuadrature<'_> {
     fn wants_step(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
-        self.kinks.crossed(t0, y0, t1, y1)
+        self.foot.crossed(t0, y0, t1, y1)
     }
 
     fn on_step(&mut self, st: &Step<'_, N>) {
@@ -484,26 +512,35 @@ fn mech(y: &[f64; N]) -> [f64; 8] {
     s
 }
 
-/// Records samples of the motion: every accepted step's end and `interior` points inside it.
+/// Records samples of the motion, if `out` is set: every accepted step's end and `interior`
+/// points inside it.
 struct Recorder<'a> {
-    model: &'a Model,
-    out: &'a mut Vec<Sample>,
+    foot: &'a Foot<'a>,
+    out: Option<&'a mut Vec<Sample>>,
     t_offset: f64,
     step: usize,
     interior: usize,
 }
 
 impl Observer<N> for Recorder<'_> {
+    fn wants_step(&mut self, _: f64, _: &[f64; N], _: f64, _: &[f64; N]) -> bool {
+        self.out.is_some()
+    }
+
     fn on_step(&mut self, st: &Step<'_, N>) {
+        let Some(out) = self.out.as_deref_mut() else {
+            return;
+        };
+        let (model, contact) = (self.foot.model, self.foot.contact());
         let mut y = [0.0; N];
         for k in 1..=self.interior + 1 {
             let t =
                 st.t_start() + (st.t_end() - st.t_start()) * k as f64 / (self.interior + 1) as f64;
             st.eval(t, &mut y);
-            let u = control_input(self.model, t, &y);
-            let lambda = self.model.lambda(y[2], y[6], u, y[4]);
+            let u = control_input(model, t, &y, contact);
+            let lambda = ground_reaction(model, t, &y, contact).lambda;
             if y.iter().all(|v| v.is_finite()) && lambda.is_finite() {
-                self.out.push(Sample {
+                out.push(Sample {
                     time: self.t_offset + t,
                     step: self.step,
                     state: mech(&y),
@@ -556,28 +593,9 @@ pub fn walk_with_stats(
     let mut state = initial;
     let mut time = 0.0;
     let mut failure = None;
-    if limits.record {
-        samples.push(Sample {
-            time: 0.0,
-            step: 0,
-            state,
-            lambda: ground_reaction(model, 0.0, &state),
-            u: control_input(model, 0.0, &state),
-        });
-    }
     for k in 0..limits.max_steps {
-        let res = if limits.record {
-            let rec = Recorder {
-                model,
-                out: &mut samples,
-                t_offset: time,
-                step: k,
-                interior: 3,
-            };
-            one_step(model, cfg, &mut integ, k, state, rec)
-        } else {
-            one_step(model, cfg, &mut integ, k, state, NoObserver)
-        };
+        let record = limits.record.then_some((&mut samples, time));
+        let res = one_step(model, cfg, &mut integ, k, state, record);
         match res {
             Ok(r) => {
                 time += r.period;
@@ -607,14 +625,90 @@ fn finite(v: &[f64]) -> bool {
     v.iter().all(|x| x.is_finite())
 }
 
-/// Integrate one stance phase from the post-impact state `s0` and apply the impact.
-fn one_step<O: Observer<N>>(
+/// The contact of a foot at rest (`xd = 0`) under Coulomb friction at `(t, y)`: stuck if the
+/// tangential force that holds it is within the friction cone (`|lambda_t| <= mu0 lambda_n`),
+/// otherwise sliding the way the unbalanced force pushes it, if that slide is consistent (the
+/// foot accelerates in its own direction; Painleve's paradox otherwise).
+fn contact_at_rest(model: &Model, t: f64, y: &[f64; N], step: usize) -> Result<Contact, Failure> {
+    let held = ground_reaction(model, t, y, Contact::Stuck);
+    if held.tangential.abs() <= model.runtime.mu0 * held.normal {
+        return Ok(Contact::Stuck);
+    }
+    let slide = Slide::of(-held.tangential);
+    let (qdd, _) = model.stance(t, y, Contact::Sliding(slide));
+    if qdd[0] * slide.sigma() > 0.0 {
+        Ok(Contact::Sliding(slide))
+    } else {
+        Err(Failure::ContactInconsistent {
+            step,
+            t,
+            normal: held.normal,
+            tangential: held.tangential,
+            state: mech(y),
+        })
+    }
+}
+
+/// The ground reaction where a contact begins (a stance phase or a segment after a stick-slip
+/// transition): a negative normal force there is a lift-off, or, where only the sliding
+/// friction makes it negative, an inconsistent contact (Painleve's paradox: the foot could
+/// neither slide nor leave the floor without a tangential impact, which the paper's impact model
+/// does not have).
+fn reaction_at_start(
+    foot: &Foot<'_>,
+    t: f64,
+    y: &[f64; N],
+    step: usize,
+) -> Result<Reaction, Failure> {
+    let r = foot.reaction(t, y);
+    if r.normal >= 0.0 || r.normal.is_nan() {
+        return Ok(r);
+    }
+    let model = foot.model;
+    Err(match model.frictionless_normal(t, y) {
+        Some(n) if n >= 0.0 => Failure::ContactInconsistent {
+            step,
+            t,
+            normal: r.normal,
+            tangential: r.tangential,
+            state: mech(y),
+        },
+        _ => Failure::LiftOff {
+            step,
+            t,
+            lambda: r.lambda,
+            state: mech(y),
+        },
+    })
+}
+
+/// The contact at the start of a stance phase: the smooth law, or under Coulomb friction
+/// sliding with the post-impact foot velocity, or at rest.
+fn initial_contact(model: &Model, y: &[f64; N], step: usize) -> Result<Contact, Failure> {
+    match model.friction_law() {
+        FrictionLaw::Tanh => Ok(Contact::Smooth),
+        FrictionLaw::Coulomb if y[4] != 0.0 => Ok(Contact::Sliding(Slide::of(y[4]))),
+        FrictionLaw::Coulomb => contact_at_rest(model, 0.0, y, step),
+    }
+}
+
+/// A foot brought to rest: exactly zero velocity along the floor (`xd = 0`, and `zd = 0` with
+/// it on the slope, where `zd = -xd tan phi`).
+fn at_rest(mut y: [f64; N]) -> [f64; N] {
+    y[4] = 0.0;
+    y[5] = 0.0;
+    y
+}
+
+/// Integrate one stance phase from the post-impact state `s0` and apply the impact; with
+/// `record`, append samples of the motion (times offset by the second element) to the vector.
+fn one_step(
     model: &Model,
     cfg: &SimConfig,
     integ: &mut Integrator<N>,
     step: usize,
     s0: [f64; 8],
-    obs: O,
+    record: Option<(&mut Vec<Sample>, f64)>,
 ) -> Result<StepResult, Failure> {
     if !finite(&s0) {
         return Err(Failure::NonFinite {
@@ -626,63 +720,93 @@ fn one_step<O: Observer<N>>(
     let mut y0 = [0.0; N];
     y0[..8].copy_from_slice(&s0);
     let lambda_max = cfg.lambda_blowup * model.physical.total_mass() * model.physical.g;
+    let foot = Foot::new(model, initial_contact(model, &y0, step)?);
 
-    let lambda0 = ground_reaction(model, 0.0, &y0);
-    if !lambda0.is_finite() || lambda0.abs() > lambda_max {
+    let r0 = foot.reaction(0.0, &y0);
+    if !r0.lambda.is_finite() || r0.lambda.abs() > lambda_max {
         return Err(Failure::LambdaDenominatorZero {
             step,
             t: 0.0,
-            lambda: lambda0,
+            lambda: r0.lambda,
             state: s0,
         });
     }
-    if lambda0 < 0.0 {
-        return Err(Failure::LiftOff {
-            step,
-            t: 0.0,
-            lambda: lambda0,
-            state: s0,
-        });
-    }
+    reaction_at_start(&foot, 0.0, &y0, step)?;
+    let (record, t_offset) = match record {
+        Some((out, t_offset)) => {
+            out.push(Sample {
+                time: t_offset,
+                step,
+                state: s0,
+                lambda: r0.lambda,
+                u: control_input(model, 0.0, &y0, foot.contact()),
+            });
+            (Some(out), t_offset)
+        }
+        None => (None, 0.0),
+    };
 
     let heel = model.heel_strike_angle();
     let rear = model.rear_contact_angle();
-    let mut lambda_min = lambda0;
-    let reaction = Reaction {
-        model,
-        last: Cell::new(None),
-    };
+    let mu0 = model.runtime.mu0;
+    let mut lambda_min = r0.lambda;
+    let foot = &foot;
     let mut events = [
         Event::terminal(Direction::Rising, move |_, y: &[f64; N]| y[2] - heel),
-        Event::terminal(Direction::Falling, |t, y: &[f64; N]| reaction.at(t, y)),
+        Event::terminal(Direction::Falling, |t, y: &[f64; N]| {
+            foot.reaction(t, y).normal
+        }),
         Event::terminal(Direction::Falling, move |_, y: &[f64; N]| y[2] - rear),
         Event::terminal(Direction::Rising, |t, y: &[f64; N]| {
-            reaction.at(t, y).abs() - lambda_max
+            foot.reaction(t, y).lambda.abs() - lambda_max
+        }),
+        // Coulomb: a sliding foot comes to rest (sigma xd reaches zero; zero while stuck).
+        Event::terminal(Direction::Falling, |_, y: &[f64; N]| {
+            foot.contact().sigma() * y[4]
+        }),
+        // Coulomb: a stuck foot starts to slip (the force that holds it leaves the cone).
+        Event::terminal(Direction::Rising, |t, y: &[f64; N]| {
+            if foot.contact() == Contact::Stuck {
+                let r = foot.reaction(t, y);
+                r.tangential.abs() - mu0 * r.normal
+            } else {
+                -1.0
+            }
         }),
     ];
-    let kinks = PowerKinks {
-        model,
-        memo: Cell::new([None; 2]),
+    let n_events = match model.friction_law() {
+        FrictionLaw::Tanh => 4,
+        FrictionLaw::Coulomb => 6,
     };
     let mut obs = Pair::new(
         PowerQuadrature {
-            model,
-            kinks: &kinks,
+            foot,
             correction: 0.0,
         },
-        obs,
+        Recorder {
+            foot,
+            out: record,
+            t_offset,
+            step,
+            interior: 3,
+        },
     );
     let mut sys = Stance {
         model,
         jac: crate::poincare::Jac::new(model).ok(),
-        kinks: &kinks,
+        foot,
     };
     let mut t = 0.0;
     let mut y = y0;
+    let mut stuck_time = 0.0;
     let t_limit = cfg.max_step_time;
     let (te, ye) = loop {
-        let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events, &mut obs);
-        let lam = ground_reaction(model, out.t(), out.y());
+        let (t_start, contact) = (t, foot.contact());
+        let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events[..n_events], &mut obs);
+        if contact == Contact::Stuck {
+            stuck_time += out.t() - t_start;
+        }
+        let lam = foot.reaction(out.t(), out.y()).lambda;
         if lam.is_finite() {
             lambda_min = lambda_min.min(lam);
         }
@@ -692,6 +816,29 @@ fn one_step<O: Observer<N>>(
                 y = yb;
             }
             Outcome::Event { index: 0, t, y } => break (t, y),
+            Outcome::Event {
+                index: 4,
+                t: te,
+                y: ye,
+            } => {
+                // The sliding foot stops: it sticks, or slides back if the cone cannot hold it.
+                y = at_rest(ye);
+                t = te;
+                foot.contact.set(contact_at_rest(model, t, &y, step)?);
+                reaction_at_start(foot, t, &y, step)?;
+            }
+            Outcome::Event {
+                index: 5,
+                t: te,
+                y: ye,
+            } => {
+                // The stuck foot slips, the way the force that held it no longer can.
+                let held = foot.reaction(te, &ye);
+                foot.contact
+                    .set(Contact::Sliding(Slide::of(-held.tangential)));
+                (t, y) = (te, ye);
+                reaction_at_start(foot, t, &y, step)?;
+            }
             Outcome::Event { index: 1, t, y } => {
                 return Err(if lam.abs() > lambda_max * 1e-3 || !lam.is_finite() {
                     Failure::LambdaDenominatorZero {
@@ -846,5 +993,6 @@ fn one_step<O: Observer<N>>(
         foot_normal_velocity: normal_velocity,
         rear_impulse: imp.rear_impulse,
         lambda_min,
+        stuck_time,
     })
 }

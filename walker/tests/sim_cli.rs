@@ -217,3 +217,46 @@ fn sweep_chains_keep_their_order_and_a_pipe_gets_no_progress_bar() {
         assert!((mu0[0] - 0.3).abs() < 1e-12 && (mu0[1] - 0.4).abs() < 1e-12);
     }
 }
+
+/// `--friction coulomb` on a built-in scene and `friction = "coulomb"` in a scene file give the
+/// same walker; the JSON reports the stuck time; `fixed-point` refuses Coulomb friction naming
+/// the flag.
+#[test]
+fn coulomb_friction_from_the_flag_or_a_scene_file() {
+    let run = |args: &[&str]| {
+        let mut all = vec!["simulate", "--max-steps", "3", "--json"];
+        all.extend_from_slice(args);
+        let o = walker(&all);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+        assert_eq!(v["status"], "ok", "{v}");
+        let s = &v["steps"][2];
+        (s["T"].as_f64(), s["stuck_time"].as_f64())
+    };
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../scenes/general-level-coulomb.toml"
+    );
+    let (t_flag, stuck) = run(&[
+        "--scene",
+        "active-level",
+        "--friction",
+        "coulomb",
+        "--mu0",
+        "0.4",
+    ]);
+    let (t_file, _) = run(&["--scene", file, "--mu0", "0.4"]);
+    let (t_tanh, stuck_tanh) = run(&["--scene", "active-level", "--mu0", "0.4"]);
+    assert_eq!(t_flag, t_file);
+    assert!(stuck.is_some_and(|s| s > 0.0) && stuck_tanh == Some(0.0));
+    assert!(t_flag != t_tanh);
+    let o = walker(&[
+        "fixed-point",
+        "--scene",
+        "active-level",
+        "--friction",
+        "coulomb",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("friction"));
+}
