@@ -12,12 +12,16 @@ use crate::progress::Progress;
 use crate::sim::{Sample, SimConfig, StepResult, Walk, WalkLimits, walk};
 use crate::sweep::{SweepPoint, mu0_grid, sweep_chains};
 
-fn active(mu0: f64, t_set: f64) -> Model {
-    Model::active_level(Runtime {
+fn runtime(mu0: f64, t_set: f64) -> Runtime {
+    Runtime {
         mu0,
         t_set,
         ..Runtime::default()
-    })
+    }
+}
+
+fn active(mu0: f64, t_set: f64) -> Model {
+    Model::active_level(runtime(mu0, t_set))
 }
 
 fn passive(mu0: f64, phi: f64) -> Model {
@@ -104,8 +108,13 @@ pub struct Data {
     pub convergence: Vec<[f64; 3]>,
     /// Fig. 8: sweeps over `mu0` for `T_set` = 0.2, 0.3, 0.4.
     pub active_sweep: Vec<(f64, Vec<SweepPoint>)>,
-    /// Figs. 10 and 13: sweeps over `mu0` for `phi` = 0.10, 0.15, 0.20.
+    /// Figs. 10 and 13: sweeps over `mu0` for `phi` = 0.10, 0.15, 0.20, each `mu0` from (P2b)
+    /// (the paper's (P5b) "Repeat from (P2b)", `walker sweep --restart`).
     pub passive_sweep: Vec<(f64, Vec<SweepPoint>)>,
+    /// Fig. 10 read the other way: each `mu0` from the previous steady state ((P4b)).
+    pub passive_continuation: Vec<(f64, Vec<SweepPoint>)>,
+    /// The Fig. 8 sweep at `T_set = 0.3` with exact Coulomb friction (Eq. 25, stick-slip).
+    pub coulomb_sweep: Vec<(f64, Vec<SweepPoint>)>,
     /// Fig. 11: motions at `phi = 0.2`, `mu0` = 0.2 and 0.5.
     pub sticks: Vec<(f64, Walk)>,
     /// Fig. 12: step lengths at `phi = 0.2` for four `mu0`.
@@ -185,6 +194,32 @@ pub fn collect() -> Data {
     );
     bar.finish();
     let passive_sweep = PHIS.iter().copied().zip(pas).collect();
+    let bar = Progress::new("Fig. 10 sweep, continued", PHIS.len() * pgrid.len());
+    let cont = sweep_chains(
+        &PHIS,
+        |phi, mu0| passive(mu0, phi),
+        &cfg,
+        &pgrid,
+        |phi| passive(0.0, phi).initial_state(0.5),
+        &limits(20, false),
+        false,
+        &|| bar.tick(),
+    );
+    bar.finish();
+    let passive_continuation = PHIS.iter().copied().zip(cont).collect();
+    let bar = Progress::new("Fig. 8 sweep, Coulomb", grid.len());
+    let coulomb = sweep_chains(
+        &[0.3],
+        |ts, mu0| Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts)),
+        &cfg,
+        &grid,
+        |ts| active(0.0, ts).initial_state(0.8),
+        &long,
+        false,
+        &|| bar.tick(),
+    );
+    bar.finish();
+    let coulomb_sweep = vec![(0.3, coulomb.into_iter().next().unwrap_or_default())];
     let sticks = [0.2, 0.5]
         .iter()
         .map(|&mu0| {
@@ -210,6 +245,8 @@ pub fn collect() -> Data {
         convergence,
         active_sweep,
         passive_sweep,
+        passive_continuation,
+        coulomb_sweep,
         sticks,
         step_lengths,
         fall,
@@ -236,6 +273,16 @@ fn write_csvs(out: &Path, d: &Data) -> io::Result<()> {
     fs::write(out.join("fig7_convergence.csv"), c)?;
     sweep_csv(&out.join("fig8_sweep.csv"), "T_set", &d.active_sweep)?;
     sweep_csv(&out.join("fig10_sweep.csv"), "phi", &d.passive_sweep)?;
+    sweep_csv(
+        &out.join("fig10_sweep_continued.csv"),
+        "phi",
+        &d.passive_continuation,
+    )?;
+    sweep_csv(
+        &out.join("fig8_sweep_coulomb.csv"),
+        "T_set",
+        &d.coulomb_sweep,
+    )?;
     for (mu0, w) in &d.sticks {
         samples_csv(&out.join(format!("fig11_stick_mu0_{mu0}.csv")), &w.samples)?;
     }
@@ -333,6 +380,46 @@ pub fn summary(d: &Data) -> String {
             } else {
                 fails.join(" ")
             }
+        );
+    }
+    for (phi, pts) in &d.passive_continuation {
+        let fails: Vec<String> = pts
+            .iter()
+            .filter_map(|p| {
+                p.failure
+                    .as_ref()
+                    .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "- phi = {phi}, each mu0 continued from the previous one ((P4b)): failures at mu0 {}",
+            if fails.is_empty() {
+                "none".to_owned()
+            } else {
+                fails.join(" ")
+            }
+        );
+    }
+    if let (Some((_, tanh)), Some((_, exact))) = (
+        d.active_sweep.iter().find(|(ts, _)| *ts == 0.3),
+        d.coulomb_sweep.first(),
+    ) {
+        let dv = tanh
+            .iter()
+            .zip(exact)
+            .filter(|(a, b)| a.mu0 > 0.0 && a.failure.is_none() && b.failure.is_none())
+            .filter_map(|(a, b)| Some((a.last?.speed, b.last?.speed)))
+            .map(|(a, b)| ((a - b) / b).abs())
+            .fold(0.0, f64::max);
+        let fails = exact.iter().filter(|p| p.failure.is_some()).count();
+        let _ = writeln!(
+            s,
+            "- exact Coulomb friction (Eq. 25, stick-slip), T_set = 0.3: max V at {}; min SR at {}; \
+             V differs from the tanh law (c = 100) by at most {:.2} % for mu0 in (0, 1]; {fails} failed points",
+            argbest(exact, |r| Some(r.speed), true),
+            argbest(exact, |r| r.sr, false),
+            100.0 * dv
         );
     }
     let _ = writeln!(
@@ -570,6 +657,36 @@ fn write_figures(out: &Path, d: &Data) -> Result<(), String> {
                 "mu0",
                 "V [m/s]",
                 per_mu0(&d.passive_sweep, "phi", |s| Some(s.speed), 0.0),
+                true,
+            ),
+        ),
+        (
+            "fig10b_continued",
+            fig(
+                "Fig. 10(b), each mu0 continued from the previous one ((P4b))",
+                "mu0",
+                "V [m/s]",
+                per_mu0(&d.passive_continuation, "phi", |s| Some(s.speed), 0.0),
+                true,
+            ),
+        ),
+        (
+            "fig8c_coulomb",
+            fig(
+                "Fig. 8(c) at T_set = 0.3: tanh law (c = 100) and exact Coulomb friction",
+                "mu0",
+                "V [m/s]",
+                {
+                    let mut s =
+                        per_mu0(&d.active_sweep[1..2], "tanh, T_set", |s| Some(s.speed), 0.0);
+                    s.extend(per_mu0(
+                        &d.coulomb_sweep,
+                        "Coulomb, T_set",
+                        |s| Some(s.speed),
+                        0.0,
+                    ));
+                    s
+                },
                 true,
             ),
         ),
