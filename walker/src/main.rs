@@ -64,6 +64,12 @@ struct Common {
     /// Integrator.
     #[arg(long, value_enum, default_value = "dop853")]
     method: MethodArg,
+    /// Relative tolerance of the integrator, in (0, 1) (default 1e-10; 1e-8 with rodas4).
+    #[arg(long, allow_hyphen_values = true)]
+    rtol: Option<f64>,
+    /// Absolute tolerance of the integrator, in (0, 1) (default 1e-12; 1e-10 with rodas4).
+    #[arg(long, allow_hyphen_values = true)]
+    atol: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]
     json: bool,
@@ -148,8 +154,10 @@ enum Command {
     },
 }
 
-fn config(m: MethodArg) -> SimConfig {
-    match m {
+/// The integrator settings of the flags: the method's default tolerances, overridden by
+/// `--rtol` and `--atol` (each in (0, 1), else an input error naming the flag).
+fn config(c: &Common) -> Result<SimConfig, app::InputError> {
+    let base = match c.method {
         MethodArg::Dop853 => SimConfig::default(),
         MethodArg::Rodas4 => SimConfig {
             method: Method::Rodas4,
@@ -157,7 +165,20 @@ fn config(m: MethodArg) -> SimConfig {
             atol: 1e-10,
             ..SimConfig::default()
         },
-    }
+    };
+    let tol = |field: &str, v: Option<f64>, default: f64| match v {
+        None => Ok(default),
+        Some(x) if x > 0.0 && x < 1.0 => Ok(x),
+        Some(x) => Err(app::InputError {
+            field: field.to_owned(),
+            message: format!("{x} is outside the valid range (0, 1)"),
+        }),
+    };
+    Ok(SimConfig {
+        rtol: tol("rtol", c.rtol, base.rtol)?,
+        atol: tol("atol", c.atol, base.atol)?,
+        ..base
+    })
 }
 
 fn run(cli: Cli) -> Result<(), (u8, String)> {
@@ -191,8 +212,8 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 duration: duration.unwrap_or(f64::INFINITY),
                 record: false,
             };
-            let w =
-                app::simulate(&setup, omega0, &limits, &config(common.method)).map_err(input)?;
+            let w = app::simulate(&setup, omega0, &limits, &config(&common).map_err(input)?)
+                .map_err(input)?;
             if common.json {
                 println!("{}", app::walk_json(&w));
             } else {
@@ -239,7 +260,7 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 mu0_step,
                 restart,
                 &limits,
-                &config(common.method),
+                &config(&common).map_err(input)?,
             )
             .map_err(input)?;
             if common.json {
@@ -263,8 +284,9 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 friction: common.friction.map(friction),
             };
             let setup = app::resolve(&common.scene, &ov).map_err(input)?;
-            let out = walker::poincare::cli_report(&setup, omega0, &config(common.method))
-                .map_err(input)?;
+            let out =
+                walker::poincare::cli_report(&setup, omega0, &config(&common).map_err(input)?)
+                    .map_err(input)?;
             if common.json {
                 println!("{}", out.json);
             } else {

@@ -111,6 +111,30 @@ fn bad_input_exits_2_naming_the_field() {
         ),
         (&["simulate", "--scene", "active-level", "--c", "0"], "c"),
         (
+            &["simulate", "--scene", "active-level", "--rtol", "0"],
+            "rtol",
+        ),
+        (
+            &["simulate", "--scene", "active-level", "--atol", "NaN"],
+            "atol",
+        ),
+        (
+            &[
+                "sweep",
+                "--scene",
+                "active-level",
+                "--mu0-from",
+                "0",
+                "--mu0-to",
+                "0.1",
+                "--mu0-step",
+                "0.1",
+                "--rtol",
+                "2",
+            ],
+            "rtol",
+        ),
+        (
             &["simulate", "--scene", "active-level", "--t-set", "0"],
             "t-set",
         ),
