@@ -159,6 +159,16 @@ fn eval(kernel: &str, pt: &Point) -> (Vec<f64>, Option<Vec<f64>>, Vec<f64>) {
                 common::generic_accel(&p, th1, w, u, mu).0.to_vec(),
             )
         }
+        "closed_loop_level" => {
+            let (xd, mu) = pt.friction();
+            let (w, v) = (pt.get("th1d"), pt.get("v"));
+            let (q, _, _, u) = common::generic_closed_loop(&p, th1, w, mu, v);
+            (
+                gl::closed_loop_level(&kl, th1, w, xd, v).to_vec(),
+                t1.then(|| al::closed_loop_level(&ka, th1, w, xd, v).to_vec()),
+                vec![q[0], q[1], q[2], q[3], u],
+            )
+        }
         "control_level" => {
             let (xd, mu) = pt.friction();
             let w = pt.get("th1d");
@@ -327,7 +337,7 @@ fn main() {
     // Right-hand side of the closed loop: A, B -> u = (v + B) / A -> qdd.
     let rhs: Vec<Cand<'_>> = vec![
         (
-            "active_level",
+            "active_level control_level + accel_level",
             Box::new(move |xs: &[Input]| {
                 xs.iter().fold(0.0, |s, x| {
                     let [a, b] = al::control_level(ka, x.th1, x.th1d, x.xd);
@@ -338,7 +348,7 @@ fn main() {
             }),
         ),
         (
-            "general_level",
+            "general_level control_level + accel_level",
             Box::new(move |xs: &[Input]| {
                 xs.iter().fold(0.0, |s, x| {
                     let [a, b] = gl::control_level(kl, x.th1, x.th1d, x.xd);
@@ -359,7 +369,7 @@ fn main() {
             }),
         ),
         (
-            "active_level closed_loop_level (one call)",
+            "active_level closed_loop_level (one call: what the simulator evaluates)",
             Box::new(move |xs: &[Input]| {
                 xs.iter().fold(0.0, |s, x| {
                     let q = al::closed_loop_level(ka, x.th1, x.th1d, x.xd, x.v);
@@ -368,7 +378,16 @@ fn main() {
             }),
         ),
         (
-            "floor: one sin_cos + one tanh",
+            "general_level closed_loop_level (one call)",
+            Box::new(move |xs: &[Input]| {
+                xs.iter().fold(0.0, |s, x| {
+                    let q = gl::closed_loop_level(kl, x.th1, x.th1d, x.xd, x.v);
+                    s + q[0] + q[2] + q[3]
+                })
+            }),
+        ),
+        (
+            "std sin_cos + std tanh alone (what the generic path pays for them)",
             Box::new(move |xs: &[Input]| {
                 xs.iter().fold(0.0, |s, x| {
                     let (a, b) = x.th1.sin_cos();
@@ -562,7 +581,10 @@ fn main() {
     println!("| kernel | candidate | ns/eval | generic / this |");
     println!("|---|---|---:|---:|");
     let groups: [(&str, &[Cand<'_>]); 7] = [
-        ("rhs: control_level + accel_level (u = (v + B)/A)", &rhs),
+        (
+            "rhs: closed loop, u = (v + B)/A then qdd (Eqs. 27, 31)",
+            &rhs,
+        ),
         ("lambda_level", &lam),
         ("projection_level (Y)", &proj),
         ("impact2_level", &imp2),
@@ -585,6 +607,7 @@ fn main() {
     );
     println!("|---|---:|---|---|---|---|---|");
     for kernel in [
+        "closed_loop_level",
         "accel_level",
         "control_level",
         "lambda_level",
