@@ -240,8 +240,11 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
+/// 20 samples of 1.5 s per bench; no plots (Criterion's plotting needs a system font, which a
+/// fresh machine need not have: it panicked with `FontUnavailable` here).
 fn config() -> Criterion {
     Criterion::default()
+        .without_plots()
         .sample_size(20)
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_millis(1500))

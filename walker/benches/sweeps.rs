@@ -35,7 +35,20 @@ enum Fig {
     Fig10,
 }
 
+/// The chains of a figure: `T_set` (Fig. 8) or `phi` (Fig. 10).
+fn chains(fig: Fig) -> &'static [f64] {
+    match fig {
+        Fig::Fig8 => &[0.2, 0.3, 0.4],
+        Fig::Fig10 => &[0.10, 0.15, 0.20],
+    }
+}
+
 fn run(fig: Fig, tol: f64) -> Vec<Vec<SweepPoint>> {
+    run_on(fig, tol, chains(fig))
+}
+
+/// The sweep of `fig` over the chains `on` only.
+fn run_on(fig: Fig, tol: f64, on: &[f64]) -> Vec<Vec<SweepPoint>> {
     let cfg = SimConfig {
         method: Method::Dop853,
         rtol: tol,
@@ -51,7 +64,7 @@ fn run(fig: Fig, tol: f64) -> Vec<Vec<SweepPoint>> {
         Fig::Fig8 => {
             let grid = mu0_grid(0.0, 1.0, 0.01);
             sweep_chains(
-                &[0.2, 0.3, 0.4],
+                on,
                 |t_set, mu0| {
                     Model::active_level(Runtime {
                         mu0,
@@ -83,7 +96,7 @@ fn run(fig: Fig, tol: f64) -> Vec<Vec<SweepPoint>> {
                 })
             };
             sweep_chains(
-                &[0.10, 0.15, 0.20],
+                on,
                 make,
                 &cfg,
                 &grid,
@@ -212,5 +225,15 @@ fn main() {
                 e.median, e.p90, e.p99, e.max, e.above_1e8, e.n, e.differ_kind, e.differ_steps
             );
         }
+        // The CPU work: each chain alone, one after the other (one run each).
+        let serial: Vec<String> = chains(fig)
+            .iter()
+            .map(|&c| {
+                let t0 = Instant::now();
+                run_on(fig, 1e-9, &[c]);
+                format!("{c}: {:.2} s", t0.elapsed().as_secs_f64())
+            })
+            .collect();
+        println!("{name} at 1e-9, each chain alone: {}", serial.join(", "));
     }
 }
