@@ -307,6 +307,23 @@ fn argbest(pts: &[SweepPoint], key: impl Fn(&StepResult) -> Option<f64>, max: bo
     )
 }
 
+/// The failures of a sweep as `mu0:name` pairs, or `none`.
+fn failures(pts: &[SweepPoint]) -> String {
+    let fails: Vec<String> = pts
+        .iter()
+        .filter_map(|p| {
+            p.failure
+                .as_ref()
+                .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
+        })
+        .collect();
+    if fails.is_empty() {
+        "none".to_owned()
+    } else {
+        fails.join(" ")
+    }
+}
+
 /// The summary table of the paper's claims and the values found.
 pub fn summary(d: &Data) -> String {
     let mut s = String::from("Claims of the paper and values found\n");
@@ -330,23 +347,7 @@ pub fn summary(d: &Data) -> String {
         v4.join(", ")
     );
     for (ts, pts) in &d.active_sweep {
-        let fails: Vec<String> = pts
-            .iter()
-            .filter_map(|p| {
-                p.failure
-                    .as_ref()
-                    .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
-            })
-            .collect();
-        let _ = writeln!(
-            s,
-            "- T_set = {ts}: failures at mu0 {}",
-            if fails.is_empty() {
-                "none".to_owned()
-            } else {
-                fails.join(" ")
-            }
-        );
+        let _ = writeln!(s, "- T_set = {ts}: failures at mu0 {}", failures(pts));
         let _ = writeln!(
             s,
             "  max V at {}; min SR at {}",
@@ -364,41 +365,13 @@ pub fn summary(d: &Data) -> String {
         }
     }
     for (phi, pts) in &d.passive_sweep {
-        let fails: Vec<String> = pts
-            .iter()
-            .filter_map(|p| {
-                p.failure
-                    .as_ref()
-                    .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
-            })
-            .collect();
-        let _ = writeln!(
-            s,
-            "- phi = {phi}: failures at mu0 {}",
-            if fails.is_empty() {
-                "none".to_owned()
-            } else {
-                fails.join(" ")
-            }
-        );
+        let _ = writeln!(s, "- phi = {phi}: failures at mu0 {}", failures(pts));
     }
     for (phi, pts) in &d.passive_continuation {
-        let fails: Vec<String> = pts
-            .iter()
-            .filter_map(|p| {
-                p.failure
-                    .as_ref()
-                    .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
-            })
-            .collect();
         let _ = writeln!(
             s,
             "- phi = {phi}, each mu0 continued from the previous one ((P4b)): failures at mu0 {}",
-            if fails.is_empty() {
-                "none".to_owned()
-            } else {
-                fails.join(" ")
-            }
+            failures(pts)
         );
     }
     if let (Some((_, tanh)), Some((_, exact))) = (
