@@ -835,7 +835,7 @@ impl Run<'_> {
             }
             nonfinite_streak = 0;
 
-            let (accepted, h_new) = match config.fixed_step {
+            let (accepted, mut h_new) = match config.fixed_step {
                 Some(hf) => (true, hf),
                 None => controller.propose(err, h),
             };
@@ -848,12 +848,6 @@ impl Run<'_> {
 
             // ---- The step is accepted. ----
             stats.accepted_steps += 1;
-            let h_new = if config.fixed_step.is_none() {
-                let h_new = h_new.min(hmax);
-                if reject { h_new.min(h) } else { h_new }
-            } else {
-                h_new
-            };
             let t_new = if last { target } else { t + h };
             let y_new = *st.y_new();
             let need_events = match events::check_end(events, t_new, &y_new) {
@@ -924,6 +918,12 @@ impl Run<'_> {
                 } else {
                     Outcome::Breakpoint { t, y }
                 };
+            }
+            if config.fixed_step.is_none() {
+                h_new = h_new.min(hmax);
+                if reject {
+                    h_new = h_new.min(h);
+                }
             }
             reject = false;
             h = h_new;
