@@ -83,6 +83,11 @@ impl Kernel {
         set.into_iter().collect()
     }
 
+    /// The output called `name`, if the kernel has one.
+    pub fn output(&self, name: &str) -> Option<&RatFunc> {
+        self.outputs.iter().find(|(n, _)| n == name).map(|(_, r)| r)
+    }
+
     /// Checks that the staged form, if any, composes to the outputs exactly.
     ///
     /// # Errors

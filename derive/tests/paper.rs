@@ -8,49 +8,20 @@
 //! Where the paper is wrong, the test asserts the derived form and says what is printed;
 //! `docs/errata.md` lists every such case with the name of its test.
 
-use std::sync::OnceLock;
+mod common;
+
+use common::{cos1, derivation, div, out, s, sin1};
 
 use num_traits::ToPrimitive;
 use walker_symbolic::mechanics::{
-    self, Floor, cos, frac, int, sin, sin_half_alpha, sym, tan_phi, total_inertia, total_mass,
+    self, Floor, cos, frac, int, sin, sin_half_alpha, tan_phi, total_inertia, total_mass,
 };
 use walker_symbolic::symbol::{Atom, BaseAngle, NUM_ATOMS};
-use walker_symbolic::{Derivation, Error, Matrix, Poly, Q, RatFunc, Sym};
+use walker_symbolic::{Error, Matrix, Poly, Q, RatFunc, Sym};
 
 // ---------------------------------------------------------------------------------------------
 // Helpers
 // ---------------------------------------------------------------------------------------------
-
-fn derivation() -> &'static Derivation {
-    static D: OnceLock<Derivation> = OnceLock::new();
-    D.get_or_init(|| Derivation::new().expect("the derivation succeeds"))
-}
-
-/// Output `name` of kernel `kernel`.
-fn out(kernel: &str, name: &str) -> RatFunc {
-    let k = derivation().kernel(kernel).expect("kernel exists");
-    k.outputs
-        .iter()
-        .find(|(n, _)| n == name)
-        .map(|(_, r)| r.clone())
-        .expect("the kernel has this output")
-}
-
-fn s(x: Sym) -> RatFunc {
-    sym(x)
-}
-
-fn sin1(x: Sym) -> RatFunc {
-    sin(&[(x, 1)]).expect("angle")
-}
-
-fn cos1(x: Sym) -> RatFunc {
-    cos(&[(x, 1)]).expect("angle")
-}
-
-fn div(a: &RatFunc, b: &RatFunc) -> RatFunc {
-    a.div(b).expect("nonzero divisor")
-}
 
 fn mat(rows: Vec<Vec<RatFunc>>) -> Matrix {
     Matrix::from_rows(rows).expect("rectangular")

@@ -20,42 +20,13 @@
 //! - the output control: `yddot = th1dd - th2dd = A_s u - B_s` with, from the two equations
 //!   above, `A_s = 1 / (m_t l^2 + I1) + 1 / I2` and `B_s = -m_t g l sin th1 / (m_t l^2 + I1)`.
 
-use std::sync::OnceLock;
+mod common;
 
-use walker_symbolic::mechanics::{self, cos, int, sin, sym, total_mass};
+use common::{cos1, derivation, div, out, s, sin1};
+
+use walker_symbolic::mechanics::{self, int, total_mass};
 use walker_symbolic::symbol::{Atom, BaseAngle, NUM_ATOMS};
-use walker_symbolic::{Derivation, RatFunc, Sym};
-
-fn derivation() -> &'static Derivation {
-    static D: OnceLock<Derivation> = OnceLock::new();
-    D.get_or_init(|| Derivation::new().expect("the derivation succeeds"))
-}
-
-/// Output `name` of kernel `kernel`.
-fn out(kernel: &str, name: &str) -> RatFunc {
-    let k = derivation().kernel(kernel).expect("kernel exists");
-    k.outputs
-        .iter()
-        .find(|(n, _)| n == name)
-        .map(|(_, r)| r.clone())
-        .expect("the kernel has this output")
-}
-
-fn s(x: Sym) -> RatFunc {
-    sym(x)
-}
-
-fn div(a: &RatFunc, b: &RatFunc) -> RatFunc {
-    a.div(b).expect("nonzero divisor")
-}
-
-fn sin1(x: Sym) -> RatFunc {
-    sin(&[(x, 1)]).expect("angle")
-}
-
-fn cos1(x: Sym) -> RatFunc {
-    cos(&[(x, 1)]).expect("angle")
-}
+use walker_symbolic::{RatFunc, Sym};
 
 /// `m_t l^2 + I1`: the wheel's moment of inertia about the stuck foot.
 fn inertia_about_foot() -> RatFunc {

@@ -1,0 +1,44 @@
+//! Helpers shared by the derivation's test files (`paper.rs`, `stick.rs`).
+
+#![allow(dead_code, reason = "each test file uses a subset")]
+
+use std::sync::OnceLock;
+
+use walker_symbolic::mechanics::{cos, sin, sym};
+use walker_symbolic::{Derivation, RatFunc, Sym};
+
+/// The derivation, made once per test binary.
+pub fn derivation() -> &'static Derivation {
+    static D: OnceLock<Derivation> = OnceLock::new();
+    D.get_or_init(|| Derivation::new().expect("the derivation succeeds"))
+}
+
+/// Output `name` of kernel `kernel`.
+pub fn out(kernel: &str, name: &str) -> RatFunc {
+    derivation()
+        .kernel(kernel)
+        .expect("kernel exists")
+        .output(name)
+        .expect("the kernel has this output")
+        .clone()
+}
+
+/// A symbol as a rational function.
+pub fn s(x: Sym) -> RatFunc {
+    sym(x)
+}
+
+/// `sin x` of an angle symbol.
+pub fn sin1(x: Sym) -> RatFunc {
+    sin(&[(x, 1)]).expect("angle")
+}
+
+/// `cos x` of an angle symbol.
+pub fn cos1(x: Sym) -> RatFunc {
+    cos(&[(x, 1)]).expect("angle")
+}
+
+/// `a / b`.
+pub fn div(a: &RatFunc, b: &RatFunc) -> RatFunc {
+    a.div(b).expect("nonzero divisor")
+}
