@@ -188,6 +188,7 @@ const D716: f64 = -0.14972683625798562581422125276e+03;
 ///
 /// `k[j]` holds stage `j + 1` of the step (`k[0]` = `f(t, y)`), `k[12]` is
 /// `f(t + h, y_new)` and `k[13..16]` the three extra dense-output stages.
+#[derive(Clone)]
 pub(crate) struct Dop853<const N: usize> {
     k: [[f64; N]; 16],
     y_new: [f64; N],

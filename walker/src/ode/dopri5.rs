@@ -52,6 +52,7 @@ const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
 /// Stage storage and dense-output coefficients of DOPRI5.
+#[derive(Clone)]
 pub(crate) struct Dopri5<const N: usize> {
     k1: [f64; N],
     k2: [f64; N],

@@ -39,8 +39,9 @@ struct Track<const N: usize> {
     t_zero: f64,
     /// Located root in the current step, not yet reported.
     root: Option<f64>,
-    /// The `(t, y)` at which this event was last returned as terminal.
-    last_fired: Option<(f64, [f64; N])>,
+    /// The `(t, y)` at which this event was last returned as terminal, and the sign of `g`
+    /// past that crossing.
+    last_fired: Option<(f64, [f64; N], i8)>,
 }
 
 /// A boxed event function `g(t, y)`.
@@ -70,9 +71,13 @@ type EventFn<'a, const N: usize> = Box<dyn FnMut(f64, &[f64; N]) -> f64 + 'a>;
 /// * A matching crossing is located by the Anderson–Björck variant of
 ///   regula falsi (Illinois-type, with bisection safeguard) on `g(t, u(t))`,
 ///   `u` being the dense output of the step, to a bracket of about two ulps
-///   of `t`. The reported time is the end of the final bracket on the *far
-///   side*: `g` there is zero or already has the new sign. Restarting from
-///   the reported point therefore does not find the same crossing again.
+///   of `t`, the end of the final bracket on the *far side* (`g` zero or
+///   already of the new sign on the interpolant). For a terminal event the
+///   state there is then computed by steps of the method that end on it
+///   (the interpolant's values are not error-controlled), and the time is
+///   refined by Newton's method on `g` along the flow until that state is on
+///   the far side too, or on the guard to within the time resolution (`g` at
+///   its rounding level, where its sign is noise).
 /// * If `g` was exactly zero at the previous step end and the crossing is
 ///   detected now, the root is that step end.
 ///
@@ -99,10 +104,11 @@ type EventFn<'a, const N: usize> = Box<dyn FnMut(f64, &[f64; N]) -> f64 + 'a>;
 /// **Resuming after a terminal event.** When an integration starts from
 /// exactly the `(t, y)` that this event last returned as
 /// [`Outcome::Event`](super::Outcome::Event) (bitwise equal: the caller
-/// continues without changing the state) and `g` is exactly zero there, the
-/// crossing has already been reported: the reference sign is set to the
-/// post-crossing sign and the event does not fire again at `t0`. After a
-/// reset map the state differs and the rule above applies.
+/// continues without changing the state), the crossing has already been
+/// reported: the reference sign is set to the post-crossing sign, whatever
+/// the sign of `g` there (zero, or rounding noise on the near side), and the
+/// event does not fire again for that crossing. After a reset map the state
+/// differs and the rules above apply.
 ///
 /// **Rounding after a reset.** A reset map often puts the state only
 /// *nearly* on the guard (`g = ±1e-17`). That value counts as nonzero: it
@@ -179,8 +185,10 @@ impl<'a, const N: usize> Event<'a, N> {
         self.track.last_fired = None;
     }
 
-    pub(crate) fn mark_fired(&mut self, t: f64, y: &[f64; N]) {
-        self.track.last_fired = Some((t, *y));
+    /// Record that the event fired at `(t, y)`, crossing to the sign of `g_far` (its value at
+    /// the end of the step that contained the crossing).
+    pub(crate) fn mark_fired(&mut self, t: f64, y: &[f64; N], g_far: f64) {
+        self.track.last_fired = Some((t, *y, sign_of(g_far)));
         self.track.root = None;
     }
 }
@@ -236,13 +244,9 @@ pub(crate) fn start<const N: usize>(
         tr.g_right = g0;
         tr.t_zero = t0;
         tr.root = None;
-        let resumed = matches!(&tr.last_fired, Some((tf, yf)) if *tf == t0 && yf == y0);
-        if tr.sign == 0 && resumed {
-            tr.sign = match ev.direction {
-                Direction::Rising => 1,
-                Direction::Falling => -1,
-                Direction::Either => 0,
-            };
+        match &tr.last_fired {
+            Some((tf, yf, far)) if *tf == t0 && yf == y0 && *far != 0 => tr.sign = *far,
+            _ => {}
         }
     }
     Ok(())

@@ -72,6 +72,7 @@ const D34: f64 = 0.2476722511418386e+02;
 const D35: f64 = -0.6594389125716872e+01;
 
 /// Work space of RODAS.
+#[derive(Clone)]
 pub(crate) struct Rodas4<const N: usize> {
     /// `f(t, y)` at the start of the step (`DY1`).
     f0: [f64; N],
