@@ -14,8 +14,7 @@ use crate::model::{Contact, FrictionLaw, Kind, Model, Reaction, Slide};
 use std::cell::Cell;
 
 use crate::ode::{
-    Direction, Event, Integrator, Method, Observer, OdeSystem, Outcome, Pair, Stats, Step,
-    Tolerances,
+    Direction, Event, Integrator, Method, Observer, OdeSystem, Outcome, Stats, Step, Tolerances,
 };
 
 /// Size of the integrated state (8 mechanical components and the input-power quadrature).
@@ -380,7 +379,9 @@ impl OdeSystem<N> for Stance<'_> {
 
     /// The error test watches the power quadrature (component 8) too, except on a step in
     /// which `ydot u` changes sign: its absolute value has a kink there, which would only
-    /// cause rejections, and [`PowerQuadrature`] integrates exactly those steps anew.
+    /// cause rejections. Such a step is not kept: the kink is a terminal event of the stance
+    /// integration (the `power kink` in [`one_step`]), so the step is taken again ending on
+    /// the kink, and the integration goes on from there, with a smooth integrand on each side.
     fn controlled_components(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> usize {
         if self.foot.crossed(t0, y0, t1, y1) {
             8
@@ -423,86 +424,6 @@ impl OdeSystem<N> for Stance<'_> {
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
         let ts = self.model.runtime.t_set;
         (self.model.is_active() && ts > t).then_some(ts)
-    }
-}
-
-/// The power quadrature `int |ydot u| dt` on the steps where `ydot u` changes sign.
-///
-/// The integrator carries the quadrature as state component 8 under error control where its
-/// integrand is smooth. Where `ydot u` changes sign within a step, `|ydot u|` has a kink and
-/// the method's quadrature is only first-order accurate, so the error test leaves component 8
-/// out on such a step (see [`Stance::controlled_components`]) and this observer asks for
-/// exactly those steps, locates the zero on the dense output, integrates each side by
-/// 8-point Gauss-Legendre on the dense output, and keeps the difference to the method's value
-/// as a correction.
-struct PowerQuadrature<'a> {
-    foot: &'a Foot<'a>,
-    /// `sum (exact - method)` over the corrected steps.
-    correction: f64,
-}
-
-/// Samples of `ydot u` per corrected step, to find every sign change in it.
-const KINK_SAMPLES: usize = 16;
-
-/// Nodes (on `[-1, 1]`, positive half) and weights of 8-point Gauss-Legendre quadrature.
-const GAUSS8: [(f64, f64); 4] = [
-    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
-    (0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
-];
-
-impl PowerQuadrature<'_> {
-    fn integrand(&self, st: &Step<'_, N>, t: f64) -> f64 {
-        let mut y = [0.0; N];
-        st.eval(t, &mut y);
-        power_integrand(self.foot.model, t, &y, self.foot.contact())
-    }
-
-    /// `int_a^b |ydot u| dt` on a piece where `ydot u` keeps its sign.
-    fn gauss_abs(&self, st: &Step<'_, N>, a: f64, b: f64) -> f64 {
-        let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-        let mut sum = 0.0;
-        for (x, w) in GAUSS8 {
-            sum += w * (self.integrand(st, mid - half * x) + self.integrand(st, mid + half * x));
-        }
-        (sum * half).abs()
-    }
-}
-
-impl Observer<N> for PowerQuadrature<'_> {
-    fn wants_step(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
-        self.foot.crossed(t0, y0, t1, y1)
-    }
-
-    fn on_step(&mut self, st: &Step<'_, N>) {
-        let (a, b) = (st.t_start(), st.t_end());
-        // Near a reversal of the foot `u` swings within a fraction of the step, and `ydot u`
-        // can cross zero several times between ends of opposite sign: sample the step and
-        // take every sign change between neighbouring samples as a kink.
-        let mut exact = 0.0;
-        let mut piece = a;
-        let (mut t0, mut g0) = (a, self.integrand(st, a));
-        for k in 1..=KINK_SAMPLES {
-            let t1 = if k == KINK_SAMPLES {
-                b
-            } else {
-                a + (b - a) * (k as f64 / KINK_SAMPLES as f64)
-            };
-            let g1 = self.integrand(st, t1);
-            if g0 * g1 < 0.0 {
-                let root = crate::ode::find_root(t0, g0, t1, g1, &mut |t| {
-                    Ok::<f64, ()>(self.integrand(st, t))
-                })
-                .unwrap_or(0.5 * (t0 + t1));
-                exact += self.gauss_abs(st, piece, root);
-                piece = root;
-            }
-            (t0, g0) = (t1, g1);
-        }
-        exact += self.gauss_abs(st, piece, b);
-        let method = st.y_end()[8] - st.y_start()[8];
-        self.correction += exact - method;
     }
 }
 
@@ -749,6 +670,7 @@ fn one_step(
     let heel = model.heel_strike_angle();
     let rear = model.rear_contact_angle();
     let mu0 = model.runtime.mu0;
+    let kinks = Cell::new(model.is_active());
     let mut lambda_min = r0.lambda;
     let foot = &foot;
     let mut events = [
@@ -759,6 +681,12 @@ fn one_step(
         Event::terminal(Direction::Falling, move |_, y: &[f64; N]| y[2] - rear),
         Event::terminal(Direction::Rising, |t, y: &[f64; N]| {
             foot.reaction(t, y).lambda.abs() - lambda_max
+        }),
+        // The power kink: `ydot u` changes sign before `T_set` (where `|ydot u|`, the power
+        // quadrature's integrand, has a kink; see `Stance::controlled_components`). Off from
+        // the breakpoint at `T_set` on (a switch by time would be a jump at the breakpoint).
+        Event::terminal(Direction::Either, |t, y: &[f64; N]| {
+            if kinks.get() { foot.power(t, y) } else { 1.0 }
         }),
         // Coulomb: a sliding foot comes to rest (sigma xd reaches zero; zero while stuck).
         Event::terminal(Direction::Falling, |_, y: &[f64; N]| {
@@ -775,22 +703,16 @@ fn one_step(
         }),
     ];
     let n_events = match model.friction_law() {
-        FrictionLaw::Tanh => 4,
-        FrictionLaw::Coulomb => 6,
+        FrictionLaw::Tanh => 5,
+        FrictionLaw::Coulomb => 7,
     };
-    let mut obs = Pair::new(
-        PowerQuadrature {
-            foot,
-            correction: 0.0,
-        },
-        Recorder {
-            foot,
-            out: record,
-            t_offset,
-            step,
-            interior: 3,
-        },
-    );
+    let mut obs = Recorder {
+        foot,
+        out: record,
+        t_offset,
+        step,
+        interior: 3,
+    };
     let mut sys = Stance {
         model,
         jac: crate::poincare::Jac::new(model).ok(),
@@ -812,12 +734,19 @@ fn one_step(
         }
         match out {
             Outcome::Breakpoint { t: tb, y: yb } => {
+                // The only breakpoint is `T_set`, where the input power stops counting.
+                kinks.set(false);
                 t = tb;
                 y = yb;
             }
             Outcome::Event { index: 0, t, y } => break (t, y),
             Outcome::Event {
                 index: 4,
+                t: tk,
+                y: yk,
+            } => (t, y) = (tk, yk),
+            Outcome::Event {
+                index: 5,
                 t: te,
                 y: ye,
             } => {
@@ -828,7 +757,7 @@ fn one_step(
                 reaction_at_start(foot, t, &y, step)?;
             }
             Outcome::Event {
-                index: 5,
+                index: 6,
                 t: te,
                 y: ye,
             } => {
@@ -960,7 +889,7 @@ fn one_step(
     let dx = (xf - s0[0]) / model.runtime.phi.cos();
     let speed = dx / te;
     let (p, sr) = if model.is_active() {
-        let p = (ye[8] + obs.first.correction) / te;
+        let p = ye[8] / te;
         (
             Some(p),
             Some(p / (model.physical.total_mass() * model.physical.g * speed)),

@@ -167,11 +167,11 @@ fn rodas4_agrees_with_dop853() {
 
 /// The input power integrates `|ydot u|`, which has a kink wherever `ydot u` changes sign (one
 /// to three times per stance phase). A step across a kink integrates it to first order only;
-/// uncorrected, `p` is off by 1e-4 to 1e-3 at any tolerance. With the kink steps integrated
-/// anew on the dense output, `p` converges with the tolerance like `T` and `dx`: at
-/// `rtol = atol = 1e-7` over 5 steps (about 50 integrator steps each, so at most a few hundred
-/// local errors of 1e-7 add up) the error against `1e-12` stays below 1e-5; measured: 3e-8 to
-/// 2e-7.
+/// uncorrected, `p` is off by 1e-4 to 1e-3 at any tolerance. With the kinks as terminal events
+/// (the integration stops on each and goes on from there, the integrand smooth on both sides),
+/// `p` converges with the tolerance like `T`: at `rtol = atol = 1e-7` over 5 steps the error
+/// against `1e-12` stays below 1e-6 (ten times the tolerance, for the global error of a few
+/// hundred steps); measured: 2.3e-8 and 1.2e-7 (`T`: 5.8e-9 and 4.9e-8).
 #[test]
 fn input_power_converges_with_the_tolerance_despite_its_kinks() {
     for mu0 in [0.0, 0.4] {
@@ -190,7 +190,7 @@ fn input_power_converges_with_the_tolerance_despite_its_kinks() {
         for (a, b) in loose.steps.iter().zip(&tight.steps) {
             let (pa, pb) = (a.p.unwrap_or(f64::NAN), b.p.unwrap_or(f64::NAN));
             let err = (pa - pb).abs() / pb;
-            assert!(err < 1e-5, "mu0 = {mu0}: p = {pa} vs {pb} (error {err:e})");
+            assert!(err < 1e-6, "mu0 = {mu0}: p = {pa} vs {pb} (error {err:e})");
         }
     }
 }

@@ -52,7 +52,6 @@ mod events;
 mod linalg;
 mod rodas4;
 
-pub(crate) use events::find_root;
 pub use events::{Direction, Event};
 pub use linalg::{Lu, LuError};
 
