@@ -636,10 +636,11 @@ pub(crate) fn error_norm<const N: usize>(
 /// stops at a correction below 64 ulps of `t` (the time resolution: `g` is then at its rounding
 /// level and its sign is noise), or after a correction below `1e-6 (t_new - t)`, which leaves
 /// an error of its size times the larger of itself (relative to the step) and the relative
-/// local error (the slope is the flow's, not the one-step map's). Where `g` has no simple root (it only
-/// touches zero, as the walker's `ydot u` does where the ramp ends at `T_set`) the iteration
-/// may not settle: then the iterate with the smallest `|g|` is taken. `None` only if no step to
-/// the event passes the error test (the caller keeps the interpolated state).
+/// local error (the slope is the flow's, not the one-step map's). Where `g` has no simple
+/// root (it only touches zero, as the walker's `ydot u` does where the ramp ends at `T_set`)
+/// the iteration may not settle: then the iterate with the smallest `|g|` is taken. `None`
+/// only if no step to the event passes the error test (the caller keeps the interpolated
+/// state).
 ///
 /// Why not the interpolant: it locates the sign change well, but its values are not under
 /// error control, and where a fast, strongly damped mode sets the step size (the walker's foot
@@ -696,7 +697,8 @@ fn settle<const N: usize, St: Stepper<N>, S: OdeSystem<N>>(
         }
         tau = next;
         if dt.abs() <= 1e-6 * (t_new - t) {
-            // Quadratic convergence: this correction leaves an error of order dt^2.
+            // Small enough for a last correction: what it leaves is of order dt times the
+            // larger of dt / (t_new - t) and the relative local error.
             return step_to(st, sys, t, y, tau, tol, stats)
                 .map(|y_tau| (tau, y_tau))
                 .or_else(|| best.map(|(_, tb, yb)| (tb, yb)));
