@@ -22,7 +22,7 @@
 
 mod common;
 
-use common::{cos1, derivation, div, out, s, sin1};
+use common::{Rng, cos1, derivation, div, out, s, sin1};
 
 use walker_symbolic::mechanics::{self, int, total_mass};
 use walker_symbolic::symbol::{Atom, BaseAngle, NUM_ATOMS};
@@ -243,24 +243,6 @@ fn sliding_with_mu_equal_to_the_force_ratio_is_sticking() {
             .substitute(Atom::Sym(Sym::Mu), &mu)
             .expect("subst");
         assert_eq!(sliding, vertical, "{lambda} at mu = lambda_t/lambda_n");
-    }
-}
-
-/// A deterministic pseudo-random generator (SplitMix64).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
     }
 }
 

@@ -42,3 +42,21 @@ pub fn cos1(x: Sym) -> RatFunc {
 pub fn div(a: &RatFunc, b: &RatFunc) -> RatFunc {
     a.div(b).expect("nonzero divisor")
 }
+
+/// A deterministic pseudo-random generator (SplitMix64): no dependency, same points each run.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+}
