@@ -32,6 +32,27 @@ fn passive(mu0: f64, phi: f64) -> Model {
     })
 }
 
+/// [`sweep_chains`] with a progress bar named `label` on a terminal: `(chain value, points)` for
+/// each of `chains`.
+#[allow(clippy::too_many_arguments)]
+fn sweep_with_bar(
+    label: &str,
+    chains: &[f64],
+    make: impl Fn(f64, f64) -> Model + Sync,
+    cfg: &SimConfig,
+    grid: &[f64],
+    initial: impl Fn(f64) -> [f64; 8] + Sync,
+    limits: &WalkLimits,
+    restart: bool,
+) -> Vec<(f64, Vec<SweepPoint>)> {
+    let bar = Progress::new(label, chains.len() * grid.len());
+    let points = sweep_chains(chains, make, cfg, grid, initial, limits, restart, &|| {
+        bar.tick()
+    });
+    bar.finish();
+    chains.iter().copied().zip(points).collect()
+}
+
 fn limits(max_steps: usize, record: bool) -> WalkLimits {
     WalkLimits {
         max_steps,
@@ -167,8 +188,8 @@ pub fn collect() -> Data {
         duration: 100.0,
         record: false,
     };
-    let bar = Progress::new("Fig. 8 sweep", T_SETS.len() * grid.len());
-    let act = sweep_chains(
+    let active_sweep = sweep_with_bar(
+        "Fig. 8 sweep",
         &T_SETS,
         |ts, mu0| active(mu0, ts),
         &cfg,
@@ -176,39 +197,24 @@ pub fn collect() -> Data {
         |ts| active(0.0, ts).initial_state(0.8),
         &long,
         false,
-        &|| bar.tick(),
     );
-    bar.finish();
-    let active_sweep = T_SETS.iter().copied().zip(act).collect();
     let pgrid = mu0_grid(0.0, 0.7, 0.01);
-    let bar = Progress::new("Fig. 10 sweep", PHIS.len() * pgrid.len());
-    let pas = sweep_chains(
-        &PHIS,
-        |phi, mu0| passive(mu0, phi),
-        &cfg,
-        &pgrid,
-        |phi| passive(0.0, phi).initial_state(0.5),
-        &limits(20, false),
-        true,
-        &|| bar.tick(),
-    );
-    bar.finish();
-    let passive_sweep = PHIS.iter().copied().zip(pas).collect();
-    let bar = Progress::new("Fig. 10 sweep, continued", PHIS.len() * pgrid.len());
-    let cont = sweep_chains(
-        &PHIS,
-        |phi, mu0| passive(mu0, phi),
-        &cfg,
-        &pgrid,
-        |phi| passive(0.0, phi).initial_state(0.5),
-        &limits(20, false),
-        false,
-        &|| bar.tick(),
-    );
-    bar.finish();
-    let passive_continuation = PHIS.iter().copied().zip(cont).collect();
-    let bar = Progress::new("Fig. 8 sweep, Coulomb", grid.len());
-    let coulomb = sweep_chains(
+    let passive_chains = |label, restart| {
+        sweep_with_bar(
+            label,
+            &PHIS,
+            |phi, mu0| passive(mu0, phi),
+            &cfg,
+            &pgrid,
+            |phi| passive(0.0, phi).initial_state(0.5),
+            &limits(20, false),
+            restart,
+        )
+    };
+    let passive_sweep = passive_chains("Fig. 10 sweep", true);
+    let passive_continuation = passive_chains("Fig. 10 sweep, continued", false);
+    let coulomb_sweep = sweep_with_bar(
+        "Fig. 8 sweep, Coulomb",
         &[0.3],
         |ts, mu0| Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts)),
         &cfg,
@@ -216,10 +222,7 @@ pub fn collect() -> Data {
         |ts| active(0.0, ts).initial_state(0.8),
         &long,
         false,
-        &|| bar.tick(),
     );
-    bar.finish();
-    let coulomb_sweep = vec![(0.3, coulomb.into_iter().next().unwrap_or_default())];
     let sticks = [0.2, 0.5]
         .iter()
         .map(|&mu0| {
