@@ -138,6 +138,17 @@ fn check_direct_common(
     for i in 0..4 {
         close(&format!("h{i}"), h[i], hv[i], C_DIRECT, habs[i])?;
     }
+    check_fore_foot_energy(p, s, th1, ff, en)
+}
+
+/// `fore_foot` and `energy` (the kernels without a solve) against the generic expressions.
+fn check_fore_foot_energy(
+    p: &Phys,
+    s: &State,
+    th1: f64,
+    ff: [f64; 4],
+    en: [f64; 2],
+) -> Result<(), TestCaseError> {
     let (f, fabs) = walker_tests::fore_foot(p, s.x, s.z, th1, s.xd, s.zd, s.th1d);
     for i in 0..4 {
         close(&format!("fore_foot[{i}]"), ff[i], f[i], C_DIRECT, fabs[i])?;
@@ -348,14 +359,7 @@ proptest! {
 
         let ff = glc::fore_foot(&k, s.x, s.z, th1, s.xd, s.zd, s.th1d);
         let en = glc::energy(&k, s.z, th1, s.xd, s.zd, s.th1d, s.th2d);
-        let (f, fabs) = walker_tests::fore_foot(&p, s.x, s.z, th1, s.xd, s.zd, s.th1d);
-        for i in 0..4 {
-            close(&format!("fore_foot[{i}]"), ff[i], f[i], C_DIRECT, fabs[i])?;
-        }
-        let (e, eabs) = walker_tests::energy(&p, s.z, th1, Vector4::new(s.xd, s.zd, s.th1d, s.th2d));
-        for i in 0..2 {
-            close(&format!("energy[{i}]"), en[i], e[i], C_DIRECT, eabs[i])?;
-        }
+        check_fore_foot_energy(&p, &s, th1, ff, en)?;
 
         // Sliding in direction sigma.
         let st = walker_tests::stance(&p, th1, s.th1d, s.u, mu).map_err(TestCaseError::fail)?;
@@ -393,14 +397,7 @@ proptest! {
 
         let ff = gsc::fore_foot(&k, s.x, s.z, th1, s.xd, s.zd, s.th1d);
         let en = gsc::energy(&k, s.z, th1, s.xd, s.zd, s.th1d, s.th2d);
-        let (f, fabs) = walker_tests::fore_foot(&p, s.x, s.z, th1, s.xd, s.zd, s.th1d);
-        for i in 0..4 {
-            close(&format!("fore_foot[{i}]"), ff[i], f[i], C_DIRECT, fabs[i])?;
-        }
-        let (e, eabs) = walker_tests::energy(&p, s.z, th1, Vector4::new(s.xd, s.zd, s.th1d, s.th2d));
-        for i in 0..2 {
-            close(&format!("energy[{i}]"), en[i], e[i], C_DIRECT, eabs[i])?;
-        }
+        check_fore_foot_energy(&p, &s, th1, ff, en)?;
 
         // The passive wheel: u = 0.
         let st = walker_tests::stance(&p, th1, s.th1d, 0.0, mu).map_err(TestCaseError::fail)?;
