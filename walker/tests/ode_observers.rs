@@ -1,12 +1,10 @@
 //! The hooks for quadratures with kinks: [`OdeSystem::controlled_components`] (a component the
 //! error test leaves out on some steps), [`Observer::wants_step`] (only the steps asked for are
-//! shown, and only they pay for the dense output), and [`Pair`].
+//! shown, and only they pay for the dense output).
 
 #![allow(clippy::panic)] // tests report failures by panicking
 
-use walker::ode::{
-    Integrator, Method, NoObserver, Observer, OdeSystem, Outcome, Pair, Step, Tolerances,
-};
+use walker::ode::{Integrator, Method, NoObserver, Observer, OdeSystem, Outcome, Step, Tolerances};
 
 const METHODS: [Method; 3] = [Method::Dopri5, Method::Dop853, Method::Rodas4];
 
@@ -163,39 +161,4 @@ fn steps_not_asked_for_cost_no_dense_output() {
     let (_, _, rhs_no_observer) = run(Method::Dop853, true, &mut NoObserver);
     assert_eq!(rhs_none, rhs_no_observer);
     assert!(rhs_all > rhs_none, "{rhs_all} vs {rhs_none}");
-}
-
-/// A `Pair` forwards each step to the observers that asked for it.
-#[test]
-fn a_pair_forwards_each_step_to_whoever_asked() {
-    #[derive(Default)]
-    struct Count {
-        every: usize,
-        shown: usize,
-        seen: usize,
-    }
-    impl Observer<2> for Count {
-        fn wants_step(&mut self, _: f64, _: &[f64; 2], _: f64, _: &[f64; 2]) -> bool {
-            self.seen += 1;
-            self.seen.is_multiple_of(self.every)
-        }
-        fn on_step(&mut self, _: &Step<'_, 2>) {
-            self.shown += 1;
-        }
-    }
-    let mut pair = Pair::new(
-        Count {
-            every: 2,
-            ..Count::default()
-        },
-        Count {
-            every: 3,
-            ..Count::default()
-        },
-    );
-    run(Method::Dopri5, true, &mut pair);
-    let (a, b) = (&pair.first, &pair.second);
-    assert_eq!(a.seen, b.seen);
-    assert_eq!(a.shown, a.seen / 2);
-    assert_eq!(b.shown, b.seen / 3);
 }

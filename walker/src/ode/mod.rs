@@ -477,54 +477,6 @@ pub trait Observer<const N: usize> {
     }
 }
 
-/// Two observers as one: each step goes to each observer that asked for it
-/// ([`Observer::wants_step`]), non-terminal events to both.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Pair<A, B> {
-    /// The first observer.
-    pub first: A,
-    /// The second observer.
-    pub second: B,
-    wants: (bool, bool),
-}
-
-impl<A, B> Pair<A, B> {
-    /// Both observers.
-    pub fn new(first: A, second: B) -> Self {
-        Self {
-            first,
-            second,
-            wants: (false, false),
-        }
-    }
-}
-
-impl<const N: usize, A: Observer<N>, B: Observer<N>> Observer<N> for Pair<A, B> {
-    const WANTS_STEPS: bool = A::WANTS_STEPS || B::WANTS_STEPS;
-
-    fn wants_step(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
-        self.wants = (
-            A::WANTS_STEPS && self.first.wants_step(t0, y0, t1, y1),
-            B::WANTS_STEPS && self.second.wants_step(t0, y0, t1, y1),
-        );
-        self.wants.0 || self.wants.1
-    }
-
-    fn on_step(&mut self, step: &Step<'_, N>) {
-        if self.wants.0 {
-            self.first.on_step(step);
-        }
-        if self.wants.1 {
-            self.second.on_step(step);
-        }
-    }
-
-    fn on_event(&mut self, index: usize, t: f64, y: &[f64; N]) {
-        self.first.on_event(index, t, y);
-        self.second.on_event(index, t, y);
-    }
-}
-
 /// An observer that ignores everything.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct NoObserver;
