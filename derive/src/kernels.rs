@@ -439,7 +439,7 @@ impl Derivation {
             },
             Kernel {
                 name: "stick_level",
-                doc: "Accelerations qddot and the ground force [lambda_t, lambda_n] with the stance foot stuck to the level floor (lambda_t horizontal along +x, lambda_n vertical)",
+                doc: "Accelerations qddot and the ground force `[lambda_t, lambda_n]` with the stance foot stuck to the level floor (`lambda_t` horizontal along +x, `lambda_n` vertical)",
                 equation: STICK_EQUATION,
                 args: vec![Th1, Th1d, U],
                 outputs: level_stick_outputs,
@@ -448,7 +448,7 @@ impl Derivation {
             },
             Kernel {
                 name: "closed_loop_stick_level",
-                doc: "Accelerations qddot, torque u and the ground force [lambda_t, lambda_n] of the active walker with the stance foot stuck to the level floor, under the output-following control with yddot = v",
+                doc: "Accelerations qddot, torque u and the ground force `[lambda_t, lambda_n]` of the active walker with the stance foot stuck to the level floor, under the output-following control with yddot = v",
                 equation: STICK_CONTROL_EQUATION,
                 args: vec![Th1, Th1d, V],
                 outputs: closed_stick_outputs,
@@ -468,7 +468,7 @@ impl Derivation {
             },
             Kernel {
                 name: "stick_slope",
-                doc: "Accelerations qddot and the ground force [lambda_t, lambda_n] of the passive wheel with the stance foot stuck to the slope (u = 0; lambda_t along the slope, positive down it, lambda_n normal to it)",
+                doc: "Accelerations qddot and the ground force `[lambda_t, lambda_n]` (`lambda_t` down the slope, `lambda_n` normal to it) of the passive wheel with the stance foot stuck",
                 equation: STICK_EQUATION,
                 args: vec![Th1, Th1d],
                 outputs: slope_stick_outputs,

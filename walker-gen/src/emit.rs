@@ -600,7 +600,8 @@ fn kernel_fn(
         .cloned()
         .collect();
     let p = ident(if kp.uses_prepared { "p" } else { "_p" });
-    let mut doc = vec![k.doc.clone(), String::new()];
+    let summary = k.doc.split("\n\n").map(wrap).collect::<Vec<_>>();
+    let mut doc = vec![summary.join("\n\n"), String::new()];
     if !k.equation.is_empty() {
         doc.push(format!("Paper: {}.", k.equation));
         doc.push(String::new());
@@ -627,10 +628,19 @@ fn kernel_fn(
         inline_note(plan, &kp.block, options)
     ));
     doc.push(String::new());
+    let saturates = kp
+        .block
+        .nodes
+        .iter()
+        .any(|&n| matches!(plan.graph.node(n), Node::Tanh(_)));
     doc.push(wrap(&format!(
-        "Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; \
-         never panics. (A saturating function (a friction law, a sign) can map an infinite input \
-         to a finite output, and an argument the scene does not read has no effect.){}",
+        "Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs \
+         ({}an argument the scene does not read has no effect); never panics.{}",
+        if saturates {
+            "but the friction law's `tanh` maps an infinite argument to a finite value, and "
+        } else {
+            "but "
+        },
         if options.checked {
             format!(
                 " [`{}_checked`] rejects non-finite arguments and outputs.",

@@ -109,21 +109,16 @@ impl Lowering<'_> {
             walker_symbolic::Shape::Matrix(r, c) => Shape::Matrix(r, c),
             walker_symbolic::Shape::Parts => Shape::Vector(k.outputs.len()),
         };
-        let outs: Vec<&str> = k.outputs.iter().map(|(n, _)| n.as_str()).collect();
-        let mut doc = format!(
-            "{} ({}). Inputs: `{}`. Outputs: `{}`.",
-            k.doc,
-            k.equation,
-            args.join("`, `"),
-            outs.join("`, `")
-        );
+        // A one-sentence summary (rustdoc's first paragraph); the equations, arguments and
+        // outputs have the emitter's own paragraphs.
+        let mut doc = format!("{}.", k.doc);
         if args.iter().any(|a| a == "sigma") {
             let forward = match self.scene.floor {
                 Floor::Level => "forward",
                 Floor::Slope => "down the slope",
             };
             doc.push_str(&format!(
-                " `sigma` is the direction the stance foot slides in, `+1` towards `+x` \
+                "\n\n`sigma` is the direction the stance foot slides in, `+1` towards `+x` \
                  ({forward}), `-1` backwards; the friction coefficient is `mu = -mu0 sigma` \
                  (Eq. 25 with the sign that opposes sliding)."
             ));

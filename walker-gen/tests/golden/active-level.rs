@@ -93,7 +93,7 @@ impl core::fmt::Display for KernelError {
 
 impl std::error::Error for KernelError {}
 
-/// Inertia matrix M(q) (Eq. 2). Inputs: `th1`. Outputs: `M00`, `M01`, `M02`, `M03`, `M10`, `M11`, `M12`, `M13`, `M20`, `M21`, `M22`, `M23`, `M30`, `M31`, `M32`, `M33`.
+/// Inertia matrix M(q).
 ///
 /// Paper: Eq. 2.
 ///
@@ -103,9 +103,8 @@ impl std::error::Error for KernelError {}
 /// Operations per call: 2 mul, 1 neg, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`mass_matrix_checked`] rejects
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`mass_matrix_checked`] rejects
 /// non-finite arguments and outputs.
 #[inline]
 #[must_use]
@@ -156,7 +155,7 @@ pub fn mass_matrix_checked(p: &Prepared, th1: F) -> Result<[[F; 4]; 4], KernelEr
     Ok(out)
 }
 
-/// Coriolis, centrifugal and gravity vector h(q, qdot) (Eq. 20). Inputs: `th1`, `th1d`. Outputs: `h0`, `h1`, `h2`, `h3`.
+/// Coriolis, centrifugal and gravity vector h(q, qdot).
 ///
 /// Paper: Eq. 20.
 ///
@@ -166,10 +165,9 @@ pub fn mass_matrix_checked(p: &Prepared, th1: F) -> Result<[[F; 4]; 4], KernelEr
 /// Operations per call: 1 add/sub, 5 mul, 2 neg, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`bias_checked`] rejects non-finite
-/// arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`bias_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
@@ -201,7 +199,7 @@ pub fn bias_checked(p: &Prepared, th1: F, th1d: F) -> Result<[F; 4], KernelError
     Ok(out)
 }
 
-/// Vertical ground reaction lambda on level ground (Eqs. 22-23). Inputs: `th1`, `th1d`, `u`, `xd`. Outputs: `lambda`.
+/// Vertical ground reaction lambda on level ground.
 ///
 /// Paper: Eqs. 22-23.
 ///
@@ -211,10 +209,10 @@ pub fn bias_checked(p: &Prepared, th1: F, th1d: F) -> Result<[F; 4], KernelError
 /// Operations per call: 4 add/sub, 11 mul, 1 div, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`lambda_level_checked`] rejects
-/// non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`lambda_level_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn lambda_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> F {
@@ -252,7 +250,7 @@ pub fn lambda_level_checked(
     Ok(out)
 }
 
-/// Projection Y(q, qdot) that eliminates lambda on level ground (Eqs. 28-29). Inputs: `th1`, `xd`. Outputs: `Y00`, `Y01`, `Y02`, `Y03`, `Y10`, `Y11`, `Y12`, `Y13`, `Y20`, `Y21`, `Y22`, `Y23`, `Y30`, `Y31`, `Y32`, `Y33`.
+/// Projection Y(q, qdot) that eliminates lambda on level ground.
 ///
 /// Paper: Eqs. 28-29.
 ///
@@ -262,10 +260,10 @@ pub fn lambda_level_checked(
 /// Operations per call: 3 add/sub, 18 mul, 1 div, 1 neg, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`projection_level_checked`] rejects
-/// non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`projection_level_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn projection_level(p: &Prepared, th1: F, xd: F) -> [[F; 4]; 4] {
@@ -325,7 +323,7 @@ pub fn projection_level_checked(
     Ok(out)
 }
 
-/// Scalars A and B of the output-following control, yddot = A u - B (Eqs. 30-31). Inputs: `th1`, `th1d`, `xd`. Outputs: `A`, `B`.
+/// Scalars A and B of the output-following control, yddot = A u - B.
 ///
 /// Paper: Eqs. 30-31.
 ///
@@ -335,10 +333,10 @@ pub fn projection_level_checked(
 /// Operations per call: 7 add/sub, 17 mul, 1 div, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`control_level_checked`] rejects
-/// non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`control_level_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn control_level(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 2] {
@@ -382,7 +380,7 @@ pub fn control_level_checked(
     Ok(out)
 }
 
-/// Accelerations qddot of the active walker on level ground (Eq. 27). Inputs: `th1`, `th1d`, `u`, `xd`. Outputs: `qdd0`, `qdd1`, `qdd2`, `qdd3`.
+/// Accelerations qddot of the active walker on level ground.
 ///
 /// Paper: Eq. 27.
 ///
@@ -392,10 +390,10 @@ pub fn control_level_checked(
 /// Operations per call: 13 add/sub, 27 mul, 1 div, 1 neg, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`accel_level_checked`] rejects
-/// non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`accel_level_checked`] rejects non-finite arguments
+/// and outputs.
 #[inline]
 #[must_use]
 pub fn accel_level(p: &Prepared, th1: F, th1d: F, u: F, xd: F) -> [F; 4] {
@@ -446,7 +444,7 @@ pub fn accel_level_checked(
     Ok(out)
 }
 
-/// Impulses and post-impact velocities with the fore foot, the rear foot and the torso lock (Eqs. 6-10). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `lambdaI2`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
+/// Impulses and post-impact velocities with the fore foot, the rear foot and the torso lock.
 ///
 /// Paper: Eqs. 6-10.
 ///
@@ -456,9 +454,8 @@ pub fn accel_level_checked(
 /// Operations per call: 24 add/sub, 43 mul, 2 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`impact3_level_checked`] rejects
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`impact3_level_checked`] rejects
 /// non-finite arguments and outputs.
 #[inline]
 #[must_use]
@@ -536,7 +533,7 @@ pub fn impact3_level_checked(
     Ok(out)
 }
 
-/// Impulses and post-impact velocities with the fore foot and the torso lock (Eqs. 12-16). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
+/// Impulses and post-impact velocities with the fore foot and the torso lock.
 ///
 /// Paper: Eqs. 12-16.
 ///
@@ -546,9 +543,8 @@ pub fn impact3_level_checked(
 /// Operations per call: 36 add/sub, 54 mul, 1 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`impact2_level_checked`] rejects
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`impact2_level_checked`] rejects
 /// non-finite arguments and outputs.
 #[inline]
 #[must_use]
@@ -627,7 +623,8 @@ pub fn impact2_level_checked(
     Ok(out)
 }
 
-/// Accelerations qddot and torque u of the active walker under the output-following control, with yddot = v (Eqs. 27, 31). Inputs: `th1`, `th1d`, `xd`, `v`. Outputs: `qdd0`, `qdd1`, `qdd2`, `qdd3`, `u`.
+/// Accelerations qddot and torque u of the active walker under the output-following control, with
+/// yddot = v.
 ///
 /// Paper: Eqs. 27, 31.
 ///
@@ -637,10 +634,10 @@ pub fn impact2_level_checked(
 /// Operations per call: 21 add/sub, 36 mul, 2 div, 1 neg, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`closed_loop_level_checked`] rejects
-/// non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`closed_loop_level_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn closed_loop_level(p: &Prepared, th1: F, th1d: F, xd: F, v: F) -> [F; 5] {
@@ -699,7 +696,8 @@ pub fn closed_loop_level_checked(
     Ok(out)
 }
 
-/// Partial derivatives of the closed-loop accelerations by (th1, th1d, mu, v), for implicit integrators and variational equations (Eqs. 27, 31). Inputs: `th1`, `th1d`, `xd`, `v`. Outputs: `J00`, `J01`, `J02`, `J03`, `J10`, `J11`, `J12`, `J13`, `J20`, `J21`, `J22`, `J23`, `J30`, `J31`, `J32`, `J33`.
+/// Partial derivatives of the closed-loop accelerations by (th1, th1d, mu, v), for implicit
+/// integrators and variational equations.
 ///
 /// Paper: Eqs. 27, 31.
 ///
@@ -709,10 +707,10 @@ pub fn closed_loop_level_checked(
 /// Operations per call: 257 add/sub, 444 mul, 2 div, 2 neg, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`closed_loop_level_jacobian_checked`]
-/// rejects non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`closed_loop_level_jacobian_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn closed_loop_level_jacobian(
@@ -1021,7 +1019,8 @@ pub fn closed_loop_level_jacobian_checked(
     Ok(out)
 }
 
-/// Partial derivatives of the post-impact velocities (two constraints) by (th1, xd, zd, th1d, th2d) (Eqs. 12-16). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `J00`, `J01`, `J02`, `J03`, `J04`, `J10`, `J11`, `J12`, `J13`, `J14`, `J20`, `J21`, `J22`, `J23`, `J24`, `J30`, `J31`, `J32`, `J33`, `J34`.
+/// Partial derivatives of the post-impact velocities (two constraints) by (th1, xd, zd, th1d,
+/// th2d).
 ///
 /// Paper: Eqs. 12-16.
 ///
@@ -1032,10 +1031,9 @@ pub fn closed_loop_level_jacobian_checked(
 /// Operations per call: 66 add/sub, 108 mul, 1 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`impact2_level_jacobian_checked`]
-/// rejects non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics.
+/// [`impact2_level_jacobian_checked`] rejects non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn impact2_level_jacobian(
@@ -1180,7 +1178,7 @@ pub fn impact2_level_jacobian_checked(
     Ok(out)
 }
 
-/// Position and velocity of the fore-leg end (Eqs. 3, 39). Inputs: `x`, `z`, `th1`, `xd`, `zd`, `th1d`. Outputs: `x_f`, `z_f`, `xd_f`, `zd_f`.
+/// Position and velocity of the fore-leg end.
 ///
 /// Paper: Eqs. 3, 39.
 ///
@@ -1190,10 +1188,9 @@ pub fn impact2_level_jacobian_checked(
 /// Operations per call: 8 add/sub, 6 mul, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`fore_foot_checked`] rejects non-finite
-/// arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`fore_foot_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F; 4] {
@@ -1240,7 +1237,7 @@ pub fn fore_foot_checked(
     Ok(out)
 }
 
-/// Kinetic and potential energy (Section 2.1). Inputs: `z`, `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `T`, `V`.
+/// Kinetic and potential energy.
 ///
 /// Paper: Section 2.1.
 ///
@@ -1250,10 +1247,9 @@ pub fn fore_foot_checked(
 /// Operations per call: 6 add/sub, 14 mul, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`energy_checked`] rejects non-finite
-/// arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`energy_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 2] {

@@ -3347,7 +3347,7 @@ impl core::fmt::Display for KernelError {
 
 impl std::error::Error for KernelError {}
 
-/// Inertia matrix M(q) (Eq. 2). Inputs: `th1`. Outputs: `M00`, `M01`, `M02`, `M03`, `M10`, `M11`, `M12`, `M13`, `M20`, `M21`, `M22`, `M23`, `M30`, `M31`, `M32`, `M33`.
+/// Inertia matrix M(q).
 ///
 /// Paper: Eq. 2.
 ///
@@ -3357,9 +3357,8 @@ impl std::error::Error for KernelError {}
 /// Operations per call: 2 mul, 1 neg, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`mass_matrix_checked`] rejects
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`mass_matrix_checked`] rejects
 /// non-finite arguments and outputs.
 #[inline]
 #[must_use]
@@ -3410,7 +3409,7 @@ pub fn mass_matrix_checked(p: &Prepared, th1: F) -> Result<[[F; 4]; 4], KernelEr
     Ok(out)
 }
 
-/// Coriolis, centrifugal and gravity vector h(q, qdot) (Eq. 20). Inputs: `th1`, `th1d`. Outputs: `h0`, `h1`, `h2`, `h3`.
+/// Coriolis, centrifugal and gravity vector h(q, qdot).
 ///
 /// Paper: Eq. 20.
 ///
@@ -3420,10 +3419,9 @@ pub fn mass_matrix_checked(p: &Prepared, th1: F) -> Result<[[F; 4]; 4], KernelEr
 /// Operations per call: 1 add/sub, 5 mul, 2 neg, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`bias_checked`] rejects non-finite
-/// arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`bias_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn bias(_p: &Prepared, th1: F, th1d: F) -> [F; 4] {
@@ -3455,7 +3453,7 @@ pub fn bias_checked(p: &Prepared, th1: F, th1d: F) -> Result<[F; 4], KernelError
     Ok(out)
 }
 
-/// Vertical ground reaction lambda of the passive wheel on the slope (u = 0) (Eq. 22 with Eqs. 36, 38). Inputs: `th1`, `th1d`, `xd`. Outputs: `lambda`.
+/// Vertical ground reaction lambda of the passive wheel on the slope (u = 0).
 ///
 /// Paper: Eq. 22 with Eqs. 36, 38.
 ///
@@ -3465,10 +3463,10 @@ pub fn bias_checked(p: &Prepared, th1: F, th1d: F) -> Result<[F; 4], KernelError
 /// Operations per call: 7 add/sub, 13 mul, 1 div, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`lambda_slope_checked`] rejects
-/// non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`lambda_slope_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn lambda_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> F {
@@ -3506,7 +3504,7 @@ pub fn lambda_slope_checked(
     Ok(out)
 }
 
-/// Accelerations qddot of the passive wheel on the slope (u = 0) (Eq. 27 with Eqs. 36, 38). Inputs: `th1`, `th1d`, `xd`. Outputs: `qdd0`, `qdd1`, `qdd2`, `qdd3`.
+/// Accelerations qddot of the passive wheel on the slope (u = 0).
 ///
 /// Paper: Eq. 27 with Eqs. 36, 38.
 ///
@@ -3516,10 +3514,10 @@ pub fn lambda_slope_checked(
 /// Operations per call: 30 add/sub, 49 mul, 1 div, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`accel_slope_checked`] rejects
-/// non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`accel_slope_checked`] rejects non-finite arguments
+/// and outputs.
 #[inline]
 #[must_use]
 pub fn accel_slope(p: &Prepared, th1: F, th1d: F, xd: F) -> [F; 4] {
@@ -3575,7 +3573,7 @@ pub fn accel_slope_checked(
     Ok(out)
 }
 
-/// Impulse and post-impact velocities of the passive wheel on the slope (Eqs. 39-42). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
+/// Impulse and post-impact velocities of the passive wheel on the slope.
 ///
 /// Paper: Eqs. 39-42.
 ///
@@ -3585,9 +3583,8 @@ pub fn accel_slope_checked(
 /// Operations per call: 29 add/sub, 49 mul, 1 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`impact_slope_checked`] rejects
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`impact_slope_checked`] rejects
 /// non-finite arguments and outputs.
 #[inline]
 #[must_use]
@@ -3647,7 +3644,7 @@ pub fn impact_slope_checked(
     Ok(out)
 }
 
-/// Impulses and post-impact velocities on the slope with the rear foot held (double-support test) (Eq. 46). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `lambdaI0`, `lambdaI1`, `qdp0`, `qdp1`, `qdp2`, `qdp3`.
+/// Impulses and post-impact velocities on the slope with the rear foot held (double-support test).
 ///
 /// Paper: Eq. 46.
 ///
@@ -3657,9 +3654,8 @@ pub fn impact_slope_checked(
 /// Operations per call: 40 add/sub, 70 mul, 2 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`impact2_slope_checked`] rejects
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`impact2_slope_checked`] rejects
 /// non-finite arguments and outputs.
 #[inline]
 #[must_use]
@@ -3729,7 +3725,7 @@ pub fn impact2_slope_checked(
     Ok(out)
 }
 
-/// Partial derivatives of the passive wheel's accelerations on the slope by (th1, th1d, mu) (Eq. 27 with Eqs. 36, 38). Inputs: `th1`, `th1d`, `xd`. Outputs: `J00`, `J01`, `J02`, `J10`, `J11`, `J12`, `J20`, `J21`, `J22`, `J30`, `J31`, `J32`.
+/// Partial derivatives of the passive wheel's accelerations on the slope by (th1, th1d, mu).
 ///
 /// Paper: Eq. 27 with Eqs. 36, 38.
 ///
@@ -3739,10 +3735,10 @@ pub fn impact2_slope_checked(
 /// Operations per call: 118 add/sub, 191 mul, 1 div, 2 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`, `tanh`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`accel_slope_jacobian_checked`] rejects
-/// non-finite arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`accel_slope_jacobian_checked`] rejects non-finite
+/// arguments and outputs.
 #[inline]
 #[must_use]
 pub fn accel_slope_jacobian(p: &Prepared, th1: F, th1d: F, xd: F) -> [[F; 3]; 4] {
@@ -3886,7 +3882,7 @@ pub fn accel_slope_jacobian_checked(
     Ok(out)
 }
 
-/// Partial derivatives of the post-impact velocities on the slope by (th1, xd, zd, th1d, th2d) (Eqs. 39-42). Inputs: `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `J00`, `J01`, `J02`, `J03`, `J04`, `J10`, `J11`, `J12`, `J13`, `J14`, `J20`, `J21`, `J22`, `J23`, `J24`, `J30`, `J31`, `J32`, `J33`, `J34`.
+/// Partial derivatives of the post-impact velocities on the slope by (th1, xd, zd, th1d, th2d).
 ///
 /// Paper: Eqs. 39-42.
 ///
@@ -3897,9 +3893,8 @@ pub fn accel_slope_jacobian_checked(
 /// Operations per call: 70 add/sub, 121 mul, 1 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`impact_slope_jacobian_checked`]
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`impact_slope_jacobian_checked`]
 /// rejects non-finite arguments and outputs.
 #[inline]
 #[must_use]
@@ -4022,7 +4017,7 @@ pub fn impact_slope_jacobian_checked(
     Ok(out)
 }
 
-/// Position and velocity of the fore-leg end (Eqs. 3, 39). Inputs: `x`, `z`, `th1`, `xd`, `zd`, `th1d`. Outputs: `x_f`, `z_f`, `xd_f`, `zd_f`.
+/// Position and velocity of the fore-leg end.
 ///
 /// Paper: Eqs. 3, 39.
 ///
@@ -4032,10 +4027,9 @@ pub fn impact_slope_jacobian_checked(
 /// Operations per call: 8 add/sub, 6 mul, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`fore_foot_checked`] rejects non-finite
-/// arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`fore_foot_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn fore_foot(_p: &Prepared, x: F, z: F, th1: F, xd: F, zd: F, th1d: F) -> [F; 4] {
@@ -4082,7 +4076,7 @@ pub fn fore_foot_checked(
     Ok(out)
 }
 
-/// Kinetic and potential energy (Section 2.1). Inputs: `z`, `th1`, `xd`, `zd`, `th1d`, `th2d`. Outputs: `T`, `V`.
+/// Kinetic and potential energy.
 ///
 /// Paper: Section 2.1.
 ///
@@ -4092,10 +4086,9 @@ pub fn fore_foot_checked(
 /// Operations per call: 6 add/sub, 14 mul, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 ///
-/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs; never panics.
-/// (A saturating function (a friction law, a sign) can map an infinite input to a finite output,
-/// and an argument the scene does not read has no effect.) [`energy_checked`] rejects non-finite
-/// arguments and outputs.
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`energy_checked`] rejects
+/// non-finite arguments and outputs.
 #[inline]
 #[must_use]
 pub fn energy(_p: &Prepared, z: F, th1: F, xd: F, zd: F, th1d: F, th2d: F) -> [F; 2] {
