@@ -819,15 +819,13 @@ fn helper_sources_are_rustfmt_clean() {
         .args(["--check", "--edition", "2024"])
         .arg(dir.join("sin_cos.rs"))
         .arg(dir.join("tanh.rs"))
-        .output();
-    match out {
-        Err(_) => eprintln!("rustfmt is not installed; skipping the format check"),
-        Ok(out) => assert!(
-            out.status.success(),
-            "rustfmt --check src/fastmath/*.rs:\n{}",
-            String::from_utf8_lossy(&out.stdout)
-        ),
-    }
+        .output()
+        .expect("this test needs rustfmt (`rustup component add rustfmt`)");
+    assert!(
+        out.status.success(),
+        "rustfmt --check src/fastmath/*.rs:\n{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
     for (name, src) in [("sin_cos", SIN_COS_SOURCE), ("tanh", TANH_SOURCE)] {
         assert!(
             src.lines().all(|l| l.len() <= 100 && l.trim_end() == l),
