@@ -79,3 +79,47 @@ fn reproduce_writes_every_figure_its_data_and_the_summary() {
     }
     assert!(!summary.contains("NaN"), "{summary}");
 }
+
+/// The README's main command as a user types it (`cargo run --release -p walker -- reproduce
+/// --out out`, read from the README's first screen) reaches the `reproduce` subcommand: `cargo
+/// run` must pick the CLI among the package's binaries (`default-run`). Run here with
+/// `--help` instead of `--out out`, and without `--release` (the end-to-end run is the test
+/// above).
+#[test]
+fn the_readme_main_command_runs_the_cli() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let readme = std::fs::read_to_string(root.join("README.md")).expect("README.md");
+    let line = readme
+        .lines()
+        .find(|l| l.starts_with("cargo run"))
+        .expect("a `cargo run` line in the README");
+    let command = line.split('#').next().unwrap_or_default();
+    let words: Vec<&str> = command.split_whitespace().collect();
+    assert_eq!(
+        words,
+        [
+            "cargo",
+            "run",
+            "--release",
+            "-p",
+            "walker",
+            "--",
+            "reproduce",
+            "--out",
+            "out"
+        ],
+        "the README's main command changed; update this test with it"
+    );
+    let o = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+        .current_dir(&root)
+        .args(["run", "-q", "-p", "walker", "--", "reproduce", "--help"])
+        .output()
+        .expect("cargo runs");
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success() && stdout.contains("--out"),
+        "`cargo run -p walker -- reproduce --help` failed:\n{}{}",
+        stdout,
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
