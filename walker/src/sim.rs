@@ -645,11 +645,25 @@ fn one_step(
 
     let r0 = foot.reaction(0.0, &y0);
     if !r0.lambda.is_finite() || r0.lambda.abs() > lambda_max {
-        return Err(Failure::LambdaDenominatorZero {
-            step,
-            t: 0.0,
-            lambda: r0.lambda,
-            state: s0,
+        // Where the angular velocities alone overflow `lambda` (their squares exceed the
+        // floating-point range) its denominator is regular: the state is the problem.
+        let mut at_rest = y0;
+        at_rest[6] = 0.0;
+        at_rest[7] = 0.0;
+        let l_rest = foot.reaction(0.0, &at_rest).lambda;
+        return Err(if !r0.lambda.is_finite() && l_rest.abs() <= lambda_max {
+            Failure::NonFinite {
+                step,
+                t: 0.0,
+                state: s0,
+            }
+        } else {
+            Failure::LambdaDenominatorZero {
+                step,
+                t: 0.0,
+                lambda: r0.lambda,
+                state: s0,
+            }
         });
     }
     reaction_at_start(&foot, 0.0, &y0, step)?;
