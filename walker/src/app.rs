@@ -392,7 +392,9 @@ pub fn sweep_text(chains: &[Chain], active: bool) -> String {
                 f(|s| Some(s.dx)),
                 f(|s| Some(s.speed)),
                 f(|s| s.sr),
-                p.failure.as_ref().map_or("ok", |x| x.name())
+                p.failure
+                    .as_ref()
+                    .map_or(if p.periodic { "periodic" } else { "ok" }, |x| x.name())
             ));
         }
     }

@@ -128,6 +128,11 @@ enum Command {
         /// At most this many steps per mu0.
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 1000)]
         max_steps: usize,
+        /// Stop a mu0 early once its gait is periodic: when the step-to-step change of T, dx
+        /// and p, continued geometrically, adds up to at most this (relative; in (0, 1)). The
+        /// last step then stands for the rest of the duration.
+        #[arg(long = "until-periodic", allow_hyphen_values = true)]
+        until_periodic: Option<f64>,
     },
     /// Find the limit cycle (fixed point of the Poincare map) and its Floquet multipliers.
     FixedPoint {
@@ -211,6 +216,7 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 max_steps,
                 duration: duration.unwrap_or(f64::INFINITY),
                 record: false,
+                periodic: None,
             };
             let w = app::simulate(&setup, omega0, &limits, &config(&common).map_err(input)?)
                 .map_err(input)?;
@@ -230,6 +236,7 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
             restart,
             duration,
             max_steps,
+            until_periodic,
         } => {
             let ov = Overrides {
                 mu0: Some(mu0_from.max(0.0)),
@@ -247,10 +254,19 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                     message: format!("{duration} is outside the valid range (0, inf)"),
                 }));
             }
+            if let Some(tol) = until_periodic
+                && !(tol > 0.0 && tol < 1.0)
+            {
+                return Err(input(app::InputError {
+                    field: "until-periodic".to_owned(),
+                    message: format!("{tol} is outside the valid range (0, 1)"),
+                }));
+            }
             let limits = WalkLimits {
                 max_steps,
                 duration,
                 record: false,
+                periodic: until_periodic,
             };
             let res = app::sweep(
                 &setup,

@@ -58,6 +58,7 @@ fn limits(max_steps: usize, record: bool) -> WalkLimits {
         max_steps,
         duration: f64::INFINITY,
         record,
+        periodic: None,
     }
 }
 
@@ -187,6 +188,7 @@ pub fn collect() -> Data {
         max_steps: 1000,
         duration: 100.0,
         record: false,
+        periodic: None,
     };
     let active_sweep = sweep_with_bar(
         "Fig. 8 sweep",

@@ -265,6 +265,9 @@ pub struct Walk {
     /// Sampled motion (empty unless asked for).
     #[serde(skip)]
     pub samples: Vec<Sample>,
+    /// The walk stopped early because its gait became periodic ([`WalkLimits::periodic`]):
+    /// every later step would repeat the last one within that tolerance.
+    pub periodic: bool,
 }
 
 impl Walk {
@@ -482,6 +485,13 @@ pub struct WalkLimits {
     pub duration: f64,
     /// Record samples of the motion (for plots).
     pub record: bool,
+    /// Stop early once the gait is periodic, so that the last step stands for every later one:
+    /// when the relative change of the descriptors `T`, `dx` and `p` (the largest of the three)
+    /// from one step to the next has shrunk at a ratio below 0.9 over the last two steps, and
+    /// that change continued as a geometric series with the larger of the two ratios adds up
+    /// to at most this value. Period-2 and chaotic gaits and slowly converging ones never stop
+    /// early. `None`: walk to `max_steps` or `duration`.
+    pub periodic: Option<f64>,
 }
 
 impl Default for WalkLimits {
@@ -490,8 +500,41 @@ impl Default for WalkLimits {
             max_steps: 100,
             duration: f64::INFINITY,
             record: false,
+            periodic: None,
         }
     }
+}
+
+/// The ratio below which step-to-step changes count as converging ([`WalkLimits::periodic`]).
+const PERIODIC_RATIO: f64 = 0.9;
+
+/// The largest relative change of `T`, `dx` and `p` from step `a` to step `b`.
+fn descriptor_change(a: &StepResult, b: &StepResult) -> f64 {
+    let rel = |x: f64, y: f64| ((y - x) / y).abs();
+    let p = match (a.p, b.p) {
+        (Some(x), Some(y)) if y != 0.0 => rel(x, y),
+        _ => 0.0,
+    };
+    rel(a.period, b.period).max(rel(a.dx, b.dx)).max(p)
+}
+
+/// Whether the last steps of `steps` are periodic within `tol` ([`WalkLimits::periodic`]):
+/// three consecutive changes `d1, d2, d3` shrinking at ratios `r = max(d2/d1, d3/d2) < 0.9`,
+/// with the rest of the series, `d3 r / (1 - r)`, at most `tol`.
+fn is_periodic(steps: &[StepResult], tol: f64) -> bool {
+    let [.., s0, s1, s2, s3] = steps else {
+        return false;
+    };
+    let (d1, d2, d3) = (
+        descriptor_change(s0, s1),
+        descriptor_change(s1, s2),
+        descriptor_change(s2, s3),
+    );
+    if d3 == 0.0 {
+        return d2 == 0.0;
+    }
+    let ratio = (d2 / d1).max(d3 / d2);
+    ratio < PERIODIC_RATIO && d3 * ratio / (1.0 - ratio) <= tol
 }
 
 /// Simulate a walk of `model` from the post-impact state `initial`
@@ -514,6 +557,7 @@ pub fn walk_with_stats(
     let mut state = initial;
     let mut time = 0.0;
     let mut failure = None;
+    let mut periodic = false;
     for k in 0..limits.max_steps {
         let record = limits.record.then_some((&mut samples, time));
         let res = one_step(model, cfg, &mut integ, k, state, record);
@@ -523,6 +567,10 @@ pub fn walk_with_stats(
                 state = r.state_plus();
                 steps.push(r);
                 if time >= limits.duration {
+                    break;
+                }
+                if limits.periodic.is_some_and(|tol| is_periodic(&steps, tol)) {
+                    periodic = true;
                     break;
                 }
             }
@@ -537,6 +585,7 @@ pub fn walk_with_stats(
             steps,
             failure,
             samples,
+            periodic,
         },
         *integ.stats(),
     )
@@ -938,4 +987,56 @@ fn one_step(
         lambda_min,
         stuck_time,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{StepResult, is_periodic};
+
+    /// Steps whose `T`, `dx` and `p` approach 1 as `1 + d_k`.
+    fn steps(d: &[f64]) -> Vec<StepResult> {
+        d.iter()
+            .map(|&d| StepResult {
+                period: 1.0 + d,
+                dx: 1.0 + d,
+                speed: 1.0,
+                p: Some(1.0 + d),
+                sr: None,
+                q_plus: [0.0; 4],
+                qd_plus: [0.0; 4],
+                foot_normal_velocity: 0.0,
+                rear_impulse: 0.0,
+                lambda_min: 0.0,
+                stuck_time: 0.0,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_geometric_approach_is_periodic_once_its_tail_is_within_the_tolerance() {
+        // Deviations 0.5^k: changes 0.5^k / (1 + ...), ratio ~0.5, tail ~ the last change.
+        let d: Vec<f64> = (0..40).map(|k| 0.5_f64.powi(k)).collect();
+        let first = (4..=d.len())
+            .find(|&n| is_periodic(&steps(&d[..n]), 1e-6))
+            .expect("stops");
+        // The change from step n-2 to n-1 is about 0.5^(n-1); its tail about the same.
+        let last_change = 0.5_f64.powi(first as i32 - 2) - 0.5_f64.powi(first as i32 - 1);
+        assert!(last_change <= 1.1e-6 && 2.0 * last_change > 1e-6, "{first}");
+        // Exactly repeating steps are periodic.
+        assert!(is_periodic(&steps(&[0.0; 4]), 1e-12));
+    }
+
+    #[test]
+    fn slow_alternating_and_growing_changes_are_never_periodic() {
+        // Ratio 0.95 (slow convergence), alternating deviations (period 2), growth.
+        for d in [
+            (0..60).map(|k| 1e-9 * 0.95_f64.powi(k)).collect::<Vec<_>>(),
+            (0..60)
+                .map(|k| if k % 2 == 0 { 1e-9 } else { -1e-9 })
+                .collect(),
+            (0..60).map(|k| 1e-12 * 1.1_f64.powi(k)).collect(),
+        ] {
+            assert!((4..=d.len()).all(|n| !is_periodic(&steps(&d[..n]), 1e-6)));
+        }
+    }
 }

@@ -18,7 +18,7 @@ use crate::sim::{Failure, SimConfig, StepResult, WalkLimits, walk};
 pub struct SweepPoint {
     /// The friction coefficient.
     pub mu0: f64,
-    /// Number of completed steps.
+    /// Number of completed (simulated) steps.
     pub steps: usize,
     /// The last completed step (the steady descriptors if the walk converged).
     pub last: Option<StepResult>,
@@ -26,6 +26,9 @@ pub struct SweepPoint {
     pub previous: Option<StepResult>,
     /// Why the walk ended early, if it did.
     pub failure: Option<Failure>,
+    /// The walk stopped before its duration because the gait had become periodic
+    /// ([`WalkLimits::periodic`]): `last` stands for every later step.
+    pub periodic: bool,
 }
 
 /// The `mu0` values `from, from + step, ...` up to `to` (inclusive within rounding).
@@ -53,6 +56,7 @@ fn point(mu0: f64, walk: crate::sim::Walk) -> SweepPoint {
         last: walk.steps.last().copied(),
         previous: n.checked_sub(2).map(|k| walk.steps[k]),
         failure: walk.failure,
+        periodic: walk.periodic,
     }
 }
 

@@ -160,6 +160,22 @@ fn bad_input_exits_2_naming_the_field() {
             ],
             "mu0-step",
         ),
+        (
+            &[
+                "sweep",
+                "--scene",
+                "active-level",
+                "--mu0-from",
+                "0",
+                "--mu0-to",
+                "0.1",
+                "--mu0-step",
+                "0.1",
+                "--until-periodic",
+                "0",
+            ],
+            "until-periodic",
+        ),
     ];
     for (args, field) in cases {
         let o = walker(args);
@@ -283,4 +299,37 @@ fn coulomb_friction_from_the_flag_or_a_scene_file() {
     ]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("friction"));
+}
+
+/// `--until-periodic`: the walks stop once their gaits are periodic (at `mu0 = 0.4` and 1 after
+/// well under half of the 100 s), and the JSON and the text say so.
+#[test]
+fn sweep_until_periodic_stops_converged_walks_and_says_so() {
+    let args = [
+        "sweep",
+        "--scene",
+        "active-level",
+        "--mu0-from",
+        "0.4",
+        "--mu0-to",
+        "1",
+        "--mu0-step",
+        "0.6",
+        "--t-set",
+        "0.3",
+        "--until-periodic",
+        "1e-9",
+    ];
+    let o = walker(&[&args[..], &["--json"]].concat());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let pts = v["chains"][0]["points"].as_array().expect("points");
+    assert_eq!(pts.len(), 2);
+    for p in pts {
+        assert_eq!(p["periodic"], true, "{p}");
+        assert!(p["steps"].as_u64().is_some_and(|n| n < 90), "{p}");
+    }
+    let text = walker(&args);
+    let out = String::from_utf8_lossy(&text.stdout);
+    assert_eq!(out.matches(" periodic").count(), 2, "{out}");
 }
