@@ -487,9 +487,9 @@ pub struct WalkLimits {
     pub record: bool,
     /// Stop early once the gait is periodic, so that the last step stands for every later one:
     /// when the relative change of the descriptors `T`, `dx` and `p` (the largest of the three)
-    /// from one step to the next has shrunk at a ratio below 0.9 over the last two steps, and
-    /// that change continued as a geometric series with the larger of the two ratios adds up
-    /// to at most this value. Period-2 and chaotic gaits and slowly converging ones never stop
+    /// from one step to the next has shrunk twice in a row by a ratio below 0.9 (over the last
+    /// four steps), and the last change continued as a geometric series with the larger of the
+    /// two ratios adds up to at most this value. Period-2 and chaotic gaits and slowly converging ones never stop
     /// early. `None`: walk to `max_steps` or `duration`.
     pub periodic: Option<f64>,
 }
@@ -1014,7 +1014,8 @@ mod tests {
 
     #[test]
     fn a_geometric_approach_is_periodic_once_its_tail_is_within_the_tolerance() {
-        // Deviations 0.5^k: changes 0.5^k / (1 + ...), ratio ~0.5, tail ~ the last change.
+        // Deviations 0.5^k: changes of about 0.5^(k+1), ratio 0.5, so the tail is about the
+        // last change.
         let d: Vec<f64> = (0..40).map(|k| 0.5_f64.powi(k)).collect();
         let first = (4..=d.len())
             .find(|&n| is_periodic(&steps(&d[..n]), 1e-6))
