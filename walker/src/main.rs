@@ -171,19 +171,24 @@ fn config(c: &Common) -> Result<SimConfig, app::InputError> {
             ..SimConfig::default()
         },
     };
-    let tol = |field: &str, v: Option<f64>, default: f64| match v {
-        None => Ok(default),
-        Some(x) if x > 0.0 && x < 1.0 => Ok(x),
-        Some(x) => Err(app::InputError {
-            field: field.to_owned(),
-            message: format!("{x} is outside the valid range (0, 1)"),
-        }),
-    };
     Ok(SimConfig {
-        rtol: tol("rtol", c.rtol, base.rtol)?,
-        atol: tol("atol", c.atol, base.atol)?,
+        rtol: c.rtol.map_or(Ok(base.rtol), |x| tolerance("rtol", x))?,
+        atol: c.atol.map_or(Ok(base.atol), |x| tolerance("atol", x))?,
         ..base
     })
+}
+
+/// A relative or absolute tolerance given as the flag `field`: in (0, 1), else an error naming
+/// the flag and the range.
+fn tolerance(field: &str, x: f64) -> Result<f64, app::InputError> {
+    if x > 0.0 && x < 1.0 {
+        Ok(x)
+    } else {
+        Err(app::InputError {
+            field: field.to_owned(),
+            message: format!("{x} is outside the valid range (0, 1)"),
+        })
+    }
 }
 
 fn run(cli: Cli) -> Result<(), (u8, String)> {
@@ -254,19 +259,15 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                     message: format!("{duration} is outside the valid range (0, inf)"),
                 }));
             }
-            if let Some(tol) = until_periodic
-                && !(tol > 0.0 && tol < 1.0)
-            {
-                return Err(input(app::InputError {
-                    field: "until-periodic".to_owned(),
-                    message: format!("{tol} is outside the valid range (0, 1)"),
-                }));
-            }
+            let periodic = until_periodic
+                .map(|x| tolerance("until-periodic", x))
+                .transpose()
+                .map_err(input)?;
             let limits = WalkLimits {
                 max_steps,
                 duration,
                 record: false,
-                periodic: until_periodic,
+                periodic,
             };
             let res = app::sweep(
                 &setup,
