@@ -146,13 +146,18 @@ fn inline_calls(plan: &Plan, block: &Block, options: &EmitOptions) -> Vec<&'stat
         .map(|h| h.0)
         .filter(|&name| match name {
             "sin_cos" => block.steps.iter().any(|s| matches!(s, Step::SinCos { .. })),
-            "tanh" => block
-                .nodes
-                .iter()
-                .any(|&n| matches!(plan.graph.node(n), Node::Tanh(_))),
+            "tanh" => has_tanh(plan, block),
             _ => false,
         })
         .collect()
+}
+
+/// Whether `block` evaluates a `tanh` (a friction law).
+fn has_tanh(plan: &Plan, block: &Block) -> bool {
+    block
+        .nodes
+        .iter()
+        .any(|&n| matches!(plan.graph.node(n), Node::Tanh(_)))
 }
 
 /// The names of the inline float functions any block of `plan` calls.
@@ -628,11 +633,7 @@ fn kernel_fn(
         inline_note(plan, &kp.block, options)
     ));
     doc.push(String::new());
-    let saturates = kp
-        .block
-        .nodes
-        .iter()
-        .any(|&n| matches!(plan.graph.node(n), Node::Tanh(_)));
+    let saturates = has_tanh(plan, &kp.block);
     doc.push(wrap(&format!(
         "Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs \
          ({}an argument the scene does not read has no effect); never panics.{}",
