@@ -696,10 +696,10 @@ fn one_step(
     if !r0.lambda.is_finite() || r0.lambda.abs() > lambda_max {
         // Where the angular velocities alone overflow `lambda` (their squares exceed the
         // floating-point range) its denominator is regular: the state is the problem.
-        let mut at_rest = y0;
-        at_rest[6] = 0.0;
-        at_rest[7] = 0.0;
-        let l_rest = foot.reaction(0.0, &at_rest).lambda;
+        let mut unspun = y0;
+        unspun[6] = 0.0;
+        unspun[7] = 0.0;
+        let l_rest = foot.reaction(0.0, &unspun).lambda;
         return Err(if !r0.lambda.is_finite() && l_rest.abs() <= lambda_max {
             Failure::NonFinite {
                 step,
