@@ -1,6 +1,6 @@
 //! Generates the walker's kernels into `OUT_DIR` with `walker-gen`.
 //!
-//! Reads: the scene files below (`scenes/*.toml`). Writes: one Rust file per scene, rewritten
+//! Reads: the scene files below (`walker/scenes/*.toml`). Writes: one Rust file per scene, rewritten
 //! only when its bytes change, so cargo recompiles only when the derivation or a scene changes.
 
 use std::path::PathBuf;
@@ -18,7 +18,7 @@ const SCENES: [&str; 6] = [
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR")?).join("..");
+    let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR")?);
     let out_dir = PathBuf::from(std::env::var("OUT_DIR")?);
     for scene in SCENES {
         walker_gen::Config::new()

@@ -238,7 +238,7 @@ fn passive_slope_equals_general_slope_at_table1() {
 #[test]
 fn frictionless_scene_has_no_tanh() {
     let scene = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../scenes/active-level-frictionless.toml");
+        .join("../walker/scenes/active-level-frictionless.toml");
     let src = walker_gen::Config::new()
         .scene_file(scene)
         .render()

@@ -886,6 +886,20 @@ fn params_and_prepare(module: &Module, plan: &Plan, options: &EmitOptions) -> To
             inline_note(plan, &plan.prepare, options)
         ),
     ]);
+    let lookups: Vec<TokenStream> = module
+        .params
+        .iter()
+        .map(|p| {
+            let f = ident(&p.field());
+            let name = &p.name;
+            quote!(#f: value(#name),)
+        })
+        .collect();
+    let value = if lookups.is_empty() {
+        quote!(_value)
+    } else {
+        quote!(mut value)
+    };
     let params_derive = derives(fields.is_empty());
     let prepared_derive = derives(prepared_fields.is_empty());
     let constness = const_if_possible(plan, &plan.prepare);
@@ -894,6 +908,15 @@ fn params_and_prepare(module: &Module, plan: &Plan, options: &EmitOptions) -> To
         #params_derive
         pub struct Params {
             #(#fields)*
+        }
+
+        impl Params {
+            /// The parameters looked up by their names in the scene and `docs/kernels.md`
+            /// (`m1`, `I1`, `T_set`, ...): `value` is called once per field, in field order.
+            #[must_use]
+            pub fn from_fn(#value: impl FnMut(&'static str) -> F) -> Self {
+                Self { #(#lookups)* }
+            }
         }
 
         /// Parameter-dependent values computed once by [`prepare`] and read by the kernels.

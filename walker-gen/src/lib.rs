@@ -1,15 +1,17 @@
 #![doc = include_str!("../README.md")]
 
 pub mod bind;
-pub mod catalog;
 mod config;
 pub mod emit;
 pub mod error;
 pub mod ir;
 pub mod lower;
 mod plan;
-pub mod scene;
 pub mod stats;
+
+/// The shared vocabulary (structures, parameters, kernel names, scene files), re-exported from
+/// `walker-scene` so that `walker_gen::scene::Scene` and `walker_gen::Param` keep working.
+pub use walker_scene::{self as scene, catalog};
 
 pub use bind::ParamNodes;
 pub use catalog::KernelName;

@@ -13,7 +13,7 @@ fn walker_gen(args: &[&str]) -> Output {
 
 fn scene(name: &str) -> String {
     Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../scenes")
+        .join("../walker/scenes")
         .join(format!("{name}.toml"))
         .display()
         .to_string()

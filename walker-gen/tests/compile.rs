@@ -71,7 +71,7 @@ fn scene_config(scene: &str, float: Float, no_std: bool) -> Config {
     config
         .scene_file(
             PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-                .join("../scenes")
+                .join("../walker/scenes")
                 .join(format!("{scene}.toml")),
         )
         .float(float)

@@ -757,7 +757,7 @@ fn emitted_text_is_the_tested_text() {
     use walker_gen::{Config, Float, FloatFunctions};
     let scene = |name: &str| {
         PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-            .join("../scenes")
+            .join("../walker/scenes")
             .join(format!("{name}.toml"))
     };
     let render = |name: &str, f: &dyn Fn(&mut Config)| {

@@ -13,7 +13,7 @@ fn check(scene: &str) {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let golden = root.join("tests/golden").join(format!("{scene}.rs"));
     let mut config = Config::new();
-    config.scene_file(root.join("../scenes").join(format!("{scene}.toml")));
+    config.scene_file(root.join("../walker/scenes").join(format!("{scene}.toml")));
     let rendered = config.render().expect("the scene renders");
     if std::env::var_os("WALKER_GEN_BLESS").is_some_and(|v| v == "1") {
         std::fs::create_dir_all(root.join("tests/golden")).expect("create tests/golden");

@@ -14,7 +14,7 @@ const SCENES: [&str; 4] = [
 
 fn scene_file(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../scenes")
+        .join("../walker/scenes")
         .join(format!("{name}.toml"))
 }
 

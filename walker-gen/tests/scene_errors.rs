@@ -38,7 +38,7 @@ fn fixed(base: &str, body: &str) -> String {
 
 #[test]
 fn valid_scene_files_load() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../walker/scenes");
     for name in [
         "active-level",
         "passive-slope",

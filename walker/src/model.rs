@@ -19,75 +19,8 @@ use crate::kernels::{
     active_level, general_level, general_level_coulomb, general_slope, general_slope_coulomb,
     passive_slope,
 };
-
-/// The physical parameters of the walker (Table 1 and `g`).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Physical {
-    /// Mass of the rimless wheel `m1` (kg).
-    pub m1: f64,
-    /// Mass of the torso `m2` (kg).
-    pub m2: f64,
-    /// Leg length `l` (m).
-    pub l: f64,
-    /// Inertia moment of the wheel `I1` (kg m^2).
-    pub i1: f64,
-    /// Inertia moment of the torso `I2` (kg m^2).
-    pub i2: f64,
-    /// Gravitational acceleration `g` (m/s^2).
-    pub g: f64,
-    /// Angle between neighbouring spokes `alpha` (rad).
-    pub alpha: f64,
-}
-
-impl Physical {
-    /// Table 1 of the paper with `g = 9.81`: the values compiled into the `active_level` and
-    /// `passive_slope` kernels (`scenes/active-level.toml`, `scenes/passive-slope.toml`).
-    pub const TABLE1: Physical = Physical {
-        m1: 2.0,
-        m2: 1.0,
-        l: 1.0,
-        i1: 0.5,
-        i2: 1.0,
-        g: 9.81,
-        alpha: std::f64::consts::PI / 6.0,
-    };
-
-    /// Total mass `m_t = m1 + m2` (Eq. 2), used in the specific resistance.
-    pub fn total_mass(&self) -> f64 {
-        self.m1 + self.m2
-    }
-}
-
-/// Parameters of the friction law and of the output-following control.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Runtime {
-    /// Coefficient of sliding friction `mu0` (Eqs. 26, 37).
-    pub mu0: f64,
-    /// Sharpness `c` of the tanh friction law (s/m).
-    pub c: f64,
-    /// Duration `T_set` of the `y_d` ramp (s; active walker only).
-    pub t_set: f64,
-    /// Proportional gain `K_P` (Eq. 32; active walker only).
-    pub k_p: f64,
-    /// Derivative gain `K_D` (Eq. 32; active walker only).
-    pub k_d: f64,
-    /// Slope angle `phi` (rad; passive wheel only, 0 on level ground).
-    pub phi: f64,
-}
-
-impl Default for Runtime {
-    /// The paper's settings: `c = 100`, `K_P = K_D = 0`, `T_set = 0.3`, `mu0 = 0.4`, `phi = 0`.
-    fn default() -> Self {
-        Self {
-            mu0: 0.4,
-            c: 100.0,
-            t_set: 0.3,
-            k_p: 0.0,
-            k_d: 0.0,
-            phi: 0.0,
-        }
-    }
-}
+use crate::params;
+pub use crate::params::{Physical, Runtime};
 
 /// Which floor and torso the model has.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -222,23 +155,17 @@ pub struct Model {
 impl Model {
     /// The active walker on level ground with Table 1 compiled in (`phi` is ignored).
     pub fn active_level(runtime: Runtime) -> Self {
-        let p = active_level::prepare(&active_level::Params {
-            mu0: runtime.mu0,
-            c: runtime.c,
-            t_set: runtime.t_set,
-            k_p: runtime.k_p,
-            k_d: runtime.k_d,
-        });
+        let p = active_level::prepare(&active_level::Params::from_fn(|name| {
+            params::by_name(&Physical::TABLE1, &runtime, name)
+        }));
         Self::with(Kernels::ActiveLevel(p), Physical::TABLE1, runtime, 0.0)
     }
 
     /// The passive wheel on a slope with Table 1 compiled in.
     pub fn passive_slope(runtime: Runtime) -> Self {
-        let p = passive_slope::prepare(&passive_slope::Params {
-            phi: runtime.phi,
-            mu0: runtime.mu0,
-            c: runtime.c,
-        });
+        let p = passive_slope::prepare(&passive_slope::Params::from_fn(|name| {
+            params::by_name(&Physical::TABLE1, &runtime, name)
+        }));
         Self::with(
             Kernels::PassiveSlope(p),
             Physical::TABLE1,
@@ -249,37 +176,17 @@ impl Model {
 
     /// The active walker on level ground with every parameter at run time.
     pub fn general_level(physical: Physical, runtime: Runtime) -> Self {
-        let p = general_level::prepare(&general_level::Params {
-            m1: physical.m1,
-            m2: physical.m2,
-            l: physical.l,
-            i1: physical.i1,
-            i2: physical.i2,
-            g: physical.g,
-            alpha: physical.alpha,
-            mu0: runtime.mu0,
-            c: runtime.c,
-            t_set: runtime.t_set,
-            k_p: runtime.k_p,
-            k_d: runtime.k_d,
-        });
+        let p = general_level::prepare(&general_level::Params::from_fn(|name| {
+            params::by_name(&physical, &runtime, name)
+        }));
         Self::with(Kernels::GeneralLevel(p), physical, runtime, 0.0)
     }
 
     /// The passive wheel on a slope with every parameter at run time.
     pub fn general_slope(physical: Physical, runtime: Runtime) -> Self {
-        let p = general_slope::prepare(&general_slope::Params {
-            m1: physical.m1,
-            m2: physical.m2,
-            l: physical.l,
-            i1: physical.i1,
-            i2: physical.i2,
-            g: physical.g,
-            alpha: physical.alpha,
-            phi: runtime.phi,
-            mu0: runtime.mu0,
-            c: runtime.c,
-        });
+        let p = general_slope::prepare(&general_slope::Params::from_fn(|name| {
+            params::by_name(&physical, &runtime, name)
+        }));
         Self::with(Kernels::GeneralSlope(p), physical, runtime, runtime.phi)
     }
 
@@ -300,36 +207,18 @@ impl Model {
     /// The active walker on level ground with exact Coulomb friction (Eq. 25) and stick-slip,
     /// every parameter at run time (`c` is not used).
     pub fn coulomb_level(physical: Physical, runtime: Runtime) -> Self {
-        let p = general_level_coulomb::prepare(&general_level_coulomb::Params {
-            m1: physical.m1,
-            m2: physical.m2,
-            l: physical.l,
-            i1: physical.i1,
-            i2: physical.i2,
-            g: physical.g,
-            alpha: physical.alpha,
-            mu0: runtime.mu0,
-            t_set: runtime.t_set,
-            k_p: runtime.k_p,
-            k_d: runtime.k_d,
-        });
+        let p = general_level_coulomb::prepare(&general_level_coulomb::Params::from_fn(|name| {
+            params::by_name(&physical, &runtime, name)
+        }));
         Self::with(Kernels::CoulombLevel(p), physical, runtime, 0.0)
     }
 
     /// The passive wheel on a slope with exact Coulomb friction (Eq. 25) and stick-slip, every
     /// parameter at run time (`c` is not used).
     pub fn coulomb_slope(physical: Physical, runtime: Runtime) -> Self {
-        let p = general_slope_coulomb::prepare(&general_slope_coulomb::Params {
-            m1: physical.m1,
-            m2: physical.m2,
-            l: physical.l,
-            i1: physical.i1,
-            i2: physical.i2,
-            g: physical.g,
-            alpha: physical.alpha,
-            phi: runtime.phi,
-            mu0: runtime.mu0,
-        });
+        let p = general_slope_coulomb::prepare(&general_slope_coulomb::Params::from_fn(|name| {
+            params::by_name(&physical, &runtime, name)
+        }));
         Self::with(Kernels::CoulombSlope(p), physical, runtime, runtime.phi)
     }
 

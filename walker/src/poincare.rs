@@ -52,9 +52,8 @@
 use nalgebra::{DMatrix, Matrix2, Vector2};
 use serde::Serialize;
 
-use crate::control;
-use crate::kernels::{active_level, passive_slope};
-use crate::model::{Contact, FrictionLaw, Kind, Model, Physical};
+use crate::jacobian::Jac;
+use crate::model::{Contact, Kind, Model};
 use crate::ode::{Direction, Event, Integrator, NoObserver, OdeSystem, Outcome, Tolerances};
 use crate::sim::{SimConfig, WalkLimits, walk};
 
@@ -79,109 +78,6 @@ fn map_err(t: f64, reason: impl Into<String>) -> MapError {
     MapError {
         t,
         reason: reason.into(),
-    }
-}
-
-/// The Jacobian kernels matching a model. They are generated for the Table 1 scenes only
-/// (`active_level`, `passive_slope`), so models with other physical parameters are refused; a
-/// general-kernel model with Table 1 values uses them (they agree with the general kernels to
-/// rounding).
-#[allow(
-    clippy::large_enum_variant,
-    reason = "built once per map evaluation and read on every right-hand side"
-)]
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Jac {
-    ActiveLevel(active_level::Prepared),
-    PassiveSlope(passive_slope::Prepared),
-}
-
-impl Jac {
-    pub(crate) fn new(m: &Model) -> Result<Self, MapError> {
-        let r = m.runtime;
-        if m.physical != Physical::TABLE1 {
-            return Err(map_err(
-                0.0,
-                "the Jacobian kernels are generated for the Table 1 parameters only",
-            ));
-        }
-        if m.friction_law() != FrictionLaw::Tanh {
-            return Err(map_err(
-                0.0,
-                "the Jacobian kernels are generated for the tanh friction law only",
-            ));
-        }
-        Ok(match m.kind() {
-            Kind::ActiveLevel => Jac::ActiveLevel(active_level::prepare(&active_level::Params {
-                mu0: r.mu0,
-                c: r.c,
-                t_set: r.t_set,
-                k_p: r.k_p,
-                k_d: r.k_d,
-            })),
-            Kind::PassiveSlope => {
-                Jac::PassiveSlope(passive_slope::prepare(&passive_slope::Params {
-                    phi: r.phi,
-                    mu0: r.mu0,
-                    c: r.c,
-                }))
-            }
-        })
-    }
-
-    /// `d qdd_i / d y_j` (`y` the mechanical state) at `(t, y)`, chain rule through `mu(xd)` and
-    /// `v(t, y, ydot)` included.
-    pub(crate) fn accel(&self, model: &Model, t: f64, y: &[f64]) -> [[f64; 8]; 4] {
-        let (th1, th2, xd, th1d, th2d) = (y[2], y[3], y[4], y[6], y[7]);
-        let r = model.runtime;
-        let mut out = [[0.0; 8]; 4];
-        let level = |j: [[f64; 4]; 4], out: &mut [[f64; 8]; 4]| {
-            let th = (r.c * xd).tanh();
-            let dmu = -r.mu0 * r.c * (1.0 - th * th);
-            for (row, ji) in out.iter_mut().zip(j) {
-                row[2] = ji[0] - ji[3] * r.k_p;
-                row[3] = ji[3] * r.k_p;
-                row[4] = ji[2] * dmu;
-                row[6] = ji[1] - ji[3] * r.k_d;
-                row[7] = ji[3] * r.k_d;
-            }
-        };
-        let slope = |j: [[f64; 3]; 4], out: &mut [[f64; 8]; 4]| {
-            let cphi = r.phi.cos();
-            let th = (r.c * xd / cphi).tanh();
-            let dmu = -r.mu0 * r.c / cphi * (1.0 - th * th);
-            for (row, ji) in out.iter_mut().zip(j) {
-                row[2] = ji[0];
-                row[4] = ji[2] * dmu;
-                row[6] = ji[1];
-            }
-        };
-        let v = || {
-            let d = model.desired(t);
-            control::aux_input(d, th1 - th2, th1d - th2d, r.k_p, r.k_d)
-        };
-        match self {
-            Jac::ActiveLevel(p) => level(
-                active_level::closed_loop_level_jacobian(p, th1, th1d, xd, v()),
-                &mut out,
-            ),
-            Jac::PassiveSlope(p) => slope(
-                passive_slope::accel_slope_jacobian(p, th1, th1d, xd),
-                &mut out,
-            ),
-        }
-        out
-    }
-
-    /// `d qd+_i / d (th1, xd, zd, th1d, th2d)` of the applied impact map.
-    fn impact(&self, s: &[f64; 8]) -> [[f64; 5]; 4] {
-        let (th1, xd, zd, th1d, th2d) = (s[2], s[4], s[5], s[6], s[7]);
-        match self {
-            Jac::ActiveLevel(p) => active_level::impact2_level_jacobian(p, th1, xd, zd, th1d, th2d),
-            Jac::PassiveSlope(p) => {
-                passive_slope::impact_slope_jacobian(p, th1, xd, zd, th1d, th2d)
-            }
-        }
     }
 }
 
@@ -267,7 +163,7 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
     )];
     let mut sys = Variational {
         model,
-        jac: Jac::new(model)?,
+        jac: Jac::new(model).map_err(|e| map_err(0.0, e.to_string()))?,
     };
     let mut integ = Integrator::<NA>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut t = 0.0;
@@ -664,112 +560,6 @@ fn residual(model: &Model, m: &MapResult, r: [f64; 2]) -> (f64, [[f64; 2]; 2]) {
     )
 }
 
-/// The output of `walker fixed-point`: the JSON object and the text table.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Report {
-    /// `{"status", "state_plus", "T", "V", "multipliers", ...}`; a failed search is
-    /// `{"status": "failed", "reason"}`.
-    pub json: serde_json::Value,
-    /// Human-readable summary.
-    pub text: String,
-}
-
-/// `walker fixed-point`: validate `omega0` (finite, `> 0`) and the scene (the Jacobian kernels
-/// exist for Table 1 only), search the cycle and format it. A failed search is a result
-/// (status `failed`), not an input error.
-pub fn cli_report(
-    setup: &crate::app::Setup,
-    omega0: Option<f64>,
-    cfg: &SimConfig,
-) -> Result<Report, crate::app::InputError> {
-    let bad = |field: &str, message: String| crate::app::InputError {
-        field: field.to_owned(),
-        message,
-    };
-    if setup.physical != Physical::TABLE1 {
-        return Err(bad(
-            "scene",
-            "fixed-point needs the Table 1 parameters (its Jacobian kernels are generated for \
-             the active-level and passive-slope scenes only)"
-                .to_owned(),
-        ));
-    }
-    if setup.friction != FrictionLaw::Tanh {
-        return Err(bad(
-            "friction",
-            "fixed-point needs the tanh friction law (its Jacobian kernels are generated for \
-             it only; a stick-slip cycle under Coulomb friction is not differentiable there)"
-                .to_owned(),
-        ));
-    }
-    let model = setup.model();
-    let mut opts = FixedPointOptions::for_model(&model);
-    if let Some(w) = omega0 {
-        if !(w.is_finite() && w > 0.0) {
-            return Err(bad(
-                "omega0",
-                format!("{w} is outside the valid range (0, inf)"),
-            ));
-        }
-        opts.omega0 = w;
-    }
-    Ok(match fixed_point(&model, cfg, &opts) {
-        Ok(fp) => Report {
-            json: serde_json::to_value(&fp).unwrap_or(serde_json::Value::Null),
-            text: fixed_point_text(&fp),
-        },
-        Err(e) => Report {
-            json: serde_json::json!({ "status": "failed", "reason": e.to_string() }),
-            text: format!("status: failed ({e})\n"),
-        },
-    })
-}
-
-fn fixed_point_text(fp: &FixedPoint) -> String {
-    use std::fmt::Write as _;
-    let mut s = String::new();
-    let status = serde_json::to_value(fp.status)
-        .ok()
-        .and_then(|v| v.as_str().map(str::to_owned))
-        .unwrap_or_default();
-    let _ = writeln!(s, "status: {status}");
-    if let Some(f) = &fp.failure {
-        let _ = writeln!(s, "walk on the cycle fails: {f}");
-    }
-    let _ = writeln!(
-        s,
-        "state_plus [x z th1 th2 xd zd th1d th2d]: {:?}",
-        fp.state_plus
-    );
-    let _ = writeln!(
-        s,
-        "T = {:.10} s, V = {:.10} m/s, dx = {:.10} m",
-        fp.period, fp.speed, fp.dx
-    );
-    let _ = writeln!(
-        s,
-        "residual {:.3e} after {} Newton iterations",
-        fp.residual, fp.iterations
-    );
-    let _ = writeln!(s, "multipliers (reduced map in xd+, th1d+):");
-    for m in &fp.multipliers {
-        let _ = writeln!(
-            s,
-            "  {:+.10} {:+.10}i  |.| = {:.10}",
-            m.re,
-            m.im,
-            m.modulus()
-        );
-    }
-    if fp.structural_unit_multiplier {
-        let _ = writeln!(
-            s,
-            "the multiplier at 1 is structural: a family of cycles (conserved horizontal momentum)"
-        );
-    }
-    s
-}
-
 /// One point of a continuation in `mu0`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ContinuationPoint {
@@ -819,81 +609,4 @@ pub fn continuation(
         }
     }
     out
-}
-
-/// The continuation as CSV: `chain,mu0,status,T,V,dx,max_modulus,stable` (empty fields when
-/// no cycle was found; never NaN).
-pub fn continuation_csv(points: &[ContinuationPoint]) -> String {
-    use std::fmt::Write as _;
-    let mut s = String::from("chain,mu0,status,T,V,dx,max_modulus,stable\n");
-    for p in points {
-        let _ = match &p.cycle {
-            Some(c) => writeln!(
-                s,
-                "{},{},{},{},{},{},{},{}",
-                p.chain,
-                p.mu0,
-                status_name(c.status),
-                c.period,
-                c.speed,
-                c.dx,
-                c.max_modulus(),
-                p.is_stable()
-            ),
-            None => writeln!(s, "{},{},failed,,,,,false", p.chain, p.mu0),
-        };
-    }
-    s
-}
-
-fn status_name(s: Status) -> &'static str {
-    match s {
-        Status::Converged => "converged",
-        Status::Family => "family",
-        Status::NotConverged => "not-converged",
-        Status::InvalidGait => "invalid-gait",
-    }
-}
-
-/// A stability summary of a continuation: for every chain, the maximal runs of consecutive grid
-/// values of `mu0` on which the gait is stable ([`ContinuationPoint::is_stable`]), e.g.
-/// `T_set = 0.3: stable for mu0 in [0.05, 1] (20/20 points)`. `name` is the chain's
-/// parameter (`T_set` or `phi`).
-pub fn stability_summary(points: &[ContinuationPoint], name: &str) -> String {
-    use std::fmt::Write as _;
-    let mut s = String::new();
-    let mut chains: Vec<f64> = points.iter().map(|p| p.chain).collect();
-    chains.dedup();
-    for chain in chains {
-        let pts: Vec<&ContinuationPoint> = points.iter().filter(|p| p.chain == chain).collect();
-        let mut runs: Vec<(f64, f64)> = Vec::new();
-        let mut open: Option<(f64, f64)> = None;
-        for p in &pts {
-            match (p.is_stable(), open) {
-                (true, None) => open = Some((p.mu0, p.mu0)),
-                (true, Some((a, _))) => open = Some((a, p.mu0)),
-                (false, Some(run)) => {
-                    runs.push(run);
-                    open = None;
-                }
-                (false, None) => {}
-            }
-        }
-        runs.extend(open);
-        let n = pts.iter().filter(|p| p.is_stable()).count();
-        let ranges = if runs.is_empty() {
-            "nowhere on the grid".to_owned()
-        } else {
-            runs.iter()
-                .map(|(a, b)| format!("[{a:.2}, {b:.2}]"))
-                .collect::<Vec<_>>()
-                .join(" and ")
-        };
-        let _ = writeln!(
-            s,
-            "{name} = {chain}: stable for mu0 in {ranges} ({n}/{} points)",
-            pts.len()
-        );
-    }
-    s
 }

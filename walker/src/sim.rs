@@ -364,7 +364,7 @@ impl<'a> Foot<'a> {
 struct Stance<'a> {
     model: &'a Model,
     /// The generated Jacobian kernels (Table 1 models); `None` falls back to finite differences.
-    jac: Option<crate::poincare::Jac>,
+    jac: Option<crate::jacobian::Jac>,
     foot: &'a Foot<'a>,
 }
 
@@ -778,7 +778,7 @@ fn one_step(
     };
     let mut sys = Stance {
         model,
-        jac: crate::poincare::Jac::new(model).ok(),
+        jac: crate::jacobian::Jac::new(model).ok(),
         foot,
     };
     let mut t = 0.0;

@@ -23,6 +23,19 @@ pub struct Params {
     pub c: F,
 }
 
+impl Params {
+    /// The parameters looked up by their names in the scene and `docs/kernels.md`
+    /// (`m1`, `I1`, `T_set`, ...): `value` is called once per field, in field order.
+    #[must_use]
+    pub fn from_fn(mut value: impl FnMut(&'static str) -> F) -> Self {
+        Self {
+            phi: value("phi"),
+            mu0: value("mu0"),
+            c: value("c"),
+        }
+    }
+}
+
 /// Parameter-dependent values computed once by [`prepare`] and read by the kernels.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Prepared {

@@ -102,7 +102,7 @@ fn the_readme_main_command_runs_the_cli() {
             "run",
             "--release",
             "-p",
-            "walker",
+            "walker-cli",
             "--",
             "reproduce",
             "--out",
@@ -112,13 +112,13 @@ fn the_readme_main_command_runs_the_cli() {
     );
     let o = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
         .current_dir(&root)
-        .args(["run", "-q", "-p", "walker", "--", "reproduce", "--help"])
+        .args(["run", "-q", "-p", "walker-cli", "--", "reproduce", "--help"])
         .output()
         .expect("cargo runs");
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(
         o.status.success() && stdout.contains("--out"),
-        "`cargo run -p walker -- reproduce --help` failed:\n{}{}",
+        "`cargo run -p walker-cli -- reproduce --help` failed:\n{}{}",
         stdout,
         String::from_utf8_lossy(&o.stderr)
     );

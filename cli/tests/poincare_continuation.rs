@@ -2,8 +2,9 @@
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
 use walker::model::{Model, Runtime};
-use walker::poincare::{continuation, continuation_csv, stability_summary};
+use walker::poincare::continuation;
 use walker::sim::SimConfig;
+use walker_cli::report::{continuation_csv, stability_summary};
 
 #[test]
 fn continuation_in_mu0_for_the_active_walker() {

@@ -74,7 +74,7 @@ fn simulate_reports_lift_off_and_passive_has_no_power() {
 
 #[test]
 fn scene_files_use_the_general_kernels_and_agree_with_the_fast_path() {
-    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../scenes/");
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../walker/scenes/");
     let run = |scene: &str| {
         let o = walker(&[
             "simulate",
@@ -275,7 +275,7 @@ fn coulomb_friction_from_the_flag_or_a_scene_file() {
     };
     let file = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../scenes/general-level-coulomb.toml"
+        "/../walker/scenes/general-level-coulomb.toml"
     );
     let (t_flag, stuck) = run(&[
         "--scene",

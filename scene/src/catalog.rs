@@ -3,7 +3,7 @@
 //! This table only says *which* kernels exist and where they apply; what they compute is the
 //! derivation's business (see `docs/kernels.md` for inputs, outputs and sign conventions).
 
-use crate::scene::{Floor, Friction, Torso};
+use crate::structure::{Floor, Friction, Torso};
 
 /// A kernel of the contract in `docs/kernels.md`.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]

@@ -6,11 +6,11 @@ use std::fs;
 use std::io;
 use std::path::Path;
 
-use crate::model::{Model, Physical, Runtime};
 use crate::plot::{Figure, Series, save};
 use crate::progress::Progress;
-use crate::sim::{Sample, SimConfig, StepResult, Walk, WalkLimits, walk};
-use crate::sweep::{SweepPoint, mu0_grid, sweep_chains};
+use walker::model::{Model, Physical, Runtime};
+use walker::sim::{Sample, SimConfig, StepResult, Walk, WalkLimits, walk};
+use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
 
 fn runtime(mu0: f64, t_set: f64) -> Runtime {
     Runtime {
@@ -734,11 +734,12 @@ pub fn run(out: &Path) -> io::Result<String> {
 
 /// Where the gaits are stable: fixed points of the Poincare map and their largest Floquet
 /// multiplier along `mu0` for the paper's three `T_set` and three `phi` (continuation from
-/// cycle to cycle, [`crate::poincare::continuation`]), written to `stability.csv`; returns the
+/// cycle to cycle, [`walker::poincare::continuation`]), written to `stability.csv`; returns the
 /// summary lines.
 fn stability(out: &Path) -> io::Result<String> {
-    use crate::poincare::{Status, continuation, continuation_csv, stability_summary};
+    use crate::report::{continuation_csv, stability_summary};
     use rayon::prelude::*;
+    use walker::poincare::{Status, continuation};
     let cfg = SimConfig::default();
     let active_grid = mu0_grid(0.05, 1.0, 0.05);
     let passive_grid = mu0_grid(0.05, 0.7, 0.05);

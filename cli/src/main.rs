@@ -7,10 +7,32 @@
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use walker::app::{self, Overrides};
-use walker::model::FrictionLaw;
+use walker::model::{FrictionLaw, Kind};
 use walker::ode::Method;
+use walker::setup::{Overrides, Setup};
 use walker::sim::{SimConfig, WalkLimits};
+use walker_cli::input::{InputError, duration as positive_duration, tolerance};
+use walker_cli::{report, reproduce, run};
+
+/// Why a command did not finish, and its exit code.
+#[derive(Debug, thiserror::Error)]
+enum CliError {
+    /// Invalid input: exit code 2.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// Writing the output failed: exit code 1.
+    #[error(transparent)]
+    Io(#[from] std::io::Error),
+}
+
+impl CliError {
+    fn exit_code(&self) -> u8 {
+        match self {
+            CliError::Input(_) => 2,
+            CliError::Io(_) => 1,
+        }
+    }
+}
 
 /// Command-line interface.
 #[derive(Parser, Debug)]
@@ -161,7 +183,7 @@ enum Command {
 
 /// The integrator settings of the flags: the method's default tolerances, overridden by
 /// `--rtol` and `--atol` (each in (0, 1), else an input error naming the flag).
-fn config(c: &Common) -> Result<SimConfig, app::InputError> {
+fn config(c: &Common) -> Result<SimConfig, InputError> {
     let base = match c.method {
         MethodArg::Dop853 => SimConfig::default(),
         MethodArg::Rodas4 => SimConfig {
@@ -178,21 +200,7 @@ fn config(c: &Common) -> Result<SimConfig, app::InputError> {
     })
 }
 
-/// A relative or absolute tolerance given as the flag `field`: in (0, 1), else an error naming
-/// the flag and the range.
-fn tolerance(field: &str, x: f64) -> Result<f64, app::InputError> {
-    if x > 0.0 && x < 1.0 {
-        Ok(x)
-    } else {
-        Err(app::InputError {
-            field: field.to_owned(),
-            message: format!("{x} is outside the valid range (0, 1)"),
-        })
-    }
-}
-
-fn run(cli: Cli) -> Result<(), (u8, String)> {
-    let input = |e: app::InputError| (2, format!("error: {e}"));
+fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Simulate {
             common,
@@ -210,25 +218,21 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 phi,
                 friction: common.friction.map(friction),
             };
-            let setup = app::resolve(&common.scene, &ov).map_err(input)?;
-            if let Some(d) = duration.filter(|d| !(d.is_finite() && *d > 0.0)) {
-                return Err(input(app::InputError {
-                    field: "duration".to_owned(),
-                    message: format!("{d} is outside the valid range (0, inf)"),
-                }));
-            }
+            let setup = Setup::resolve(&common.scene, &ov).map_err(InputError::from)?;
+            let duration = duration
+                .map(|d| positive_duration("duration", d))
+                .transpose()?;
             let limits = WalkLimits {
                 max_steps,
                 duration: duration.unwrap_or(f64::INFINITY),
                 record: false,
                 periodic: None,
             };
-            let w = app::simulate(&setup, omega0, &limits, &config(&common).map_err(input)?)
-                .map_err(input)?;
+            let w = run::simulate(&setup, omega0, &limits, &config(&common)?)?;
             if common.json {
-                println!("{}", app::walk_json(&w));
+                println!("{}", report::walk_json(&w));
             } else {
-                print!("{}", app::walk_text(&w));
+                print!("{}", report::walk_text(&w));
             }
         }
         Command::Sweep {
@@ -250,26 +254,20 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 phi: phi.first().copied(),
                 friction: common.friction.map(friction),
             };
-            let setup = app::resolve(&common.scene, &ov).map_err(input)?;
-            let active = setup.kind == walker::model::Kind::ActiveLevel;
+            let setup = Setup::resolve(&common.scene, &ov).map_err(InputError::from)?;
+            let active = setup.kind == Kind::ActiveLevel;
             let chains = if active { t_set } else { phi };
-            if !(duration.is_finite() && duration > 0.0) {
-                return Err(input(app::InputError {
-                    field: "duration".to_owned(),
-                    message: format!("{duration} is outside the valid range (0, inf)"),
-                }));
-            }
+            let duration = positive_duration("duration", duration)?;
             let periodic = until_periodic
                 .map(|x| tolerance("until-periodic", x))
-                .transpose()
-                .map_err(input)?;
+                .transpose()?;
             let limits = WalkLimits {
                 max_steps,
                 duration,
                 record: false,
                 periodic,
             };
-            let res = app::sweep(
+            let res = run::sweep(
                 &setup,
                 &chains,
                 mu0_from,
@@ -277,13 +275,12 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 mu0_step,
                 restart,
                 &limits,
-                &config(&common).map_err(input)?,
-            )
-            .map_err(input)?;
+                &config(&common)?,
+            )?;
             if common.json {
                 println!("{}", serde_json::json!({ "chains": res }));
             } else {
-                print!("{}", app::sweep_text(&res, active));
+                print!("{}", report::sweep_text(&res, active));
             }
         }
         Command::FixedPoint {
@@ -300,10 +297,9 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
                 phi,
                 friction: common.friction.map(friction),
             };
-            let setup = app::resolve(&common.scene, &ov).map_err(input)?;
-            let out =
-                walker::poincare::cli_report(&setup, omega0, &config(&common).map_err(input)?)
-                    .map_err(input)?;
+            let setup = Setup::resolve(&common.scene, &ov).map_err(InputError::from)?;
+            let search = run::fixed_point_search(&setup, omega0, &config(&common)?)?;
+            let out = report::fixed_point_report(&search);
             if common.json {
                 println!("{}", out.json);
             } else {
@@ -311,7 +307,7 @@ fn run(cli: Cli) -> Result<(), (u8, String)> {
             }
         }
         Command::Reproduce { out } => {
-            let summary = walker::reproduce::run(&out).map_err(|e| (1, format!("error: {e}")))?;
+            let summary = reproduce::run(&out)?;
             print!("{summary}");
         }
     }
@@ -329,9 +325,9 @@ fn main() -> ExitCode {
     };
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
-        Err((code, msg)) => {
-            eprintln!("{msg}");
-            ExitCode::from(code)
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.exit_code())
         }
     }
 }

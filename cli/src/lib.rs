@@ -1,0 +1,14 @@
+//! The `walker` command line as a library, so that its parts are documented and tested: input
+//! checks named after the flags ([`input`]), the commands' work ([`run`]), what they print
+//! ([`report`]), progress bars ([`progress`]), figures ([`plot`]) and the reproduction of the
+//! paper ([`reproduce`]). `src/main.rs` parses the arguments and calls these.
+//!
+//! Imports run one way: [`reproduce`] -> [`run`] -> [`report`], [`input`], [`plot`],
+//! [`progress`] -> the `walker` library.
+
+pub mod input;
+pub mod plot;
+pub mod progress;
+pub mod report;
+pub mod reproduce;
+pub mod run;

@@ -1,0 +1,230 @@
+//! What the command line prints: the JSON objects and text tables of walks, sweeps, fixed
+//! points and continuations. The library returns typed results; only this module turns them
+//! into text.
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+use serde_json::json;
+use walker::poincare::{ContinuationPoint, FixedPoint, FixedPointError, Status};
+use walker::sim::{StepResult, Walk};
+use walker::sweep::SweepPoint;
+
+/// The JSON report of a walk: `{"status", "failure", "steps"}`.
+pub fn walk_json(w: &Walk) -> serde_json::Value {
+    json!({
+        "status": w.failure.as_ref().map_or("ok", |f| f.name()),
+        "failure": w.failure,
+        "steps": w.steps,
+    })
+}
+
+/// A text table of a walk.
+pub fn walk_text(w: &Walk) -> String {
+    let mut s = String::from("step          T         dx          V          p         SR\n");
+    let opt = |v: Option<f64>| v.map_or_else(|| "-".to_owned(), |x| format!("{x:.6}"));
+    for (k, st) in w.steps.iter().enumerate() {
+        s.push_str(&format!(
+            "{k:4} {:10.6} {:10.6} {:10.6} {:>10} {:>10}\n",
+            st.period,
+            st.dx,
+            st.speed,
+            opt(st.p),
+            opt(st.sr)
+        ));
+    }
+    match &w.failure {
+        None => s.push_str("status: ok\n"),
+        Some(f) => s.push_str(&format!(
+            "status: {} at step {}\n{}\n",
+            f.name(),
+            f.step(),
+            serde_json::to_string(f).unwrap_or_default()
+        )),
+    }
+    s
+}
+
+/// One sweep chain (one `T_set` or `phi`) in a report.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Chain {
+    /// `T_set` (active) or `phi` (passive).
+    pub value: f64,
+    /// The points of the chain.
+    pub points: Vec<SweepPoint>,
+}
+
+/// A text table of a sweep.
+pub fn sweep_text(chains: &[Chain], active: bool) -> String {
+    let mut s = String::new();
+    for ch in chains {
+        let name = if active { "T_set" } else { "phi" };
+        s.push_str(&format!(
+            "{name} = {}\n  mu0   steps          T         dx          V         SR  status\n",
+            ch.value
+        ));
+        for p in &ch.points {
+            let l: Option<&StepResult> = p.last.as_ref();
+            let f = |g: fn(&StepResult) -> Option<f64>| {
+                l.and_then(g)
+                    .map_or_else(|| "-".to_owned(), |x| format!("{x:.6}"))
+            };
+            s.push_str(&format!(
+                "{:5.3} {:7} {:>10} {:>10} {:>10} {:>10}  {}\n",
+                p.mu0,
+                p.steps,
+                f(|s| Some(s.period)),
+                f(|s| Some(s.dx)),
+                f(|s| Some(s.speed)),
+                f(|s| s.sr),
+                p.failure
+                    .as_ref()
+                    .map_or(if p.periodic { "periodic" } else { "ok" }, |x| x.name())
+            ));
+        }
+    }
+    s
+}
+/// The output of `walker fixed-point`: the JSON object and the text table.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Report {
+    /// `{"status", "state_plus", "T", "V", "multipliers", ...}`; a failed search is
+    /// `{"status": "failed", "reason"}`.
+    pub json: serde_json::Value,
+    /// Human-readable summary.
+    pub text: String,
+}
+
+/// The report of a fixed-point search; a failed search is a result (status `failed`).
+#[must_use]
+pub fn fixed_point_report(result: &Result<FixedPoint, FixedPointError>) -> Report {
+    match result {
+        Ok(fp) => Report {
+            json: serde_json::to_value(fp).unwrap_or(serde_json::Value::Null),
+            text: fixed_point_text(fp),
+        },
+        Err(e) => Report {
+            json: json!({ "status": "failed", "reason": e.to_string() }),
+            text: format!("status: failed ({e})\n"),
+        },
+    }
+}
+
+fn fixed_point_text(fp: &FixedPoint) -> String {
+    let mut s = String::new();
+    let status = serde_json::to_value(fp.status)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_owned))
+        .unwrap_or_default();
+    let _ = writeln!(s, "status: {status}");
+    if let Some(f) = &fp.failure {
+        let _ = writeln!(s, "walk on the cycle fails: {f}");
+    }
+    let _ = writeln!(
+        s,
+        "state_plus [x z th1 th2 xd zd th1d th2d]: {:?}",
+        fp.state_plus
+    );
+    let _ = writeln!(
+        s,
+        "T = {:.10} s, V = {:.10} m/s, dx = {:.10} m",
+        fp.period, fp.speed, fp.dx
+    );
+    let _ = writeln!(
+        s,
+        "residual {:.3e} after {} Newton iterations",
+        fp.residual, fp.iterations
+    );
+    let _ = writeln!(s, "multipliers (reduced map in xd+, th1d+):");
+    for m in &fp.multipliers {
+        let _ = writeln!(
+            s,
+            "  {:+.10} {:+.10}i  |.| = {:.10}",
+            m.re,
+            m.im,
+            m.modulus()
+        );
+    }
+    if fp.structural_unit_multiplier {
+        let _ = writeln!(
+            s,
+            "the multiplier at 1 is structural: a family of cycles (conserved horizontal momentum)"
+        );
+    }
+    s
+}
+
+/// The continuation as CSV: `chain,mu0,status,T,V,dx,max_modulus,stable` (empty fields when
+/// no cycle was found; never NaN).
+pub fn continuation_csv(points: &[ContinuationPoint]) -> String {
+    let mut s = String::from("chain,mu0,status,T,V,dx,max_modulus,stable\n");
+    for p in points {
+        let _ = match &p.cycle {
+            Some(c) => writeln!(
+                s,
+                "{},{},{},{},{},{},{},{}",
+                p.chain,
+                p.mu0,
+                status_name(c.status),
+                c.period,
+                c.speed,
+                c.dx,
+                c.max_modulus(),
+                p.is_stable()
+            ),
+            None => writeln!(s, "{},{},failed,,,,,false", p.chain, p.mu0),
+        };
+    }
+    s
+}
+
+fn status_name(s: Status) -> &'static str {
+    match s {
+        Status::Converged => "converged",
+        Status::Family => "family",
+        Status::NotConverged => "not-converged",
+        Status::InvalidGait => "invalid-gait",
+    }
+}
+
+/// A stability summary of a continuation: for every chain, the maximal runs of consecutive grid
+/// values of `mu0` on which the gait is stable ([`ContinuationPoint::is_stable`]), e.g.
+/// `T_set = 0.3: stable for mu0 in [0.05, 1] (20/20 points)`. `name` is the chain's
+/// parameter (`T_set` or `phi`).
+pub fn stability_summary(points: &[ContinuationPoint], name: &str) -> String {
+    let mut s = String::new();
+    let mut chains: Vec<f64> = points.iter().map(|p| p.chain).collect();
+    chains.dedup();
+    for chain in chains {
+        let pts: Vec<&ContinuationPoint> = points.iter().filter(|p| p.chain == chain).collect();
+        let mut runs: Vec<(f64, f64)> = Vec::new();
+        let mut open: Option<(f64, f64)> = None;
+        for p in &pts {
+            match (p.is_stable(), open) {
+                (true, None) => open = Some((p.mu0, p.mu0)),
+                (true, Some((a, _))) => open = Some((a, p.mu0)),
+                (false, Some(run)) => {
+                    runs.push(run);
+                    open = None;
+                }
+                (false, None) => {}
+            }
+        }
+        runs.extend(open);
+        let n = pts.iter().filter(|p| p.is_stable()).count();
+        let ranges = if runs.is_empty() {
+            "nowhere on the grid".to_owned()
+        } else {
+            runs.iter()
+                .map(|(a, b)| format!("[{a:.2}, {b:.2}]"))
+                .collect::<Vec<_>>()
+                .join(" and ")
+        };
+        let _ = writeln!(
+            s,
+            "{name} = {chain}: stable for mu0 in {ranges} ({n}/{} points)",
+            pts.len()
+        );
+    }
+    s
+}

@@ -1,0 +1,145 @@
+//! The commands' work between parsing and printing: validate what the library does not (the
+//! flags' own ranges), build the model, and call the library.
+
+use walker::model::{FrictionLaw, Kind, Physical, Runtime};
+use walker::poincare::{FixedPoint, FixedPointError, FixedPointOptions, fixed_point};
+use walker::setup::{self, Setup};
+use walker::sim::{SimConfig, Walk, WalkLimits, walk};
+use walker::sweep::{mu0_grid, sweep_chains};
+
+use crate::input::{InputError, check};
+use crate::progress::Progress;
+use crate::report::Chain;
+
+/// Run `walker simulate`.
+pub fn simulate(
+    setup: &Setup,
+    omega0: Option<f64>,
+    limits: &WalkLimits,
+    cfg: &SimConfig,
+) -> Result<Walk, InputError> {
+    let model = setup.model();
+    let w0 = omega0.unwrap_or_else(|| model.default_omega0());
+    check("omega0", w0, true, "finite")?;
+    if limits.duration.is_nan() || limits.duration <= 0.0 {
+        return Err(InputError::out_of_range("duration", limits.duration, "> 0"));
+    }
+    Ok(walk(&model, cfg, model.initial_state(w0), limits))
+}
+
+/// The most `mu0` points a sweep chain may have.
+pub const MAX_SWEEP_POINTS: usize = 100_000;
+
+/// Run `walker sweep` over `mu0` for each of `chains` (`T_set` or `phi` values; empty: the
+/// scene's value).
+#[allow(clippy::too_many_arguments)]
+pub fn sweep(
+    setup: &Setup,
+    chains: &[f64],
+    mu0_from: f64,
+    mu0_to: f64,
+    mu0_step: f64,
+    restart: bool,
+    limits: &WalkLimits,
+    cfg: &SimConfig,
+) -> Result<Vec<Chain>, InputError> {
+    check("mu0-from", mu0_from, mu0_from >= 0.0, "finite and >= 0")?;
+    check(
+        "mu0-to",
+        mu0_to,
+        mu0_to >= mu0_from,
+        "finite and >= mu0-from",
+    )?;
+    check("mu0-step", mu0_step, mu0_step > 0.0, "finite and > 0")?;
+    // Count the points before making them: the grid is allocated by the request (the inputs
+    // are finite and the step positive, so the count is a number, possibly infinite).
+    let points = (mu0_to - mu0_from) / mu0_step;
+    if points >= MAX_SWEEP_POINTS as f64 {
+        return Err(InputError::new(
+            "mu0-step",
+            format!(
+                "{mu0_step} gives {points:.3e} points from mu0-from to mu0-to; at most \
+                 {MAX_SWEEP_POINTS} per chain"
+            ),
+        ));
+    }
+    let grid = mu0_grid(mu0_from, mu0_to, mu0_step);
+    let active = setup.kind == Kind::ActiveLevel;
+    let base = setup.runtime;
+    let chains: Vec<f64> = if chains.is_empty() {
+        vec![if active { base.t_set } else { base.phi }]
+    } else {
+        chains.to_vec()
+    };
+    for &c in &chains {
+        let r = if active {
+            Runtime { t_set: c, ..base }
+        } else {
+            Runtime { phi: c, ..base }
+        };
+        setup::validate(&setup.physical, &r)?;
+    }
+    let make = |c: f64, mu0: f64| {
+        let r = if active {
+            Runtime {
+                t_set: c,
+                mu0,
+                ..base
+            }
+        } else {
+            Runtime {
+                phi: c,
+                mu0,
+                ..base
+            }
+        };
+        setup.model_with(r)
+    };
+    let initial = |c: f64| {
+        let m = make(c, 0.0);
+        m.initial_state(m.default_omega0())
+    };
+    let bar = Progress::new("sweep", chains.len() * grid.len());
+    let res = sweep_chains(&chains, make, cfg, &grid, initial, limits, restart, &|| {
+        bar.tick()
+    });
+    bar.finish();
+    Ok(chains
+        .iter()
+        .zip(res)
+        .map(|(&value, points)| Chain { value, points })
+        .collect())
+}
+
+/// Run `walker fixed-point`: validate `omega0` (finite, `> 0`) and the scene (the Jacobian
+/// kernels exist for Table 1 and the tanh law only), then search the cycle. A failed search is
+/// a result, not an input error.
+///
+/// # Errors
+/// The scene has no Jacobian kernels, or `omega0` is out of range.
+pub fn fixed_point_search(
+    setup: &Setup,
+    omega0: Option<f64>,
+    cfg: &SimConfig,
+) -> Result<Result<FixedPoint, FixedPointError>, InputError> {
+    if setup.physical != Physical::TABLE1 {
+        return Err(InputError::new(
+            "scene",
+            "fixed-point needs the Table 1 parameters (its Jacobian kernels are generated for \
+             the active-level and passive-slope scenes only)",
+        ));
+    }
+    if setup.friction != FrictionLaw::Tanh {
+        return Err(InputError::new(
+            "friction",
+            "fixed-point needs the tanh friction law (its Jacobian kernels are generated for \
+             it only; a stick-slip cycle under Coulomb friction is not differentiable there)",
+        ));
+    }
+    let model = setup.model();
+    let mut opts = FixedPointOptions::for_model(&model);
+    if let Some(w) = omega0 {
+        opts.omega0 = check("omega0", w, w > 0.0, "finite and > 0")?;
+    }
+    Ok(fixed_point(&model, cfg, &opts))
+}
