@@ -34,13 +34,6 @@ pub enum Error {
         /// Why the argument is not supported.
         what: String,
     },
-    /// An expression outside the polynomial-rational class (e.g. a negative power of a sum
-    /// inside a trigonometric argument).
-    #[error("unsupported expression: {what}")]
-    Unsupported {
-        /// What is not supported.
-        what: String,
-    },
     /// A kernel that the derivation does not have.
     #[error("unknown kernel `{name}`")]
     UnknownKernel {

@@ -1,7 +1,6 @@
 //! `walker-symbolic`: a focused computer-algebra engine and the Lagrangian mechanics of the
 //! underactuated rimless wheel with torso on slippery ground (Asano, Kikuchi, Shibata).
 //!
-//! - [`expr`]: a hash-consed expression arena with exact rational constants;
 //! - [`poly`], [`ratfunc`]: the canonical form, polynomials in symbols and in sines and cosines
 //!   of base angles reduced by `cos^2 = 1 - sin^2`, and quotients of them with cancellation;
 //! - [`matrix`]: small symbolic matrices (products, Jacobians, inverses by the adjugate);
@@ -11,7 +10,6 @@
 //! - [`latex`]: readable mathematics for people.
 
 pub mod error;
-pub mod expr;
 pub mod kernels;
 pub mod latex;
 pub mod matrix;

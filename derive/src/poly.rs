@@ -5,6 +5,11 @@
 //! with an exponent above one (`cos^2 -> 1 - sin^2`). In that form `{1, cos}` is a basis of the
 //! quotient ring over the other atoms, so two polynomials are equal as trigonometric functions
 //! exactly when their reduced forms are equal: the reduced form is canonical.
+//!
+//! This file holds the polynomial type and its arithmetic (sums, products in the reduced form,
+//! exact division, content, substitution, evaluation); the monomial type is in `poly/mono.rs`
+//! and the greatest common divisor, [`Poly::gcd`], in `poly/gcd.rs` (which uses this file, not
+//! the other way round).
 
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
@@ -17,101 +22,13 @@ use num_traits::{One, Signed, Zero};
 
 use crate::symbol::{Atom, NUM_ANGLES, NUM_ATOMS};
 
+mod gcd;
+mod mono;
+
+pub use mono::{Mono, atom_name};
+
 /// An exact rational number.
 pub type Q = BigRational;
-
-/// A monomial: the exponent of every atom slot.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Mono(pub [u8; NUM_ATOMS]);
-
-impl Mono {
-    /// The monomial `1`.
-    pub const ONE: Mono = Mono([0; NUM_ATOMS]);
-
-    /// The monomial of one atom slot to the first power.
-    pub fn atom(slot: usize) -> Mono {
-        let mut e = [0; NUM_ATOMS];
-        e[slot] = 1;
-        Mono(e)
-    }
-
-    /// Product of two monomials.
-    pub fn mul(&self, other: &Mono) -> Mono {
-        let mut e = self.0;
-        for (a, b) in e.iter_mut().zip(other.0.iter()) {
-            *a += *b;
-        }
-        Mono(e)
-    }
-
-    /// Quotient `self / other` if `other` divides `self`.
-    pub fn div(&self, other: &Mono) -> Option<Mono> {
-        let mut e = self.0;
-        for (a, b) in e.iter_mut().zip(other.0.iter()) {
-            *a = a.checked_sub(*b)?;
-        }
-        Some(Mono(e))
-    }
-
-    /// Total degree.
-    pub fn degree(&self) -> u32 {
-        self.0.iter().map(|&e| u32::from(e)).sum()
-    }
-
-    /// Whether this is the monomial `1`.
-    pub fn is_one(&self) -> bool {
-        self.0.iter().all(|&e| e == 0)
-    }
-
-    /// Slots with a nonzero exponent, with the exponent.
-    pub fn factors(&self) -> impl Iterator<Item = (usize, u8)> + '_ {
-        self.0
-            .iter()
-            .enumerate()
-            .filter(|(_, e)| **e > 0)
-            .map(|(i, e)| (i, *e))
-    }
-}
-
-impl fmt::Debug for Mono {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let mut first = true;
-        for (slot, e) in self.factors() {
-            if !first {
-                write!(f, "*")?;
-            }
-            first = false;
-            write!(f, "{}", atom_name(slot))?;
-            if e > 1 {
-                write!(f, "^{e}")?;
-            }
-        }
-        if first {
-            write!(f, "1")?;
-        }
-        Ok(())
-    }
-}
-
-/// Plain-text name of an atom slot (`sin(th1)`, `m1`, ...).
-pub fn atom_name(slot: usize) -> String {
-    match Atom::of_slot(slot) {
-        Some(Atom::Sin(a)) => format!("sin({})", angle_name(a)),
-        Some(Atom::Cos(a)) => format!("cos({})", angle_name(a)),
-        Some(Atom::Sym(s)) => s.name().to_owned(),
-        None => format!("#{slot}"),
-    }
-}
-
-fn angle_name(a: crate::symbol::BaseAngle) -> &'static str {
-    use crate::symbol::BaseAngle::*;
-    match a {
-        Th1 => "th1",
-        Th2 => "th2",
-        HalfAlpha => "alpha/2",
-        Phi => "phi",
-    }
-}
 
 /// A polynomial: terms sorted by descending monomial, no zero coefficients.
 #[derive(Clone, PartialEq, Eq, Hash, Default)]
@@ -421,21 +338,6 @@ impl Poly {
         buckets.into_iter().map(Poly::from_terms).collect()
     }
 
-    /// Leading coefficient in one slot.
-    fn lc_in(&self, slot: usize) -> Poly {
-        let d = self.degree_in(slot);
-        Poly::from_terms(
-            self.terms
-                .iter()
-                .filter(|(m, _)| m.0[slot] == d)
-                .map(|(m, c)| {
-                    let mut mm = *m;
-                    mm.0[slot] = 0;
-                    (mm, c.clone())
-                }),
-        )
-    }
-
     /// Exact quotient in the free polynomial ring, if `divisor` divides `self`.
     pub fn div_exact(&self, divisor: &Poly) -> Option<Poly> {
         let (lm, lc) = divisor.leading()?;
@@ -490,12 +392,6 @@ impl Poly {
     /// The primitive part (see [`Poly::content_primitive`]).
     pub fn primitive(&self) -> Poly {
         self.content_primitive().1
-    }
-
-    /// Greatest common divisor in the free ring `Z[atoms]`, normalised to a primitive
-    /// polynomial with positive leading coefficient (`1` if coprime).
-    pub fn gcd(&self, other: &Poly) -> Poly {
-        gcd(self, other)
     }
 
     /// Substitutes a polynomial for an atom slot, and reduces.
@@ -555,248 +451,10 @@ impl Poly {
     }
 }
 
-/// Normalises to primitive with positive leading coefficient.
-fn normalize(p: &Poly) -> Poly {
-    p.primitive()
-}
-
-fn gcd_list(ps: &[Poly]) -> Poly {
-    let mut g = Poly::zero();
-    for p in ps {
-        g = gcd(&g, p);
-        if g.as_constant().is_some_and(|c| !c.is_zero()) {
-            return Poly::one();
-        }
-    }
-    g
-}
-
-/// `gcd(p, q)` where `p` does not contain `slot`: the gcd of `p` and every coefficient of `q`
-/// in `slot`, smallest coefficients first so that a coprime pair is found early.
-fn gcd_with_coeffs(p: &Poly, q: &Poly, slot: usize) -> Poly {
-    let mut coeffs = q.coeffs_in(slot);
-    coeffs.retain(|c| !c.is_zero());
-    coeffs.sort_by_key(Poly::len);
-    let mut g = p.clone();
-    for c in &coeffs {
-        g = gcd(&g, c);
-        if g.is_constant() {
-            return Poly::one();
-        }
-    }
-    normalize(&g)
-}
-
-/// The prime of the modular images in [`coprime_by_images`].
-const PRIME: u64 = 2_147_483_647;
-
-fn mod_p(q: &Q) -> Option<u64> {
-    use num_traits::ToPrimitive;
-    let p = BigInt::from(PRIME);
-    let n = q.numer().mod_floor(&p).to_u64()?;
-    let d = q.denom().mod_floor(&p).to_u64()?;
-    if d == 0 {
-        return None;
-    }
-    Some(n * pow_mod(d, PRIME - 2) % PRIME)
-}
-
-fn pow_mod(mut b: u64, mut e: u64) -> u64 {
-    let mut r = 1;
-    b %= PRIME;
-    while e > 0 {
-        if e & 1 == 1 {
-            r = r * b % PRIME;
-        }
-        b = b * b % PRIME;
-        e >>= 1;
-    }
-    r
-}
-
-/// The image of `p` in `F_p[v]` with every other atom set to a fixed value.
-fn univariate_image(p: &Poly, slot: usize, point: &[u64; NUM_ATOMS]) -> Option<Vec<u64>> {
-    let mut out = vec![0u64; usize::from(p.degree_in(slot)) + 1];
-    for (m, c) in &p.terms {
-        let mut t = mod_p(c)?;
-        for (s, e) in m.factors() {
-            if s != slot {
-                t = t * pow_mod(point[s], u64::from(e)) % PRIME;
-            }
-        }
-        let k = usize::from(m.0[slot]);
-        out[k] = (out[k] + t) % PRIME;
-    }
-    Some(out)
-}
-
-fn trim(p: &mut Vec<u64>) {
-    while p.last() == Some(&0) {
-        p.pop();
-    }
-}
-
-/// Degree of the gcd of two univariate polynomials over `F_p`.
-fn univariate_gcd_degree(mut a: Vec<u64>, mut b: Vec<u64>) -> usize {
-    trim(&mut a);
-    trim(&mut b);
-    while !b.is_empty() {
-        // a <- a mod b
-        let lb_inv = pow_mod(b[b.len() - 1], PRIME - 2);
-        while a.len() >= b.len() {
-            let Some(&la) = a.last() else { break };
-            let k = la * lb_inv % PRIME;
-            let shift = a.len() - b.len();
-            for (i, &bi) in b.iter().enumerate() {
-                a[shift + i] = (a[shift + i] + PRIME - k * bi % PRIME) % PRIME;
-            }
-            trim(&mut a);
-        }
-        std::mem::swap(&mut a, &mut b);
-    }
-    a.len().saturating_sub(1)
-}
-
-/// A fast proof of coprimality: if, for every atom that both contain, the images in
-/// `F_p[v]` (all other atoms at a fixed point that keeps the degrees) have a constant gcd,
-/// then the gcd has degree zero in every atom. `false` means "not proven", not "not coprime".
-fn coprime_by_images(a: &Poly, b: &Poly) -> bool {
-    let mut point = [0u64; NUM_ATOMS];
-    for (i, v) in point.iter_mut().enumerate() {
-        *v = 1_000_003 + 7_919 * i as u64 * (i as u64 + 13);
-    }
-    for slot in 0..NUM_ATOMS {
-        if !(a.contains(slot) && b.contains(slot)) {
-            continue;
-        }
-        let (Some(ia), Some(ib)) = (
-            univariate_image(a, slot, &point),
-            univariate_image(b, slot, &point),
-        ) else {
-            return false;
-        };
-        let degrees_kept = ia.last() != Some(&0) && ib.last() != Some(&0);
-        if !degrees_kept || univariate_gcd_degree(ia, ib) > 0 {
-            return false;
-        }
-    }
-    true
-}
-
-/// Content with respect to a slot: gcd of the coefficients.
-fn content_in(p: &Poly, slot: usize) -> Poly {
-    gcd_list(&p.coeffs_in(slot))
-}
-
-/// Pseudo-remainder of `a` by `b` as polynomials in `slot`.
-fn prem(a: &Poly, b: &Poly, slot: usize) -> Poly {
-    let db = b.degree_in(slot);
-    let lb = b.lc_in(slot);
-    let mut r = a.clone();
-    while !r.is_zero() && r.degree_in(slot) >= db {
-        let dr = r.degree_in(slot);
-        let lr = r.lc_in(slot);
-        let mut shift = Mono::ONE;
-        shift.0[slot] = dr - db;
-        r = lb
-            .mul_raw(&r)
-            .sub(&lr.mul_raw(&b.mul_term(&shift, &Q::one())));
-    }
-    r
-}
-
-fn gcd(a: &Poly, b: &Poly) -> Poly {
-    if a.is_zero() {
-        return normalize(b);
-    }
-    if b.is_zero() {
-        return normalize(a);
-    }
-    if a.is_constant() || b.is_constant() {
-        return Poly::one();
-    }
-    if a.len() == 1 || b.len() == 1 {
-        let ma = a.monomial_content();
-        let mb = b.monomial_content();
-        let mut e = [0u8; NUM_ATOMS];
-        for (x, (p, q)) in e.iter_mut().zip(ma.0.iter().zip(mb.0.iter())) {
-            *x = (*p).min(*q);
-        }
-        return Poly::term(Mono(e), Q::one());
-    }
-    if coprime_by_images(a, b) {
-        return Poly::one();
-    }
-    let (small, large) = if a.len() <= b.len() { (a, b) } else { (b, a) };
-    if large.div_exact(small).is_some() {
-        return normalize(small);
-    }
-    // An atom only one of them contains: the gcd divides every coefficient in it.
-    if let Some(slot) = (0..NUM_ATOMS).find(|&s| a.contains(s) != b.contains(s)) {
-        return if a.contains(slot) {
-            gcd_with_coeffs(b, a, slot)
-        } else {
-            gcd_with_coeffs(a, b, slot)
-        };
-    }
-    // Otherwise eliminate the shared atom of lowest degree: the remainder sequence is shortest.
-    let Some(slot) = (0..NUM_ATOMS)
-        .filter(|&s| a.contains(s))
-        .min_by_key(|&s| (a.degree_in(s).max(b.degree_in(s)), a.len() + b.len(), s))
-    else {
-        return Poly::one();
-    };
-    if !b.contains(slot) {
-        return gcd_with_coeffs(b, a, slot);
-    }
-    if !a.contains(slot) {
-        return gcd_with_coeffs(a, b, slot);
-    }
-    let ca = content_in(a, slot);
-    let cb = content_in(b, slot);
-    let c = gcd(&ca, &cb);
-    let (Some(pa), Some(pb)) = (a.div_exact(&ca), b.div_exact(&cb)) else {
-        return Poly::one();
-    };
-    let (pa, pb) = (pa.primitive(), pb.primitive());
-    let (mut x, mut y) = if pa.degree_in(slot) >= pb.degree_in(slot) {
-        (pa, pb)
-    } else {
-        (pb, pa)
-    };
-    while !y.is_zero() {
-        let r = prem(&x, &y, slot);
-        x = y;
-        y = if r.is_zero() {
-            r
-        } else {
-            // Divide out the content in the other atoms and the integer content, or the
-            // coefficients of the remainder sequence grow exponentially.
-            let cr = content_in(&r, slot);
-            r.div_exact(&cr).unwrap_or(r).primitive()
-        };
-        if !y.is_zero() && y.degree_in(slot) == 0 {
-            // Coprime in this slot.
-            x = Poly::one();
-            break;
-        }
-    }
-    let g = if x.degree_in(slot) == 0 {
-        Poly::one()
-    } else {
-        x
-    };
-    normalize(&c.mul_raw(&g))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::symbol::{BaseAngle, Sym};
-
-    fn s(sym: Sym) -> Poly {
-        Poly::atom(Atom::Sym(sym))
-    }
+    use crate::symbol::BaseAngle;
 
     #[test]
     fn pythagoras_reduces_to_one() {
@@ -804,26 +462,5 @@ mod tests {
         let cs = Poly::atom(Atom::Cos(BaseAngle::Th1));
         assert_eq!(sn.mul(&sn).add(&cs.mul(&cs)), Poly::one());
         assert_eq!(cs.pow(4), Poly::one().sub(&sn.mul(&sn)).pow(2));
-    }
-
-    #[test]
-    fn gcd_finds_common_factor() {
-        let m1 = s(Sym::M1);
-        let m2 = s(Sym::M2);
-        let i1 = s(Sym::I1);
-        let mt = m1.add(&m2);
-        let a = mt.mul(&mt).mul(&i1);
-        let b = mt.mul(&s(Sym::L)).add(&mt.mul(&i1));
-        assert_eq!(a.gcd(&b), mt);
-        let c = a.div_exact(&mt).expect("divisible");
-        assert_eq!(c, mt.mul(&i1));
-        assert!(a.div_exact(&s(Sym::L)).is_none());
-    }
-
-    #[test]
-    fn gcd_of_coprime_is_one() {
-        let a = s(Sym::M1).add(&Poly::one());
-        let b = s(Sym::M1).sub(&Poly::one());
-        assert_eq!(a.gcd(&b), Poly::one());
     }
 }

@@ -1349,11 +1349,15 @@ fn unknown_names_are_errors() {
             name: "theta1".into()
         })
     );
-    let mut arena = walker_symbolic::expr::Arena::new();
-    assert!(matches!(
-        arena.sym_named("m3"),
-        Err(Error::UnknownSymbol { .. })
-    ));
+    // A name turns into its symbol and so into an expression of the canonical form; a near
+    // miss is an error, not a fresh symbol.
+    for &x in Sym::ALL {
+        assert_eq!(Sym::from_name(x.name()).map(mechanics::sym), Ok(s(x)));
+    }
+    assert_eq!(
+        Sym::from_name("m3").map(mechanics::sym),
+        Err(Error::UnknownSymbol { name: "m3".into() })
+    );
     assert!(matches!(
         derivation().kernel("no_such_kernel"),
         Err(Error::UnknownKernel { .. })
