@@ -1,6 +1,9 @@
 //! Initial step size and step-size controllers, after Hairer's codes.
 
-use super::{Config, ControlKind, OdeSystem, Stats, Tolerances, rhs};
+use super::options::{Config, Tolerances};
+use super::stats::Stats;
+use super::stepper::{ControlKind, rhs};
+use super::system::OdeSystem;
 
 /// Rounding unit used in the "step size too small" test (Hairer uses
 /// 2.3e-16).

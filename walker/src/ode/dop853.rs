@@ -15,7 +15,10 @@
 // vectors explicitly, mirroring the published Fortran loops.
 #![allow(clippy::excessive_precision, clippy::needless_range_loop)]
 
-use super::{ControlKind, Dense, OdeSystem, Stats, Stepper, Tolerances, rhs};
+use super::options::Tolerances;
+use super::stats::Stats;
+use super::stepper::{ControlKind, Dense, Stepper, rhs};
+use super::system::OdeSystem;
 
 const C2: f64 = 0.526001519587677318785587544488e-01;
 const C3: f64 = 0.789002279381515978178381316732e-01;

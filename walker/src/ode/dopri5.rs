@@ -11,7 +11,10 @@
 // published Fortran loops.
 #![allow(clippy::needless_range_loop)]
 
-use super::{ControlKind, Dense, OdeSystem, Stats, Stepper, Tolerances, error_norm, rhs};
+use super::options::Tolerances;
+use super::stats::Stats;
+use super::stepper::{ControlKind, Dense, Stepper, error_norm, rhs};
+use super::system::OdeSystem;
 
 const C2: f64 = 0.2;
 const C3: f64 = 0.3;

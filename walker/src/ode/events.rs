@@ -2,7 +2,8 @@
 //!
 //! The detection rule is documented on [`Event`].
 
-use super::{Dense, Observer};
+use super::observer::Observer;
+use super::stepper::Dense;
 
 /// Which crossings of zero an event reacts to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -23,9 +23,12 @@
 // vectors explicitly, mirroring the published Fortran loops.
 #![allow(clippy::excessive_precision, clippy::needless_range_loop)]
 
-use super::{
-    ControlKind, Dense, Lu, OdeSystem, Stats, Stepper, Tolerances, control::UROUND, error_norm, rhs,
-};
+use super::control::UROUND;
+use super::linalg::Lu;
+use super::options::Tolerances;
+use super::stats::Stats;
+use super::stepper::{ControlKind, Dense, Stepper, error_norm, rhs};
+use super::system::OdeSystem;
 
 const C2: f64 = 0.386;
 const C3: f64 = 0.21;
