@@ -1,0 +1,86 @@
+//! Why the Poincare map or the fixed-point search failed: typed errors that keep the time since
+//! the impact where it happened and their source.
+
+use crate::jacobian::NoJacobian;
+use crate::sim::Failure;
+
+/// Why the integrator stopped before the heel strike without a non-finite value.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum IntegratorGaveUp {
+    /// The step size fell below the time resolution
+    /// ([`Outcome::StepSizeTooSmall`](crate::ode::Outcome::StepSizeTooSmall)).
+    #[error("step size too small (h = {h:e})")]
+    StepSizeTooSmall {
+        /// The step size that was too small.
+        h: f64,
+    },
+    /// The integrator's step budget ran out
+    /// ([`Outcome::MaxSteps`](crate::ode::Outcome::MaxSteps)).
+    #[error("too many steps")]
+    MaxSteps,
+    /// The integrator refused its input
+    /// ([`Outcome::InvalidInput`](crate::ode::Outcome::InvalidInput)).
+    #[error("invalid integrator input: {reason}")]
+    InvalidInput {
+        /// What was wrong.
+        reason: &'static str,
+    },
+}
+
+/// Why the map could not be evaluated. `t` is the time since the impact (s).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum MapError {
+    /// The state given to the map is not finite.
+    #[error("Poincare map failed at t = 0: non-finite initial state")]
+    NonFiniteStart,
+    /// No heel strike before [`SimConfig::max_step_time`](crate::sim::SimConfig::max_step_time).
+    #[error("Poincare map failed at t = {t}: no heel strike")]
+    NoHeelStrike {
+        /// Time reached.
+        t: f64,
+    },
+    /// The stance dynamics (or the variational equations) produced a non-finite value.
+    #[error("Poincare map failed at t = {t}: non-finite state")]
+    NonFinite {
+        /// Time of the last finite point.
+        t: f64,
+    },
+    /// The integrator gave up before the heel strike.
+    #[error("Poincare map failed at t = {t}: {cause}")]
+    Integrator {
+        /// Time reached.
+        t: f64,
+        /// What stopped it.
+        #[source]
+        cause: IntegratorGaveUp,
+    },
+    /// The heel strike is grazing (`th1d = 0`): the saltation correction divides by it.
+    #[error("Poincare map failed at t = {t}: grazing heel strike (th1d = 0)")]
+    GrazingHeelStrike {
+        /// Time of the heel strike.
+        t: f64,
+    },
+    /// The state or the Jacobian after the impact and the reset is not finite.
+    #[error("Poincare map failed at t = {t}: non-finite impact or reset")]
+    NonFiniteImpact {
+        /// Time of the heel strike.
+        t: f64,
+    },
+    /// The model has no generated Jacobian kernels (physical parameters other than Table 1's).
+    #[error("Poincare map failed at t = 0: {0}")]
+    NoJacobian(#[from] NoJacobian),
+}
+
+/// Why no fixed point could be searched for.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum FixedPointError {
+    /// The warm-up walk failed before completing a step.
+    #[error("the warm-up walk failed before the first impact: {}", .0.name())]
+    Warmup(Failure),
+    /// The warm-up walk ended without completing a step and without a failure.
+    #[error("the warm-up walk failed before the first impact: no step")]
+    NoWarmupStep,
+    /// The map failed at the guess or at every damped Newton step.
+    #[error(transparent)]
+    Map(#[from] MapError),
+}

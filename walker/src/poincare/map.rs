@@ -1,0 +1,180 @@
+//! The Poincare map on the post-impact section with its Jacobian: the stance phase with the
+//! variational equations appended ([`Variational`]), the saltation correction at the heel
+//! strike, and the Jacobians of the impact and of the reset.
+
+use crate::jacobian::Jac;
+use crate::model::{Contact, Model};
+use crate::ode::{Direction, Event, Integrator, NoObserver, OdeSystem, Outcome, Tolerances};
+use crate::sim::SimConfig;
+
+use super::error::{IntegratorGaveUp, MapError};
+use super::linalg::matmul;
+
+/// Size of the integrated state: 8 mechanical components and the 8x8 sensitivity matrix.
+const NA: usize = 8 + 64;
+
+/// The stance phase with the variational equations appended.
+struct Variational<'a> {
+    model: &'a Model,
+    jac: Jac,
+}
+
+impl Variational<'_> {
+    fn mech_rhs(&self, t: f64, y: &[f64]) -> [f64; 8] {
+        let (qdd, _) = self.model.stance(t, y, Contact::Smooth);
+        [y[4], y[5], y[6], y[7], qdd[0], qdd[1], qdd[2], qdd[3]]
+    }
+}
+
+impl OdeSystem<NA> for Variational<'_> {
+    fn rhs(&mut self, t: f64, y: &[f64; NA], dy: &mut [f64; NA]) {
+        dy[..8].copy_from_slice(&self.mech_rhs(t, y));
+        let a = self.jac.accel(self.model, t, y);
+        for j in 0..8 {
+            for i in 0..4 {
+                dy[8 + 8 * i + j] = y[8 + 8 * (i + 4) + j];
+                let mut s = 0.0;
+                for (k, aik) in a[i].iter().enumerate() {
+                    s += aik * y[8 + 8 * k + j];
+                }
+                dy[8 + 8 * (i + 4) + j] = s;
+            }
+        }
+    }
+
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        let ts = self.model.runtime.t_set;
+        (self.model.is_active() && ts > t).then_some(ts)
+    }
+}
+
+/// One evaluation of the Poincare map.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MapResult {
+    /// The next post-impact state `[x, z, th1, th2, xd, zd, th1d, th2d]`, measured from the new
+    /// stance foot (`x = z = 0`).
+    pub state_plus: [f64; 8],
+    /// The step period `T` (s).
+    pub period: f64,
+    /// The step length (Eq. 34; along the slope, Eq. 47) (m).
+    pub dx: f64,
+    /// `d state_plus_i / d state_j` (row `i`, column `j`).
+    pub jacobian: [[f64; 8]; 8],
+}
+
+/// One step of the hybrid walker from the post-impact state `s` (time 0), with its Jacobian
+/// (see the module documentation). Failures of the stance phase (no heel strike within
+/// [`SimConfig::max_step_time`], integrator failures, non-finite values) are errors; the
+/// physical validity tests of [`crate::sim`] (lift-off, double support) are not applied here.
+/// Models whose physical parameters are not Table 1 are refused (no Jacobian kernels).
+pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapResult, MapError> {
+    if !s.iter().all(|v| v.is_finite()) {
+        return Err(MapError::NonFiniteStart);
+    }
+    let mut y = [0.0; NA];
+    y[..8].copy_from_slice(s);
+    for i in 0..8 {
+        y[8 + 9 * i] = 1.0;
+    }
+    let heel = model.heel_strike_angle();
+    let mut events = [Event::terminal(
+        Direction::Rising,
+        move |_, y: &[f64; NA]| y[2] - heel,
+    )];
+    let mut sys = Variational {
+        model,
+        jac: Jac::new(model)?,
+    };
+    let mut integ = Integrator::<NA>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
+    let mut t = 0.0;
+    let (te, ye) = loop {
+        match integ.integrate(
+            &mut sys,
+            t,
+            &y,
+            cfg.max_step_time,
+            &mut events,
+            &mut NoObserver,
+        ) {
+            Outcome::Breakpoint { t: tb, y: yb } => {
+                t = tb;
+                y = yb;
+            }
+            Outcome::Event { t, y, .. } => break (t, y),
+            Outcome::Reached { t, .. } => return Err(MapError::NoHeelStrike { t }),
+            Outcome::NonFinite { t, .. } => return Err(MapError::NonFinite { t }),
+            Outcome::StepSizeTooSmall { t, h, .. } => {
+                let cause = IntegratorGaveUp::StepSizeTooSmall { h };
+                return Err(MapError::Integrator { t, cause });
+            }
+            Outcome::MaxSteps { t, .. } => {
+                let cause = IntegratorGaveUp::MaxSteps;
+                return Err(MapError::Integrator { t, cause });
+            }
+            Outcome::InvalidInput { t, reason, .. } => {
+                let cause = IntegratorGaveUp::InvalidInput { reason };
+                return Err(MapError::Integrator { t, cause });
+            }
+        }
+    };
+    let mut pre = [0.0; 8];
+    pre.copy_from_slice(&ye[..8]);
+    let mut phi = [[0.0; 8]; 8];
+    for (i, row) in phi.iter_mut().enumerate() {
+        row.copy_from_slice(&ye[8 + 8 * i..16 + 8 * i]);
+    }
+    // Saltation: g = th1 - heel, g_y = e_2, g_y . f = th1d.
+    let f = sys.mech_rhs(te, &ye);
+    if f[2].abs() < 1e-12 {
+        return Err(MapError::GrazingHeelStrike { t: te });
+    }
+    let g_row = phi[2];
+    for (i, row) in phi.iter_mut().enumerate() {
+        for (j, v) in row.iter_mut().enumerate() {
+            *v -= f[i] * g_row[j] / f[2];
+        }
+    }
+    // Impact: positions unchanged, velocities from the impact kernel.
+    let imp = model.impact(&pre);
+    let k = sys.jac.impact(&pre);
+    let mut dimp = [[0.0; 8]; 8];
+    for (i, row) in dimp.iter_mut().enumerate().take(4) {
+        row[i] = 1.0;
+    }
+    const COLS: [usize; 5] = [2, 4, 5, 6, 7];
+    for i in 0..4 {
+        for (c, &col) in COLS.iter().enumerate() {
+            dimp[4 + i][col] = k[i][c];
+        }
+    }
+    // Reset to the new stance leg, measured from the new foot.
+    let [x, z, th1, th2, ..] = pre;
+    let [xd, zd, th1d, th2d] = imp.qd;
+    let [xf, _, xdf, zdf] = model.fore_foot(x, z, th1, xd, zd, th1d);
+    let (l, alpha) = (model.physical.l, model.physical.alpha);
+    let cs = th1.cos() - (th1 - alpha).cos();
+    let sn = th1.sin() - (th1 - alpha).sin();
+    let mut dres = [[0.0; 8]; 8];
+    dres[2][2] = 1.0;
+    dres[3][3] = 1.0;
+    dres[4] = [0.0, 0.0, -l * th1d * sn, 0.0, 1.0, 0.0, l * cs, 0.0];
+    dres[5] = [0.0, 0.0, -l * th1d * cs, 0.0, 0.0, 1.0, -l * sn, 0.0];
+    dres[6][6] = 1.0;
+    dres[7][7] = 1.0;
+    let jacobian = matmul(&dres, &matmul(&dimp, &phi));
+    let state_plus = [0.0, 0.0, th1 - alpha, th2, xdf, zdf, th1d, th2d];
+    let dx = (xf - s[0]) / model.runtime.phi.cos();
+    let ok = state_plus
+        .iter()
+        .chain(jacobian.iter().flatten())
+        .all(|v| v.is_finite());
+    if !ok || !dx.is_finite() {
+        return Err(MapError::NonFiniteImpact { t: te });
+    }
+    Ok(MapResult {
+        state_plus,
+        period: te,
+        dx,
+        jacobian,
+    })
+}
