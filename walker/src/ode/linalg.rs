@@ -4,6 +4,14 @@
 //! with the same matrix, so the factorisation is stored once ([`Lu`]) and
 //! reused for every right-hand side. Everything lives on the stack: no heap
 //! allocation, no dependency on a linear-algebra crate.
+//!
+//! Kept by hand rather than nalgebra's `SMatrix::lu` because it is at least as fast
+//! and keeps RODAS4's results bitwise as they were (nalgebra multiplies by the
+//! pivot's reciprocal and substitutes column by column, so its last bits differ):
+//! `cargo bench -p walker --bench linalg` (`benches/linalg.rs`), N = 9, measured
+//! once on 2026-11-24: factor + one solve 337 ns against nalgebra's 414 ns (1.23x
+//! faster), factor + six solves (one RODAS4 step) 783 ns against 764 ns (at par,
+//! 0.98x, within the noise of a shared machine).
 
 /// An LU factorisation `P A = L U` of an `N x N` matrix, computed by Gaussian
 /// elimination with partial (row) pivoting.

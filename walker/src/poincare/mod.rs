@@ -52,7 +52,6 @@
 mod continuation;
 mod error;
 mod fixed_point;
-mod linalg;
 mod map;
 mod multipliers;
 mod section;
