@@ -1,0 +1,88 @@
+//! The Poincare map and the fixed-point search fail with typed errors that keep the time and
+//! the cause: a non-finite state, a heel strike that does not come in time, a model without
+//! Jacobian kernels, and a warm-up walk that falls.
+#![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
+
+use std::error::Error;
+
+use walker::jacobian::NoJacobian;
+use walker::model::{Model, Runtime};
+use walker::poincare::{FixedPointError, FixedPointOptions, MapError, embed, fixed_point};
+use walker::poincare::{poincare_map, reduce};
+use walker::sim::SimConfig;
+
+fn active() -> Model {
+    Model::active_level(Runtime {
+        mu0: 0.4,
+        t_set: 0.3,
+        ..Runtime::default()
+    })
+}
+
+/// A post-impact state near the Table 1 cycle.
+fn near_cycle(model: &Model) -> [f64; 8] {
+    embed(model, [0.55, 0.75])
+}
+
+#[test]
+fn a_non_finite_state_is_refused_before_integrating() {
+    let model = active();
+    let mut s = near_cycle(&model);
+    s[6] = f64::NAN;
+    let err = poincare_map(&model, &SimConfig::default(), &s).unwrap_err();
+    assert_eq!(err, MapError::NonFiniteStart);
+    assert!(err.to_string().contains("non-finite"), "{err}");
+}
+
+#[test]
+fn no_heel_strike_within_the_step_time_reports_that_time() {
+    let model = active();
+    let cfg = SimConfig {
+        max_step_time: 0.01,
+        ..SimConfig::default()
+    };
+    let err = poincare_map(&model, &cfg, &near_cycle(&model)).unwrap_err();
+    assert_eq!(err, MapError::NoHeelStrike { t: 0.01 });
+    assert!(err.to_string().contains("no heel strike"), "{err}");
+}
+
+#[test]
+fn a_model_without_jacobian_kernels_keeps_the_cause_as_source() {
+    let mut model = active();
+    model.physical.l *= 1.1;
+    let err = poincare_map(&model, &SimConfig::default(), &near_cycle(&model)).unwrap_err();
+    assert_eq!(err, MapError::NoJacobian(NoJacobian::NotTable1));
+    let source = err.source().expect("the NoJacobian cause is kept");
+    assert_eq!(source.to_string(), NoJacobian::NotTable1.to_string());
+}
+
+#[test]
+fn a_warm_up_walk_that_fails_reports_the_failure_by_value() {
+    let model = active();
+    let opts = FixedPointOptions {
+        omega0: -1.0,
+        ..FixedPointOptions::for_model(&model)
+    };
+    let err = fixed_point(&model, &SimConfig::default(), &opts).unwrap_err();
+    let FixedPointError::Warmup(failure) = &err else {
+        panic!("expected a warm-up failure, got {err:?}");
+    };
+    assert!(err.to_string().contains(failure.name()), "{err}");
+}
+
+#[test]
+fn the_map_error_passes_through_the_fixed_point_search() {
+    let mut model = active();
+    model.physical.l *= 1.1;
+    let err = walker::poincare::newton(
+        &model,
+        &SimConfig::default(),
+        reduce(&near_cycle(&model)),
+        &FixedPointOptions::for_model(&model),
+    )
+    .unwrap_err();
+    assert_eq!(
+        err,
+        FixedPointError::Map(MapError::NoJacobian(NoJacobian::NotTable1))
+    );
+}
