@@ -2,10 +2,11 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::emit::{EmitOptions, Float, FloatFunctions, emit_plan};
+use crate::emit::emit_plan;
 use crate::error::Error;
 use crate::ir::Module;
 use crate::lower::lower;
+use crate::options::{EmitOptions, Float, FloatFunctions};
 use crate::plan::{Division, Plan};
 use crate::scene::Scene;
 use crate::stats::{Stats, from_plan};

@@ -6,6 +6,7 @@ pub mod emit;
 pub mod error;
 pub mod ir;
 pub mod lower;
+mod options;
 mod plan;
 pub mod stats;
 
