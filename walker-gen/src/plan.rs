@@ -265,7 +265,7 @@ fn input_dependence(g: &Graph) -> Vec<bool> {
     dep
 }
 
-/// `x^n` as a square-and-multiply chain (see [`crate::ir::powi_chain`]).
+/// `x^n` as a square-and-multiply chain (see `powi_chain` in `ir/graph.rs`).
 fn power_chain(g: &mut Graph, x: NodeId, n: i32) -> NodeId {
     let mut result: Option<NodeId> = None;
     let mut base = x;
