@@ -6,8 +6,8 @@ use crate::emit::emit_plan;
 use crate::error::Error;
 use crate::ir::Module;
 use crate::lower::lower;
-use crate::options::{EmitOptions, Float, FloatFunctions};
-use crate::plan::{Division, Plan};
+use crate::options::{Division, EmitOptions, Float, FloatFunctions};
+use crate::plan::Plan;
 use crate::scene::Scene;
 use crate::stats::{Stats, from_plan};
 

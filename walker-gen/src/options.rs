@@ -1,10 +1,26 @@
-//! What the emitter writes: the float type, how `sin_cos` and `tanh` are evaluated, and the
-//! [`EmitOptions`] that gather them with the division mode and the checked entry points.
+//! What the emitter writes: how divisions are evaluated ([`Division`]), the float type, how
+//! `sin_cos` and `tanh` are evaluated, and the [`EmitOptions`] that gather them with the
+//! checked entry points.
 //!
 //! Its own file so that both the emitter and the operation counts ([`crate::stats`]) read the
 //! options without importing each other.
 
-use crate::plan::Division;
+/// How divisions are evaluated (see the crate docs, "Numerics").
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default)]
+pub enum Division {
+    /// A denominator depending on parameters only is inverted once in `prepare`; a
+    /// state-dependent denominator shared by two or more divisions of one kernel is inverted
+    /// once per call; those quotients become multiplications by the reciprocal.
+    ///
+    /// Each such quotient is rounded twice instead of once (relative error at most `2u` instead
+    /// of `u`, with `u = 2^-53` for `f64`), which is below the error any numerator or
+    /// denominator computed in more than one operation already carries; a division costs
+    /// several multiplications in latency and throughput. This is the default.
+    #[default]
+    SharedReciprocal,
+    /// Every quotient is one correctly rounded division, as written in the derivation.
+    Exact,
+}
 
 /// The float type of the generated code.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default)]

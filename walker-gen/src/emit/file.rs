@@ -13,8 +13,9 @@ use super::params::params_and_prepare;
 use super::writer::ident;
 use crate::error::EmitError;
 use crate::ir::Module;
+use crate::options::Division;
 use crate::options::EmitOptions;
-use crate::plan::{Division, Plan};
+use crate::plan::Plan;
 
 /// Emits `module` as formatted Rust source.
 ///

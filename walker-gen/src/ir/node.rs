@@ -30,7 +30,7 @@ impl ParamId {
     }
 }
 
-/// A kernel argument name interned in a [`Graph`](super::Graph) (see [`Graph::input_name`]).
+/// A kernel argument name interned in a [`Graph`](super::Graph) (see [`Graph::input_name`](super::Graph::input_name)).
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub struct InputId(pub(super) u32);
 
