@@ -43,7 +43,7 @@ pub fn derive() -> Result<Derivation, Error> {
     })
 }
 
-/// Lowers the kernels of `scene`, taken from `derivation` (see [`derive`]), into one [`Module`].
+/// Lowers the kernels of `scene`, taken from `derivation` (see [`derive()`]), into one [`Module`].
 ///
 /// # Errors
 /// A kernel is missing from the derivation, or needs a parameter the scene's structure does

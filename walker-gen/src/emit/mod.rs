@@ -1,4 +1,4 @@
-//! Rust source from a [`Module`]: tokens with `quote`, checked by `syn`, formatted by
+//! Rust source from a [`Module`](crate::Module): tokens with `quote`, checked by `syn`, formatted by
 //! `prettyplease`, stamped with the `@generated` line.
 //!
 //! Layout of a generated file (see the crate docs for an example):

@@ -88,7 +88,7 @@ impl Graph {
         self.intern(Node::Const(Const::new(v)))
     }
 
-    /// The runtime parameter `p` (declare it first with [`Module::declare_param`]).
+    /// The runtime parameter `p` (declare it first with [`Module::declare_param`](crate::Module::declare_param)).
     pub fn param(&mut self, p: ParamId) -> NodeId {
         self.intern(Node::Param(p))
     }

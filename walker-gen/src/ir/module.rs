@@ -42,7 +42,7 @@ pub struct Kernel {
     pub doc: String,
     /// The paper equations it implements, for example `"Eqs. 22-23"`.
     pub equation: String,
-    /// Argument names in signature order; every [`Node::Input`] the outputs use must be here.
+    /// Argument names in signature order; every [`Node::Input`](crate::Node::Input) the outputs use must be here.
     pub args: Vec<String>,
     /// Output names (for the docs) and their nodes, row-major for matrices.
     pub outputs: Vec<(String, NodeId)>,

@@ -18,12 +18,12 @@ impl NodeId {
     }
 }
 
-/// A runtime parameter: an index into [`Module::params`], a field of the generated `Params`.
+/// A runtime parameter: an index into [`Module::params`](crate::Module::params), a field of the generated `Params`.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub struct ParamId(pub(super) u32);
 
 impl ParamId {
-    /// The index into [`Module::params`].
+    /// The index into [`Module::params`](crate::Module::params).
     #[must_use]
     pub fn index(self) -> usize {
         self.0 as usize
