@@ -2,7 +2,7 @@
 //! `sin_cos` and `tanh` are evaluated, and the [`EmitOptions`] that gather them with the
 //! checked entry points.
 //!
-//! Its own file so that both the emitter and the operation counts ([`crate::stats`]) read the
+//! Its own file so that both the emitter and the operation counts ([`crate::stats`](mod@crate::stats)) read the
 //! options without importing each other.
 
 /// How divisions are evaluated (see the crate docs, "Numerics").

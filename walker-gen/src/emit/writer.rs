@@ -185,7 +185,7 @@ impl Writer<'_> {
     }
 
     /// A float function: an inherent method in std mode, `libm::<name>` in no-std mode, or the
-    /// file's own function (`tanh`) with [`FloatFunctions::Inline`].
+    /// file's own function (`tanh`) with [`FloatFunctions::Inline`](crate::FloatFunctions::Inline).
     fn call(&self, arg: NodeId, name: &str) -> (TokenStream, u8) {
         if self.options.inline_float_functions() && INLINE_HELPERS.iter().any(|h| h.0 == name) {
             let f = ident(name);

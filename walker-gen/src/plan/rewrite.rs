@@ -52,7 +52,7 @@ pub(super) fn expand_powers(g: &mut Graph) -> Vec<NodeId> {
 }
 
 /// Rewrites the divisions reachable from `roots` as multiplications by a reciprocal where
-/// [`Division::SharedReciprocal`] says so; returns the new roots.
+/// [`Division::SharedReciprocal`](crate::Division::SharedReciprocal) says so; returns the new roots.
 pub(super) fn reciprocals(g: &mut Graph, roots: &[NodeId]) -> Vec<NodeId> {
     let dep = input_dependence(g);
     let depends = |n: NodeId| dep.get(n.index()).copied().unwrap_or(true);
