@@ -1,7 +1,8 @@
 //! Generates the walker's kernels into `OUT_DIR` with `walker-gen`.
 //!
-//! Reads: the scene files below (`walker/scenes/*.toml`). Writes: one Rust file per scene, rewritten
-//! only when its bytes change, so cargo recompiles only when the derivation or a scene changes.
+//! Reads: the scene files below (`walker/scenes/*.toml`). Writes: one Rust file per scene (named
+//! by the scene, `<name with _>.rs`), all from one derivation, each rewritten only when its bytes
+//! change, so cargo recompiles only when the derivation or a scene changes.
 
 use std::path::PathBuf;
 
@@ -18,14 +19,13 @@ const SCENES: [&str; 6] = [
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR")?);
+    let scenes = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR")?).join("scenes");
     let out_dir = PathBuf::from(std::env::var("OUT_DIR")?);
-    for scene in SCENES {
-        walker_gen::Config::new()
-            .scene_file(root.join("scenes").join(format!("{scene}.toml")))
-            .out_file(out_dir.join(format!("{}.rs", scene.replace('-', "_"))))
-            .emit_rerun_if_changed(true)
-            .generate()?;
-    }
+    // One derivation for all six scenes; each file is named by its scene (`<name with _>.rs`).
+    walker_gen::Config::new()
+        .scene_files(SCENES.map(|scene| scenes.join(format!("{scene}.toml"))))
+        .out_dir(out_dir)
+        .emit_rerun_if_changed(true)
+        .generate_all()?;
     Ok(())
 }

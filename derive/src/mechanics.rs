@@ -13,6 +13,11 @@ use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, BaseAngle, Sym};
 use crate::trig::sin_cos_combination;
 
+/// The floor the stance foot slides on: level ground `z = 0` (Section 3) or a slope of angle
+/// `phi` descending towards `+x`, `z = -x tan phi` (Section 5). The shared vocabulary's
+/// [`walker_scene::Floor`], re-exported so that `walker_symbolic::mechanics::Floor` keeps working.
+pub use walker_scene::Floor;
+
 /// The generalized coordinates `q = [x, z, th1, th2]` (Section 2.2).
 pub const Q_SYMS: [Sym; 4] = [Sym::X, Sym::Z, Sym::Th1, Sym::Th2];
 /// The generalized velocities.
@@ -77,15 +82,6 @@ pub fn time_derivative(f: &RatFunc) -> RatFunc {
         acc = acc + &(f.diff(*qd) * sym(*qdd));
     }
     acc
-}
-
-/// The floor the stance foot slides on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Floor {
-    /// Level ground, `z = 0` (Section 3).
-    Level,
-    /// A slope of angle `phi` descending towards `+x`, `z = -x tan phi` (Section 5).
-    Slope,
 }
 
 /// Positions and energies of the walker.

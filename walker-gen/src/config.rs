@@ -1,12 +1,14 @@
-//! The builder a `build.rs` uses (as `prost_build::Config`).
+//! The builder a `build.rs` uses (as `prost_build::Config`): one or many scenes, one
+//! derivation for all of them.
 
 use std::path::{Path, PathBuf};
 
-use crate::emit::{EmitOptions, Float, FloatFunctions, emit_plan};
+use crate::emit::emit_plan;
 use crate::error::Error;
 use crate::ir::Module;
-use crate::lower::lower;
-use crate::plan::{Division, Plan};
+use crate::lower::{Derivation, derive, lower};
+use crate::options::{Division, EmitOptions, Float, FloatFunctions};
+use crate::plan::Plan;
 use crate::scene::Scene;
 use crate::stats::{Stats, from_plan};
 
@@ -19,13 +21,14 @@ enum SceneSource {
 /// Configures and runs the generator. See the crate docs for a `build.rs` example.
 #[derive(Clone, Debug, Default)]
 pub struct Config {
-    scene: Option<SceneSource>,
+    scenes: Vec<SceneSource>,
     options: EmitOptions,
     out_file: Option<PathBuf>,
+    out_dir: Option<PathBuf>,
     rerun_if_changed: bool,
 }
 
-/// What [`Config::generate`] did.
+/// What [`Config::generate`] did (and [`Config::generate_all`] for each scene).
 #[derive(Clone, Debug)]
 pub struct GenerateReport {
     /// The output file.
@@ -40,23 +43,36 @@ pub struct GenerateReport {
 
 impl Config {
     /// A configuration with no scene, `f64`, std, [`Division::SharedReciprocal`], checked entry
-    /// points, [`FloatFunctions::Inline`], the output file `$OUT_DIR/<scene name>.rs` and no
+    /// points, [`FloatFunctions::Inline`], the output files `$OUT_DIR/<scene name>.rs` and no
     /// `cargo:` lines.
     #[must_use]
     pub fn new() -> Config {
         Config::default()
     }
 
-    /// Reads the scene from a TOML file (relative paths are relative to the working directory,
+    /// Adds a scene read from a TOML file (relative paths are relative to the working directory,
     /// which is the package root in a build script).
     pub fn scene_file(&mut self, path: impl AsRef<Path>) -> &mut Config {
-        self.scene = Some(SceneSource::File(path.as_ref().to_path_buf()));
+        self.scenes
+            .push(SceneSource::File(path.as_ref().to_path_buf()));
         self
     }
 
-    /// Uses a scene built in code.
+    /// Adds scenes read from TOML files, in order (as [`Config::scene_file`] for each); then
+    /// [`Config::generate_all`] writes one file per scene from one derivation.
+    pub fn scene_files<P: AsRef<Path>>(
+        &mut self,
+        paths: impl IntoIterator<Item = P>,
+    ) -> &mut Config {
+        for path in paths {
+            self.scene_file(path);
+        }
+        self
+    }
+
+    /// Adds a scene built in code.
     pub fn scene(&mut self, scene: Scene) -> &mut Config {
-        self.scene = Some(SceneSource::Value(Box::new(scene)));
+        self.scenes.push(SceneSource::Value(Box::new(scene)));
         self
     }
 
@@ -95,13 +111,21 @@ impl Config {
         self
     }
 
-    /// The file [`Config::generate`] writes (default: `$OUT_DIR/<scene name with _>.rs`).
+    /// The file [`Config::generate`] writes for the one scene (default: in the output directory,
+    /// named by [`Scene::default_file_name`]). Not allowed with several scenes.
     pub fn out_file(&mut self, path: impl AsRef<Path>) -> &mut Config {
         self.out_file = Some(path.as_ref().to_path_buf());
         self
     }
 
-    /// Whether [`Config::generate`] prints `cargo:rerun-if-changed=<scene file>`.
+    /// The directory [`Config::generate_all`] writes each scene's file into, named by
+    /// [`Scene::default_file_name`] (default: `$OUT_DIR`).
+    pub fn out_dir(&mut self, path: impl AsRef<Path>) -> &mut Config {
+        self.out_dir = Some(path.as_ref().to_path_buf());
+        self
+    }
+
+    /// Whether generating prints `cargo:rerun-if-changed=<scene file>` for each scene file.
     pub fn emit_rerun_if_changed(&mut self, yes: bool) -> &mut Config {
         self.rerun_if_changed = yes;
         self
@@ -113,46 +137,52 @@ impl Config {
         self.options
     }
 
+    /// The one scene of a single-scene call.
+    fn single(&self) -> Result<&SceneSource, Error> {
+        match self.scenes.as_slice() {
+            [] => Err(Error::NoScene),
+            [one] => Ok(one),
+            many => Err(Error::SeveralScenes { count: many.len() }),
+        }
+    }
+
     /// Loads (or clones) and validates the scene.
     ///
     /// # Errors
-    /// No scene was given, or it is invalid.
+    /// No scene or more than one was given, or it is invalid.
     pub fn load_scene(&self) -> Result<Scene, Error> {
-        let scene = match &self.scene {
-            None => return Err(Error::NoScene),
-            Some(SceneSource::File(path)) => Scene::from_file(path)?,
-            Some(SceneSource::Value(scene)) => (**scene).clone(),
-        };
-        scene.validate()?;
-        Ok(scene)
+        load(self.single()?)
     }
 
     /// The lowered module, with the scene's summary as the first header notes.
     ///
     /// # Errors
-    /// The scene is invalid or cannot be lowered.
+    /// No scene or more than one was given, or it is invalid or cannot be lowered.
     pub fn module(&self) -> Result<Module, Error> {
         let scene = self.load_scene()?;
-        let mut module = lower(&scene)?;
-        let mut notes = scene.summary();
-        notes.append(&mut module.notes);
-        module.notes = notes;
-        Ok(module)
+        module_of(&derive()?, &scene)
     }
 
-    fn build(&self) -> Result<(String, Stats), Error> {
-        let module = self.module()?;
+    /// The source and operation counts of `scene`'s file, lowered from `derivation`.
+    fn build(&self, derivation: &Derivation, scene: &Scene) -> Result<(String, Stats), Error> {
+        let module = module_of(derivation, scene)?;
         let plan = Plan::new(&module, self.options.division)?;
         let source = emit_plan(&module, &plan, &self.options)?;
         Ok((source, from_plan(&module, &plan)))
     }
 
+    /// The source and operation counts of the one scene (one derivation).
+    fn build_single(&self) -> Result<(String, Stats), Error> {
+        let scene = self.load_scene()?;
+        self.build(&derive()?, &scene)
+    }
+
     /// The generated source, without writing anything.
     ///
     /// # Errors
-    /// The scene is invalid or cannot be lowered or emitted.
+    /// No scene or more than one was given, or it is invalid or cannot be lowered or emitted.
     pub fn render(&self) -> Result<String, Error> {
-        Ok(self.build()?.0)
+        Ok(self.build_single()?.0)
     }
 
     /// The operation counts of the generated source.
@@ -160,45 +190,109 @@ impl Config {
     /// # Errors
     /// As [`Config::render`].
     pub fn stats(&self) -> Result<Stats, Error> {
-        Ok(self.build()?.1)
+        Ok(self.build_single()?.1)
     }
 
-    /// Generates the source and writes it to the output file if its bytes changed (so that
-    /// cargo does not rebuild needlessly). Creates the parent directory if needed.
+    /// Generates the source of the one scene and writes it to the output file if its bytes
+    /// changed (so that cargo does not rebuild needlessly). Creates the parent directory if
+    /// needed.
     ///
     /// # Errors
-    /// As [`Config::render`], or the file cannot be written.
+    /// As [`Config::render`], or no output file is known, or the file cannot be written.
     pub fn generate(&self) -> Result<GenerateReport, Error> {
-        if self.rerun_if_changed
-            && let Some(SceneSource::File(path)) = &self.scene
-        {
-            println!("cargo:rerun-if-changed={}", path.display());
-        }
-        let (source, stats) = self.build()?;
-        let out_file = match &self.out_file {
-            Some(path) => path.clone(),
-            None => {
-                let dir = std::env::var_os("OUT_DIR").ok_or(Error::NoOutFile)?;
-                let scene = self.load_scene()?;
-                PathBuf::from(dir).join(scene.default_file_name())
-            }
-        };
-        let io = |source| Error::Io {
-            path: out_file.clone(),
-            source,
-        };
-        let unchanged = std::fs::read(&out_file).is_ok_and(|old| old == source.as_bytes());
-        if !unchanged {
-            if let Some(dir) = out_file.parent().filter(|d| !d.as_os_str().is_empty()) {
-                std::fs::create_dir_all(dir).map_err(io)?;
-            }
-            std::fs::write(&out_file, source.as_bytes()).map_err(io)?;
-        }
-        Ok(GenerateReport {
-            out_file: out_file.clone(),
-            written: !unchanged,
-            bytes: source.len(),
-            stats,
-        })
+        self.single()?;
+        self.generate_all()?.pop().ok_or(Error::NoScene)
     }
+
+    /// Derives the kernels once and, for every scene in the order given, generates its source
+    /// and writes it (if its bytes changed) to the output file (one scene only) or to
+    /// `<out_dir or $OUT_DIR>/<`[`Scene::default_file_name`]`>`. Creates directories if needed.
+    ///
+    /// # Errors
+    /// No scene was given, a scene is invalid or cannot be lowered or emitted, an output file
+    /// is set for several scenes, no output directory is known, or a file cannot be written.
+    /// Files of the scenes before the failing one are written.
+    pub fn generate_all(&self) -> Result<Vec<GenerateReport>, Error> {
+        if self.scenes.is_empty() {
+            return Err(Error::NoScene);
+        }
+        if self.out_file.is_some() && self.scenes.len() > 1 {
+            return Err(Error::SeveralScenes {
+                count: self.scenes.len(),
+            });
+        }
+        if self.rerun_if_changed {
+            for source in &self.scenes {
+                if let SceneSource::File(path) = source {
+                    println!("cargo:rerun-if-changed={}", path.display());
+                }
+            }
+        }
+        let derivation = derive()?;
+        let mut reports = Vec::with_capacity(self.scenes.len());
+        for source in &self.scenes {
+            let scene = load(source)?;
+            let (source, stats) = self.build(&derivation, &scene)?;
+            let out_file = self.out_file_of(&scene)?;
+            reports.push(write_if_changed(out_file, &source, stats)?);
+        }
+        Ok(reports)
+    }
+
+    /// Where `scene`'s file goes: the output file, else the output directory (or `$OUT_DIR`)
+    /// joined with the scene's default file name.
+    fn out_file_of(&self, scene: &Scene) -> Result<PathBuf, Error> {
+        if let Some(path) = &self.out_file {
+            return Ok(path.clone());
+        }
+        let dir = match &self.out_dir {
+            Some(dir) => dir.clone(),
+            None => PathBuf::from(std::env::var_os("OUT_DIR").ok_or(Error::NoOutFile)?),
+        };
+        Ok(dir.join(scene.default_file_name()))
+    }
+}
+
+/// Loads (or clones) and validates one scene.
+fn load(source: &SceneSource) -> Result<Scene, Error> {
+    let scene = match source {
+        SceneSource::File(path) => Scene::from_file(path)?,
+        SceneSource::Value(scene) => (**scene).clone(),
+    };
+    scene.validate()?;
+    Ok(scene)
+}
+
+/// `scene` lowered from `derivation`, with the scene's summary as the first header notes.
+fn module_of(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
+    let mut module = lower(derivation, scene)?;
+    let mut notes = scene.summary();
+    notes.append(&mut module.notes);
+    module.notes = notes;
+    Ok(module)
+}
+
+/// Writes `source` to `out_file` unless it already holds these bytes.
+fn write_if_changed(
+    out_file: PathBuf,
+    source: &str,
+    stats: Stats,
+) -> Result<GenerateReport, Error> {
+    let io = |source| Error::Io {
+        path: out_file.clone(),
+        source,
+    };
+    let unchanged = std::fs::read(&out_file).is_ok_and(|old| old == source.as_bytes());
+    if !unchanged {
+        if let Some(dir) = out_file.parent().filter(|d| !d.as_os_str().is_empty()) {
+            std::fs::create_dir_all(dir).map_err(io)?;
+        }
+        std::fs::write(&out_file, source.as_bytes()).map_err(io)?;
+    }
+    Ok(GenerateReport {
+        written: !unchanged,
+        bytes: source.len(),
+        stats,
+        out_file,
+    })
 }

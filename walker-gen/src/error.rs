@@ -66,7 +66,7 @@ pub enum EmitError {
     },
 }
 
-/// Any failure of [`crate::Config::generate`] and [`crate::Config::render`].
+/// Any failure of [`crate::Config::generate`], [`crate::Config::generate_all`] and [`crate::Config::render`].
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     /// The scene is invalid.
@@ -91,10 +91,20 @@ pub enum Error {
         /// The I/O error.
         source: std::io::Error,
     },
-    /// Neither `scene_file` nor `scene` was called.
+    /// Neither `scene_file`, `scene_files` nor `scene` was called.
     #[error("no scene: call Config::scene_file or Config::scene")]
     NoScene,
-    /// No `out_file` and no `OUT_DIR` in the environment.
-    #[error("no output file: call Config::out_file (OUT_DIR is not set)")]
+    /// A single-scene call (`render`, `stats`, `module`, `load_scene`, `generate`, or
+    /// `generate_all` with an `out_file`) on a configuration of several scenes.
+    #[error(
+        "{count} scenes given: render, stats, module, generate and out_file take one scene; \
+         use Config::generate_all with Config::out_dir"
+    )]
+    SeveralScenes {
+        /// How many scenes were given.
+        count: usize,
+    },
+    /// No `out_file`, no `out_dir` and no `OUT_DIR` in the environment.
+    #[error("no output file: call Config::out_file or Config::out_dir (OUT_DIR is not set)")]
     NoOutFile,
 }

@@ -6,6 +6,7 @@ pub mod emit;
 pub mod error;
 pub mod ir;
 pub mod lower;
+mod options;
 mod plan;
 pub mod stats;
 
@@ -19,6 +20,6 @@ pub use config::{Config, GenerateReport};
 pub use emit::{EmitOptions, Float, FloatFunctions, emit};
 pub use error::{EmitError, Error};
 pub use ir::{Graph, Kernel, Module, Node, NodeId, ParamDecl, ParamId, Shape};
-pub use plan::Division;
+pub use options::Division;
 pub use scene::{Floor, Friction, Param, Scene, SceneError, Torso};
 pub use stats::{OpCounts, Stats, stats};

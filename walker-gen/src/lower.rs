@@ -20,25 +20,35 @@
 use std::collections::BTreeMap;
 
 use num_traits::ToPrimitive;
+/// The symbolic derivation [`lower`] reads kernels from (re-exported from `walker-symbolic`).
+pub use walker_symbolic::Derivation;
 use walker_symbolic::poly::Mono;
 use walker_symbolic::symbol::{Atom, BaseAngle, NUM_ATOMS, SymKind};
-use walker_symbolic::{Derivation, Poly, RatFunc, Sym};
+use walker_symbolic::{Poly, RatFunc, Sym};
 
 use crate::bind::ParamNodes;
 use crate::error::Error;
 use crate::ir::{Graph, Kernel, Module, NodeId, Shape};
 use crate::scene::{Floor, Friction, Param, Scene, Torso};
 
-/// Lowers the kernels of `scene` into one [`Module`].
+/// Derives the walker's symbolic kernels once (the expensive step): every scene lowered from
+/// the returned [`Derivation`] shares it.
 ///
 /// # Errors
-/// The derivation fails, or a kernel needs a parameter the scene's structure does not have
-/// ([`Error::Lower`]).
-pub fn lower(scene: &Scene) -> Result<Module, Error> {
-    let derivation = Derivation::new().map_err(|e| Error::Lower {
+/// The derivation fails ([`Error::Lower`] naming `(derivation)`).
+pub fn derive() -> Result<Derivation, Error> {
+    Derivation::new().map_err(|e| Error::Lower {
         kernel: "(derivation)".to_owned(),
         message: e.to_string(),
-    })?;
+    })
+}
+
+/// Lowers the kernels of `scene`, taken from `derivation` (see [`derive()`]), into one [`Module`].
+///
+/// # Errors
+/// A kernel is missing from the derivation, or needs a parameter the scene's structure does
+/// not have ([`Error::Lower`]).
+pub fn lower(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
     let mut module = Module::new(&scene.name);
     let params = ParamNodes::declare(scene, &mut module);
     for name in scene.kernels() {

@@ -1,9 +1,9 @@
 //! `walker-gen`: the generator as a command-line tool, for builds that are not cargo's.
 //!
 //! ```text
-//! walker-gen emit --scene scenes/active-level.toml [--f32] [--no-std] [--unchecked] [--exact-division]
+//! walker-gen emit --scene walker/scenes/active-level.toml [--f32] [--no-std] [--unchecked] [--exact-division]
 //!                 [--float-functions inline|std] [-o kernels.rs]
-//! walker-gen stats --scene scenes/active-level.toml [--f32] [--exact-division] [--toml]
+//! walker-gen stats --scene walker/scenes/active-level.toml [--f32] [--exact-division] [--toml]
 //! ```
 //!
 //! Bad input prints a message naming the field and exits with code 2.

@@ -13,9 +13,9 @@ use std::ops::{Add, AddAssign};
 
 use serde::Serialize;
 
-use crate::emit::EmitOptions;
 use crate::error::EmitError;
 use crate::ir::{Graph, Module, Node};
+use crate::options::EmitOptions;
 use crate::plan::{Block, Plan};
 
 /// Floating-point operation counts.

@@ -285,3 +285,57 @@ fn a_kernel_named_like_a_checked_entry_point_is_rejected_only_when_checked() {
     };
     assert!(emit(&m, &unchecked).is_ok());
 }
+
+#[test]
+fn one_multi_scene_generate_writes_the_bytes_of_the_single_scene_calls() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render-test/multi");
+    let _ = std::fs::remove_dir_all(&dir);
+    let reports = Config::new()
+        .scene_files(SCENES.map(scene_file))
+        .no_std(true)
+        .out_dir(&dir)
+        .generate_all()
+        .map_err(|e| e.to_string());
+    assert!(reports.is_ok(), "generate_all: {reports:?}");
+    let reports = reports.unwrap_or_default();
+    assert_eq!(reports.len(), SCENES.len(), "one report per scene");
+    for (name, report) in SCENES.iter().zip(&reports) {
+        let expected = dir.join(format!("{}.rs", name.replace('-', "_")));
+        assert_eq!(report.out_file, expected, "{name}: file named by the scene");
+        assert!(report.written, "{name}: a new file is written");
+        let single_file = dir.join(format!("single-{name}.rs"));
+        let single = Config::new()
+            .scene_file(scene_file(name))
+            .no_std(true)
+            .out_file(&single_file)
+            .generate()
+            .map_err(|e| e.to_string());
+        assert!(single.is_ok(), "{name}: {single:?}");
+        let multi_bytes = std::fs::read(&expected).unwrap_or_default();
+        let single_bytes = std::fs::read(&single_file).unwrap_or_default();
+        assert!(!multi_bytes.is_empty(), "{name}: nothing written");
+        assert!(multi_bytes == single_bytes, "{name}: bytes differ");
+        assert_eq!(
+            single.map(|r| r.stats.kernels.len()).ok(),
+            Some(report.stats.kernels.len()),
+            "{name}: same stats"
+        );
+    }
+}
+
+#[test]
+fn single_scene_calls_refuse_several_scenes() {
+    let mut config = Config::new();
+    config.scene_files(SCENES.map(scene_file));
+    let err = config.render().map_err(|e| e.to_string());
+    assert!(
+        err.as_ref().is_err_and(|e| e.contains("4 scenes given")),
+        "{err:?}"
+    );
+    config.out_file(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render-test/never.rs"));
+    let err = config.generate_all().map_err(|e| e.to_string());
+    assert!(
+        err.as_ref().is_err_and(|e| e.contains("out_file")),
+        "{err:?}"
+    );
+}
