@@ -8,5 +8,5 @@ if [ ! -x "$here/.venv/bin/python" ]; then
     python3 -m venv "$here/.venv"
     "$here/.venv/bin/pip" install -q -r "$here/requirements.txt"
 fi
-(cd "$root" && cargo build --release -p walker --bin walker)
+(cd "$root" && cargo build --release -p walker-cli --bin walker)
 "$here/.venv/bin/python" "$here/scipy_peer.py" --walker "$root/target/release/walker" "$@"
