@@ -141,3 +141,27 @@ impl<'a> Guards<'a> {
             .map(|g| Event::terminal(g.direction(), move |t, y: &[f64; N]| self.value(g, t, y)))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Guard;
+    use crate::model::FrictionLaw;
+
+    #[test]
+    fn an_event_index_names_the_guard_at_that_place_of_the_list() {
+        for (i, g) in Guard::ALL.iter().enumerate() {
+            assert_eq!(Guard::of_event(i), Some(*g));
+        }
+        assert_eq!(Guard::of_event(Guard::ALL.len()), None);
+    }
+
+    #[test]
+    fn the_smooth_law_watches_five_guards_and_coulomb_adds_the_stick_slip_pair() {
+        let tanh = Guard::active(FrictionLaw::Tanh);
+        let coulomb = Guard::active(FrictionLaw::Coulomb);
+        assert_eq!(tanh.len(), 5);
+        assert!(!tanh.contains(&Guard::FootStops) && !tanh.contains(&Guard::FootSlips));
+        assert_eq!(coulomb, &Guard::ALL);
+        assert_eq!(&coulomb[..5], tanh);
+    }
+}
