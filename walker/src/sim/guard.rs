@@ -24,9 +24,9 @@ pub enum Guard {
     /// Eq. 23 vanishes.
     LambdaBlowUp,
     /// The power kink: `ydot u` changes sign before `T_set` (where `|ydot u|`, the power
-    /// quadrature's integrand, has a kink; see [`super::stance::Stance`]'s error test). Off from
-    /// the breakpoint at `T_set` on (a switch by time would be a jump at the breakpoint). The
-    /// integration goes on from it.
+    /// quadrature's integrand, has a kink; see the stance system's error test,
+    /// `Stance::controlled_components`). Off from the breakpoint at `T_set` on (a switch by
+    /// time would be a jump at the breakpoint). The integration goes on from it.
     PowerKink,
     /// Coulomb friction: a sliding foot comes to rest (`sigma xd` falls through zero; zero while
     /// stuck).
