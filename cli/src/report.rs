@@ -38,7 +38,7 @@ pub fn walk_text(w: &Walk) -> String {
         Some(f) => s.push_str(&format!(
             "status: {} at step {}\n{}\n",
             f.name(),
-            f.step(),
+            f.step,
             serde_json::to_string(f).unwrap_or_default()
         )),
     }

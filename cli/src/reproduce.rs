@@ -405,7 +405,7 @@ pub fn summary(d: &Data) -> String {
         "- phi = 0.10, mu0 = 0.19 (Fig. 14): {}",
         d.fall.failure.as_ref().map_or_else(
             || "walks".to_owned(),
-            |f| format!("{} at step {}", f.name(), f.step())
+            |f| format!("{} at step {}", f.name(), f.step)
         )
     );
     s

@@ -60,29 +60,6 @@ fn point(mu0: f64, walk: crate::sim::Walk) -> SweepPoint {
     }
 }
 
-/// Sweep `mu0` over `grid` for the models `make(mu0)`, from `initial` (the post-impact state of
-/// the 0th impact). With `restart`, every `mu0` starts from `initial` (and the points run in
-/// parallel); otherwise each continues from the previous steady state.
-pub fn sweep<F>(
-    make: F,
-    cfg: &SimConfig,
-    grid: &[f64],
-    initial: [f64; 8],
-    limits: &WalkLimits,
-    restart: bool,
-) -> Vec<SweepPoint>
-where
-    F: Fn(f64) -> Model + Sync,
-{
-    if restart {
-        return grid
-            .par_iter()
-            .map(|&mu0| point(mu0, walk(&make(mu0), cfg, initial, limits)))
-            .collect();
-    }
-    continuation(make, cfg, grid, initial, limits, &|| {})
-}
-
 /// Procedure (P4a): each `mu0` continues from the previous steady post-impact state (from
 /// `initial` after a failure).
 fn continuation(

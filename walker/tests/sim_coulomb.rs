@@ -154,7 +154,7 @@ fn the_painleve_paradox_after_an_impact_is_named() {
     let w = walk(&m, &SimConfig::default(), m.initial_state(0.8), &limits);
     let f = w.failure.expect("fails");
     assert_eq!(f.name(), "contact-inconsistent", "{f:?}");
-    assert_eq!(f.step(), 1, "{f:?}");
+    assert_eq!(f.step, 1, "{f:?}");
 }
 
 /// Without friction the Coulomb and tanh models are the same frictionless walker (the foot

@@ -2,7 +2,7 @@
 //! high-precision one-step references of `sympy_ref/steps.py`.
 
 use walker::model::{Model, Runtime};
-use walker::sim::{Failure, SimConfig, WalkLimits, walk};
+use walker::sim::{Failure, FailureKind, SimConfig, WalkLimits, walk};
 
 fn active(mu0: f64, t_set: f64) -> Model {
     Model::active_level(Runtime {
@@ -73,7 +73,12 @@ fn short_t_set_with_little_friction_lifts_off() {
     // Section 4.2: with T_set = 0.2 and small mu0 lambda becomes negative during stance.
     let m = active(0.05, 0.2);
     let w = walk(&m, &SimConfig::default(), m.initial_state(0.8), &limits(50));
-    let Some(Failure::LiftOff { lambda, t, .. }) = w.failure else {
+    let Some(Failure {
+        t,
+        kind: FailureKind::LiftOff { lambda },
+        ..
+    }) = w.failure
+    else {
         unreachable!("expected lift-off, got {:?}", w.failure);
     };
     assert!(lambda.abs() < 1e-6, "lambda at lift-off {lambda}");
@@ -141,7 +146,14 @@ fn passive_wheel_on_gentle_slope_falls_backward() {
     let m = passive(0.19, 0.10);
     let w = walk(&m, &SimConfig::default(), m.initial_state(0.5), &limits(20));
     assert!(
-        matches!(w.failure, Some(Failure::FellBackward { step: 1, .. })),
+        matches!(
+            w.failure,
+            Some(Failure {
+                step: 1,
+                kind: FailureKind::FellBackward { .. },
+                ..
+            })
+        ),
         "{:?}",
         w.failure
     );

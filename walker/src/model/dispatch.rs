@@ -1,116 +1,17 @@
-//! The walker models: which generated kernels describe the stance phase and the impact, and the
-//! parameters that go with them.
-//!
-//! Two setups of the paper are modelled: the active walker on level ground (Sections 2-4) and the
-//! passive wheel on a slope (Section 5). Each exists in a fast variant with Table 1 compiled into
-//! the kernels ([`crate::kernels::active_level`], [`crate::kernels::passive_slope`]) and a general
-//! variant that takes every parameter at run time ([`crate::kernels::general_level`],
-//! [`crate::kernels::general_slope`]) for scene files; both with the smooth friction law of
-//! Eqs. 26 and 37. With exact Coulomb friction (Eq. 25, [`FrictionLaw::Coulomb`]) the foot
-//! slides or sticks ([`Contact`]); those models use [`crate::kernels::general_level_coulomb`]
-//! and [`crate::kernels::general_slope_coulomb`].
-//!
-//! Every physical quantity comes from a kernel; this module only dispatches.
-
-use serde::Serialize;
+//! The [`Model`]: one walker's prepared kernels behind one type, and the dispatch of every
+//! physical quantity (stance accelerations, ground reaction, impact map, fore foot, energy) to
+//! the kernel of its variant.
 
 use crate::control;
 use crate::kernels::{
     active_level, general_level, general_level_coulomb, general_slope, general_slope_coulomb,
     passive_slope,
 };
-use crate::params;
-pub use crate::params::{Physical, Runtime};
+use crate::params::{self, Physical, Runtime};
 
-/// Which floor and torso the model has.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Kind {
-    /// The active walker on level ground (Sections 2-4).
-    ActiveLevel,
-    /// The passive wheel on a slope (Section 5).
-    PassiveSlope,
-}
-
-/// The stance foot's friction law.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum FrictionLaw {
-    /// `mu = -mu0 tanh(c xd)` (Eq. 26; `-mu0 tanh(c xd / cos phi)` on the slope, Eq. 37), or no
-    /// friction with `mu0 = 0`: the foot always slides, and [`Contact::Smooth`] is its only
-    /// contact.
-    Tanh,
-    /// Exact Coulomb friction (Eq. 25 with the sign that opposes sliding, the paper's static
-    /// coefficient equal to the sliding one, `mu0`): the foot slides with friction `mu0` times
-    /// the normal force against its motion, or sticks while the tangential force it needs is at
-    /// most that ([`Contact::Sliding`], [`Contact::Stuck`]).
-    Coulomb,
-}
-
-/// The direction in which the stance foot slides.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Slide {
-    /// Towards `+x` (forwards; down the slope).
-    Forward,
-    /// Towards `-x`.
-    Backward,
-}
-
-impl Slide {
-    /// `sigma = sign(xd)` of Eq. 25: `1` forwards, `-1` backwards.
-    pub fn sigma(self) -> f64 {
-        match self {
-            Slide::Forward => 1.0,
-            Slide::Backward => -1.0,
-        }
-    }
-
-    /// The direction of a nonzero number's sign.
-    pub fn of(x: f64) -> Slide {
-        if x > 0.0 {
-            Slide::Forward
-        } else {
-            Slide::Backward
-        }
-    }
-}
-
-/// How the stance foot touches the floor.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case", tag = "mode", content = "direction")]
-pub enum Contact {
-    /// The smooth friction law ([`FrictionLaw::Tanh`]): `mu` a function of `xd`.
-    Smooth,
-    /// Coulomb friction, sliding: `mu = -mu0 sigma` (Eq. 25).
-    Sliding(Slide),
-    /// Coulomb friction, stuck: `xd = 0` (the stance foot cannot move along the floor).
-    Stuck,
-}
-
-impl Contact {
-    /// `sigma` of a sliding contact (0 otherwise).
-    pub fn sigma(self) -> f64 {
-        match self {
-            Contact::Sliding(s) => s.sigma(),
-            Contact::Smooth | Contact::Stuck => 0.0,
-        }
-    }
-}
-
-/// The ground's force on the stance foot.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Reaction {
-    /// The paper's `lambda`: the vertical component of the reaction without friction
-    /// (Eqs. 22-23; on the slope the normal force times `cos phi`, Section 5.1). For a stuck
-    /// foot the vertical component of the whole force.
-    pub lambda: f64,
-    /// The force along the floor's normal (negative: the foot would lift off).
-    pub normal: f64,
-    /// The force along the floor, positive towards `+x` (down the slope): `mu` times the normal
-    /// force while sliding, what holds the foot while stuck.
-    pub tangential: f64,
-}
+use super::contact::{Contact, FrictionLaw, Reaction};
+use super::impact::{ImpactResult, level_impact, slope_impact};
+use super::kind::Kind;
 
 #[allow(
     clippy::large_enum_variant,
@@ -124,20 +25,6 @@ enum Kernels {
     GeneralSlope(general_slope::Prepared),
     CoulombLevel(general_level_coulomb::Prepared),
     CoulombSlope(general_slope_coulomb::Prepared),
-}
-
-/// The result of an impact kernel evaluated at the pre-impact state.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct ImpactResult {
-    /// The impulses of the impact that is applied (`impact2_level`: fore foot and torso lock;
-    /// `impact_slope`: fore foot).
-    pub impulses: [f64; 2],
-    /// The rear-foot impulse of the test map with the rear foot kept on the floor
-    /// (`impact3_level`'s `lambda_I[1]`, Eq. 11; `impact2_slope`'s `lambda_I[1]`, Eq. 46):
-    /// non-negative means the walker would stay in double support.
-    pub rear_impulse: f64,
-    /// Post-impact velocities of the old coordinates `[xd, zd, th1d, th2d]`.
-    pub qd: [f64; 4],
 }
 
 /// A walker model: kernels plus the parameters the simulator needs outside the kernels.
@@ -485,21 +372,5 @@ impl Model {
             Kind::ActiveLevel => 0.8,
             Kind::PassiveSlope => 0.5,
         }
-    }
-}
-
-fn level_impact(test: [f64; 7], applied: [f64; 6]) -> ImpactResult {
-    ImpactResult {
-        impulses: [applied[0], applied[1]],
-        rear_impulse: test[1],
-        qd: [applied[2], applied[3], applied[4], applied[5]],
-    }
-}
-
-fn slope_impact(applied: [f64; 5], test: [f64; 6]) -> ImpactResult {
-    ImpactResult {
-        impulses: [applied[0], 0.0],
-        rear_impulse: test[1],
-        qd: [applied[1], applied[2], applied[3], applied[4]],
     }
 }

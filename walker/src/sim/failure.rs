@@ -1,0 +1,154 @@
+//! Why a walk ended early: a [`Failure`] is where and when (step, time, state), its
+//! [`FailureKind`] is the cause with only the cause's own data, and [`IntegratorStop`] is why the
+//! integrator gave up.
+//!
+//! The JSON of a failure is one flat object, `{"kind": "LiftOff", "step": .., "t": .., "state":
+//! [..], "lambda": ..}`: the kind's tag and data sit beside the common fields.
+
+use std::fmt;
+
+use serde::{Serialize, Serializer};
+
+/// Why a walk ended early, and where: the step number (0 for the step that starts at the initial
+/// condition), the time since the last impact and the mechanical state
+/// `[x, z, th1, th2, xd, zd, th1d, th2d]` where it happened.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Failure {
+    /// Step number.
+    pub step: usize,
+    /// Time since the last impact (see each [`FailureKind`] for which time).
+    pub t: f64,
+    /// State (see each [`FailureKind`] for which state).
+    pub state: [f64; 8],
+    /// The cause.
+    #[serde(flatten)]
+    pub kind: FailureKind,
+}
+
+impl Failure {
+    /// The failure's name as printed by the CLI (`"lift-off"`, ...).
+    pub fn name(&self) -> &'static str {
+        self.kind.name()
+    }
+}
+
+/// The cause of a [`Failure`], with the data that belongs to it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind")]
+pub enum FailureKind {
+    /// The vertical ground reaction `lambda` became negative during stance (Eq. 23).
+    LiftOff {
+        /// `lambda` where the crossing was located (about zero) or at the start of the step.
+        lambda: f64,
+    },
+    /// Coulomb friction (Eq. 25): the stance foot is at rest, the tangential force that would
+    /// hold it exceeds `mu0` times the normal force, and sliding the way that force pushes
+    /// would accelerate the foot the other way: no contact mode is consistent (Painleve's
+    /// paradox of sliding friction).
+    ContactInconsistent {
+        /// The normal force with the foot held.
+        normal: f64,
+        /// The tangential force with the foot held.
+        tangential: f64,
+    },
+    /// The heel struck before the output-following control finished (`t < T_set`); `t` is the
+    /// time of the heel strike and the state the pre-impact state.
+    ImpactBeforeTSet {
+        /// The ramp duration `T_set`.
+        t_set: f64,
+    },
+    /// The rear foot's impulse with the rear foot kept on the floor is non-negative: the
+    /// impact would lead to double support (Eq. 11 on level ground, Eq. 46 on the slope); `t`
+    /// is the time of the heel strike and the state the pre-impact state.
+    DoubleSupport {
+        /// The rear-foot impulse (`impact3_level`'s or `impact2_slope`'s `lambda_I[1]`).
+        rear_impulse: f64,
+    },
+    /// `lambda` blew up (the denominator of Eq. 23 vanished: a Painleve-type singularity).
+    LambdaDenominatorZero {
+        /// `lambda` there (huge or not finite; non-finite values are reported as `null`).
+        lambda: f64,
+    },
+    /// The wheel rolled back until the rear spoke reached the floor.
+    FellBackward {
+        /// Stance-leg angle (the rear-contact angle).
+        th1: f64,
+    },
+    /// The heel strike happened at the very start of the step (a step of zero duration, so no
+    /// step period, speed or power exists): the state began on the impact guard moving into
+    /// the floor. `t` is 0 and the state the pre-impact state.
+    ImpactAtStart,
+    /// No heel strike within [`super::SimConfig::max_step_time`]; `t` is that limit.
+    NoImpact,
+    /// A state, an acceleration or a descriptor was not finite; `t` and the state are the last
+    /// finite ones.
+    NonFinite,
+    /// The integrator gave up; `t` and the state are where it stopped.
+    Integrator {
+        /// Why.
+        reason: IntegratorStop,
+    },
+}
+
+impl FailureKind {
+    /// The failure's name as printed by the CLI (`"lift-off"`, ...).
+    pub fn name(&self) -> &'static str {
+        match self {
+            FailureKind::LiftOff { .. } => "lift-off",
+            FailureKind::ContactInconsistent { .. } => "contact-inconsistent",
+            FailureKind::ImpactBeforeTSet { .. } => "impact-before-t-set",
+            FailureKind::DoubleSupport { .. } => "double-support",
+            FailureKind::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
+            FailureKind::FellBackward { .. } => "fell-backward",
+            FailureKind::ImpactAtStart => "impact-at-start",
+            FailureKind::NoImpact => "no-impact",
+            FailureKind::NonFinite => "non-finite",
+            FailureKind::Integrator { .. } => "integrator",
+        }
+    }
+
+    /// This cause at step `step`, time `t` and state `state`.
+    pub fn at(self, step: usize, t: f64, state: [f64; 8]) -> Failure {
+        Failure {
+            step,
+            t,
+            state,
+            kind: self,
+        }
+    }
+}
+
+/// Why the integrator gave up (the [`Outcome`](crate::ode::Outcome)s in which it does); serialised as its text (`"too many steps"`,
+/// `"step size too small"`, or the integrator's description of the invalid input).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IntegratorStop {
+    /// [`Outcome::MaxSteps`](crate::ode::Outcome::MaxSteps): the step budget ran out.
+    TooManySteps,
+    /// [`Outcome::StepSizeTooSmall`](crate::ode::Outcome::StepSizeTooSmall): the step size fell below the time resolution.
+    StepSizeTooSmall,
+    /// [`Outcome::InvalidInput`](crate::ode::Outcome::InvalidInput): the integrator's arguments were inconsistent.
+    InvalidInput(&'static str),
+}
+
+impl IntegratorStop {
+    /// The text of the reason.
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            IntegratorStop::TooManySteps => "too many steps",
+            IntegratorStop::StepSizeTooSmall => "step size too small",
+            IntegratorStop::InvalidInput(reason) => reason,
+        }
+    }
+}
+
+impl fmt::Display for IntegratorStop {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl Serialize for IntegratorStop {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.as_str())
+    }
+}

@@ -1,0 +1,83 @@
+//! What a walk produces: the gait descriptors of each step ([`StepResult`], Section 4.2),
+//! samples of the continuous motion ([`Sample`]) and the walk as a whole ([`Walk`]).
+
+use serde::Serialize;
+
+use super::failure::Failure;
+
+/// Gait descriptors of one step (Section 4.2) and the state right after the impact that ends it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct StepResult {
+    /// Step period `T` (s).
+    #[serde(rename = "T")]
+    pub period: f64,
+    /// Step length `dx` (Eq. 34; on the slope the distance along the slope, Eq. 47) (m).
+    pub dx: f64,
+    /// Average walking speed `V = dx / T` (m/s).
+    #[serde(rename = "V")]
+    pub speed: f64,
+    /// Average input power `p = (1/T) int_0^T_set |ydot u| dt` (W); `None` for the passive wheel.
+    pub p: Option<f64>,
+    /// Specific resistance `SR = p / (m_t g V)`; `None` for the passive wheel.
+    #[serde(rename = "SR")]
+    pub sr: Option<f64>,
+    /// Post-impact position `[x, z, th1, th2]` in the new stance leg's coordinates.
+    pub q_plus: [f64; 4],
+    /// Post-impact velocity `[xd, zd, th1d, th2d]` in the new stance leg's coordinates.
+    pub qd_plus: [f64; 4],
+    /// The new stance foot's velocity normal to the floor right after the impact (should be 0).
+    pub foot_normal_velocity: f64,
+    /// The rear-foot impulse of the double-support test (negative: the rear leg leaves).
+    pub rear_impulse: f64,
+    /// Smallest `lambda` seen at the start of the stance phase, at `T_set` and at the heel strike.
+    pub lambda_min: f64,
+    /// Time the stance foot spent stuck during the step (Coulomb friction; 0 otherwise) (s).
+    pub stuck_time: f64,
+}
+
+impl StepResult {
+    /// The post-impact state `[q_plus, qd_plus]` (the next step's initial state).
+    pub fn state_plus(&self) -> [f64; 8] {
+        let mut s = [0.0; 8];
+        s[..4].copy_from_slice(&self.q_plus);
+        s[4..].copy_from_slice(&self.qd_plus);
+        s
+    }
+}
+
+/// A sample of the continuous motion (for plots).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Sample {
+    /// Time since the start of the walk (s).
+    pub time: f64,
+    /// Step number.
+    pub step: usize,
+    /// State `[x, z, th1, th2, xd, zd, th1d, th2d]`.
+    pub state: [f64; 8],
+    /// Vertical ground reaction `lambda`.
+    pub lambda: f64,
+    /// Control input `u`.
+    pub u: f64,
+}
+
+/// The result of a walk.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Walk {
+    /// The completed steps, in order.
+    pub steps: Vec<StepResult>,
+    /// Why the walk ended early, if it did.
+    pub failure: Option<Failure>,
+    /// Sampled motion (empty unless asked for).
+    #[serde(skip)]
+    pub samples: Vec<Sample>,
+    /// The walk stopped early because its gait became periodic ([`WalkLimits::periodic`](super::WalkLimits::periodic)):
+    /// every later step would repeat the last one within that tolerance.
+    pub periodic: bool,
+}
+
+impl Walk {
+    /// The post-impact state after the last completed step, if any.
+    pub fn last_state(&self) -> Option<[f64; 8]> {
+        self.steps.last().map(StepResult::state_plus)
+    }
+}

@@ -1,0 +1,36 @@
+//! The hybrid simulation: stance phases integrated with [`crate::ode`], heel strikes located as
+//! events, the impact map and the change of stance leg, failure detection, and the per-step
+//! gait descriptors of Section 4.2 (Eqs. 34, 47, the average input power and the specific
+//! resistance).
+//!
+//! The integrated state is `[x, z, th1, th2, xd, zd, th1d, th2d, E]` where `E` is the quadrature
+//! `int_0^t |ydot u| dt` accumulated while `t < T_set` (zero for the passive wheel), so that the
+//! average input power is under the integrator's error control. The time is reset to zero at
+//! every impact; `T_set` is a breakpoint of the integrator (the control switches there).
+//!
+//! Files, each using only those listed before it: `state.rs` (the integrated state),
+//! `config.rs` ([`SimConfig`], [`WalkLimits`]), `failure.rs` ([`Failure`], [`FailureKind`],
+//! [`IntegratorStop`]), `gait.rs` ([`StepResult`], [`Sample`], [`Walk`]), `periodic.rs` (the
+//! periodic stop), `foot.rs` (the stance foot, its contact and ground reaction), `stance.rs`
+//! (the stance ODE system and the sampling observer), `guard.rs` (the stance events,
+//! [`Guard`]), `step.rs` (one stance phase and its impact), `walk.rs` ([`walk`],
+//! [`walk_with_stats`]).
+
+mod config;
+mod failure;
+mod foot;
+mod gait;
+mod guard;
+mod periodic;
+mod stance;
+mod state;
+mod step;
+mod walk;
+
+pub use config::{SimConfig, WalkLimits};
+pub use failure::{Failure, FailureKind, IntegratorStop};
+pub use foot::{control_input, ground_reaction};
+pub use gait::{Sample, StepResult, Walk};
+pub use guard::Guard;
+pub use state::N;
+pub use walk::{walk, walk_with_stats};

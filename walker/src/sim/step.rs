@@ -1,0 +1,319 @@
+//! One step of a walk: a stance phase from a post-impact state, integrated segment by segment
+//! between its events, and the impact that ends it, with the step's gait descriptors.
+//!
+//! The time is reset to zero at every impact; `T_set` is a breakpoint of the integrator (the
+//! control switches there).
+
+use crate::model::{Contact, Model, Reaction, Slide};
+use crate::ode::{Integrator, Outcome};
+
+use super::config::SimConfig;
+use super::failure::{Failure, FailureKind, IntegratorStop};
+use super::foot::{
+    Foot, at_rest, contact_at_rest, control_input, initial_contact, reaction_at_start,
+};
+use super::gait::{Sample, StepResult};
+use super::guard::{Guard, Guards};
+use super::stance::{Recorder, Stance};
+use super::state::{N, finite, mech};
+
+/// Where samples of the motion go: the vector and the time of the step's start since the start
+/// of the walk.
+pub(super) type Record<'r> = Option<(&'r mut Vec<Sample>, f64)>;
+
+/// Integrate one stance phase from the post-impact state `s0` and apply the impact; with
+/// `record`, append samples of the motion (times offset by the second element) to the vector.
+pub(super) fn one_step(
+    model: &Model,
+    cfg: &SimConfig,
+    integ: &mut Integrator<N>,
+    step: usize,
+    s0: [f64; 8],
+    record: Record<'_>,
+) -> Result<StepResult, Failure> {
+    let lambda_max = cfg.lambda_blowup * model.physical.total_mass() * model.physical.g;
+    let (foot, y0, r0) = start(model, step, s0, lambda_max)?;
+    let (out, t_offset) = match record {
+        Some((out, t_offset)) => {
+            out.push(Sample {
+                time: t_offset,
+                step,
+                state: s0,
+                lambda: r0.lambda,
+                u: control_input(model, 0.0, &y0, foot.contact()),
+            });
+            (Some(out), t_offset)
+        }
+        None => (None, 0.0),
+    };
+    let obs = Recorder {
+        foot: &foot,
+        out,
+        t_offset,
+        step,
+        interior: 3,
+    };
+    let strike = stance_phase(cfg, integ, &foot, step, y0, r0.lambda, lambda_max, obs)?;
+    impact(model, step, &s0, &strike)
+}
+
+/// The checks at the start of a stance phase: a finite state, a contact consistent with it, a
+/// finite `lambda` below the blow-up threshold and a non-negative normal force. Returns the
+/// foot, the integrated initial state and the ground reaction there.
+fn start(
+    model: &Model,
+    step: usize,
+    s0: [f64; 8],
+    lambda_max: f64,
+) -> Result<(Foot<'_>, [f64; N], Reaction), Failure> {
+    if !finite(&s0) {
+        return Err(FailureKind::NonFinite.at(step, 0.0, s0));
+    }
+    let mut y0 = [0.0; N];
+    y0[..8].copy_from_slice(&s0);
+    let foot = Foot::new(model, initial_contact(model, &y0, step)?);
+
+    let r0 = foot.reaction(0.0, &y0);
+    if !r0.lambda.is_finite() || r0.lambda.abs() > lambda_max {
+        // Where the angular velocities alone overflow `lambda` (their squares exceed the
+        // floating-point range) its denominator is regular: the state is the problem.
+        let mut unspun = y0;
+        unspun[6] = 0.0;
+        unspun[7] = 0.0;
+        let l_rest = foot.reaction(0.0, &unspun).lambda;
+        let kind = if !r0.lambda.is_finite() && l_rest.abs() <= lambda_max {
+            FailureKind::NonFinite
+        } else {
+            FailureKind::LambdaDenominatorZero { lambda: r0.lambda }
+        };
+        return Err(kind.at(step, 0.0, s0));
+    }
+    reaction_at_start(&foot, 0.0, &y0, step)?;
+    Ok((foot, y0, r0))
+}
+
+/// The end of a stance phase: the heel strike at `t` with the integrated state `y`, the
+/// smallest `lambda` seen and the time the foot spent stuck.
+struct Strike {
+    t: f64,
+    y: [f64; N],
+    lambda_min: f64,
+    stuck_time: f64,
+}
+
+/// What follows an integration segment.
+enum Next {
+    /// Integrate on from `(t, y)`.
+    Continue(f64, [f64; N]),
+    /// The heel struck at `(t, y)`.
+    Strike(f64, [f64; N]),
+}
+
+/// Integrate the stance phase from `y0` (time 0) segment by segment until the heel strikes:
+/// segments end at the breakpoint `T_set`, at a power kink and at stick-slip transitions.
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the pieces of one stance phase, prepared by `one_step`"
+)]
+fn stance_phase(
+    cfg: &SimConfig,
+    integ: &mut Integrator<N>,
+    foot: &Foot<'_>,
+    step: usize,
+    y0: [f64; N],
+    lambda0: f64,
+    lambda_max: f64,
+    mut obs: Recorder<'_>,
+) -> Result<Strike, Failure> {
+    let model = foot.model;
+    let guards = Guards::new(foot, lambda_max);
+    let mut events = guards.events();
+    let n_events = Guard::active(model.friction_law()).len();
+    let mut sys = Stance {
+        model,
+        jac: crate::jacobian::Jac::new(model).ok(),
+        foot,
+    };
+    let mut lambda_min = lambda0;
+    let mut t = 0.0;
+    let mut y = y0;
+    let mut stuck_time = 0.0;
+    let t_limit = cfg.max_step_time;
+    loop {
+        let (t_start, contact) = (t, foot.contact());
+        let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events[..n_events], &mut obs);
+        if contact == Contact::Stuck {
+            stuck_time += out.t() - t_start;
+        }
+        let lam = foot.reaction(out.t(), out.y()).lambda;
+        if lam.is_finite() {
+            lambda_min = lambda_min.min(lam);
+        }
+        match after_segment(out, &guards, foot, step, lam, lambda_max)? {
+            Next::Continue(tn, yn) => (t, y) = (tn, yn),
+            Next::Strike(t, y) => {
+                return Ok(Strike {
+                    t,
+                    y,
+                    lambda_min,
+                    stuck_time,
+                });
+            }
+        }
+    }
+}
+
+/// Whether `lambda` at the end of a segment counts as blown up (not finite, or above a
+/// thousandth of the blow-up threshold `lambda_max`).
+fn blown_up(lam: f64, lambda_max: f64) -> bool {
+    !lam.is_finite() || lam.abs() > lambda_max * 1e-3
+}
+
+/// The consequence of the outcome `out` of a segment (`lam` is `lambda` at its end): go on from
+/// a breakpoint, a power kink or a stick-slip transition, stop at the heel strike, or fail.
+fn after_segment(
+    out: Outcome<N>,
+    guards: &Guards<'_>,
+    foot: &Foot<'_>,
+    step: usize,
+    lam: f64,
+    lambda_max: f64,
+) -> Result<Next, Failure> {
+    match out {
+        Outcome::Breakpoint { t, y } => {
+            // The only breakpoint is `T_set`, where the input power stops counting.
+            guards.end_power_kinks();
+            Ok(Next::Continue(t, y))
+        }
+        Outcome::Event { index, t, y } => {
+            on_guard(Guard::of_event(index), foot, step, t, y, lam, lambda_max)
+        }
+        Outcome::Reached { t, y } => Err(FailureKind::NoImpact.at(step, t, mech(&y))),
+        Outcome::NonFinite { t, y } => {
+            let kind = if blown_up(lam, lambda_max) {
+                FailureKind::LambdaDenominatorZero { lambda: lam }
+            } else {
+                FailureKind::NonFinite
+            };
+            Err(kind.at(step, t, mech(&y)))
+        }
+        Outcome::StepSizeTooSmall { t, y, .. } => {
+            let stop = IntegratorStop::StepSizeTooSmall;
+            Err(gave_up(stop, lam, lambda_max).at(step, t, mech(&y)))
+        }
+        Outcome::MaxSteps { t, y } => {
+            let stop = IntegratorStop::TooManySteps;
+            Err(gave_up(stop, lam, lambda_max).at(step, t, mech(&y)))
+        }
+        Outcome::InvalidInput { t, y, reason } => {
+            let reason = IntegratorStop::InvalidInput(reason);
+            Err(FailureKind::Integrator { reason }.at(step, t, mech(&y)))
+        }
+    }
+}
+
+/// Why the integrator gave up with `reason`: a blown-up `lambda` (`lam`) is the cause where
+/// there is one, otherwise the integrator's reason.
+fn gave_up(reason: IntegratorStop, lam: f64, lambda_max: f64) -> FailureKind {
+    if blown_up(lam, lambda_max) {
+        FailureKind::LambdaDenominatorZero { lambda: lam }
+    } else {
+        FailureKind::Integrator { reason }
+    }
+}
+
+/// The consequence of the guard `guard` firing at `(t, y)` (`lam` is `lambda` there).
+fn on_guard(
+    guard: Option<Guard>,
+    foot: &Foot<'_>,
+    step: usize,
+    t: f64,
+    y: [f64; N],
+    lam: f64,
+    lambda_max: f64,
+) -> Result<Next, Failure> {
+    let kind = match guard {
+        Some(Guard::Strike) => return Ok(Next::Strike(t, y)),
+        Some(Guard::PowerKink) => return Ok(Next::Continue(t, y)),
+        Some(Guard::FootStops) => {
+            // The sliding foot stops: it sticks, or slides back if the cone cannot hold it.
+            let y = at_rest(y);
+            foot.set_contact(contact_at_rest(foot.model, t, &y, step)?);
+            reaction_at_start(foot, t, &y, step)?;
+            return Ok(Next::Continue(t, y));
+        }
+        Some(Guard::FootSlips) => {
+            // The stuck foot slips, the way the force that held it no longer can.
+            let held = foot.reaction(t, &y);
+            foot.set_contact(Contact::Sliding(Slide::of(-held.tangential)));
+            reaction_at_start(foot, t, &y, step)?;
+            return Ok(Next::Continue(t, y));
+        }
+        Some(Guard::LiftOff) if !blown_up(lam, lambda_max) => FailureKind::LiftOff { lambda: lam },
+        Some(Guard::FellBackward) => FailureKind::FellBackward { th1: y[2] },
+        Some(Guard::LiftOff | Guard::LambdaBlowUp) | None => {
+            FailureKind::LambdaDenominatorZero { lambda: lam }
+        }
+    };
+    Err(kind.at(step, t, mech(&y)))
+}
+
+/// The impact that ends the stance phase: the checks on the heel strike (not at the start, not
+/// before `T_set`, no double support), the impact map, the change of stance leg and the gait
+/// descriptors of the step that began at `s0`.
+fn impact(
+    model: &Model,
+    step: usize,
+    s0: &[f64; 8],
+    strike: &Strike,
+) -> Result<StepResult, Failure> {
+    let (te, ye) = (strike.t, &strike.y);
+    let pre = mech(ye);
+    if te <= 0.0 {
+        return Err(FailureKind::ImpactAtStart.at(step, 0.0, pre));
+    }
+    if model.is_active() && te < model.runtime.t_set {
+        let t_set = model.runtime.t_set;
+        return Err(FailureKind::ImpactBeforeTSet { t_set }.at(step, te, pre));
+    }
+    let imp = model.impact(&pre);
+    if imp.rear_impulse >= 0.0 {
+        let rear_impulse = imp.rear_impulse;
+        return Err(FailureKind::DoubleSupport { rear_impulse }.at(step, te, pre));
+    }
+    let post = model.reset(&pre, imp.qd);
+    let dx = (post.q_plus[0] - s0[0]) / model.runtime.phi.cos();
+    let speed = dx / te;
+    let (p, sr) = if model.is_active() {
+        let p = ye[8] / te;
+        (
+            Some(p),
+            Some(p / (model.physical.total_mass() * model.physical.g * speed)),
+        )
+    } else {
+        (None, None)
+    };
+    let all = [
+        dx,
+        speed,
+        p.unwrap_or(0.0),
+        sr.unwrap_or(0.0),
+        imp.rear_impulse,
+    ];
+    if !finite(&post.q_plus) || !finite(&post.qd_plus) || !finite(&all) {
+        return Err(FailureKind::NonFinite.at(step, te, pre));
+    }
+    Ok(StepResult {
+        period: te,
+        dx,
+        speed,
+        p,
+        sr,
+        q_plus: post.q_plus,
+        qd_plus: post.qd_plus,
+        foot_normal_velocity: post.foot_normal_velocity,
+        rear_impulse: imp.rear_impulse,
+        lambda_min: strike.lambda_min,
+        stuck_time: strike.stuck_time,
+    })
+}

@@ -1,0 +1,65 @@
+//! A walk: stance phases one after another from an initial post-impact state, until a limit,
+//! a failure or a periodic gait.
+
+use crate::model::Model;
+use crate::ode::{Integrator, Stats, Tolerances};
+
+use super::config::{SimConfig, WalkLimits};
+use super::gait::Walk;
+use super::periodic::is_periodic;
+use super::state::N;
+use super::step::one_step;
+
+/// Simulate a walk of `model` from the post-impact state `initial`
+/// (`[x, z, th1, th2, xd, zd, th1d, th2d]`, time 0 = the 0th impact).
+pub fn walk(model: &Model, cfg: &SimConfig, initial: [f64; 8], limits: &WalkLimits) -> Walk {
+    walk_with_stats(model, cfg, initial, limits).0
+}
+
+/// [`walk`], also returning the integrator's work counters summed over the whole walk
+/// (right-hand-side evaluations, accepted and rejected steps, events; for benchmarks).
+pub fn walk_with_stats(
+    model: &Model,
+    cfg: &SimConfig,
+    initial: [f64; 8],
+    limits: &WalkLimits,
+) -> (Walk, Stats) {
+    let mut integ = Integrator::<N>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
+    let mut steps = Vec::new();
+    let mut samples = Vec::new();
+    let mut state = initial;
+    let mut time = 0.0;
+    let mut failure = None;
+    let mut periodic = false;
+    for k in 0..limits.max_steps {
+        let record = limits.record.then_some((&mut samples, time));
+        let res = one_step(model, cfg, &mut integ, k, state, record);
+        match res {
+            Ok(r) => {
+                time += r.period;
+                state = r.state_plus();
+                steps.push(r);
+                if time >= limits.duration {
+                    break;
+                }
+                if limits.periodic.is_some_and(|tol| is_periodic(&steps, tol)) {
+                    periodic = true;
+                    break;
+                }
+            }
+            Err(f) => {
+                failure = Some(f);
+                break;
+            }
+        }
+    }
+    (
+        Walk {
+            steps,
+            failure,
+            samples,
+            periodic,
+        },
+        *integ.stats(),
+    )
+}

@@ -1,0 +1,141 @@
+//! The JSON of a failure is one flat object with the keys it had when `Failure` was an enum of
+//! struct variants: `kind`, `step`, `t`, `state` and the kind's own data (users' scripts read
+//! them). The one change: `ImpactAtStart` now has a `t` (0).
+
+use std::collections::BTreeSet;
+
+use serde_json::{Value, json};
+use walker::sim::{Failure, FailureKind, IntegratorStop};
+
+const STATE: [f64; 8] = [0.5, 0.0, -0.2, 0.1, 1.0, 0.0, 2.0, -1.5];
+
+fn json_of(kind: FailureKind) -> Value {
+    serde_json::to_value(kind.at(3, 0.25, STATE)).expect("a failure serialises")
+}
+
+fn keys(v: &Value) -> BTreeSet<&str> {
+    v.as_object()
+        .expect("a failure is a JSON object")
+        .keys()
+        .map(String::as_str)
+        .collect()
+}
+
+/// Every kind, with the keys of its own data (before this change each variant held `step`,
+/// `state` and, except `ImpactAtStart`, `t`).
+fn every_kind() -> Vec<(FailureKind, &'static str, &'static [&'static str])> {
+    vec![
+        (
+            FailureKind::LiftOff { lambda: -1e-13 },
+            "LiftOff",
+            &["lambda"],
+        ),
+        (
+            FailureKind::ContactInconsistent {
+                normal: 2.0,
+                tangential: -3.0,
+            },
+            "ContactInconsistent",
+            &["normal", "tangential"],
+        ),
+        (
+            FailureKind::ImpactBeforeTSet { t_set: 0.3 },
+            "ImpactBeforeTSet",
+            &["t_set"],
+        ),
+        (
+            FailureKind::DoubleSupport { rear_impulse: 0.1 },
+            "DoubleSupport",
+            &["rear_impulse"],
+        ),
+        (
+            FailureKind::LambdaDenominatorZero { lambda: 1e9 },
+            "LambdaDenominatorZero",
+            &["lambda"],
+        ),
+        (
+            FailureKind::FellBackward { th1: -0.2 },
+            "FellBackward",
+            &["th1"],
+        ),
+        (FailureKind::ImpactAtStart, "ImpactAtStart", &[]),
+        (FailureKind::NoImpact, "NoImpact", &[]),
+        (FailureKind::NonFinite, "NonFinite", &[]),
+        (
+            FailureKind::Integrator {
+                reason: IntegratorStop::TooManySteps,
+            },
+            "Integrator",
+            &["reason"],
+        ),
+    ]
+}
+
+#[test]
+fn every_failure_kind_serialises_to_its_old_flat_keys() {
+    for (kind, tag, own) in every_kind() {
+        let v = json_of(kind);
+        let mut expected: BTreeSet<&str> = ["kind", "step", "t", "state"].into();
+        expected.extend(own);
+        assert_eq!(keys(&v), expected, "{tag}");
+        assert_eq!(v["kind"], tag);
+        assert_eq!(v["step"], 3);
+        assert_eq!(v["t"], 0.25);
+        assert_eq!(v["state"], json!(STATE));
+    }
+}
+
+#[test]
+fn a_failure_s_own_data_keeps_its_values() {
+    let v = json_of(FailureKind::ContactInconsistent {
+        normal: 2.0,
+        tangential: -3.0,
+    });
+    assert_eq!(
+        (v["normal"].clone(), v["tangential"].clone()),
+        (json!(2.0), json!(-3.0))
+    );
+    assert_eq!(
+        json_of(FailureKind::FellBackward { th1: -0.2 })["th1"],
+        -0.2
+    );
+    // A non-finite lambda is written as null, as serde_json writes every non-finite number.
+    let v = json_of(FailureKind::LambdaDenominatorZero { lambda: f64::NAN });
+    assert!(v["lambda"].is_null());
+}
+
+#[test]
+fn integrator_reasons_serialise_as_their_old_strings() {
+    for (reason, text) in [
+        (IntegratorStop::TooManySteps, "too many steps"),
+        (IntegratorStop::StepSizeTooSmall, "step size too small"),
+        (IntegratorStop::InvalidInput("t_end < t0"), "t_end < t0"),
+    ] {
+        let v = json_of(FailureKind::Integrator { reason });
+        assert_eq!(v["reason"], text);
+        assert_eq!(reason.to_string(), text);
+    }
+}
+
+#[test]
+fn failure_names_are_the_cli_s_kebab_case_names() {
+    let names: Vec<&str> = every_kind()
+        .into_iter()
+        .map(|(kind, _, _)| Failure::name(&kind.at(0, 0.0, STATE)))
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "lift-off",
+            "contact-inconsistent",
+            "impact-before-t-set",
+            "double-support",
+            "lambda-denominator-zero",
+            "fell-backward",
+            "impact-at-start",
+            "no-impact",
+            "non-finite",
+            "integrator",
+        ]
+    );
+}
