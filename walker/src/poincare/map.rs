@@ -148,10 +148,10 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
             dimp[(4 + i, col)] = k[i][c];
         }
     }
-    // Reset to the new stance leg, measured from the new foot.
-    let [x, z, th1, th2, ..] = pre;
-    let [xd, zd, th1d, th2d] = imp.qd;
-    let [xf, _, xdf, zdf] = model.fore_foot(x, z, th1, xd, zd, th1d);
+    // Reset to the new stance leg (the simulator's own, `Model::reset`), then measured from the
+    // new foot: `x` and `z` are cyclic and reduced to zero.
+    let post = model.reset(&pre, imp.qd);
+    let (th1, th1d) = (pre[2], imp.qd[2]);
     let (l, alpha) = (model.physical.l, model.physical.alpha);
     let cs = th1.cos() - (th1 - alpha).cos();
     let sn = th1.sin() - (th1 - alpha).sin();
@@ -170,8 +170,12 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
     // it replaced did (`walker/benches/linalg.rs`: as fast, 120 ns against 127 ns).
     let product = dres * (dimp * phi);
     let jacobian: [[f64; 8]; 8] = product.transpose().into();
-    let state_plus = [0.0, 0.0, th1 - alpha, th2, xdf, zdf, th1d, th2d];
-    let dx = (xf - s[0]) / model.runtime.phi.cos();
+    let [_, _, th1_plus, th2_plus] = post.q_plus;
+    let [xd_plus, zd_plus, th1d_plus, th2d_plus] = post.qd_plus;
+    let state_plus = [
+        0.0, 0.0, th1_plus, th2_plus, xd_plus, zd_plus, th1d_plus, th2d_plus,
+    ];
+    let dx = (post.q_plus[0] - s[0]) / model.runtime.phi.cos();
     let ok = state_plus
         .iter()
         .chain(jacobian.iter().flatten())
