@@ -5,11 +5,11 @@
 //! Exit codes: 0 success (also for a walk that ends in a failure: that is a result), 2 invalid
 //! input, 1 an I/O error.
 
+use std::io::Write as _;
 use std::process::ExitCode;
 
 use clap::Parser;
 use walker::model::Kind;
-use walker::setup::Setup;
 use walker::sim::WalkLimits;
 use walker_cli::args::{Cli, Command};
 use walker_cli::input::{InputError, duration as positive_duration, tolerance};
@@ -21,18 +21,30 @@ enum CliError {
     /// Invalid input: exit code 2.
     #[error(transparent)]
     Input(#[from] InputError),
-    /// Writing the output failed: exit code 1.
+    /// Writing the output files failed: exit code 1.
     #[error(transparent)]
-    Io(#[from] std::io::Error),
+    Write(#[from] reproduce::WriteError),
+    /// Writing to standard output failed (a closed pipe): exit code 1.
+    #[error("cannot write to standard output: {0}")]
+    Stdout(#[source] std::io::Error),
 }
 
 impl CliError {
     fn exit_code(&self) -> u8 {
         match self {
             CliError::Input(_) => 2,
-            CliError::Io(_) => 1,
+            CliError::Write(_) | CliError::Stdout(_) => 1,
         }
     }
+}
+
+/// Print `text` on standard output; an error (a closed pipe) is returned, not a panic as with
+/// `print!`.
+fn emit(text: &str) -> Result<(), CliError> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(CliError::Stdout)
 }
 
 fn run(cli: Cli) -> Result<(), CliError> {
@@ -47,7 +59,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             max_steps,
         } => {
             let ov = common.overrides(mu0, t_set, phi);
-            let setup = Setup::resolve(&common.scene, &ov).map_err(InputError::from)?;
+            let setup = run::setup(&common.scene, &ov)?;
             let duration = duration
                 .map(|d| positive_duration("duration", d))
                 .transpose()?;
@@ -59,9 +71,9 @@ fn run(cli: Cli) -> Result<(), CliError> {
             };
             let w = run::simulate(&setup, omega0, &limits, &common.config()?)?;
             if common.json {
-                println!("{}", report::walk_json(&w));
+                emit(&format!("{}\n", report::walk_json(&w)))?;
             } else {
-                print!("{}", report::walk_text(&w));
+                emit(&report::walk_text(&w))?;
             }
         }
         Command::Sweep {
@@ -81,7 +93,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 t_set.first().copied(),
                 phi.first().copied(),
             );
-            let setup = Setup::resolve(&common.scene, &ov).map_err(InputError::from)?;
+            let setup = run::setup(&common.scene, &ov)?;
             let active = setup.kind == Kind::ActiveLevel;
             let chains = if active { t_set } else { phi };
             let duration = positive_duration("duration", duration)?;
@@ -105,9 +117,9 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 &common.config()?,
             )?;
             if common.json {
-                println!("{}", serde_json::json!({ "chains": res }));
+                emit(&format!("{}\n", serde_json::json!({ "chains": res })))?;
             } else {
-                print!("{}", report::sweep_text(&res, active));
+                emit(&report::sweep_text(&res, active))?;
             }
         }
         Command::FixedPoint {
@@ -118,18 +130,18 @@ fn run(cli: Cli) -> Result<(), CliError> {
             omega0,
         } => {
             let ov = common.overrides(mu0, t_set, phi);
-            let setup = Setup::resolve(&common.scene, &ov).map_err(InputError::from)?;
+            let setup = run::setup(&common.scene, &ov)?;
             let search = run::fixed_point_search(&setup, omega0, &common.config()?)?;
             let out = report::fixed_point_report(&search);
             if common.json {
-                println!("{}", out.json);
+                emit(&format!("{}\n", out.json))?;
             } else {
-                print!("{}", out.text);
+                emit(&out.text)?;
             }
         }
         Command::Reproduce { out } => {
             let summary = reproduce::run(&out)?;
-            print!("{summary}");
+            emit(&summary)?;
         }
     }
     Ok(())

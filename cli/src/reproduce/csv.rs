@@ -3,13 +3,18 @@
 
 use std::fmt::Write as _;
 use std::fs;
-use std::io;
 use std::path::Path;
 
 use walker::sim::{Sample, StepResult, Walk};
 use walker::sweep::SweepPoint;
 
 use super::data::Data;
+use super::error::WriteError;
+
+/// Write `contents` to `path`.
+fn write(path: &Path, contents: String) -> Result<(), WriteError> {
+    fs::write(path, contents).map_err(WriteError::file(path))
+}
 
 /// A finite value in scientific notation with 12 digits, else an empty cell.
 fn fmt(v: Option<f64>) -> String {
@@ -18,7 +23,7 @@ fn fmt(v: Option<f64>) -> String {
 }
 
 /// The samples of a motion: time, step, the state, `lambda` and `u`.
-fn samples_csv(path: &Path, s: &[Sample]) -> io::Result<()> {
+fn samples_csv(path: &Path, s: &[Sample]) -> Result<(), WriteError> {
     let mut out = String::from("time,step,x,z,th1,th2,xd,zd,th1d,th2d,lambda,u\n");
     for p in s {
         let _ = write!(out, "{:.9e},{}", p.time, p.step);
@@ -27,7 +32,7 @@ fn samples_csv(path: &Path, s: &[Sample]) -> io::Result<()> {
         }
         let _ = writeln!(out, ",{:.9e},{:.9e}", p.lambda, p.u);
     }
-    fs::write(path, out)
+    write(path, out)
 }
 
 /// The columns of one step's descriptors ([`step_row`]).
@@ -52,19 +57,23 @@ fn step_row(s: &StepResult) -> String {
 }
 
 /// The steps of several walks, each tagged by its `label` value (`omega0`, `mu0`).
-fn series_csv(path: &Path, label: &str, walks: &[(f64, Walk)]) -> io::Result<()> {
+fn series_csv(path: &Path, label: &str, walks: &[(f64, Walk)]) -> Result<(), WriteError> {
     let mut out = format!("{label},step,{}\n", steps_header());
     for (v, w) in walks {
         for (k, s) in w.steps.iter().enumerate() {
             let _ = writeln!(out, "{v},{k},{}", step_row(s));
         }
     }
-    fs::write(path, out)
+    write(path, out)
 }
 
 /// The points of sweep chains, each tagged by its `label` value (`T_set`, `phi`): `mu0`, the
 /// steps walked, the status and the last step.
-fn sweep_csv(path: &Path, label: &str, chains: &[(f64, Vec<SweepPoint>)]) -> io::Result<()> {
+fn sweep_csv(
+    path: &Path,
+    label: &str,
+    chains: &[(f64, Vec<SweepPoint>)],
+) -> Result<(), WriteError> {
     let mut out = format!("{label},mu0,steps,status,{}\n", steps_header());
     for (v, pts) in chains {
         for p in pts {
@@ -73,23 +82,23 @@ fn sweep_csv(path: &Path, label: &str, chains: &[(f64, Vec<SweepPoint>)]) -> io:
             let _ = writeln!(out, "{v},{:.4},{},{status},{row}", p.mu0, p.steps);
         }
     }
-    fs::write(path, out)
+    write(path, out)
 }
 
 /// Fig. 7's errors after each impact.
-fn convergence_csv(path: &Path, rows: &[[f64; 3]]) -> io::Result<()> {
+fn convergence_csv(path: &Path, rows: &[[f64; 3]]) -> Result<(), WriteError> {
     let mut c = String::from("impact,norm_dqd,d_xd,d_th1d\n");
     for (k, r) in rows.iter().enumerate() {
         let _ = writeln!(c, "{k},{:.12e},{:.12e},{:.12e}", r[0], r[1], r[2]);
     }
-    fs::write(path, c)
+    write(path, c)
 }
 
 /// Write the data of every figure as CSV files into `out`.
 ///
 /// # Errors
 /// A file could not be written.
-pub fn write_csvs(out: &Path, d: &Data) -> io::Result<()> {
+pub fn write_csvs(out: &Path, d: &Data) -> Result<(), WriteError> {
     samples_csv(&out.join("fig3_motion_mu0_0.csv"), &d.motion[0].samples)?;
     samples_csv(&out.join("fig5_motion_mu0_0.4.csv"), &d.motion[1].samples)?;
     series_csv(

@@ -8,6 +8,7 @@ use walker::sim::{Sample, StepResult, Walk};
 use walker::sweep::SweepPoint;
 
 use super::data::Data;
+use super::error::WriteError;
 use crate::plot::{Figure, Series, save};
 
 /// One panel of a figure: the file stem (`fig8a`) and what to draw.
@@ -317,10 +318,21 @@ pub fn panels(d: &Data) -> Vec<Panel> {
 /// Write every figure as `<stem>.png` and `<stem>.svg` into `out`.
 ///
 /// # Errors
-/// A figure could not be drawn or written (the message of the plotting library).
-pub fn write_figures(out: &Path, d: &Data) -> Result<(), String> {
+/// A figure could not be drawn or written.
+pub fn write_figures(out: &Path, d: &Data) -> Result<(), WriteError> {
     for (name, f) in &panels(d) {
-        save(f, &out.join(name))?;
+        save_figure(f, &out.join(name))?;
     }
     Ok(())
+}
+
+/// Write `f` as `<stem>.png` and `<stem>.svg`.
+///
+/// # Errors
+/// The figure could not be drawn or written.
+pub fn save_figure(f: &Figure, stem: &Path) -> Result<(), WriteError> {
+    save(f, stem).map_err(|message| WriteError::Figure {
+        path: stem.to_owned(),
+        message,
+    })
 }

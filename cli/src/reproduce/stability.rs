@@ -5,7 +5,6 @@
 
 use std::fmt::Write as _;
 use std::fs;
-use std::io;
 use std::path::Path;
 
 use rayon::prelude::*;
@@ -13,9 +12,10 @@ use walker::poincare::{ContinuationPoint, Status, continuation};
 use walker::sim::SimConfig;
 use walker::sweep::mu0_grid;
 
-use super::figures::fig;
+use super::error::WriteError;
+use super::figures::{fig, save_figure};
 use super::models::{active, passive};
-use crate::plot::{Series, save};
+use crate::plot::Series;
 use crate::report::{continuation_csv, stability_summary};
 
 /// The continuation along `mu0` of one chain: `(active walker, points)`, each chain's `T_set`
@@ -76,7 +76,7 @@ fn curves(
 ///
 /// # Errors
 /// A file could not be written.
-pub fn stability(out: &Path) -> io::Result<String> {
+pub fn stability(out: &Path) -> Result<String, WriteError> {
     let results = continue_chains();
     for (stem, active_chains, name) in [
         ("stability_active", true, "T_set"),
@@ -89,7 +89,7 @@ pub fn stability(out: &Path) -> io::Result<String> {
             curves(&results, active_chains, name),
             true,
         );
-        save(&f, &out.join(stem)).map_err(io::Error::other)?;
+        save_figure(&f, &out.join(stem))?;
     }
     let mut csv = String::new();
     let mut text =
@@ -106,6 +106,7 @@ pub fn stability(out: &Path) -> io::Result<String> {
             let _ = writeln!(text, "  {line}");
         }
     }
-    fs::write(out.join("stability.csv"), csv)?;
+    let path = out.join("stability.csv");
+    fs::write(&path, csv).map_err(WriteError::file(path))?;
     Ok(text)
 }
