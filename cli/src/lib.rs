@@ -4,8 +4,8 @@
 //! ([`progress`]), figures ([`plot`]) and the reproduction of the paper ([`reproduce`]).
 //! `src/main.rs` parses the arguments and dispatches to these.
 //!
-//! Imports run one way: [`reproduce`] -> [`run`] -> [`report`], [`input`], [`plot`],
-//! [`progress`] -> the `walker` library, and [`args`] -> [`input`].
+//! Imports run one way: [`args`], [`run`], [`reproduce`] -> [`input`], [`report`], [`plot`],
+//! [`progress`] -> the `walker` library.
 
 pub mod args;
 pub mod input;
