@@ -1,11 +1,13 @@
-//! The `walker` command line as a library, so that its parts are documented and tested: input
-//! checks named after the flags ([`input`]), the commands' work ([`run`]), what they print
-//! ([`report`]), progress bars ([`progress`]), figures ([`plot`]) and the reproduction of the
-//! paper ([`reproduce`]). `src/main.rs` parses the arguments and calls these.
+//! The `walker` command line as a library, so that its parts are documented and tested: the
+//! clap definitions of its arguments ([`args`]), input checks named after the flags
+//! ([`input`]), the commands' work ([`run`]), what they print ([`report`]), progress bars
+//! ([`progress`]), figures ([`plot`]) and the reproduction of the paper ([`reproduce`]).
+//! `src/main.rs` parses the arguments and dispatches to these.
 //!
-//! Imports run one way: [`reproduce`] -> [`run`] -> [`report`], [`input`], [`plot`],
+//! Imports run one way: [`args`], [`run`], [`reproduce`] -> [`input`], [`report`], [`plot`],
 //! [`progress`] -> the `walker` library.
 
+pub mod args;
 pub mod input;
 pub mod plot;
 pub mod progress;

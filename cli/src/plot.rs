@@ -1,5 +1,5 @@
 //! Line and point plots written as PNG and SVG with plotters, using the bundled DejaVu Sans font
-//! (`walker/assets/DejaVuSans.ttf`, licence in `assets/DejaVuSans-LICENSE.txt`).
+//! (`cli/assets/DejaVuSans.ttf`, licence in `cli/assets/DejaVuSans-LICENSE.txt`).
 
 use std::path::Path;
 use std::sync::Once;

@@ -3,7 +3,7 @@
 
 use walker::model::{FrictionLaw, Kind, Physical, Runtime};
 use walker::poincare::{FixedPoint, FixedPointError, FixedPointOptions, fixed_point};
-use walker::setup::{self, Setup};
+use walker::setup::{self, Overrides, Setup};
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 use walker::sweep::{mu0_grid, sweep_chains};
 
@@ -11,7 +11,71 @@ use crate::input::{InputError, check};
 use crate::progress::Progress;
 use crate::report::Chain;
 
+/// The most steps a walk of `walker simulate` or a point of `walker sweep` may take
+/// (`--max-steps`): every step of a walk is kept (and printed by `simulate`), so this bounds
+/// the memory of a request (a step is about 200 bytes).
+pub const MAX_STEPS: usize = 1_000_000;
+
+/// The most chains (`--t-set` or `--phi` values) a sweep may have: without `--restart` each
+/// chain runs on its own thread.
+pub const MAX_SWEEP_CHAINS: usize = 64;
+
+/// The most points a sweep may have in all (chains times `mu0` values).
+pub const MAX_SWEEP_POINTS: usize = 100_000;
+
+/// The longest scene file read (bytes): a scene is a few hundred bytes.
+pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+
+/// The scene of `--scene` with the overrides of the flags. A scene FILE.toml must be a
+/// regular file of at most [`MAX_SCENE_BYTES`] (not a device or a pipe, which could be read
+/// without end).
+///
+/// # Errors
+/// The scene file is not a regular file or too long; the scene is unknown or invalid; an
+/// override is out of its range.
+pub fn setup(scene: &str, ov: &Overrides) -> Result<Setup, InputError> {
+    if scene.ends_with(".toml") {
+        // A file that cannot be inspected is left to the scene reader, which names it.
+        if let Ok(meta) = std::fs::metadata(scene) {
+            if !meta.is_file() {
+                return Err(InputError::new(
+                    "scene",
+                    format!("{scene} is not a regular file"),
+                ));
+            }
+            if meta.len() > MAX_SCENE_BYTES {
+                return Err(InputError::new(
+                    "scene",
+                    format!(
+                        "{scene} has {} bytes; a scene file has at most {MAX_SCENE_BYTES}",
+                        meta.len()
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(Setup::resolve(scene, ov)?)
+}
+
+/// `--max-steps` if it is at most [`MAX_STEPS`].
+///
+/// # Errors
+/// More than [`MAX_STEPS`].
+pub fn max_steps(n: usize) -> Result<usize, InputError> {
+    if n > MAX_STEPS {
+        return Err(InputError::new(
+            "max-steps",
+            format!("{n}: must be in [0, {MAX_STEPS}]"),
+        ));
+    }
+    Ok(n)
+}
+
 /// Run `walker simulate`.
+///
+/// # Errors
+/// `omega0` is not finite, `duration` is not positive, or `max_steps` is above
+/// [`MAX_STEPS`].
 pub fn simulate(
     setup: &Setup,
     omega0: Option<f64>,
@@ -24,14 +88,16 @@ pub fn simulate(
     if limits.duration.is_nan() || limits.duration <= 0.0 {
         return Err(InputError::out_of_range("duration", limits.duration, "> 0"));
     }
+    max_steps(limits.max_steps)?;
     Ok(walk(&model, cfg, model.initial_state(w0), limits))
 }
 
-/// The most `mu0` points a sweep chain may have.
-pub const MAX_SWEEP_POINTS: usize = 100_000;
-
 /// Run `walker sweep` over `mu0` for each of `chains` (`T_set` or `phi` values; empty: the
 /// scene's value).
+///
+/// # Errors
+/// A `mu0` flag is out of range, a chain value is invalid, more than [`MAX_SWEEP_CHAINS`]
+/// chains, more than [`MAX_SWEEP_POINTS`] points in all, or `max_steps` above [`MAX_STEPS`].
 #[allow(clippy::too_many_arguments)]
 pub fn sweep(
     setup: &Setup,
@@ -51,20 +117,35 @@ pub fn sweep(
         "finite and >= mu0-from",
     )?;
     check("mu0-step", mu0_step, mu0_step > 0.0, "finite and > 0")?;
+    max_steps(limits.max_steps)?;
+    let active = setup.kind == Kind::ActiveLevel;
+    let chain_flag = if active { "t-set" } else { "phi" };
+    if chains.len() > MAX_SWEEP_CHAINS {
+        return Err(InputError::new(
+            chain_flag,
+            format!(
+                "given {} times; at most {MAX_SWEEP_CHAINS} chains",
+                chains.len()
+            ),
+        ));
+    }
     // Count the points before making them: the grid is allocated by the request (the inputs
-    // are finite and the step positive, so the count is a number, possibly infinite).
-    let points = (mu0_to - mu0_from) / mu0_step;
-    if points >= MAX_SWEEP_POINTS as f64 {
+    // are finite and the step positive, so the count is a number, possibly infinite). The
+    // count is `mu0_grid`'s.
+    let per_chain = ((mu0_to - mu0_from) / mu0_step + 1e-9).floor() + 1.0;
+    let total = per_chain * chains.len().max(1) as f64;
+    if total > MAX_SWEEP_POINTS as f64 {
         return Err(InputError::new(
             "mu0-step",
             format!(
-                "{mu0_step} gives {points:.3e} points from mu0-from to mu0-to; at most \
-                 {MAX_SWEEP_POINTS} per chain"
+                "{mu0_step:e} gives {per_chain:.3e} mu0 values from mu0-from to mu0-to, \
+                 {total:.3e} points for {} chain(s) of --{chain_flag}; at most \
+                 {MAX_SWEEP_POINTS} points in all",
+                chains.len().max(1)
             ),
         ));
     }
     let grid = mu0_grid(mu0_from, mu0_to, mu0_step);
-    let active = setup.kind == Kind::ActiveLevel;
     let base = setup.runtime;
     let chains: Vec<f64> = if chains.is_empty() {
         vec![if active { base.t_set } else { base.phi }]

@@ -1,8 +1,8 @@
 //! `stress`: the long numerical stress cases of `docs/stability.md`, printed as Markdown tables.
 //!
 //! ```sh
-//! cargo run --release -p walker --bin stress > /tmp/stability-tables.md
-//! cargo run --release -p walker --bin stress -- --long-steps 1000   # a shorter long run
+//! cargo run --release -p walker-cli --bin stress > /tmp/stability-tables.md
+//! cargo run --release -p walker-cli --bin stress -- --long-steps 1000   # a shorter long run
 //! ```
 //!
 //! Cases: small and large spoke angles (the heel-strike impact against its exact closed form),
@@ -18,6 +18,7 @@ use walker::control;
 use walker::kernels::general_level;
 use walker::model::{Model, Physical, Runtime};
 use walker::ode::Method;
+use walker::params;
 use walker::sim::{SimConfig, Walk, WalkLimits, walk, walk_with_stats};
 
 fn main() -> ExitCode {
@@ -74,21 +75,16 @@ fn has_non_finite(w: &Walk) -> bool {
     steps || failure
 }
 
+/// The general level kernels prepared for `ph` at `mu0`, the other settings those of Section 4
+/// (`c = 100`, `T_set = 0.3`, `K_P = K_D = 0`), each field looked up by its name.
 fn level_prepared(ph: &Physical, mu0: f64) -> general_level::Prepared {
-    general_level::prepare(&general_level::Params {
-        m1: ph.m1,
-        m2: ph.m2,
-        l: ph.l,
-        i1: ph.i1,
-        i2: ph.i2,
-        g: ph.g,
-        alpha: ph.alpha,
+    let rt = Runtime {
         mu0,
-        c: 100.0,
-        t_set: 0.3,
-        k_p: 0.0,
-        k_d: 0.0,
-    })
+        ..Runtime::default()
+    };
+    general_level::prepare(&general_level::Params::from_fn(|name| {
+        params::by_name(ph, &rt, name)
+    }))
 }
 
 /// The heel strike of a rigid rotation (`th1 = alpha/2`, foot at rest, `th1d = th2d = 1`) in

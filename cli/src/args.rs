@@ -1,0 +1,215 @@
+//! The `walker` command line's arguments as clap definitions: the commands, their flags (each
+//! flag's doc comment is its `--help` text) and the conversion of the shared flags into the
+//! library's settings. What the flags mean is checked in [`crate::input`] and [`crate::run`].
+
+use std::path::PathBuf;
+
+use clap::{Parser, Subcommand};
+use walker::model::FrictionLaw;
+use walker::ode::Method;
+use walker::setup::Overrides;
+use walker::sim::SimConfig;
+
+use crate::input::{InputError, tolerance};
+
+/// Command-line interface.
+#[derive(Parser, Debug)]
+#[command(
+    name = "walker",
+    version,
+    about = "Limit-cycle walking on slippery ground"
+)]
+pub struct Cli {
+    /// The command to run.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Integrator choice.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum MethodArg {
+    /// Dormand-Prince 8(5,3).
+    Dop853,
+    /// Rosenbrock RODAS4 (stiff friction, large mu0 c).
+    Rodas4,
+}
+
+/// Friction law choice.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum FrictionArg {
+    /// mu = -mu0 tanh(c xd) (Eqs. 26, 37): the paper's simulations.
+    Tanh,
+    /// Exact Coulomb friction (Eq. 25) with stick-slip.
+    Coulomb,
+}
+
+impl From<FrictionArg> for FrictionLaw {
+    fn from(f: FrictionArg) -> Self {
+        match f {
+            FrictionArg::Tanh => FrictionLaw::Tanh,
+            FrictionArg::Coulomb => FrictionLaw::Coulomb,
+        }
+    }
+}
+
+/// Flags shared by the simulation commands.
+#[derive(clap::Args, Debug)]
+pub struct Common {
+    /// `active-level`, `passive-slope` or a scene FILE.toml.
+    #[arg(long)]
+    pub scene: String,
+    /// Friction law (default: the scene's; tanh for the built-in scenes).
+    #[arg(long, value_enum)]
+    pub friction: Option<FrictionArg>,
+    /// Friction law sharpness c (s/m), > 0.
+    #[arg(long, allow_hyphen_values = true)]
+    pub c: Option<f64>,
+    /// Integrator.
+    #[arg(long, value_enum, default_value = "dop853")]
+    pub method: MethodArg,
+    /// Relative tolerance of the integrator, in (0, 1) (default 1e-10; 1e-8 with rodas4).
+    #[arg(long, allow_hyphen_values = true)]
+    pub rtol: Option<f64>,
+    /// Absolute tolerance of the integrator, in (0, 1) (default 1e-12; 1e-10 with rodas4).
+    #[arg(long, allow_hyphen_values = true)]
+    pub atol: Option<f64>,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+impl Common {
+    /// The scene overrides of these flags and of a command's `mu0`, `T_set` and `phi`.
+    #[must_use]
+    pub fn overrides(&self, mu0: Option<f64>, t_set: Option<f64>, phi: Option<f64>) -> Overrides {
+        Overrides {
+            mu0,
+            c: self.c,
+            t_set,
+            phi,
+            friction: self.friction.map(FrictionLaw::from),
+        }
+    }
+
+    /// The integrator settings of the flags: the method's default tolerances, overridden by
+    /// `--rtol` and `--atol`.
+    ///
+    /// # Errors
+    /// `--rtol` or `--atol` is outside (0, 1) (the error names the flag).
+    pub fn config(&self) -> Result<SimConfig, InputError> {
+        let base = match self.method {
+            MethodArg::Dop853 => SimConfig::default(),
+            MethodArg::Rodas4 => SimConfig {
+                method: Method::Rodas4,
+                rtol: 1e-8,
+                atol: 1e-10,
+                ..SimConfig::default()
+            },
+        };
+        Ok(SimConfig {
+            rtol: self.rtol.map_or(Ok(base.rtol), |x| tolerance("rtol", x))?,
+            atol: self.atol.map_or(Ok(base.atol), |x| tolerance("atol", x))?,
+            ..base
+        })
+    }
+}
+
+/// The commands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Simulate one walk.
+    Simulate {
+        /// The shared flags.
+        #[command(flatten)]
+        common: Common,
+        /// Friction coefficient mu0, >= 0.
+        #[arg(long, allow_hyphen_values = true)]
+        mu0: Option<f64>,
+        /// Ramp duration T_set (s), > 0 (active walker).
+        #[arg(long = "t-set", allow_hyphen_values = true)]
+        t_set: Option<f64>,
+        /// Initial angular velocity omega0 (rad/s).
+        #[arg(long, allow_hyphen_values = true)]
+        omega0: Option<f64>,
+        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
+        #[arg(long, allow_hyphen_values = true)]
+        phi: Option<f64>,
+        /// Stop after the step that passes this time (s).
+        #[arg(long, allow_hyphen_values = true)]
+        duration: Option<f64>,
+        /// Stop after this many steps.
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 100)]
+        max_steps: usize,
+    },
+    /// Sweep mu0 (procedures P1a-P5a / P1b-P5b).
+    Sweep {
+        /// The shared flags.
+        #[command(flatten)]
+        common: Common,
+        /// First mu0.
+        #[arg(long = "mu0-from", allow_hyphen_values = true)]
+        mu0_from: f64,
+        /// Last mu0.
+        #[arg(long = "mu0-to", allow_hyphen_values = true)]
+        mu0_to: f64,
+        /// Increment of mu0, > 0.
+        #[arg(long = "mu0-step", allow_hyphen_values = true)]
+        mu0_step: f64,
+        /// T_set values (active walker; repeat for several chains).
+        #[arg(long = "t-set", allow_hyphen_values = true)]
+        t_set: Vec<f64>,
+        /// Slope angles (passive wheel; repeat for several chains).
+        #[arg(long, allow_hyphen_values = true)]
+        phi: Vec<f64>,
+        /// Start every mu0 from the initial condition instead of the previous steady state.
+        #[arg(long)]
+        restart: bool,
+        /// Walk each mu0 for this long (s).
+        #[arg(long, default_value_t = 100.0, allow_hyphen_values = true)]
+        duration: f64,
+        /// At most this many steps per mu0.
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 1000)]
+        max_steps: usize,
+        /// Stop a mu0 early once its gait is periodic: when the step-to-step change of T, dx
+        /// and p, continued geometrically, adds up to at most this (relative; in (0, 1)). The
+        /// last step then stands for the rest of the duration.
+        #[arg(long = "until-periodic", allow_hyphen_values = true)]
+        until_periodic: Option<f64>,
+    },
+    /// Find the limit cycle (fixed point of the Poincare map) and its Floquet multipliers.
+    FixedPoint {
+        /// The shared flags.
+        #[command(flatten)]
+        common: Common,
+        /// Friction coefficient mu0, >= 0.
+        #[arg(long, allow_hyphen_values = true)]
+        mu0: Option<f64>,
+        /// Ramp duration T_set (s), > 0 (active walker).
+        #[arg(long = "t-set", allow_hyphen_values = true)]
+        t_set: Option<f64>,
+        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
+        #[arg(long, allow_hyphen_values = true)]
+        phi: Option<f64>,
+        /// Initial angular velocity omega0 of the warm-up walk (rad/s).
+        #[arg(long, allow_hyphen_values = true)]
+        omega0: Option<f64>,
+    },
+    /// Reproduce the paper's figures and claims.
+    Reproduce {
+        /// Output directory.
+        #[arg(long, default_value = "reproduce-out")]
+        out: PathBuf,
+    },
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    use super::Cli;
+
+    #[test]
+    fn the_clap_definitions_are_consistent() {
+        Cli::command().debug_assert();
+    }
+}

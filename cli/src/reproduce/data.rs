@@ -1,0 +1,187 @@
+//! The experiments behind the paper's figures: the walks and `mu0` sweeps of Figs. 3-8 and
+//! 10-14 with the paper's settings ([`OMEGAS`], [`T_SETS`], [`PHIS`]), collected once into
+//! [`Data`] for the CSV files, the figures and the summary.
+
+use walker::model::{Model, Physical};
+use walker::sim::{SimConfig, Walk, WalkLimits, walk};
+use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
+
+use super::models::{active, passive, runtime};
+use crate::progress::Progress;
+
+/// Omega0 values of Figs. 4 and 6.
+pub const OMEGAS: [f64; 3] = [0.6, 0.7, 0.8];
+/// `T_set` values of Fig. 8.
+pub const T_SETS: [f64; 3] = [0.2, 0.3, 0.4];
+/// Slope angles of Fig. 10.
+pub const PHIS: [f64; 3] = [0.10, 0.15, 0.20];
+
+/// The collected data of every figure.
+pub struct Data {
+    /// Fig. 3 (`mu0 = 0`) and Fig. 5 (`mu0 = 0.4`) motions, `T_set = 0.3`, `omega0 = 0.8`.
+    pub motion: [Walk; 2],
+    /// Figs. 4 and 6: steps for three `omega0` at `mu0 = 0` and `mu0 = 0.4`.
+    pub omega_series: [Vec<(f64, Walk)>; 2],
+    /// Fig. 7: errors of the post-impact velocities from the steady ones.
+    pub convergence: Vec<[f64; 3]>,
+    /// Fig. 8: sweeps over `mu0` for `T_set` = 0.2, 0.3, 0.4.
+    pub active_sweep: Vec<(f64, Vec<SweepPoint>)>,
+    /// Figs. 10 and 13: sweeps over `mu0` for `phi` = 0.10, 0.15, 0.20, each `mu0` from (P2b)
+    /// (the paper's (P5b) "Repeat from (P2b)", `walker sweep --restart`).
+    pub passive_sweep: Vec<(f64, Vec<SweepPoint>)>,
+    /// Fig. 10 read the other way: each `mu0` from the previous steady state ((P4b)).
+    pub passive_continuation: Vec<(f64, Vec<SweepPoint>)>,
+    /// The Fig. 8 sweep at `T_set = 0.3` with exact Coulomb friction (Eq. 25, stick-slip).
+    pub coulomb_sweep: Vec<(f64, Vec<SweepPoint>)>,
+    /// Fig. 11: motions at `phi = 0.2`, `mu0` = 0.2 and 0.5.
+    pub sticks: Vec<(f64, Walk)>,
+    /// Fig. 12: step lengths at `phi = 0.2` for four `mu0`.
+    pub step_lengths: Vec<(f64, Walk)>,
+    /// Fig. 14: the motion at `phi = 0.10`, `mu0 = 0.19`.
+    pub fall: Walk,
+}
+
+/// [`sweep_chains`] with a progress bar named `label` on a terminal: `(chain value, points)` for
+/// each of `chains`.
+#[allow(clippy::too_many_arguments)]
+fn sweep_with_bar(
+    label: &str,
+    chains: &[f64],
+    make: impl Fn(f64, f64) -> Model + Sync,
+    cfg: &SimConfig,
+    grid: &[f64],
+    initial: impl Fn(f64) -> [f64; 8] + Sync,
+    limits: &WalkLimits,
+    restart: bool,
+) -> Vec<(f64, Vec<SweepPoint>)> {
+    let bar = Progress::new(label, chains.len() * grid.len());
+    let points = sweep_chains(chains, make, cfg, grid, initial, limits, restart, &|| {
+        bar.tick()
+    });
+    bar.finish();
+    chains.iter().copied().zip(points).collect()
+}
+
+/// At most `max_steps` steps, no time limit; samples kept if `record`.
+fn limits(max_steps: usize, record: bool) -> WalkLimits {
+    WalkLimits {
+        max_steps,
+        duration: f64::INFINITY,
+        record,
+        periodic: None,
+    }
+}
+
+/// Fig. 7: the steady state at `T_set = 0.3`, `mu0 = 0.4`, then a start 0.1 rad/s above its
+/// angular velocity; per impact `[|qd+ - qd+_eq|, d xd+, d th1d+]` (empty if the steady walk
+/// has no step).
+fn convergence(cfg: &SimConfig) -> Vec<[f64; 3]> {
+    let m = active(0.4, 0.3);
+    let steady = walk(&m, cfg, m.initial_state(0.8), &limits(400, false));
+    let mut convergence = Vec::new();
+    if let Some(eq) = steady.steps.last() {
+        let w0 = eq.qd_plus[2] + 0.1;
+        let w = walk(&m, cfg, m.initial_state(w0), &limits(30, false));
+        let mut qds = vec![[0.0, 0.0, w0, w0]];
+        qds.extend(w.steps.iter().map(|s| s.qd_plus));
+        for qd in qds {
+            let d: Vec<f64> = qd.iter().zip(&eq.qd_plus).map(|(a, b)| a - b).collect();
+            let norm = d.iter().map(|v| v * v).sum::<f64>().sqrt();
+            convergence.push([norm, d[0], d[2]]);
+        }
+    }
+    convergence
+}
+
+/// Compute every figure's data.
+#[must_use]
+pub fn collect() -> Data {
+    let cfg = SimConfig::default();
+    let motion = [0.0, 0.4].map(|mu0| {
+        let m = active(mu0, 0.3);
+        walk(&m, &cfg, m.initial_state(0.8), &limits(6, true))
+    });
+    let omega_series = [0.0, 0.4].map(|mu0| {
+        OMEGAS
+            .iter()
+            .map(|&w0| {
+                let m = active(mu0, 0.3);
+                (w0, walk(&m, &cfg, m.initial_state(w0), &limits(30, false)))
+            })
+            .collect()
+    });
+    let convergence = convergence(&cfg);
+    let grid = mu0_grid(0.0, 1.0, 0.01);
+    let long = WalkLimits {
+        max_steps: 1000,
+        duration: 100.0,
+        record: false,
+        periodic: None,
+    };
+    let active_sweep = sweep_with_bar(
+        "Fig. 8 sweep",
+        &T_SETS,
+        |ts, mu0| active(mu0, ts),
+        &cfg,
+        &grid,
+        |ts| active(0.0, ts).initial_state(0.8),
+        &long,
+        false,
+    );
+    let pgrid = mu0_grid(0.0, 0.7, 0.01);
+    let passive_chains = |label, restart| {
+        sweep_with_bar(
+            label,
+            &PHIS,
+            |phi, mu0| passive(mu0, phi),
+            &cfg,
+            &pgrid,
+            |phi| passive(0.0, phi).initial_state(0.5),
+            &limits(20, false),
+            restart,
+        )
+    };
+    let passive_sweep = passive_chains("Fig. 10 sweep", true);
+    let passive_continuation = passive_chains("Fig. 10 sweep, continued", false);
+    let coulomb_sweep = sweep_with_bar(
+        "Fig. 8 sweep, Coulomb",
+        &[0.3],
+        |ts, mu0| Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts)),
+        &cfg,
+        &grid,
+        |ts| active(0.0, ts).initial_state(0.8),
+        &long,
+        false,
+    );
+    let sticks = [0.2, 0.5]
+        .iter()
+        .map(|&mu0| {
+            let m = passive(mu0, 0.2);
+            (mu0, walk(&m, &cfg, m.initial_state(0.5), &limits(6, true)))
+        })
+        .collect();
+    let step_lengths = [0.2, 0.3, 0.4, 0.5]
+        .iter()
+        .map(|&mu0| {
+            let m = passive(mu0, 0.2);
+            (
+                mu0,
+                walk(&m, &cfg, m.initial_state(0.5), &limits(20, false)),
+            )
+        })
+        .collect();
+    let m = passive(0.19, 0.10);
+    let fall = walk(&m, &cfg, m.initial_state(0.5), &limits(5, true));
+    Data {
+        motion,
+        omega_series,
+        convergence,
+        active_sweep,
+        passive_sweep,
+        passive_continuation,
+        coulomb_sweep,
+        sticks,
+        step_lengths,
+        fall,
+    }
+}

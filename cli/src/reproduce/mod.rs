@@ -1,0 +1,26 @@
+//! `walker reproduce`: the data of the paper's Figs. 3-8 and 10-14 as CSV files, the figures
+//! as PNG and SVG, and a summary of the paper's claims with the values found.
+//!
+//! One concept per file: the paper's walkers at a given `mu0` ([`models`]), the experiments
+//! behind the figures ([`data`]), their CSV files ([`csv`]), one function per figure
+//! ([`figures`]), the claims text ([`summary`]), the Floquet stability along `mu0`
+//! ([`stability`]) and the whole job, writing everything into one directory ([`job`]), or why
+//! it could not ([`error`]).
+//!
+//! Imports run one way: [`job`] -> [`stability`], [`summary`], [`figures`], [`csv`] ->
+//! [`data`] -> [`models`] (and [`stability`] -> [`figures`], [`models`]); the writers ->
+//! [`error`].
+
+pub mod csv;
+pub mod data;
+pub mod error;
+pub mod figures;
+pub mod job;
+pub mod models;
+pub mod stability;
+pub mod summary;
+
+pub use data::{Data, OMEGAS, PHIS, T_SETS, collect};
+pub use error::WriteError;
+pub use job::run;
+pub use summary::summary;

@@ -1,0 +1,153 @@
+//! The claims text of `walker reproduce`: each of the paper's claims with the values found in
+//! the collected [`Data`] (the first part of `summary.txt`; the stability lines follow).
+
+use std::fmt::Write as _;
+
+use walker::sim::{StepResult, Walk};
+use walker::sweep::SweepPoint;
+
+use super::data::Data;
+
+/// The `mu0 > 0` of the valid points of a sweep where `key` of the last step is largest
+/// (`max`) or smallest, with that value, or `none`.
+fn argbest(pts: &[SweepPoint], key: impl Fn(&StepResult) -> Option<f64>, max: bool) -> String {
+    let mut best: Option<(f64, f64)> = None;
+    for p in pts.iter().filter(|p| p.failure.is_none() && p.mu0 > 0.0) {
+        if let Some(v) = p.last.as_ref().and_then(&key) {
+            let better = best.is_none_or(|(_, b)| if max { v > b } else { v < b });
+            if better {
+                best = Some((p.mu0, v));
+            }
+        }
+    }
+    best.map_or_else(
+        || "none".to_owned(),
+        |(m, v)| format!("mu0 = {m:.2} ({v:.6})"),
+    )
+}
+
+/// The failures of a sweep as `mu0:name` pairs, or `none`.
+fn failures(pts: &[SweepPoint]) -> String {
+    let fails: Vec<String> = pts
+        .iter()
+        .filter_map(|p| {
+            p.failure
+                .as_ref()
+                .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
+        })
+        .collect();
+    if fails.is_empty() {
+        "none".to_owned()
+    } else {
+        fails.join(" ")
+    }
+}
+
+/// Figs. 4 and 6: the steady speed reached from each `omega0`.
+fn uniqueness(s: &mut String, d: &Data) {
+    let steady_v = |w: &Walk| w.steps.last().map_or(f64::NAN, |s| s.speed);
+    let v0: Vec<String> = d.omega_series[0]
+        .iter()
+        .map(|(w0, w)| format!("omega0={w0}: V={:.6}", steady_v(w)))
+        .collect();
+    let v4: Vec<String> = d.omega_series[1]
+        .iter()
+        .map(|(w0, w)| format!("omega0={w0}: V={:.6}", steady_v(w)))
+        .collect();
+    let _ = writeln!(
+        s,
+        "- mu0 = 0: limit cycles not unique (Fig. 4): {}",
+        v0.join(", ")
+    );
+    let _ = writeln!(
+        s,
+        "- mu0 = 0.4: unique limit cycle (Fig. 6), after 30 steps: {}",
+        v4.join(", ")
+    );
+}
+
+/// Fig. 8: per `T_set`, the failures, the best speed and specific resistance, and the step
+/// length at the largest `mu0` against its limit `2 l sin(alpha/2)`.
+fn active_sweep(s: &mut String, d: &Data) {
+    for (ts, pts) in &d.active_sweep {
+        let _ = writeln!(s, "- T_set = {ts}: failures at mu0 {}", failures(pts));
+        let _ = writeln!(
+            s,
+            "  max V at {}; min SR at {}",
+            argbest(pts, |r| Some(r.speed), true),
+            argbest(pts, |r| r.sr, false)
+        );
+        if let Some(last) = pts.last().and_then(|p| p.last.as_ref()) {
+            let _ = writeln!(
+                s,
+                "  dx at mu0 = {:.2}: {:.6} (limit 2 l sin(alpha/2) = {:.6})",
+                pts.last().map_or(f64::NAN, |p| p.mu0),
+                last.dx,
+                2.0 * (std::f64::consts::PI / 12.0).sin()
+            );
+        }
+    }
+}
+
+/// Fig. 10: the failures per `phi`, from (P2b) and continued ((P4b)).
+fn passive_sweeps(s: &mut String, d: &Data) {
+    for (phi, pts) in &d.passive_sweep {
+        let _ = writeln!(s, "- phi = {phi}: failures at mu0 {}", failures(pts));
+    }
+    for (phi, pts) in &d.passive_continuation {
+        let _ = writeln!(
+            s,
+            "- phi = {phi}, each mu0 continued from the previous one ((P4b)): failures at mu0 {}",
+            failures(pts)
+        );
+    }
+}
+
+/// Exact Coulomb friction against the tanh law at `T_set = 0.3`.
+fn coulomb(s: &mut String, d: &Data) {
+    if let (Some((_, tanh)), Some((_, exact))) = (
+        d.active_sweep.iter().find(|(ts, _)| *ts == 0.3),
+        d.coulomb_sweep.first(),
+    ) {
+        let dv = tanh
+            .iter()
+            .zip(exact)
+            .filter(|(a, b)| a.mu0 > 0.0 && a.failure.is_none() && b.failure.is_none())
+            .filter_map(|(a, b)| Some((a.last?.speed, b.last?.speed)))
+            .map(|(a, b)| ((a - b) / b).abs())
+            .fold(0.0, f64::max);
+        let fails = exact.iter().filter(|p| p.failure.is_some()).count();
+        let _ = writeln!(
+            s,
+            "- exact Coulomb friction (Eq. 25, stick-slip), T_set = 0.3: max V at {}; min SR at {}; \
+             V differs from the tanh law (c = 100) by at most {:.2} % for mu0 in (0, 1]; {fails} failed points",
+            argbest(exact, |r| Some(r.speed), true),
+            argbest(exact, |r| r.sr, false),
+            100.0 * dv
+        );
+    }
+}
+
+/// Fig. 14: how the walk at `phi = 0.10`, `mu0 = 0.19` ends.
+fn fall(s: &mut String, d: &Data) {
+    let _ = writeln!(
+        s,
+        "- phi = 0.10, mu0 = 0.19 (Fig. 14): {}",
+        d.fall.failure.as_ref().map_or_else(
+            || "walks".to_owned(),
+            |f| format!("{} at step {}", f.name(), f.step)
+        )
+    );
+}
+
+/// The summary table of the paper's claims and the values found.
+#[must_use]
+pub fn summary(d: &Data) -> String {
+    let mut s = String::from("Claims of the paper and values found\n");
+    uniqueness(&mut s, d);
+    active_sweep(&mut s, d);
+    passive_sweeps(&mut s, d);
+    coulomb(&mut s, d);
+    fall(&mut s, d);
+    s
+}
