@@ -118,7 +118,7 @@ fn fixed_point_text(fp: &FixedPoint) -> String {
         .unwrap_or_default();
     let _ = writeln!(s, "status: {status}");
     if let Some(f) = &fp.failure {
-        let _ = writeln!(s, "walk on the cycle fails: {f}");
+        let _ = writeln!(s, "walk on the cycle fails: {}", f.name());
     }
     let _ = writeln!(
         s,

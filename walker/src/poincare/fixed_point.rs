@@ -5,7 +5,7 @@ use nalgebra::{Matrix2, Vector2};
 use serde::Serialize;
 
 use crate::model::Model;
-use crate::sim::{SimConfig, WalkLimits, walk};
+use crate::sim::{Failure, SimConfig, WalkLimits, walk};
 
 use super::error::FixedPointError;
 use super::map::{MapResult, poincare_map};
@@ -57,7 +57,9 @@ pub struct FixedPoint {
     /// Newton iterations taken.
     pub iterations: usize,
     /// The failure of [`crate::sim::walk`] on the cycle, if any (see [`Status::InvalidGait`]).
-    pub failure: Option<String>,
+    /// Serialised as its name (`"lift-off"`, ...), as the JSON of `walker fixed-point` has it.
+    #[serde(serialize_with = "failure_name")]
+    pub failure: Option<Failure>,
 }
 
 impl FixedPoint {
@@ -192,7 +194,7 @@ pub fn newton(
             ..WalkLimits::default()
         },
     );
-    let failure = check.failure.as_ref().map(|f| f.name().to_owned());
+    let failure = check.failure;
     let status = if failure.is_some() {
         Status::InvalidGait
     } else if res > opts.tol {
@@ -224,4 +226,12 @@ fn residual(model: &Model, m: &MapResult, r: [f64; 2]) -> (f64, [[f64; 2]; 2]) {
         (p[0] - r[0]).hypot(p[1] - r[1]),
         reduced_jacobian(model, &m.jacobian),
     )
+}
+
+/// A failure as its name (`"lift-off"`), or `null`.
+fn failure_name<S: serde::Serializer>(f: &Option<Failure>, s: S) -> Result<S::Ok, S::Error> {
+    match f {
+        Some(f) => s.serialize_some(f.name()),
+        None => s.serialize_none(),
+    }
 }
