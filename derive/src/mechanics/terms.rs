@@ -1,0 +1,85 @@
+//! The building blocks of the derivation: the coordinate symbols `q`, `qdot`, `qddot`,
+//! constants, sines and cosines of angle combinations, the total time derivative along the
+//! motion, and the total mass and inertia.
+
+use crate::error::{Error, Result};
+use crate::poly::Q;
+use crate::ratfunc::RatFunc;
+use crate::symbol::{BaseAngle, Sym};
+use crate::trig::sin_cos_combination;
+
+/// The generalized coordinates `q = [x, z, th1, th2]` (Section 2.2).
+pub const Q_SYMS: [Sym; 4] = [Sym::X, Sym::Z, Sym::Th1, Sym::Th2];
+/// The generalized velocities.
+pub const QD_SYMS: [Sym; 4] = [Sym::Xd, Sym::Zd, Sym::Th1d, Sym::Th2d];
+/// The generalized accelerations.
+pub const QDD_SYMS: [Sym; 4] = [Sym::Xdd, Sym::Zdd, Sym::Th1dd, Sym::Th2dd];
+
+/// A symbol as a rational function.
+pub fn sym(s: Sym) -> RatFunc {
+    RatFunc::sym(s)
+}
+
+/// An integer.
+pub fn int(n: i64) -> RatFunc {
+    RatFunc::int(n)
+}
+
+/// A rational constant `n / d`.
+pub fn frac(n: i64, d: i64) -> RatFunc {
+    RatFunc::constant(Q::new(n.into(), d.into()))
+}
+
+fn combination(angle: &[(Sym, i64)]) -> Result<Vec<(BaseAngle, i64)>> {
+    angle
+        .iter()
+        .map(|&(s, n)| {
+            let base = BaseAngle::of_symbol(s).ok_or_else(|| Error::UnsupportedAngle {
+                what: format!("`{}` is not an angle", s.name()),
+            })?;
+            Ok((base, n * base.symbol_and_multiple().1))
+        })
+        .collect()
+}
+
+/// `sin(sum n_k s_k)` for angle symbols `s_k` and integers `n_k`.
+pub fn sin(angle: &[(Sym, i64)]) -> Result<RatFunc> {
+    Ok(sin_cos_combination(&combination(angle)?).0.into())
+}
+
+/// `cos(sum n_k s_k)`.
+pub fn cos(angle: &[(Sym, i64)]) -> Result<RatFunc> {
+    Ok(sin_cos_combination(&combination(angle)?).1.into())
+}
+
+/// `sin(alpha / 2)`.
+pub fn sin_half_alpha() -> RatFunc {
+    RatFunc::sin_of(BaseAngle::HalfAlpha)
+}
+
+/// `tan(phi)`.
+pub fn tan_phi() -> Result<RatFunc> {
+    RatFunc::sin_of(BaseAngle::Phi).div(&RatFunc::cos_of(BaseAngle::Phi))
+}
+
+/// Total time derivative along the motion: `sum dF/dq qdot + dF/dqdot qddot`.
+pub fn time_derivative(f: &RatFunc) -> RatFunc {
+    let mut acc = RatFunc::zero();
+    for (q, qd) in Q_SYMS.iter().zip(QD_SYMS.iter()) {
+        acc = acc + &(f.diff(*q) * sym(*qd));
+    }
+    for (qd, qdd) in QD_SYMS.iter().zip(QDD_SYMS.iter()) {
+        acc = acc + &(f.diff(*qd) * sym(*qdd));
+    }
+    acc
+}
+
+/// `m_t = m1 + m2`.
+pub fn total_mass() -> RatFunc {
+    sym(Sym::M1) + &sym(Sym::M2)
+}
+
+/// `I_t = I1 + I2`.
+pub fn total_inertia() -> RatFunc {
+    sym(Sym::I1) + &sym(Sym::I2)
+}
