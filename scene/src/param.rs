@@ -217,7 +217,7 @@ impl Param {
         PARAMS[self as usize]
     }
 
-    /// The position in [`Param::ALL`] (and in a [`ParamValues`] table).
+    /// The position in [`Param::ALL`].
     #[must_use]
     pub fn index(self) -> usize {
         self as usize

@@ -3,11 +3,11 @@
 //!
 //! One concept per file: the paper's walkers at a given `mu0` ([`models`]), the experiments
 //! behind the figures ([`data`]), their CSV files ([`csv`]), one function per figure
-//! ([`figures`]), the claims text ([`summary`]), the Floquet stability along `mu0`
+//! ([`figures`]), the claims text ([`mod@summary`]), the Floquet stability along `mu0`
 //! ([`stability`]) and the whole job, writing everything into one directory ([`job`]), or why
 //! it could not ([`error`]).
 //!
-//! Imports run one way: [`job`] -> [`stability`], [`summary`], [`figures`], [`csv`] ->
+//! Imports run one way: [`job`] -> [`stability`], [`mod@summary`], [`figures`], [`csv`] ->
 //! [`data`] -> [`models`] (and [`stability`] -> [`figures`], [`models`]); the writers ->
 //! [`error`].
 

@@ -13,7 +13,7 @@
 //! [`IntegratorStop`]), `gait.rs` ([`StepResult`], [`Sample`], [`Walk`]), `periodic.rs` (the
 //! periodic stop), `foot.rs` (the stance foot, its contact and ground reaction), `stance.rs`
 //! (the stance ODE system and the sampling observer), `guard.rs` (the stance events,
-//! [`Guard`]), `step.rs` (one stance phase and its impact), `walk.rs` ([`walk`],
+//! [`Guard`]), `step.rs` (one stance phase and its impact), `walk.rs` ([`walk()`],
 //! [`walk_with_stats`]).
 
 mod config;
