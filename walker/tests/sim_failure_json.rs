@@ -5,7 +5,8 @@
 use std::collections::BTreeSet;
 
 use serde_json::{Value, json};
-use walker::sim::{Failure, FailureKind, IntegratorStop};
+use walker::ode::GaveUp;
+use walker::sim::{Failure, FailureKind};
 
 const STATE: [f64; 8] = [0.5, 0.0, -0.2, 0.1, 1.0, 0.0, 2.0, -1.5];
 
@@ -63,7 +64,7 @@ fn every_kind() -> Vec<(FailureKind, &'static str, &'static [&'static str])> {
         (FailureKind::NonFinite, "NonFinite", &[]),
         (
             FailureKind::Integrator {
-                reason: IntegratorStop::TooManySteps,
+                reason: GaveUp::TooManySteps,
             },
             "Integrator",
             &["reason"],
@@ -107,14 +108,20 @@ fn a_failure_s_own_data_keeps_its_values() {
 #[test]
 fn integrator_reasons_serialise_as_their_old_strings() {
     for (reason, text) in [
-        (IntegratorStop::TooManySteps, "too many steps"),
-        (IntegratorStop::StepSizeTooSmall, "step size too small"),
-        (IntegratorStop::InvalidInput("t_end < t0"), "t_end < t0"),
+        (GaveUp::TooManySteps, "too many steps"),
+        (GaveUp::StepSizeTooSmall { h: 1e-20 }, "step size too small"),
+        (GaveUp::InvalidInput("t_end < t0"), "t_end < t0"),
     ] {
         let v = json_of(FailureKind::Integrator { reason });
         assert_eq!(v["reason"], text);
-        assert_eq!(reason.to_string(), text);
+        assert_eq!(reason.as_str(), text);
+        // The text for people adds the step size where there is one.
+        assert!(reason.to_string().starts_with(text), "{reason}");
     }
+    assert_eq!(
+        GaveUp::StepSizeTooSmall { h: 1e-20 }.to_string(),
+        "step size too small (h = 1e-20)"
+    );
 }
 
 #[test]

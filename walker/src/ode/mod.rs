@@ -65,6 +65,6 @@ pub use events::{Direction, Event};
 pub use linalg::{Lu, LuError};
 pub use observer::{NoObserver, Observer, Step};
 pub use options::{Config, Method, Tolerances};
-pub use outcome::Outcome;
+pub use outcome::{GaveUp, Outcome};
 pub use stats::Stats;
 pub use system::OdeSystem;

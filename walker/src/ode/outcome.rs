@@ -1,4 +1,9 @@
-//! How an integration ended: reached, event, breakpoint, or a failure.
+//! How an integration ended: reached, event, breakpoint, or a failure; and why it gave up,
+//! for the layers above to report ([`GaveUp`]).
+
+use std::fmt;
+
+use serde::{Serialize, Serializer};
 
 /// How an integration ended. Every variant carries the time and state at
 /// which the integrator stopped; the state is the last accepted (finite) one
@@ -104,5 +109,52 @@ impl<const N: usize> Outcome<N> {
             self,
             Outcome::Reached { .. } | Outcome::Event { .. } | Outcome::Breakpoint { .. }
         )
+    }
+}
+
+/// Why an integration stopped short of where it was asked to go without a non-finite value:
+/// the integrator gave up. The simulation's failures and the Poincare map's errors carry it.
+///
+/// Serialised as its text without numbers (`"too many steps"`, `"step size too small"`, or
+/// the description of the invalid input), as the JSON of a failed walk has it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum GaveUp {
+    /// [`Outcome::StepSizeTooSmall`]: the step size fell below the time resolution.
+    StepSizeTooSmall {
+        /// The step size that was too small.
+        h: f64,
+    },
+    /// [`Outcome::MaxSteps`]: the step budget ran out.
+    TooManySteps,
+    /// [`Outcome::InvalidInput`]: the integrator's arguments were inconsistent.
+    InvalidInput(&'static str),
+}
+
+impl GaveUp {
+    /// The reason in words, without numbers (`"too many steps"`, ...).
+    #[must_use]
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            GaveUp::StepSizeTooSmall { .. } => "step size too small",
+            GaveUp::TooManySteps => "too many steps",
+            GaveUp::InvalidInput(reason) => reason,
+        }
+    }
+}
+
+impl fmt::Display for GaveUp {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            GaveUp::StepSizeTooSmall { h } => write!(f, "step size too small (h = {h:e})"),
+            other => f.write_str(other.as_str()),
+        }
+    }
+}
+
+impl std::error::Error for GaveUp {}
+
+impl Serialize for GaveUp {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.as_str())
     }
 }

@@ -2,30 +2,8 @@
 //! the impact where it happened and their source.
 
 use crate::jacobian::NoJacobian;
+use crate::ode::GaveUp;
 use crate::sim::Failure;
-
-/// Why the integrator stopped before the heel strike without a non-finite value.
-#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
-pub enum IntegratorGaveUp {
-    /// The step size fell below the time resolution
-    /// ([`Outcome::StepSizeTooSmall`](crate::ode::Outcome::StepSizeTooSmall)).
-    #[error("step size too small (h = {h:e})")]
-    StepSizeTooSmall {
-        /// The step size that was too small.
-        h: f64,
-    },
-    /// The integrator's step budget ran out
-    /// ([`Outcome::MaxSteps`](crate::ode::Outcome::MaxSteps)).
-    #[error("too many steps")]
-    MaxSteps,
-    /// The integrator refused its input
-    /// ([`Outcome::InvalidInput`](crate::ode::Outcome::InvalidInput)).
-    #[error("invalid integrator input: {reason}")]
-    InvalidInput {
-        /// What was wrong.
-        reason: &'static str,
-    },
-}
 
 /// Why the map could not be evaluated. `t` is the time since the impact (s).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -52,7 +30,7 @@ pub enum MapError {
         t: f64,
         /// What stopped it.
         #[source]
-        cause: IntegratorGaveUp,
+        cause: GaveUp,
     },
     /// The heel strike is grazing (`th1d = 0`): the saltation correction divides by it.
     #[error("Poincare map failed at t = {t}: grazing heel strike (th1d = 0)")]

@@ -6,10 +6,12 @@ use nalgebra::SMatrix;
 
 use crate::jacobian::Jac;
 use crate::model::{Contact, Model};
-use crate::ode::{Direction, Event, Integrator, NoObserver, OdeSystem, Outcome, Tolerances};
+use crate::ode::{
+    Direction, Event, GaveUp, Integrator, NoObserver, OdeSystem, Outcome, Tolerances,
+};
 use crate::sim::SimConfig;
 
-use super::error::{IntegratorGaveUp, MapError};
+use super::error::MapError;
 
 /// Size of the integrated state: 8 mechanical components and the 8x8 sensitivity matrix.
 const NA: usize = 8 + 64;
@@ -108,15 +110,15 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
             Outcome::Reached { t, .. } => return Err(MapError::NoHeelStrike { t }),
             Outcome::NonFinite { t, .. } => return Err(MapError::NonFinite { t }),
             Outcome::StepSizeTooSmall { t, h, .. } => {
-                let cause = IntegratorGaveUp::StepSizeTooSmall { h };
+                let cause = GaveUp::StepSizeTooSmall { h };
                 return Err(MapError::Integrator { t, cause });
             }
             Outcome::MaxSteps { t, .. } => {
-                let cause = IntegratorGaveUp::MaxSteps;
+                let cause = GaveUp::TooManySteps;
                 return Err(MapError::Integrator { t, cause });
             }
             Outcome::InvalidInput { t, reason, .. } => {
-                let cause = IntegratorGaveUp::InvalidInput { reason };
+                let cause = GaveUp::InvalidInput(reason);
                 return Err(MapError::Integrator { t, cause });
             }
         }

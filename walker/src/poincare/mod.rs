@@ -57,7 +57,7 @@ mod multipliers;
 mod section;
 
 pub use continuation::{ContinuationPoint, continuation};
-pub use error::{FixedPointError, IntegratorGaveUp, MapError};
+pub use error::{FixedPointError, MapError};
 pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
 pub use map::{MapResult, poincare_map};
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};

@@ -1,13 +1,12 @@
 //! Why a walk ended early: a [`Failure`] is where and when (step, time, state), its
-//! [`FailureKind`] is the cause with only the cause's own data, and [`IntegratorStop`] is why the
-//! integrator gave up.
+//! [`FailureKind`] is the cause with only the cause's own data.
 //!
 //! The JSON of a failure is one flat object, `{"kind": "LiftOff", "step": .., "t": .., "state":
 //! [..], "lambda": ..}`: the kind's tag and data sit beside the common fields.
 
-use std::fmt;
+use serde::Serialize;
 
-use serde::{Serialize, Serializer};
+use crate::ode::GaveUp;
 
 /// Why a walk ended early, and where: the step number (0 for the step that starts at the initial
 /// condition), the time since the last impact and the mechanical state
@@ -85,8 +84,8 @@ pub enum FailureKind {
     NonFinite,
     /// The integrator gave up; `t` and the state are where it stopped.
     Integrator {
-        /// Why.
-        reason: IntegratorStop,
+        /// Why (serialised as its text, `"too many steps"`, ...).
+        reason: GaveUp,
     },
 }
 
@@ -115,40 +114,5 @@ impl FailureKind {
             state,
             kind: self,
         }
-    }
-}
-
-/// Why the integrator gave up (the [`Outcome`](crate::ode::Outcome)s in which it does); serialised as its text (`"too many steps"`,
-/// `"step size too small"`, or the integrator's description of the invalid input).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum IntegratorStop {
-    /// [`Outcome::MaxSteps`](crate::ode::Outcome::MaxSteps): the step budget ran out.
-    TooManySteps,
-    /// [`Outcome::StepSizeTooSmall`](crate::ode::Outcome::StepSizeTooSmall): the step size fell below the time resolution.
-    StepSizeTooSmall,
-    /// [`Outcome::InvalidInput`](crate::ode::Outcome::InvalidInput): the integrator's arguments were inconsistent.
-    InvalidInput(&'static str),
-}
-
-impl IntegratorStop {
-    /// The text of the reason.
-    pub fn as_str(&self) -> &'static str {
-        match self {
-            IntegratorStop::TooManySteps => "too many steps",
-            IntegratorStop::StepSizeTooSmall => "step size too small",
-            IntegratorStop::InvalidInput(reason) => reason,
-        }
-    }
-}
-
-impl fmt::Display for IntegratorStop {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.as_str())
-    }
-}
-
-impl Serialize for IntegratorStop {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        serializer.serialize_str(self.as_str())
     }
 }

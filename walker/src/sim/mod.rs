@@ -9,8 +9,7 @@
 //! every impact; `T_set` is a breakpoint of the integrator (the control switches there).
 //!
 //! Files, each using only those listed before it: `state.rs` (the integrated state),
-//! `config.rs` ([`SimConfig`], [`WalkLimits`]), `failure.rs` ([`Failure`], [`FailureKind`],
-//! [`IntegratorStop`]), `gait.rs` ([`StepResult`], [`Sample`], [`Walk`]), `periodic.rs` (the
+//! `config.rs` ([`SimConfig`], [`WalkLimits`]), `failure.rs` ([`Failure`], [`FailureKind`]), `gait.rs` ([`StepResult`], [`Sample`], [`Walk`]), `periodic.rs` (the
 //! periodic stop), `foot.rs` (the stance foot, its contact and ground reaction), `stance.rs`
 //! (the stance ODE system and the sampling observer), `guard.rs` (the stance events,
 //! [`Guard`]), `step.rs` (one stance phase and its impact), `walk.rs` ([`walk()`],
@@ -28,7 +27,7 @@ mod step;
 mod walk;
 
 pub use config::{SimConfig, WalkLimits};
-pub use failure::{Failure, FailureKind, IntegratorStop};
+pub use failure::{Failure, FailureKind};
 pub use foot::{control_input, ground_reaction};
 pub use gait::{Sample, StepResult, Walk};
 pub use guard::Guard;

@@ -5,10 +5,10 @@
 //! control switches there).
 
 use crate::model::{Contact, Model, Reaction, Slide};
-use crate::ode::{Integrator, Outcome};
+use crate::ode::{GaveUp, Integrator, Outcome};
 
 use super::config::SimConfig;
-use super::failure::{Failure, FailureKind, IntegratorStop};
+use super::failure::{Failure, FailureKind};
 use super::foot::{
     Foot, at_rest, contact_at_rest, control_input, initial_contact, reaction_at_start,
 };
@@ -197,16 +197,16 @@ fn after_segment(
             };
             Err(kind.at(step, t, mech(&y)))
         }
-        Outcome::StepSizeTooSmall { t, y, .. } => {
-            let stop = IntegratorStop::StepSizeTooSmall;
+        Outcome::StepSizeTooSmall { t, y, h } => {
+            let stop = GaveUp::StepSizeTooSmall { h };
             Err(gave_up(stop, lam, lambda_max).at(step, t, mech(&y)))
         }
         Outcome::MaxSteps { t, y } => {
-            let stop = IntegratorStop::TooManySteps;
+            let stop = GaveUp::TooManySteps;
             Err(gave_up(stop, lam, lambda_max).at(step, t, mech(&y)))
         }
         Outcome::InvalidInput { t, y, reason } => {
-            let reason = IntegratorStop::InvalidInput(reason);
+            let reason = GaveUp::InvalidInput(reason);
             Err(FailureKind::Integrator { reason }.at(step, t, mech(&y)))
         }
     }
@@ -214,7 +214,7 @@ fn after_segment(
 
 /// Why the integrator gave up with `reason`: a blown-up `lambda` (`lam`) is the cause where
 /// there is one, otherwise the integrator's reason.
-fn gave_up(reason: IntegratorStop, lam: f64, lambda_max: f64) -> FailureKind {
+fn gave_up(reason: GaveUp, lam: f64, lambda_max: f64) -> FailureKind {
     if blown_up(lam, lambda_max) {
         FailureKind::LambdaDenominatorZero { lambda: lam }
     } else {
