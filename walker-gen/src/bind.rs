@@ -4,7 +4,7 @@
 use std::collections::BTreeMap;
 
 use crate::ir::{Module, NodeId};
-use crate::scene::{Param, Scene};
+use walker_scene::{Param, Scene};
 
 /// Graph nodes for the parameters of a scene's structure.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -9,8 +9,8 @@ use crate::ir::Module;
 use crate::lower::{Derivation, derive, lower};
 use crate::options::{Division, EmitOptions, Float, FloatFunctions};
 use crate::plan::Plan;
-use crate::scene::Scene;
 use crate::stats::{Stats, from_plan};
+use walker_scene::Scene;
 
 #[derive(Clone, Debug)]
 enum SceneSource {

@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use crate::scene::SceneError;
+use walker_scene::SceneError;
 
 /// A module that cannot be emitted (a bug in the lowering, or a hand-built module).
 #[derive(Debug, thiserror::Error)]

@@ -29,7 +29,7 @@ use walker_symbolic::{Poly, RatFunc, Sym};
 use crate::bind::ParamNodes;
 use crate::error::Error;
 use crate::ir::{Graph, Kernel, Module, NodeId, Shape};
-use crate::scene::{Floor, Friction, Param, Scene, Torso};
+use walker_scene::{Floor, Friction, Param, Scene, Torso};
 
 /// Derives the walker's symbolic kernels once (the expensive step): every scene lowered from
 /// the returned [`Derivation`] shares it.
