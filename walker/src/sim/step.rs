@@ -5,7 +5,7 @@
 //! control switches there).
 
 use crate::model::{Contact, Model, Reaction, Slide};
-use crate::ode::{Integrator, Outcome};
+use crate::ode::{Integrator, Outcome, Stats};
 
 use super::config::SimConfig;
 use super::failure::{Failure, FailureKind, IntegratorStop};
@@ -111,6 +111,13 @@ enum Next {
 
 /// Integrate the stance phase from `y0` (time 0) segment by segment until the heel strikes:
 /// segments end at the breakpoint `T_set`, at a power kink and at stick-slip transitions.
+///
+/// The integrator's [`Config::max_steps`](crate::ode::Config::max_steps) is the budget of
+/// attempted steps of the whole stance phase, not of each segment: every segment spends at
+/// least one step, so a stance phase whose events follow each other ever more closely (the
+/// power kink chattering under a stiff friction law, `c = 1e12`) ends with
+/// [`IntegratorStop::TooManySteps`] instead of running on one budget per segment. The
+/// integrator's setting is restored before returning.
 #[allow(
     clippy::too_many_arguments,
     reason = "the pieces of one stance phase, prepared by `one_step`"
@@ -123,7 +130,35 @@ fn stance_phase(
     y0: [f64; N],
     lambda0: f64,
     lambda_max: f64,
+    obs: Recorder<'_>,
+) -> Result<Strike, Failure> {
+    let budget = integ.config().max_steps;
+    let strike = segments(cfg, integ, foot, step, y0, lambda0, lambda_max, obs, budget);
+    integ.config_mut().max_steps = budget;
+    strike
+}
+
+/// Attempted steps (accepted and rejected) counted in `stats`.
+fn attempts(stats: &Stats) -> u64 {
+    stats.accepted_steps + stats.rejected_steps
+}
+
+/// The segments of [`stance_phase`], with at most `budget` attempted steps in all (each segment
+/// gets what its predecessors left as the integrator's `max_steps`).
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the pieces of one stance phase, prepared by `one_step`"
+)]
+fn segments(
+    cfg: &SimConfig,
+    integ: &mut Integrator<N>,
+    foot: &Foot<'_>,
+    step: usize,
+    y0: [f64; N],
+    lambda0: f64,
+    lambda_max: f64,
     mut obs: Recorder<'_>,
+    budget: usize,
 ) -> Result<Strike, Failure> {
     let model = foot.model;
     let guards = Guards::new(foot, lambda_max);
@@ -139,7 +174,10 @@ fn stance_phase(
     let mut y = y0;
     let mut stuck_time = 0.0;
     let t_limit = cfg.max_step_time;
+    let first = attempts(integ.stats());
     loop {
+        let spent = usize::try_from(attempts(integ.stats()) - first).unwrap_or(usize::MAX);
+        integ.config_mut().max_steps = budget.saturating_sub(spent);
         let (t_start, contact) = (t, foot.contact());
         let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events[..n_events], &mut obs);
         if contact == Contact::Stuck {
