@@ -57,16 +57,25 @@ pub(super) fn one_step(
     impact(model, step, &s0, &strike)
 }
 
-/// The checks at the start of a stance phase: a finite state, a contact consistent with it, a
-/// finite `lambda` below the blow-up threshold and a non-negative normal force. Returns the
-/// foot, the integrated initial state and the ground reaction there.
+/// Whether the desired trajectory `[y_d, yd_d, ydd_d]` of the active walker's control, an input
+/// of its kernels, is finite at `t` (a `T_set` below about `1e-154` overflows `ydd_d`'s scale
+/// `60 alpha / T_set^2`, and the ramp is then NaN at `t = 0`); always true for the passive
+/// wheel, which has no control.
+fn desired_finite(model: &Model, t: f64) -> bool {
+    !model.is_active() || finite(&model.desired(t))
+}
+
+/// The checks at the start of a stance phase: a finite state and desired trajectory (the
+/// kernels' inputs), a contact consistent with them, a finite `lambda` below the blow-up
+/// threshold and a non-negative normal force. Returns the foot, the integrated initial state
+/// and the ground reaction there.
 fn start(
     model: &Model,
     step: usize,
     s0: [f64; 8],
     lambda_max: f64,
 ) -> Result<(Foot<'_>, [f64; N], Reaction), Failure> {
-    if !finite(&s0) {
+    if !finite(&s0) || !desired_finite(model, 0.0) {
         return Err(FailureKind::NonFinite.at(step, 0.0, s0));
     }
     let mut y0 = [0.0; N];
@@ -228,7 +237,7 @@ fn after_segment(
         }
         Outcome::Reached { t, y } => Err(FailureKind::NoImpact.at(step, t, mech(&y))),
         Outcome::NonFinite { t, y } => {
-            let kind = if blown_up(lam, lambda_max) {
+            let kind = if blown_up(lam, lambda_max) && desired_finite(foot.model, t) {
                 FailureKind::LambdaDenominatorZero { lambda: lam }
             } else {
                 FailureKind::NonFinite
