@@ -79,8 +79,9 @@ pub enum FailureKind {
     ImpactAtStart,
     /// No heel strike within [`super::SimConfig::max_step_time`]; `t` is that limit.
     NoImpact,
-    /// A state, an acceleration or a descriptor was not finite; `t` and the state are the last
-    /// finite ones.
+    /// A state, an acceleration, a descriptor or the active walker's desired trajectory (its
+    /// `ydd_d` overflows for `T_set` below about `1e-154`) was not finite; `t` and the state are
+    /// the last finite ones.
     NonFinite,
     /// The integrator gave up; `t` and the state are where it stopped.
     Integrator {

@@ -5,7 +5,7 @@
 //! control switches there).
 
 use crate::model::{Contact, Model, Reaction, Slide};
-use crate::ode::{GaveUp, Integrator, Outcome};
+use crate::ode::{GaveUp, Integrator, Outcome, Stats};
 
 use super::config::SimConfig;
 use super::failure::{Failure, FailureKind};
@@ -57,16 +57,25 @@ pub(super) fn one_step(
     impact(model, step, &s0, &strike)
 }
 
-/// The checks at the start of a stance phase: a finite state, a contact consistent with it, a
-/// finite `lambda` below the blow-up threshold and a non-negative normal force. Returns the
-/// foot, the integrated initial state and the ground reaction there.
+/// Whether the desired trajectory `[y_d, yd_d, ydd_d]` of the active walker's control, an input
+/// of its kernels, is finite at `t` (a `T_set` below about `1e-154` overflows `ydd_d`'s scale
+/// `60 alpha / T_set^2`, and the ramp is then NaN at `t = 0`); always true for the passive
+/// wheel, which has no control.
+fn desired_finite(model: &Model, t: f64) -> bool {
+    !model.is_active() || finite(&model.desired(t))
+}
+
+/// The checks at the start of a stance phase: a finite state and desired trajectory (the
+/// kernels' inputs), a contact consistent with them, a finite `lambda` below the blow-up
+/// threshold and a non-negative normal force. Returns the foot, the integrated initial state
+/// and the ground reaction there.
 fn start(
     model: &Model,
     step: usize,
     s0: [f64; 8],
     lambda_max: f64,
 ) -> Result<(Foot<'_>, [f64; N], Reaction), Failure> {
-    if !finite(&s0) {
+    if !finite(&s0) || !desired_finite(model, 0.0) {
         return Err(FailureKind::NonFinite.at(step, 0.0, s0));
     }
     let mut y0 = [0.0; N];
@@ -111,6 +120,13 @@ enum Next {
 
 /// Integrate the stance phase from `y0` (time 0) segment by segment until the heel strikes:
 /// segments end at the breakpoint `T_set`, at a power kink and at stick-slip transitions.
+///
+/// The integrator's [`Config::max_steps`](crate::ode::Config::max_steps) is the budget of
+/// attempted steps of the whole stance phase, not of each segment: every segment spends at
+/// least one step, so a stance phase whose events follow each other ever more closely (the
+/// power kink chattering under a stiff friction law, `c = 1e12`) ends with
+/// [`GaveUp::TooManySteps`] instead of running on one budget per segment. The
+/// integrator's setting is restored before returning.
 #[allow(
     clippy::too_many_arguments,
     reason = "the pieces of one stance phase, prepared by `one_step`"
@@ -123,7 +139,35 @@ fn stance_phase(
     y0: [f64; N],
     lambda0: f64,
     lambda_max: f64,
+    obs: Recorder<'_>,
+) -> Result<Strike, Failure> {
+    let budget = integ.config().max_steps;
+    let strike = segments(cfg, integ, foot, step, y0, lambda0, lambda_max, obs, budget);
+    integ.config_mut().max_steps = budget;
+    strike
+}
+
+/// Attempted steps (accepted and rejected) counted in `stats`.
+fn attempts(stats: &Stats) -> u64 {
+    stats.accepted_steps + stats.rejected_steps
+}
+
+/// The segments of [`stance_phase`], with at most `budget` attempted steps in all (each segment
+/// gets what its predecessors left as the integrator's `max_steps`).
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the pieces of one stance phase, prepared by `one_step`"
+)]
+fn segments(
+    cfg: &SimConfig,
+    integ: &mut Integrator<N>,
+    foot: &Foot<'_>,
+    step: usize,
+    y0: [f64; N],
+    lambda0: f64,
+    lambda_max: f64,
     mut obs: Recorder<'_>,
+    budget: usize,
 ) -> Result<Strike, Failure> {
     let model = foot.model;
     let guards = Guards::new(foot, lambda_max);
@@ -139,7 +183,10 @@ fn stance_phase(
     let mut y = y0;
     let mut stuck_time = 0.0;
     let t_limit = cfg.max_step_time;
+    let first = attempts(integ.stats());
     loop {
+        let spent = usize::try_from(attempts(integ.stats()) - first).unwrap_or(usize::MAX);
+        integ.config_mut().max_steps = budget.saturating_sub(spent);
         let (t_start, contact) = (t, foot.contact());
         let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events[..n_events], &mut obs);
         if contact == Contact::Stuck {
@@ -190,7 +237,7 @@ fn after_segment(
         }
         Outcome::Reached { t, y } => Err(FailureKind::NoImpact.at(step, t, mech(&y))),
         Outcome::NonFinite { t, y } => {
-            let kind = if blown_up(lam, lambda_max) {
+            let kind = if blown_up(lam, lambda_max) && desired_finite(foot.model, t) {
                 FailureKind::LambdaDenominatorZero { lambda: lam }
             } else {
                 FailureKind::NonFinite

@@ -1,0 +1,151 @@
+//! Walks at the edges of the parameter ranges end, quickly and with a failure that names what
+//! happened: a stiff `tanh` law (`c` up to `1e300`) under the explicit method, and a ramp
+//! `T_set` so short that the desired trajectory overflows.
+
+use walker::model::{Model, Physical, Runtime};
+use walker::ode::GaveUp;
+use walker::sim::{Failure, FailureKind, SimConfig, WalkLimits, walk, walk_with_stats};
+
+/// A few steps, at most one second of walking (as `walker simulate --duration 1`).
+fn limits() -> WalkLimits {
+    WalkLimits {
+        max_steps: 3,
+        duration: 1.0,
+        ..WalkLimits::default()
+    }
+}
+
+/// The active walker with `c = 1e12` and more, integrated with DOP853, used to run for hours
+/// (issue 21): the power kink `ydot u` chatters at the start of the stance phase, a segment
+/// ends every ~1e-11 s, and each segment had its own budget of 100 000 attempted steps. The
+/// budget now covers the whole stance phase, so the walk ends with "too many steps" after
+/// exactly 100 000 attempts: 12 evaluations each at most, plus hinit's and the settling steps
+/// of the ~3 000 segments' events, 1.2 to 1.33 million evaluations (measured; the bound is 2
+/// million). Before the fix, `c = 1e12` had spent 16 000 evaluations on the first 30 of its
+/// segments, each ~1e-11 s long.
+#[test]
+fn a_stiff_tanh_law_ends_with_too_many_steps_within_a_bounded_work() {
+    for c in [1e11, 1e12, 1e15, 1e20, 1e50, 1e300] {
+        let model = Model::active_level(Runtime {
+            c,
+            ..Runtime::default()
+        });
+        let start = model.initial_state(model.default_omega0());
+        let (w, stats) = walk_with_stats(&model, &SimConfig::default(), start, &limits());
+        assert!(w.steps.is_empty(), "c = {c:e}: {} steps", w.steps.len());
+        let too_many = FailureKind::Integrator {
+            reason: GaveUp::TooManySteps,
+        };
+        assert_eq!(
+            w.failure.as_ref().map(|f| &f.kind),
+            Some(&too_many),
+            "c = {c:e}: {:?}",
+            w.failure
+        );
+        let Some(failure) = w.failure else { continue };
+        assert_eq!(failure.step, 0);
+        assert!(
+            failure.t > 0.0 && failure.t < 1e-5,
+            "c = {c:e}: {failure:?}"
+        );
+        assert!(failure.state.iter().all(|v| v.is_finite()));
+        let attempts = stats.accepted_steps + stats.rejected_steps;
+        // The whole stance phase spent the integrator's budget (`Config::max_steps`), no more.
+        assert_eq!(attempts, 100_000, "c = {c:e}: {stats:?}");
+        assert!(stats.rhs_evals <= 2_000_000, "c = {c:e}: {stats:?}");
+    }
+}
+
+/// The same walks with the stiff method end at once (RODAS4 is made for them).
+#[test]
+fn a_stiff_tanh_law_under_rodas4_ends_within_a_bounded_work() {
+    let cfg = SimConfig {
+        method: walker::ode::Method::Rodas4,
+        ..SimConfig::default()
+    };
+    for c in [1e12, 1e300] {
+        let model = Model::active_level(Runtime {
+            c,
+            ..Runtime::default()
+        });
+        let start = model.initial_state(model.default_omega0());
+        let (w, stats) = walk_with_stats(&model, &cfg, start, &limits());
+        assert!(
+            w.failure.is_some() || !w.steps.is_empty(),
+            "c = {c:e}: neither steps nor a failure"
+        );
+        assert!(stats.rhs_evals <= 5_000_000, "c = {c:e}: {stats:?}");
+    }
+}
+
+/// `T_set = 1e-300` (and anything below about `1e-154`) overflows the scale `60 alpha / T_set^2`
+/// of the desired acceleration, so the kernels get a NaN input at `t = 0`: the failure is
+/// `non-finite`, at the start, with the initial state. It used to be `lambda-denominator-zero`
+/// with `lambda: null`, though the denominator of `lambda` is regular there. Both the smooth and
+/// the Coulomb model.
+#[test]
+fn an_overflowing_ramp_is_non_finite_not_a_pole() {
+    for t_set in [1e-300, 1e-200, 1e-160] {
+        let runtime = Runtime {
+            t_set,
+            ..Runtime::default()
+        };
+        for model in [
+            Model::active_level(runtime),
+            Model::coulomb_level(Physical::TABLE1, runtime),
+        ] {
+            assert!(!model.desired(0.0).iter().all(|v| v.is_finite()));
+            let start = model.initial_state(model.default_omega0());
+            let w = walk(&model, &SimConfig::default(), start, &limits());
+            assert_eq!(
+                w.failure,
+                Some(FailureKind::NonFinite.at(0, 0.0, start)),
+                "T_set = {t_set:e}"
+            );
+        }
+    }
+}
+
+/// Where the denominator `2 I1 + 2 m_t l^2 sin th1 (sin th1 - mu cos th1)` of Eq. 23 does
+/// vanish (the passive wheel on level ground, `mu = mu0 = 1`, the foot sliding backwards, `th1
+/// = 0.222781`), the failure is still `lambda-denominator-zero`, with modest velocities too.
+#[test]
+fn a_real_pole_is_still_a_pole() {
+    let passive = Model::passive_slope(Runtime {
+        phi: 0.0,
+        mu0: 1.0,
+        ..Runtime::default()
+    });
+    let th1 = bisect_pole(0.2, 0.25);
+    for omega in [0.0, 1.0, 1e300] {
+        let start = [0.0, 0.0, th1, 0.0, -1.0, 0.0, omega, omega];
+        let w = walk(&passive, &SimConfig::default(), start, &limits());
+        assert!(
+            matches!(
+                w.failure,
+                Some(Failure {
+                    step: 0,
+                    kind: FailureKind::LambdaDenominatorZero { .. },
+                    ..
+                })
+            ),
+            "omega = {omega:e}: {:?}",
+            w.failure
+        );
+    }
+}
+
+/// The root of `cos 2 th1 + sin 2 th1 - (1 + 2 I1 / (m_t l^2))` in `[a, b]` (Table 1: `I1 =
+/// 0.5`, `m_t l^2 = 3`; `mu = 1`), the pole of `lambda` on level ground (as in `sim_start.rs`).
+fn bisect_pole(mut a: f64, mut b: f64) -> f64 {
+    let f = |th: f64| (2.0 * th).cos() + (2.0 * th).sin() - (1.0 + 2.0 * 0.5 / 3.0);
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        if f(a) * f(m) <= 0.0 {
+            b = m;
+        } else {
+            a = m;
+        }
+    }
+    0.5 * (a + b)
+}
