@@ -69,27 +69,29 @@ fn an_overflowing_start_is_non_finite_and_a_pole_is_still_a_pole() {
     // The passive wheel on level ground (`u = 0`) with `mu = mu0 = 1` (the foot sliding
     // backwards): the denominator `2 I1 + 2 m_t l^2 sin th1 (sin th1 - mu cos th1)` of Eq. 23
     // vanishes at `th1 = 0.222781` (docs/stability.md), and the reaction there is huge at any
-    // angular velocity.
+    // angular velocity, modest or overflowing.
     let passive = Model::passive_slope(Runtime {
         phi: 0.0,
         mu0: 1.0,
         ..Runtime::default()
     });
     let th1 = bisect_pole(0.2, 0.25);
-    let start = [0.0, 0.0, th1, 0.0, -1.0, 0.0, 1e300, 1e300];
-    let w = walk(&passive, &SimConfig::default(), start, &limits);
-    assert!(
-        matches!(
-            w.failure,
-            Some(Failure {
-                step: 0,
-                kind: FailureKind::LambdaDenominatorZero { .. },
-                ..
-            })
-        ),
-        "{:?}",
-        w.failure
-    );
+    for omega in [0.0, 1.0, 1e300] {
+        let start = [0.0, 0.0, th1, 0.0, -1.0, 0.0, omega, omega];
+        let w = walk(&passive, &SimConfig::default(), start, &limits);
+        assert!(
+            matches!(
+                w.failure,
+                Some(Failure {
+                    step: 0,
+                    kind: FailureKind::LambdaDenominatorZero { .. },
+                    ..
+                })
+            ),
+            "omega = {omega:e}: {:?}",
+            w.failure
+        );
+    }
 }
 
 /// The root of `cos 2 th1 + sin 2 th1 - (1 + 2 I1 / (m_t l^2))` in `[a, b]` (Table 1: `I1 =
