@@ -42,16 +42,12 @@ pub fn flag(param: Param) -> &'static str {
 }
 
 impl From<SetupError> for InputError {
+    /// Named by the flag of the parameter the error is about, else `scene`.
     fn from(e: SetupError) -> Self {
-        match &e {
-            SetupError::OutOfRange { param, value } => {
-                InputError::out_of_range(flag(*param), *value, param.valid_range())
-            }
-            SetupError::SlopeForLevelWalker => InputError::new("phi", e.to_string()),
-            SetupError::UnknownScene(_) | SetupError::Scene(_) | SetupError::Unsupported { .. } => {
-                InputError::new("scene", e.to_string())
-            }
+        if let SetupError::OutOfRange { param, value } = e {
+            return InputError::out_of_range(flag(param), value, param.valid_range());
         }
+        InputError::new(e.param().map_or("scene", flag), e.to_string())
     }
 }
 
