@@ -110,8 +110,8 @@ pub fn value(physical: &Physical, runtime: &Runtime, param: Param) -> f64 {
 
 /// The value of the parameter called `name` in the vocabulary (`m1`, `I1`, `T_set`, ...), for
 /// a generated `Params::from_fn`. A name outside the vocabulary gives NaN, which the kernels
-/// propagate and the simulator reports as non-finite; the generator only emits known names
-/// (a test checks every generated `Params`).
+/// propagate and the simulator reports as non-finite; the generator only emits the names of
+/// `walker_scene::Param` (its fields come from the scene's parameter list).
 #[must_use]
 pub fn by_name(physical: &Physical, runtime: &Runtime, name: &str) -> f64 {
     Param::from_name(name).map_or(f64::NAN, |p| value(physical, runtime, p))
