@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 
 use clap::{Parser, Subcommand};
-use walker::model::FrictionLaw;
+use walker::model::{FrictionLaw, ImpactLaw};
 use walker::ode::Method;
 use walker::setup::Overrides;
 use walker::sim::SimConfig;
@@ -52,6 +52,24 @@ impl From<FrictionArg> for FrictionLaw {
     }
 }
 
+/// Impact law choice.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum ImpactArg {
+    /// The paper's impact: only the striking foot's normal velocity is constrained.
+    Frictionless,
+    /// Plastic impact with Coulomb friction mu0 at the striking foot (docs/impacts.md).
+    Coulomb,
+}
+
+impl From<ImpactArg> for ImpactLaw {
+    fn from(f: ImpactArg) -> Self {
+        match f {
+            ImpactArg::Frictionless => ImpactLaw::Frictionless,
+            ImpactArg::Coulomb => ImpactLaw::Coulomb,
+        }
+    }
+}
+
 /// Flags shared by the simulation commands.
 #[derive(clap::Args, Debug)]
 pub struct Common {
@@ -61,6 +79,9 @@ pub struct Common {
     /// Friction law (default: the scene's; tanh for the built-in scenes).
     #[arg(long, value_enum)]
     pub friction: Option<FrictionArg>,
+    /// Impact law at heel strike (default: the scene's; frictionless for the built-in scenes).
+    #[arg(long, value_enum)]
+    pub impact: Option<ImpactArg>,
     /// Friction law sharpness c (s/m), > 0.
     #[arg(long, allow_hyphen_values = true)]
     pub c: Option<f64>,
@@ -88,6 +109,7 @@ impl Common {
             t_set,
             phi,
             friction: self.friction.map(FrictionLaw::from),
+            impact: self.impact.map(ImpactLaw::from),
         }
     }
 

@@ -1,7 +1,7 @@
 //! The commands' work between parsing and printing: validate what the library does not (the
 //! flags' own ranges), build the model, and call the library.
 
-use walker::model::{FrictionLaw, Kind, Physical, Runtime};
+use walker::model::{Kind, Runtime};
 use walker::poincare::{FixedPoint, FixedPointError, FixedPointOptions, fixed_point};
 use walker::setup::{self, Overrides, Setup};
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
@@ -197,26 +197,12 @@ pub fn sweep(
 /// a result, not an input error.
 ///
 /// # Errors
-/// The scene has no Jacobian kernels, or `omega0` is out of range.
+/// `omega0` is out of range.
 pub fn fixed_point_search(
     setup: &Setup,
     omega0: Option<f64>,
     cfg: &SimConfig,
 ) -> Result<Result<FixedPoint, FixedPointError>, InputError> {
-    if setup.physical != Physical::TABLE1 {
-        return Err(InputError::new(
-            "scene",
-            "fixed-point needs the Table 1 parameters (its Jacobian kernels are generated for \
-             the active-level and passive-slope scenes only)",
-        ));
-    }
-    if setup.friction != FrictionLaw::Tanh {
-        return Err(InputError::new(
-            "friction",
-            "fixed-point needs the tanh friction law (its Jacobian kernels are generated for \
-             it only; a stick-slip cycle under Coulomb friction is not differentiable there)",
-        ));
-    }
     let model = setup.model();
     let mut opts = FixedPointOptions::for_model(&model);
     if let Some(w) = omega0 {

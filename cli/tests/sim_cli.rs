@@ -297,8 +297,25 @@ fn coulomb_friction_from_the_flag_or_a_scene_file() {
         "--friction",
         "coulomb",
     ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("friction"));
+    // No Jacobian kernels under exact Coulomb friction: the map's Jacobian is by central
+    // differences of simulated steps, and the cycle is the tanh law's within a few percent.
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("converged"), "{text}");
+    let o = walker(&[
+        "fixed-point",
+        "--scene",
+        "active-level",
+        "--friction",
+        "coulomb",
+        "--json",
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(v["jacobian_method"], "finite-differences", "{v}");
+    assert!(
+        v["T"].as_f64().is_some_and(|t| (t - 0.54).abs() < 0.02),
+        "{v}"
+    );
 }
 
 /// `--until-periodic`: the walks stop once their gaits are periodic (at `mu0 = 0.4` and 1 after

@@ -52,14 +52,24 @@ pub enum KernelName {
     /// `stick_slope`: `qddot` and `[lambda_t, lambda_n]` of the passive wheel with the foot
     /// stuck to the slope (not in the paper).
     StickSlope,
+    /// `impact_coulomb_level`: the level impact's ingredients for Coulomb friction at the
+    /// striking foot: the torso lock applied, the foot's velocity, the Delassus matrix and the
+    /// velocity response to the foot's impulse (not in the paper; `docs/impacts.md`).
+    ImpactCoulombLevel,
+    /// `impact_coulomb_slope`: the same on the slope, without a torso lock.
+    ImpactCoulombSlope,
     /// `fore_foot`: position and velocity of the fore foot (Eqs. 3, 39).
     ForeFoot,
     /// `energy`: kinetic and potential energy.
     Energy,
 }
 
+/// The equation reference of the impact kernels with friction: not in the paper.
+pub const IMPACT_COULOMB_EQUATION: &str =
+    "impact with Coulomb friction, not in the paper; Eqs. 6-10 with the foot's tangent added";
+
 /// `(kernel, name, paper equations)`, in catalogue (and default file) order.
-const TABLE: [(KernelName, &str, &str); 22] = [
+const TABLE: [(KernelName, &str, &str); 24] = [
     (KernelName::MassMatrix, "mass_matrix", "Eq. 2"),
     (KernelName::Bias, "bias", "Eq. 20"),
     (KernelName::LambdaLevel, "lambda_level", "Eqs. 22-23"),
@@ -124,13 +134,23 @@ const TABLE: [(KernelName, &str, &str); 22] = [
         "stick_slope",
         "stick phase, not in the paper; Eq. 19 with both foot coordinates held",
     ),
+    (
+        KernelName::ImpactCoulombLevel,
+        "impact_coulomb_level",
+        IMPACT_COULOMB_EQUATION,
+    ),
+    (
+        KernelName::ImpactCoulombSlope,
+        "impact_coulomb_slope",
+        IMPACT_COULOMB_EQUATION,
+    ),
     (KernelName::ForeFoot, "fore_foot", "Eqs. 3, 39"),
     (KernelName::Energy, "energy", "-"),
 ];
 
 impl KernelName {
     /// Every kernel, in catalogue order.
-    pub const ALL: [KernelName; 22] = [
+    pub const ALL: [KernelName; 24] = [
         KernelName::MassMatrix,
         KernelName::Bias,
         KernelName::LambdaLevel,
@@ -151,6 +171,8 @@ impl KernelName {
         KernelName::StickLevel,
         KernelName::ClosedLoopStickLevel,
         KernelName::StickSlope,
+        KernelName::ImpactCoulombLevel,
+        KernelName::ImpactCoulombSlope,
         KernelName::ForeFoot,
         KernelName::Energy,
     ];
@@ -199,14 +221,16 @@ impl KernelName {
             | KernelName::ClosedLoopLevelJacobian
             | KernelName::Impact2LevelJacobian
             | KernelName::StickLevel
-            | KernelName::ClosedLoopStickLevel => Some(Floor::Level),
+            | KernelName::ClosedLoopStickLevel
+            | KernelName::ImpactCoulombLevel => Some(Floor::Level),
             KernelName::LambdaSlope
             | KernelName::AccelSlope
             | KernelName::ImpactSlope
             | KernelName::Impact2Slope
             | KernelName::AccelSlopeJacobian
             | KernelName::ImpactSlopeJacobian
-            | KernelName::StickSlope => Some(Floor::Slope),
+            | KernelName::StickSlope
+            | KernelName::ImpactCoulombSlope => Some(Floor::Slope),
         }
     }
 

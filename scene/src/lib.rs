@@ -1,6 +1,6 @@
 //! `walker-scene`: the vocabulary that the slippery walker's build time and run time share.
 //!
-//! What a walker *is* — its structure (floor, friction law, torso), its parameters (name, unit,
+//! What a walker *is* — its structure (floor, friction law, torso, impact law), its parameters (name, unit,
 //! doc, valid range, the paper's value), the kernels of `docs/kernels.md` and the structures
 //! they belong to, and the scene files that fix some parameters for code generation — is
 //! written here once. The generator (`walker-gen`, at build time) reads it to specialise and
@@ -23,4 +23,4 @@ pub use catalog::KernelName;
 pub use error::SceneError;
 pub use param::Param;
 pub use scene::Scene;
-pub use structure::{Floor, Friction, Torso};
+pub use structure::{Floor, Friction, ImpactLaw, Torso};

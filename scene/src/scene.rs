@@ -7,6 +7,8 @@
 //! floor = "level"           # "level" | "slope"
 //! friction = "tanh"         # "none" | "tanh" (Eqs. 26, 37) | "coulomb" (Eq. 25, stick-slip)
 //! torso = "actuated"        # "actuated" (output-following control, Eqs. 30-32) | "passive" (u = 0)
+//! impact = "frictionless"   # optional: "frictionless" (the paper's, default) | "coulomb"
+//!                           # (plastic impact with Coulomb friction mu0, docs/impacts.md)
 //! kernels = ["accel_level", "lambda_level"]   # optional; default: every kernel of the structure
 //!
 //! [fixed]                   # parameters substituted at generation time
@@ -31,7 +33,11 @@
 //! Rejected as contradictions: a parameter given for a structure that does not have it (the
 //! last column), both `alpha` and `alpha_deg`, `floor = "slope"` with `torso = "actuated"` (the
 //! paper's slope walker is passive and the derivation only provides passive slope kernels), and
-//! a kernel the structure does not have (see [`KernelName::applies_to`]). Every error names the
+//! a kernel the structure does not have (see [`KernelName::applies_to`]), and
+//! `impact = "coulomb"` with `friction = "none"` (the impact's friction coefficient is `mu0`,
+//! which a frictionless floor does not have). The impact law is the simulator's default for
+//! the scene; it does not change the generated kernels (every structure has both impact
+//! maps). Every error names the
 //! field it is about ([`SceneError::field`]).
 
 use std::collections::BTreeMap;
@@ -42,7 +48,7 @@ use serde::Deserialize;
 use crate::catalog::KernelName;
 use crate::error::SceneError;
 use crate::param::{Param, Range};
-use crate::structure::{Floor, Friction, Torso};
+use crate::structure::{Floor, Friction, ImpactLaw, Torso};
 
 /// The file layout, as deserialised before validation.
 #[derive(Deserialize)]
@@ -52,6 +58,8 @@ struct RawScene {
     floor: Floor,
     friction: Friction,
     torso: Torso,
+    #[serde(default)]
+    impact: ImpactLaw,
     #[serde(default)]
     kernels: Option<Vec<String>>,
     #[serde(default)]
@@ -92,6 +100,8 @@ pub struct Scene {
     pub friction: Friction,
     /// Actuated or passive torso.
     pub torso: Torso,
+    /// The impact law the simulator uses for this scene by default.
+    pub impact: ImpactLaw,
     /// The kernels asked for; `None` for every kernel of the structure.
     pub kernels: Option<Vec<KernelName>>,
     /// Parameters substituted at generation time.
@@ -114,6 +124,7 @@ impl Scene {
             floor,
             friction,
             torso,
+            impact: ImpactLaw::Frictionless,
             kernels: None,
             fixed: BTreeMap::new(),
         };
@@ -230,6 +241,7 @@ impl Scene {
             floor: raw.floor,
             friction: raw.friction,
             torso: raw.torso,
+            impact: raw.impact,
             kernels,
             fixed,
         };
@@ -257,6 +269,14 @@ impl Scene {
                 field: "torso".to_owned(),
                 reason: "floor = \"slope\" needs torso = \"passive\": the paper's slope walker \
                          is passive and only passive slope kernels are derived"
+                    .to_owned(),
+            });
+        }
+        if self.impact == ImpactLaw::Coulomb && self.friction == Friction::None {
+            return Err(SceneError::Contradiction {
+                field: "impact".to_owned(),
+                reason: "impact = \"coulomb\" needs a friction coefficient mu0, which \
+                         friction = \"none\" does not have; use impact = \"frictionless\""
                     .to_owned(),
             });
         }
@@ -480,5 +500,25 @@ mod tests {
         let src = "name = \"x\"\n[fixed]\nm1 = \"heavy\"\n";
         let off = src.find("\"heavy\"").unwrap_or(0);
         assert_eq!(field_at(src, off).as_deref(), Some("fixed.m1"));
+    }
+
+    #[test]
+    fn impact_law_defaults_to_the_papers_and_coulomb_needs_friction() {
+        let head = "name = \"a\"\nfloor = \"level\"\ntorso = \"actuated\"\n";
+        let scene = |rest: &str| Scene::from_toml_str(&format!("{head}{rest}"), "test");
+        let default = scene("friction = \"tanh\"\n").map(|s| s.impact);
+        assert_eq!(default.ok(), Some(ImpactLaw::Frictionless));
+        let coulomb = scene("friction = \"tanh\"\nimpact = \"coulomb\"\n").map(|s| s.impact);
+        assert_eq!(coulomb.ok(), Some(ImpactLaw::Coulomb));
+        let none = scene("friction = \"none\"\nimpact = \"coulomb\"\n");
+        assert_eq!(
+            none.err().map(|e| e.field().to_owned()).as_deref(),
+            Some("impact")
+        );
+        let bad = scene("friction = \"tanh\"\nimpact = \"sticky\"\n");
+        assert_eq!(
+            bad.err().map(|e| e.field().to_owned()).as_deref(),
+            Some("impact")
+        );
     }
 }

@@ -1,6 +1,6 @@
-//! The walker's structure: the floor it stands on, the stance foot's friction law, and whether
-//! the torso is driven. Three independent choices; the derivation, the generator and the
-//! simulator all read them from here.
+//! The walker's structure: the floor it stands on, the stance foot's friction law, whether
+//! the torso is driven, and the law of the impact at heel strike. Independent choices; the
+//! derivation, the generator and the simulator all read them from here.
 
 use std::fmt;
 
@@ -43,6 +43,21 @@ pub enum Torso {
     Passive,
 }
 
+/// The law of the impact at heel strike (`docs/impacts.md`).
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ImpactLaw {
+    /// The paper's impact (Eqs. 6-16, 39-46): only the striking foot's normal velocity is
+    /// constrained, so the new stance foot may keep sliding whatever `mu0` is.
+    #[default]
+    Frictionless,
+    /// A plastic impact with Coulomb friction `mu0` at the striking foot (Stronge's
+    /// incremental model with a zero restitution coefficient): the foot sticks where the
+    /// required impulse lies in the friction cone `|Lambda_t| <= mu0 Lambda_n`, and slides
+    /// with `Lambda_t = -mu0 Lambda_n` times the sign of its slip otherwise.
+    Coulomb,
+}
+
 impl fmt::Display for Floor {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
@@ -67,6 +82,15 @@ impl fmt::Display for Torso {
         f.write_str(match self {
             Torso::Actuated => "actuated",
             Torso::Passive => "passive",
+        })
+    }
+}
+
+impl fmt::Display for ImpactLaw {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            ImpactLaw::Frictionless => "frictionless",
+            ImpactLaw::Coulomb => "coulomb",
         })
     }
 }

@@ -2,7 +2,7 @@
 //! files, parameter overrides, and their validation against the parameter table of
 //! `walker-scene` (each parameter's valid range is written there once).
 
-use walker_scene::{Floor, Friction, Param, Scene, SceneError, Torso};
+use walker_scene::{Floor, Friction, ImpactLaw, Param, Scene, SceneError, Torso};
 
 use crate::model::{FrictionLaw, Kind, Model};
 use crate::params::{Physical, Runtime};
@@ -64,6 +64,8 @@ pub struct Overrides {
     pub phi: Option<f64>,
     /// The friction law.
     pub friction: Option<FrictionLaw>,
+    /// The impact law.
+    pub impact: Option<ImpactLaw>,
 }
 
 /// A resolved scene: how to build the model for given runtime parameters.
@@ -75,6 +77,8 @@ pub struct Setup {
     pub fast: bool,
     /// The friction law.
     pub friction: FrictionLaw,
+    /// The impact law at heel strike.
+    pub impact: ImpactLaw,
     /// Physical parameters.
     pub physical: Physical,
     /// Runtime parameters (defaults, scene values, then overrides).
@@ -89,6 +93,7 @@ impl Setup {
             kind: Kind::ActiveLevel,
             fast: true,
             friction: FrictionLaw::Tanh,
+            impact: ImpactLaw::Frictionless,
             physical: Physical::TABLE1,
             runtime: Runtime::default(),
         }
@@ -101,6 +106,7 @@ impl Setup {
             kind: Kind::PassiveSlope,
             fast: true,
             friction: FrictionLaw::Tanh,
+            impact: ImpactLaw::Frictionless,
             physical: Physical::TABLE1,
             runtime: Runtime {
                 phi: 0.2,
@@ -125,6 +131,9 @@ impl Setup {
         };
         if let Some(f) = ov.friction {
             setup.friction = f;
+        }
+        if let Some(law) = ov.impact {
+            setup.impact = law;
         }
         let r = &mut setup.runtime;
         for (param, v) in [
@@ -177,6 +186,7 @@ impl Setup {
             kind,
             fast: false,
             friction,
+            impact: scene.impact,
             physical,
             runtime,
         })
@@ -193,7 +203,7 @@ impl Setup {
     /// Build the model with the runtime parameters `runtime`.
     #[must_use]
     pub fn model_with(&self, runtime: Runtime) -> Model {
-        match (self.kind, self.friction, self.fast) {
+        let model = match (self.kind, self.friction, self.fast) {
             (Kind::ActiveLevel, FrictionLaw::Coulomb, _) => {
                 Model::coulomb_level(self.physical, runtime)
             }
@@ -208,7 +218,8 @@ impl Setup {
             (Kind::PassiveSlope, FrictionLaw::Tanh, false) => {
                 Model::general_slope(self.physical, runtime)
             }
-        }
+        };
+        model.with_impact_law(self.impact)
     }
 
     /// Build the model with the resolved runtime parameters.

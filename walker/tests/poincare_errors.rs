@@ -1,12 +1,9 @@
 //! The Poincare map and the fixed-point search fail with typed errors that keep the time and
-//! the cause: a non-finite state, a heel strike that does not come in time, a model without
-//! Jacobian kernels, and a warm-up walk that falls.
+//! the cause: a non-finite state, a heel strike that does not come in time (also in the map by
+//! finite differences of a model without Jacobian kernels), and a warm-up walk that falls.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
-use std::error::Error;
-
-use walker::jacobian::NoJacobian;
-use walker::model::{Model, Runtime};
+use walker::model::{Model, Physical, Runtime};
 use walker::poincare::{FixedPointError, FixedPointOptions, MapError, embed, fixed_point};
 use walker::poincare::{poincare_map, reduce};
 use walker::sim::SimConfig;
@@ -47,13 +44,20 @@ fn no_heel_strike_within_the_step_time_reports_that_time() {
 }
 
 #[test]
-fn a_model_without_jacobian_kernels_keeps_the_cause_as_source() {
-    let mut model = active();
-    model.physical.l *= 1.1;
-    let err = poincare_map(&model, &SimConfig::default(), &near_cycle(&model)).unwrap_err();
-    assert_eq!(err, MapError::NoJacobian(NoJacobian::NotTable1));
-    let source = err.source().expect("the NoJacobian cause is kept");
-    assert_eq!(source.to_string(), NoJacobian::NotTable1.to_string());
+fn a_step_that_fails_in_the_finite_difference_map_is_named() {
+    // Exact Coulomb friction has no Jacobian kernels: the map walks one step of the simulator,
+    // and a failure of that step (here no heel strike within 0.01 s) keeps its name.
+    let model = Model::coulomb_level(Physical::TABLE1, active().runtime);
+    let cfg = SimConfig {
+        max_step_time: 0.01,
+        ..SimConfig::default()
+    };
+    let err = poincare_map(&model, &cfg, &near_cycle(&model)).unwrap_err();
+    let MapError::Walk(failure) = &err else {
+        panic!("expected a failed step, got {err:?}");
+    };
+    assert_eq!(failure.name(), "no-impact");
+    assert!(err.to_string().contains("no-impact"), "{err}");
 }
 
 #[test]
@@ -72,17 +76,20 @@ fn a_warm_up_walk_that_fails_reports_the_failure_by_value() {
 
 #[test]
 fn the_map_error_passes_through_the_fixed_point_search() {
-    let mut model = active();
-    model.physical.l *= 1.1;
+    let model = active();
+    let cfg = SimConfig {
+        max_step_time: 0.01,
+        ..SimConfig::default()
+    };
     let err = walker::poincare::newton(
         &model,
-        &SimConfig::default(),
+        &cfg,
         reduce(&near_cycle(&model)),
         &FixedPointOptions::for_model(&model),
     )
     .unwrap_err();
     assert_eq!(
         err,
-        FixedPointError::Map(MapError::NoJacobian(NoJacobian::NotTable1))
+        FixedPointError::Map(MapError::NoHeelStrike { t: 0.01 })
     );
 }

@@ -33,6 +33,10 @@ pub struct Derivation {
     pub stick_slope: mechanics::Stick,
     /// Control terms `A_s`, `B_s` of the stick phase on level ground.
     pub stick_control: mechanics::Control,
+    /// The level impact's ingredients for Coulomb friction at the fore foot (torso locked).
+    pub coulomb_level: mechanics::CoulombImpact,
+    /// The slope impact's ingredients for Coulomb friction at the fore foot.
+    pub coulomb_slope: mechanics::CoulombImpact,
     /// The kernels.
     pub kernels: Vec<Kernel>,
 }
@@ -61,6 +65,33 @@ const STICK_EQUATION: &str =
 const STICK_CONTROL_EQUATION: &str =
     "stick phase, not in the paper; Eqs. 30-31 with both foot coordinates held";
 
+/// The outputs of a Coulomb impact kernel: `qdl` (velocities after the torso lock), the
+/// contact velocities `v_t, v_n, v_r`, the upper triangle of the Delassus matrix over
+/// `(t, n, r)` and the response `R` (4x2).
+fn coulomb_outputs(c: &mechanics::CoulombImpact) -> Vec<(String, RatFunc)> {
+    let mut o = named("qdl", &c.locked_velocity);
+    let v = c.contact_velocity.entries();
+    o.extend(
+        ["v_t", "v_n", "v_r"]
+            .iter()
+            .zip(v)
+            .map(|(n, r)| ((*n).to_owned(), r.clone())),
+    );
+    let w = &c.delassus;
+    for (name, i, j) in [
+        ("W_tt", 0, 0),
+        ("W_tn", 0, 1),
+        ("W_tr", 0, 2),
+        ("W_nn", 1, 1),
+        ("W_nr", 1, 2),
+        ("W_rr", 2, 2),
+    ] {
+        o.push((name.to_owned(), w.get(i, j).clone()));
+    }
+    o.extend(named("R", &c.response));
+    o
+}
+
 fn substitute_u_zero(m: &Matrix) -> Result<Matrix> {
     m.try_map(|r| r.substitute(Atom::Sym(Sym::U), &RatFunc::zero()))
 }
@@ -82,6 +113,8 @@ impl Derivation {
         let stick_level = mechanics::stick(&dynamics, Floor::Level)?;
         let stick_slope = mechanics::stick(&dynamics, Floor::Slope)?;
         let stick_control = mechanics::stick_control(&dynamics, &stick_level)?;
+        let coulomb_level = mechanics::coulomb_impact(&dynamics, Floor::Level, true)?;
+        let coulomb_slope = mechanics::coulomb_impact(&dynamics, Floor::Slope, false)?;
         let g = &dynamics.geometry;
         let impact_args = vec![Th1, Xd, Zd, Th1d, Th2d];
         // On the slope the paper scales foot impulses to their vertical component (Eq. 42 has
@@ -243,7 +276,7 @@ impl Derivation {
                 name: "impact2_slope",
                 doc: "Impulses and post-impact velocities on the slope with the rear foot held (double-support test)",
                 equation: "Eq. 46",
-                args: impact_args,
+                args: impact_args.clone(),
                 outputs: impact_outputs(&impact2_slope, vertical(&impact2_slope)),
                 shape: Shape::Parts,
                 staged: None,
@@ -343,6 +376,24 @@ impl Derivation {
                 staged: None,
             },
             Kernel {
+                name: "impact_coulomb_level",
+                doc: "Ingredients of the level impact with Coulomb friction at the fore foot: velocities `qdl` after the torso lock, the contact velocities `[v_t, v_n, v_r]` there (fore foot along and normal to the floor, rear foot normal), the Delassus matrix `W` over `(t, n, r)` (upper triangle) and the response `R = M_L^-1 [J_t; J_n]^T`, so that `qdot+ = qdl + R [Lambda_t, Lambda_n]`",
+                equation: walker_scene::catalog::IMPACT_COULOMB_EQUATION,
+                args: impact_args.clone(),
+                outputs: coulomb_outputs(&coulomb_level),
+                shape: Shape::Parts,
+                staged: None,
+            },
+            Kernel {
+                name: "impact_coulomb_slope",
+                doc: "Ingredients of the slope impact with Coulomb friction at the fore foot (no torso lock: `qdl = qdot-`): the contact velocities `[v_t, v_n, v_r]` (along the slope, positive down it, and normal to it), the Delassus matrix `W` over `(t, n, r)` (upper triangle) and the response `R = M^-1 [J_t; J_n]^T`, so that `qdot+ = qdl + R [Lambda_t, Lambda_n]`",
+                equation: walker_scene::catalog::IMPACT_COULOMB_EQUATION,
+                args: impact_args.clone(),
+                outputs: coulomb_outputs(&coulomb_slope),
+                shape: Shape::Parts,
+                staged: None,
+            },
+            Kernel {
                 name: "fore_foot",
                 doc: "Position and velocity of the fore-leg end",
                 equation: "Eqs. 3, 39",
@@ -393,6 +444,8 @@ impl Derivation {
             stick_level,
             stick_slope,
             stick_control,
+            coulomb_level,
+            coulomb_slope,
             kernels,
         })
     }

@@ -1,8 +1,9 @@
 //! Impact maps (Eqs. 1, 6-10; Eqs. 39-42 on the slope) and the substitutions that bring them
-//! to the paper's closed forms: the impact posture and the paper's pre-impact state.
+//! to the paper's closed forms: the impact posture and the paper's pre-impact state; and the
+//! ingredients of the impact with Coulomb friction at the striking foot (not in the paper).
 
 use super::dynamics::Dynamics;
-use super::floor::floor_gap;
+use super::floor::{floor_gap, floor_tangent};
 use super::terms::{Q_SYMS, QD_SYMS, frac, int, sym, tan_phi};
 use crate::error::Result;
 use crate::matrix::Matrix;
@@ -101,4 +102,65 @@ pub fn paper_pre_impact(f: &RatFunc, floor: Floor) -> Result<RatFunc> {
     };
     let f = f.substitute(Atom::Sym(Sym::Zd), &zd)?;
     f.substitute(Atom::Sym(Sym::Th2d), &sym(Sym::Th1d))
+}
+
+/// The ingredients of an impact with Coulomb friction at the striking foot (not in the paper;
+/// `docs/impacts.md`). The torso lock (level ground, Eq. 5) is bilateral and frictionless, so
+/// it is applied first; the foot's impulse `Lambda = [Lambda_t, Lambda_n]` (along the unit
+/// tangent and normal of the floor at the fore foot) then acts on the locked walker, and what
+/// it must be is decided by the friction law at run time (Stronge's incremental model): the
+/// post-impact velocity is `qdot+ = qdot_L + R Lambda`. For the double-support test the rear
+/// foot's normal direction `r` is carried along.
+#[derive(Clone, Debug)]
+pub struct CoulombImpact {
+    /// `qdot_L`: the velocities after the torso lock alone (a column; `qdot-` on the slope).
+    pub locked_velocity: Matrix,
+    /// `[v_t, v_n, v_r]` at `qdot_L`: the fore foot's tangential and normal velocity and the
+    /// rear foot's normal velocity (a column).
+    pub contact_velocity: Matrix,
+    /// The Delassus matrix `W = J M_L^-1 J^T` over `(t, n, r)` (3x3, symmetric), `M_L^-1`
+    /// the inverse mass matrix restricted to the lock.
+    pub delassus: Matrix,
+    /// `R = M_L^-1 [J_t; J_n]^T` (4x2): the velocity change per unit foot impulse.
+    pub response: Matrix,
+}
+
+/// Derives [`CoulombImpact`] on `floor`, with the torso locked when `lock` (the active walker).
+pub fn coulomb_impact(dynamics: &Dynamics, floor: Floor, lock: bool) -> Result<CoulombImpact> {
+    let g = &dynamics.geometry;
+    let (xf, zf) = (&g.fore_foot[0], &g.fore_foot[1]);
+    let rows = [
+        floor_tangent(floor, xf, zf),
+        floor_gap(floor, xf, zf),
+        floor_gap(floor, &sym(Sym::X), &sym(Sym::Z)),
+    ];
+    let j = Matrix::jacobian(&rows, &Q_SYMS);
+    let qd = Matrix::column(QD_SYMS.iter().map(|s| sym(*s)).collect());
+    let (mass_inv, locked_velocity) = if lock {
+        let jl = Matrix::jacobian(&[&sym(Sym::Th1) - &sym(Sym::Th2)], &Q_SYMS);
+        let m_jl = dynamics.mass_inv.mul(&jl.transpose())?;
+        let x_l = jl.mul(&m_jl)?.inverse("X_L")?;
+        let correction = m_jl.mul(&x_l)?;
+        let mass_inv = dynamics
+            .mass_inv
+            .sub(&correction.mul(&jl.mul(&dynamics.mass_inv)?)?)?;
+        let locked = qd.sub(&correction.mul(&jl.mul(&qd)?)?)?;
+        (mass_inv, locked)
+    } else {
+        (dynamics.mass_inv.clone(), qd)
+    };
+    let contact_velocity = j.mul(&locked_velocity)?;
+    let m_jt = mass_inv.mul(&j.transpose())?;
+    let delassus = j.mul(&m_jt)?;
+    let response = Matrix::from_rows(
+        (0..4)
+            .map(|i| vec![m_jt.get(i, 0).clone(), m_jt.get(i, 1).clone()])
+            .collect(),
+    )?;
+    Ok(CoulombImpact {
+        locked_velocity,
+        contact_velocity,
+        delassus,
+        response,
+    })
 }

@@ -26,7 +26,10 @@ pub use walker_scene::Floor;
 
 pub use dynamics::{Dynamics, Geometry, dynamics, geometry};
 pub use floor::{floor_gap, floor_tangent};
-pub use impact::{Impact, ImpactConstraint, at_impact_posture, impact, paper_pre_impact};
+pub use impact::{
+    CoulombImpact, Impact, ImpactConstraint, at_impact_posture, coulomb_impact, impact,
+    paper_pre_impact,
+};
 pub use output::{check_desired_output, desired_output};
 pub use stance::{
     Contact, Control, Stance, Stick, control, stance, stance_contact, stick, stick_control,

@@ -1193,6 +1193,130 @@ pub fn impact2_level_jacobian_checked(
     Ok(out)
 }
 
+/// Ingredients of the level impact with Coulomb friction at the fore foot: velocities `qdl` after
+/// the torso lock, the contact velocities `[v_t, v_n, v_r]` there (fore foot along and normal to
+/// the floor, rear foot normal), the Delassus matrix `W` over `(t, n, r)` (upper triangle) and the
+/// response `R = M_L^-1 [J_t; J_n]^T`, so that `qdot+ = qdl + R [Lambda_t, Lambda_n]`.
+///
+/// Paper: impact with Coulomb friction, not in the paper; Eqs. 6-10 with the foot's tangent added.
+///
+/// Arguments: `th1`, `xd`, `zd`, `th1d`, `th2d`; parameters through `p` from [`prepare`].
+/// Returns `[qdl0, qdl1, qdl2, qdl3, v_t, v_n, v_r, W_tt, W_tn, W_tr, W_nn, W_nr, W_rr, R00, R01, R10, R11, R20, R21, R30, R31]`.
+///
+/// Operations per call: 26 add/sub, 46 mul, 2 neg, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`impact_coulomb_level_checked`]
+/// rejects non-finite arguments and outputs.
+#[inline]
+#[must_use]
+pub fn impact_coulomb_level(
+    _p: &Prepared,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> [F; 21] {
+    let (t0, t1) = sin_cos(th1);
+    let t2 = 0.5000000000000001_f64 * t0 + 0.8660254037844386_f64 * t1;
+    let t3 = 1.4999999999999998_f64 * t0;
+    let t4 = 2.5980762113533165_f64 * t1;
+    let t5 = 0.25000000000000006_f64 * th1d + 0.5000000000000001_f64 * th2d;
+    let t6 = 2.598076211353316_f64 * t0;
+    let t7 = 1.5000000000000004_f64 * t1;
+    let t8 = 1.5_f64 * xd;
+    let t9 = 1.5_f64 * zd;
+    let t10 = 1.0669872981077806_f64 * th1d;
+    let t11 = 0.8660254037844386_f64 * th2d;
+    let t12 = t0 * t2;
+    let t13 = 0.6666666666666666_f64 * (t0 * (th2d - th1d) + t9);
+    let t14 = 0.6666666666666666_f64 * (th2d + 0.5_f64 * th1d);
+    let t15 = -(0.6666666666666666_f64 * t12);
+    let t16 = 0.2222222222222222_f64 * (1.5_f64 + t0 * (t6 - t7));
+    let t17 = -(0.6666666666666666_f64 * t2);
+    let t18 = 0.6666666666666666_f64
+        * (0.8660254037844386_f64 * t0 - 0.5000000000000001_f64 * t1);
+    [
+        0.6666666666666666_f64 * (t1 * (th1d - th2d) + t8),
+        t13,
+        t14,
+        t14,
+        0.6666666666666666_f64 * (t8 + t1 * (t10 - t11) - t0 * t5),
+        0.6666666666666666_f64 * (t9 - t1 * t5 + t0 * (t11 - t10)),
+        t13,
+        0.2222222222222222_f64 * (3.75_f64 + t0 * (t4 - t3)),
+        0.6666666666666666_f64
+            * (0.4330127018922194_f64
+                - t0 * (0.8660254037844388_f64 * t0 + 0.4999999999999999_f64 * t1)),
+        t15,
+        0.2222222222222222_f64 * (2.25_f64 + t0 * (t3 - t4)),
+        t16,
+        0.2222222222222222_f64 * (1.5_f64 + 3.0_f64 * t0 * t0),
+        0.2222222222222222_f64 * (4.098076211353316_f64 + t0 * (t7 - t6)),
+        0.6666666666666666_f64 * (0.5000000000000001_f64 - t12),
+        t15,
+        t16,
+        t17,
+        t18,
+        t17,
+        t18,
+    ]
+}
+
+/// Checked variant of [`impact_coulomb_level`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 26
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th1`, `xd`, `zd`,
+/// `th1d`, `th2d`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the
+/// first output (in the order `qdl0`, `qdl1`, `qdl2`, `qdl3`, `v_t`, `v_n`, `v_r`, `W_tt`, `W_tn`,
+/// `W_tr`, `W_nn`, `W_nr`, `W_rr`, `R00`, `R01`, `R10`, `R11`, `R20`, `R21`, `R30`, `R31`) that is
+/// NaN or infinite, for example where a denominator vanishes or a parameter given to [`prepare`] is
+/// not finite.
+#[inline]
+pub fn impact_coulomb_level_checked(
+    p: &Prepared,
+    th1: F,
+    xd: F,
+    zd: F,
+    th1d: F,
+    th2d: F,
+) -> Result<[F; 21], KernelError> {
+    KernelError::argument("th1", th1)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th1d", th1d)?;
+    KernelError::argument("th2d", th2d)?;
+    let out = impact_coulomb_level(p, th1, xd, zd, th1d, th2d);
+    KernelError::output("qdl0", out[0])?;
+    KernelError::output("qdl1", out[1])?;
+    KernelError::output("qdl2", out[2])?;
+    KernelError::output("qdl3", out[3])?;
+    KernelError::output("v_t", out[4])?;
+    KernelError::output("v_n", out[5])?;
+    KernelError::output("v_r", out[6])?;
+    KernelError::output("W_tt", out[7])?;
+    KernelError::output("W_tn", out[8])?;
+    KernelError::output("W_tr", out[9])?;
+    KernelError::output("W_nn", out[10])?;
+    KernelError::output("W_nr", out[11])?;
+    KernelError::output("W_rr", out[12])?;
+    KernelError::output("R00", out[13])?;
+    KernelError::output("R01", out[14])?;
+    KernelError::output("R10", out[15])?;
+    KernelError::output("R11", out[16])?;
+    KernelError::output("R20", out[17])?;
+    KernelError::output("R21", out[18])?;
+    KernelError::output("R30", out[19])?;
+    KernelError::output("R31", out[20])?;
+    Ok(out)
+}
+
 /// Position and velocity of the fore-leg end.
 ///
 /// Paper: Eqs. 3, 39.

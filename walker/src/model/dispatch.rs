@@ -10,8 +10,10 @@ use crate::kernels::{
 use crate::params::{self, Physical, Runtime};
 
 use super::contact::{Contact, FrictionLaw, Reaction};
-use super::impact::{ImpactResult, level_impact, slope_impact};
+use super::friction_impact::{ImpactJam, Ingredients};
+use super::impact::{ImpactResult, coulomb_impact, level_impact, slope_impact};
 use super::kind::Kind;
+use walker_scene::ImpactLaw;
 
 #[allow(
     clippy::large_enum_variant,
@@ -35,6 +37,9 @@ pub struct Model {
     pub physical: Physical,
     /// Friction, control and slope parameters.
     pub runtime: Runtime,
+    /// The law of the impact at heel strike (the paper's frictionless one unless
+    /// [`Model::with_impact_law`] says otherwise).
+    pub impact_law: ImpactLaw,
     /// `y_d` of Section 3.2 for `physical.alpha` and `runtime.t_set`.
     ramp: control::Ramp,
 }
@@ -82,7 +87,17 @@ impl Model {
             kernels,
             physical,
             runtime: Runtime { phi, ..runtime },
+            impact_law: ImpactLaw::Frictionless,
             ramp: control::Ramp::new(physical.alpha, runtime.t_set),
+        }
+    }
+
+    /// The same model with the impact law `law` at heel strike.
+    #[must_use]
+    pub fn with_impact_law(self, law: ImpactLaw) -> Self {
+        Self {
+            impact_law: law,
+            ..self
         }
     }
 
@@ -281,12 +296,22 @@ impl Model {
         }
     }
 
-    /// The impact map at the pre-impact state `[x, z, th1, th2, xd, zd, th1d, th2d]`:
-    /// `impact2_level` with the test `impact3_level` (level), `impact_slope` with the test
-    /// `impact2_slope` (slope).
-    pub fn impact(&self, s: &[f64; 8]) -> ImpactResult {
+    /// The impact map at the pre-impact state `[x, z, th1, th2, xd, zd, th1d, th2d]` under the
+    /// model's [`ImpactLaw`]. Frictionless (the paper's): `impact2_level` with the test
+    /// `impact3_level` (level), `impact_slope` with the test `impact2_slope` (slope). With
+    /// Coulomb friction: `impact_coulomb_level` / `impact_coulomb_slope` and Stronge's plastic
+    /// impact ([`super::friction_impact`]).
+    ///
+    /// # Errors
+    /// [`ImpactJam`]: the impact with friction has no rigid-body solution (never for the
+    /// frictionless law).
+    pub fn impact(&self, s: &[f64; 8]) -> Result<ImpactResult, ImpactJam> {
+        if self.impact_law == ImpactLaw::Coulomb {
+            return coulomb_impact(self.impact_kernel(s), self.runtime.mu0);
+        }
         let (th1, xd, zd, th1d, th2d) = (s[2], s[4], s[5], s[6], s[7]);
-        match &self.kernels {
+        let cphi = self.runtime.phi.cos();
+        Ok(match &self.kernels {
             Kernels::ActiveLevel(p) => level_impact(
                 active_level::impact3_level(p, th1, xd, zd, th1d, th2d),
                 active_level::impact2_level(p, th1, xd, zd, th1d, th2d),
@@ -298,10 +323,12 @@ impl Model {
             Kernels::PassiveSlope(p) => slope_impact(
                 passive_slope::impact_slope(p, th1, xd, zd, th1d, th2d),
                 passive_slope::impact2_slope(p, th1, xd, zd, th1d, th2d),
+                cphi,
             ),
             Kernels::GeneralSlope(p) => slope_impact(
                 general_slope::impact_slope(p, th1, xd, zd, th1d, th2d),
                 general_slope::impact2_slope(p, th1, xd, zd, th1d, th2d),
+                cphi,
             ),
             Kernels::CoulombLevel(p) => level_impact(
                 general_level_coulomb::impact3_level(p, th1, xd, zd, th1d, th2d),
@@ -310,7 +337,38 @@ impl Model {
             Kernels::CoulombSlope(p) => slope_impact(
                 general_slope_coulomb::impact_slope(p, th1, xd, zd, th1d, th2d),
                 general_slope_coulomb::impact2_slope(p, th1, xd, zd, th1d, th2d),
+                cphi,
             ),
+        })
+    }
+
+    /// The rigid-body part of the impact with friction at the pre-impact state `s`
+    /// (`impact_coulomb_level` / `impact_coulomb_slope`), whatever the model's impact law.
+    pub fn impact_ingredients(&self, s: &[f64; 8]) -> Ingredients {
+        Ingredients::from_kernel(self.impact_kernel(s))
+    }
+
+    fn impact_kernel(&self, s: &[f64; 8]) -> [f64; 21] {
+        let (th1, xd, zd, th1d, th2d) = (s[2], s[4], s[5], s[6], s[7]);
+        match &self.kernels {
+            Kernels::ActiveLevel(p) => {
+                active_level::impact_coulomb_level(p, th1, xd, zd, th1d, th2d)
+            }
+            Kernels::GeneralLevel(p) => {
+                general_level::impact_coulomb_level(p, th1, xd, zd, th1d, th2d)
+            }
+            Kernels::PassiveSlope(p) => {
+                passive_slope::impact_coulomb_slope(p, th1, xd, zd, th1d, th2d)
+            }
+            Kernels::GeneralSlope(p) => {
+                general_slope::impact_coulomb_slope(p, th1, xd, zd, th1d, th2d)
+            }
+            Kernels::CoulombLevel(p) => {
+                general_level_coulomb::impact_coulomb_level(p, th1, xd, zd, th1d, th2d)
+            }
+            Kernels::CoulombSlope(p) => {
+                general_slope_coulomb::impact_coulomb_slope(p, th1, xd, zd, th1d, th2d)
+            }
         }
     }
 

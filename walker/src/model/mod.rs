@@ -13,10 +13,12 @@
 //! Every physical quantity comes from a kernel; this module only dispatches.
 //!
 //! Files: [`Model`] and its dispatch (`dispatch.rs`), the contact vocabulary (`contact.rs`), the
-//! impact map's result (`impact.rs`), the change of stance leg after an impact (`reset.rs`).
+//! impact map's result (`impact.rs`), the plastic impact with Coulomb friction at the striking
+//! foot (`friction_impact.rs`), the change of stance leg after an impact (`reset.rs`).
 
 mod contact;
 mod dispatch;
+mod friction_impact;
 mod impact;
 mod kind;
 mod reset;
@@ -24,6 +26,10 @@ mod reset;
 pub use crate::params::{Physical, Runtime};
 pub use contact::{Contact, FrictionLaw, Reaction, Slide};
 pub use dispatch::Model;
+pub use friction_impact::{
+    ImpactJam, ImpactRegime, Ingredients, in_regime, plastic_coulomb, rear_test,
+};
 pub use impact::ImpactResult;
 pub use kind::Kind;
 pub use reset::PostImpact;
+pub use walker_scene::ImpactLaw;

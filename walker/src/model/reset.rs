@@ -4,6 +4,8 @@
 use serde::Serialize;
 
 use super::dispatch::Model;
+use super::friction_impact::ImpactRegime;
+use super::impact::ImpactResult;
 use super::kind::Kind;
 
 /// The state right after an impact in the new stance leg's coordinates.
@@ -23,14 +25,19 @@ pub struct PostImpact {
 
 impl Model {
     /// The relabelling after an impact at the pre-impact state
-    /// `pre = [x, z, th1, th2, xd, zd, th1d, th2d]` whose impact map gave the velocities
-    /// `qd = [xd, zd, th1d, th2d]` (of the old coordinates, [`super::ImpactResult::qd`]): the
-    /// fore foot (kernel `fore_foot` at the pre-impact position and the post-impact velocity)
-    /// becomes the stance foot.
-    pub fn reset(&self, pre: &[f64; 8], qd: [f64; 4]) -> PostImpact {
+    /// `pre = [x, z, th1, th2, xd, zd, th1d, th2d]` whose impact map gave `imp` (its velocities
+    /// `qd = [xd, zd, th1d, th2d]` are of the old coordinates): the fore foot (kernel
+    /// `fore_foot` at the pre-impact position and the post-impact velocity) becomes the stance
+    /// foot. After a sticking impact ([`ImpactRegime::Stick`]) the new foot is at rest, so its
+    /// velocity is set to exactly zero (the kernels give it to rounding, and exact Coulomb
+    /// friction tells a stuck foot from a sliding one by `xd = 0`).
+    pub fn reset(&self, pre: &[f64; 8], imp: &ImpactResult) -> PostImpact {
         let [x, z, th1, th2, ..] = *pre;
-        let [xd, zd, th1d, th2d] = qd;
-        let [xf, zf, xdf, zdf] = self.fore_foot(x, z, th1, xd, zd, th1d);
+        let [xd, zd, th1d, th2d] = imp.qd;
+        let [xf, zf, mut xdf, mut zdf] = self.fore_foot(x, z, th1, xd, zd, th1d);
+        if imp.regime == ImpactRegime::Stick {
+            (xdf, zdf) = (0.0, 0.0);
+        }
         let (z_plus, foot_normal_velocity) = match self.kind() {
             Kind::ActiveLevel => (0.0, zdf),
             Kind::PassiveSlope => (zf, zdf + xdf * self.runtime.phi.tan()),

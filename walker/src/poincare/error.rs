@@ -1,7 +1,6 @@
 //! Why the Poincare map or the fixed-point search failed: typed errors that keep the time since
 //! the impact where it happened and their source.
 
-use crate::jacobian::NoJacobian;
 use crate::ode::GaveUp;
 use crate::sim::Failure;
 
@@ -44,9 +43,10 @@ pub enum MapError {
         /// Time of the heel strike.
         t: f64,
     },
-    /// The model has no generated Jacobian kernels (physical parameters other than Table 1's).
-    #[error("Poincare map failed at t = 0: {0}")]
-    NoJacobian(#[from] NoJacobian),
+    /// A step of the simulator failed (the map by finite differences, which walks one step
+    /// with every validity test of the walk).
+    #[error("Poincare map failed at t = {}: {}", .0.t, .0.name())]
+    Walk(Box<Failure>),
 }
 
 /// Why no fixed point could be searched for.

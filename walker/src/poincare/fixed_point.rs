@@ -8,9 +8,10 @@ use crate::model::Model;
 use crate::sim::{Failure, SimConfig, WalkLimits, walk};
 
 use super::error::FixedPointError;
-use super::map::{MapResult, poincare_map};
+use super::map::{JacobianMethod, MapResult, poincare_map};
 use super::multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
 use super::section::{embed, reduce, reduced_jacobian};
+use crate::model::ImpactRegime;
 
 /// Outcome of the fixed-point search.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -49,6 +50,13 @@ pub struct FixedPoint {
     pub full_multipliers: Vec<Multiplier>,
     /// The reduced Jacobian `D P_r` at the fixed point.
     pub reduced_jacobian: [[f64; 2]; 2],
+    /// How the map's Jacobian was computed.
+    pub jacobian_method: JacobianMethod,
+    /// How the striking foot ends the cycle's impact (left out of the JSON for the paper's
+    /// frictionless impact). With friction the map is only piecewise smooth; the multipliers
+    /// are those of this regime (`docs/impacts.md`).
+    #[serde(skip_serializing_if = "ImpactRegime::is_frictionless")]
+    pub impact: ImpactRegime,
     /// A multiplier of the reduced map lies within [`UNIT_MULTIPLIER_TOL`] of 1: a family of
     /// cycles (conserved horizontal momentum for `mu0 = 0`), not a loss of stability.
     pub structural_unit_multiplier: bool,
@@ -213,6 +221,8 @@ pub fn newton(
         multipliers,
         full_multipliers,
         reduced_jacobian: jr,
+        jacobian_method: m.method,
+        impact: m.impact,
         structural_unit_multiplier: structural,
         residual: res,
         iterations,

@@ -3,15 +3,18 @@
 //! strike, and the Jacobians of the impact and of the reset.
 
 use nalgebra::SMatrix;
+use serde::Serialize;
 
 use crate::jacobian::Jac;
-use crate::model::{Contact, Model};
+use crate::model::{Contact, ImpactRegime, Model};
 use crate::ode::{
     Direction, Event, GaveUp, Integrator, NoObserver, OdeSystem, Outcome, Tolerances,
 };
 use crate::sim::SimConfig;
 
 use super::error::MapError;
+use super::finite_difference::finite_difference_map;
+use super::impact_jacobian::coulomb_impact_jacobian;
 
 /// Size of the integrated state: 8 mechanical components and the 8x8 sensitivity matrix.
 const NA: usize = 8 + 64;
@@ -66,17 +69,36 @@ pub struct MapResult {
     pub dx: f64,
     /// `d state_plus_i / d state_j` (row `i`, column `j`).
     pub jacobian: [[f64; 8]; 8],
+    /// How the Jacobian was computed.
+    pub method: JacobianMethod,
+    /// How the striking foot ended the impact.
+    pub impact: ImpactRegime,
+}
+
+/// How the Poincare map's Jacobian is computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum JacobianMethod {
+    /// Variational equations with the generated Jacobian kernels (the module documentation).
+    Variational,
+    /// Central differences of one simulated step ([`super::finite_difference`]).
+    FiniteDifferences,
 }
 
 /// One step of the hybrid walker from the post-impact state `s` (time 0), with its Jacobian
 /// (see the module documentation). Failures of the stance phase (no heel strike within
 /// [`SimConfig::max_step_time`], integrator failures, non-finite values) are errors; the
 /// physical validity tests of [`crate::sim`] (lift-off, double support) are not applied here.
-/// Models whose physical parameters are not Table 1 are refused (no Jacobian kernels).
+/// Models without generated Jacobian kernels (exact Coulomb friction in stance, physical
+/// parameters other than Table 1's) take one step of the simulator instead and their Jacobian by
+/// central differences ([`super::finite_difference`]).
 pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapResult, MapError> {
     if !s.iter().all(|v| v.is_finite()) {
         return Err(MapError::NonFiniteStart);
     }
+    let Ok(jac) = Jac::new(model) else {
+        return finite_difference_map(model, cfg, s);
+    };
     let mut y = [0.0; NA];
     y[..8].copy_from_slice(s);
     for i in 0..8 {
@@ -87,10 +109,7 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
         Direction::Rising,
         move |_, y: &[f64; NA]| y[2] - heel,
     )];
-    let mut sys = Variational {
-        model,
-        jac: Jac::new(model)?,
-    };
+    let mut sys = Variational { model, jac };
     let mut integ = Integrator::<NA>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut t = 0.0;
     let (te, ye) = loop {
@@ -138,8 +157,14 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
         }
     }
     // Impact: positions unchanged, velocities from the impact kernel.
-    let imp = model.impact(&pre);
-    let k = sys.jac.impact(&pre);
+    let imp = model
+        .impact(&pre)
+        .map_err(|_| MapError::NonFiniteImpact { t: te })?;
+    let k = match imp.regime {
+        ImpactRegime::Frictionless => sys.jac.impact(&pre),
+        regime => coulomb_impact_jacobian(model, &pre, regime)
+            .ok_or(MapError::NonFiniteImpact { t: te })?,
+    };
     let mut dimp = M8::zeros();
     for i in 0..4 {
         dimp[(i, i)] = 1.0;
@@ -152,7 +177,7 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
     }
     // Reset to the new stance leg (the simulator's own, `Model::reset`), then measured from the
     // new foot: `x` and `z` are cyclic and reduced to zero.
-    let post = model.reset(&pre, imp.qd);
+    let post = model.reset(&pre, &imp);
     let (th1, th1d) = (pre[2], imp.qd[2]);
     let (l, alpha) = (model.physical.l, model.physical.alpha);
     let cs = th1.cos() - (th1 - alpha).cos();
@@ -190,5 +215,7 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
         period: te,
         dx,
         jacobian,
+        method: JacobianMethod::Variational,
+        impact: imp.regime,
     })
 }

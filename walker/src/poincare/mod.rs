@@ -51,7 +51,9 @@
 
 mod continuation;
 mod error;
+mod finite_difference;
 mod fixed_point;
+mod impact_jacobian;
 mod map;
 mod multipliers;
 mod section;
@@ -59,6 +61,6 @@ mod section;
 pub use continuation::{ContinuationPoint, continuation};
 pub use error::{FixedPointError, MapError};
 pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
-pub use map::{MapResult, poincare_map};
+pub use map::{JacobianMethod, MapResult, poincare_map};
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
 pub use section::{embed, embed_tangent, reduce, reduced_jacobian};

@@ -63,6 +63,14 @@ pub enum FailureKind {
         /// The rear-foot impulse (`impact3_level`'s or `impact2_slope`'s `lambda_I[1]`).
         rear_impulse: f64,
     },
+    /// The impact with Coulomb friction at the striking foot has no rigid-body solution: while
+    /// the foot slips, more normal impulse makes it approach the floor faster (Painleve's
+    /// paradox at an impact, `docs/impacts.md`); `t` is the time of the heel strike and the
+    /// state the pre-impact state.
+    ImpactJam {
+        /// The slip direction in which the impact jams.
+        slip: crate::model::Slide,
+    },
     /// `lambda` blew up (the denominator of Eq. 23 vanished: a Painleve-type singularity).
     LambdaDenominatorZero {
         /// `lambda` there (huge or not finite; non-finite values are reported as `null`).
@@ -98,6 +106,7 @@ impl FailureKind {
             FailureKind::ContactInconsistent { .. } => "contact-inconsistent",
             FailureKind::ImpactBeforeTSet { .. } => "impact-before-t-set",
             FailureKind::DoubleSupport { .. } => "double-support",
+            FailureKind::ImpactJam { .. } => "impact-jam",
             FailureKind::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
             FailureKind::FellBackward { .. } => "fell-backward",
             FailureKind::ImpactAtStart => "impact-at-start",

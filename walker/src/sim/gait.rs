@@ -4,6 +4,7 @@
 use serde::Serialize;
 
 use super::failure::Failure;
+use crate::model::ImpactRegime;
 
 /// Gait descriptors of one step (Section 4.2) and the state right after the impact that ends it.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -29,6 +30,10 @@ pub struct StepResult {
     pub foot_normal_velocity: f64,
     /// The rear-foot impulse of the double-support test (negative: the rear leg leaves).
     pub rear_impulse: f64,
+    /// How the striking foot ended the impact (left out of the JSON for the paper's
+    /// frictionless impact, whose only regime it is).
+    #[serde(skip_serializing_if = "ImpactRegime::is_frictionless")]
+    pub impact: ImpactRegime,
     /// Smallest `lambda` seen at the start of the stance phase, at `T_set` and at the heel strike.
     pub lambda_min: f64,
     /// Time the stance foot spent stuck during the step (Coulomb friction; 0 otherwise) (s).

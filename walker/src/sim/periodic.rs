@@ -52,6 +52,7 @@ mod tests {
                 qd_plus: [0.0; 4],
                 foot_normal_velocity: 0.0,
                 rear_impulse: 0.0,
+                impact: crate::model::ImpactRegime::Frictionless,
                 lambda_min: 0.0,
                 stuck_time: 0.0,
             })

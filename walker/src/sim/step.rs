@@ -323,12 +323,14 @@ fn impact(
         let t_set = model.runtime.t_set;
         return Err(FailureKind::ImpactBeforeTSet { t_set }.at(step, te, pre));
     }
-    let imp = model.impact(&pre);
+    let imp = model
+        .impact(&pre)
+        .map_err(|jam| FailureKind::ImpactJam { slip: jam.slip }.at(step, te, pre))?;
     if imp.rear_impulse >= 0.0 {
         let rear_impulse = imp.rear_impulse;
         return Err(FailureKind::DoubleSupport { rear_impulse }.at(step, te, pre));
     }
-    let post = model.reset(&pre, imp.qd);
+    let post = model.reset(&pre, &imp);
     let dx = (post.q_plus[0] - s0[0]) / model.runtime.phi.cos();
     let speed = dx / te;
     let (p, sr) = if model.is_active() {
@@ -360,6 +362,7 @@ fn impact(
         qd_plus: post.qd_plus,
         foot_normal_velocity: post.foot_normal_velocity,
         rear_impulse: imp.rear_impulse,
+        impact: imp.regime,
         lambda_min: strike.lambda_min,
         stuck_time: strike.stuck_time,
     })

@@ -1,0 +1,234 @@
+//! The plastic impact with Coulomb friction at the striking foot (`docs/impacts.md`).
+//!
+//! The generated kernels `impact_coulomb_level` / `impact_coulomb_slope` give the rigid-body
+//! part ([`Ingredients`]): the velocities `qdl` after the torso lock, the contact velocities
+//! `v = [v_t, v_n, v_r]` (the fore foot along and normal to the floor, the rear foot normal to
+//! it), the Delassus matrix `W` over `(t, n, r)` and the response `R`, so that an impulse
+//! `Lambda = [Lambda_t, Lambda_n]` at the fore foot gives `qdot+ = qdl + R Lambda` and changes
+//! the contact velocities by `W Lambda`. What `Lambda` is follows from the friction law, here:
+//!
+//! Stronge's incremental model (W. J. Stronge, *Impact Mechanics*, Cambridge University Press,
+//! 2000, Ch. 5; after Routh's graphical method) with a restitution coefficient of zero: the
+//! normal impulse `p` grows from zero until the normal velocity `v_n(p)` vanishes (the end of
+//! compression ends a plastic impact); while the foot slips in the direction `s`, the
+//! tangential impulse grows as `-s mu0 dp`; where the slip stops, the foot sticks if the ratio
+//! that holds it, `|W_tn / W_tt|`, is at most `mu0`, and slips back otherwise. Every velocity
+//! is linear in `p`, so the impact is three linear phases at most, in closed form:
+//!
+//! - [`ImpactRegime::Stick`]: the foot ends at rest (`v_t+ = v_n+ = 0`); `Lambda = -W^-1 v`
+//!   lies in the friction cone `|Lambda_t| <= mu0 Lambda_n`. A slip that stops within the
+//!   impact and then sticks ends here too, with the same impulse.
+//! - [`ImpactRegime::Slide`]: the foot slips one way throughout; `Lambda_t = -s mu0 Lambda_n`,
+//!   `Lambda_n = -v_n / (W_nn - s mu0 W_tn)`.
+//! - [`ImpactRegime::Reverse`]: the slip stops within the impact and resumes the other way
+//!   (`|W_tn| > mu0 W_tt`).
+//!
+//! Stick and slide are the algebraic rule of the impacts issue (Brach's), which this model
+//! equals wherever the slip does not reverse; with a reversal the algebraic rule's impulse
+//! would lie on the cone's edge against the final slip, while here it follows the slip through
+//! zero. If `W_nn - s mu0 W_tn <= 0` while the foot slips, more normal impulse makes the foot
+//! approach faster: the rigid-body impact has no solution ([`ImpactJam`], Painleve's paradox at
+//! an impact). The energy lost is never negative (Stronge, Sec. 5.2, for `e = 0`); the tests
+//! check it.
+//!
+//! The double-support test of the paper (Eqs. 11, 46: keep the rear foot on the floor and read
+//! the sign of its impulse) is applied with the fore foot's contact in the impact's final mode:
+//! `lambda_r = -v_r+ / S`, `v_r+` the rear foot's normal velocity after the impact and `S` the
+//! rear foot's Schur complement given that mode, exactly what solving the impact with the rear
+//! constraint added gives for the stick and slide regimes (block elimination), and its final
+//! phase for a reversal.
+//!
+//! Written here by hand: no crate implements impacts with friction for a given Delassus matrix
+//! (rigid-body engines solve them inside their own contact pipelines).
+
+use serde::Serialize;
+
+use super::contact::Slide;
+
+/// The rigid-body part of the impact with friction, from `impact_coulomb_level` /
+/// `impact_coulomb_slope` (see the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ingredients {
+    /// `qdl`: velocities `[xd, zd, th1d, th2d]` after the torso lock (`qdot-` on the slope).
+    pub qdl: [f64; 4],
+    /// `[v_t, v_n, v_r]` at `qdl`.
+    pub v: [f64; 3],
+    /// The Delassus matrix over `(t, n, r)` (symmetric).
+    pub w: [[f64; 3]; 3],
+    /// `R` (4x2): `qdot+ = qdl + R [Lambda_t, Lambda_n]`.
+    pub r: [[f64; 2]; 4],
+}
+
+impl Ingredients {
+    /// From the kernel's 21 outputs (`qdl0..3, v_t, v_n, v_r, W_tt, W_tn, W_tr, W_nn, W_nr,
+    /// W_rr, R00, R01, .., R31`).
+    pub fn from_kernel(o: [f64; 21]) -> Ingredients {
+        let [tt, tn, tr, nn, nr, rr] = [o[7], o[8], o[9], o[10], o[11], o[12]];
+        Ingredients {
+            qdl: [o[0], o[1], o[2], o[3]],
+            v: [o[4], o[5], o[6]],
+            w: [[tt, tn, tr], [tn, nn, nr], [tr, nr, rr]],
+            r: [
+                [o[13], o[14]],
+                [o[15], o[16]],
+                [o[17], o[18]],
+                [o[19], o[20]],
+            ],
+        }
+    }
+
+    /// `qdl + R lambda`.
+    pub fn velocity(&self, lambda: [f64; 2]) -> [f64; 4] {
+        let mut qd = self.qdl;
+        for (q, r) in qd.iter_mut().zip(self.r) {
+            *q += r[0] * lambda[0] + r[1] * lambda[1];
+        }
+        qd
+    }
+}
+
+/// How the striking foot ends an impact (see the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "regime", content = "slip")]
+pub enum ImpactRegime {
+    /// The paper's frictionless impact: only the normal velocity is constrained.
+    Frictionless,
+    /// The foot ends at rest; the impulse lies in the friction cone.
+    Stick,
+    /// The foot slips in the given direction throughout the impact.
+    Slide(Slide),
+    /// The foot slips in the given direction, stops, and slips back until the impact ends.
+    Reverse(Slide),
+}
+
+impl ImpactRegime {
+    /// Whether this is the paper's frictionless impact.
+    pub fn is_frictionless(&self) -> bool {
+        *self == ImpactRegime::Frictionless
+    }
+}
+
+/// The impact with friction has no rigid-body solution: while the foot slips in `slip`, more
+/// normal impulse makes it approach the floor faster (`W_nn - s mu0 W_tn <= 0`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, thiserror::Error)]
+#[error("the impact with friction jams: slipping {slip:?}, the normal velocity cannot reach zero")]
+pub struct ImpactJam {
+    /// The slip direction in which it jams.
+    pub slip: Slide,
+}
+
+/// The fore foot's impulse `[Lambda_t, Lambda_n]` and the regime of the plastic impact with
+/// Coulomb friction `mu0` (Stronge's model, see the module documentation). A foot that does not
+/// approach the floor (`v_n >= 0`) gets the impulse of the stick regime, as the frictionless
+/// map applies its formula whatever the sign: the heel-strike guard guarantees `v_n < 0` for a
+/// foot on the floor, and this keeps the map continuous.
+///
+/// # Errors
+/// [`ImpactJam`] when the impact has no rigid-body solution.
+pub fn plastic_coulomb(ing: &Ingredients, mu0: f64) -> Result<([f64; 2], ImpactRegime), ImpactJam> {
+    let [v_t, v_n, _] = ing.v;
+    let w = &ing.w;
+    if v_n >= 0.0 {
+        return Ok((stick(ing), ImpactRegime::Stick));
+    }
+    if v_t != 0.0 {
+        let s = Slide::of(v_t);
+        let sm = s.sigma() * mu0;
+        let dvn = w[1][1] - sm * w[0][1];
+        if dvn <= 0.0 {
+            return Err(ImpactJam { slip: s });
+        }
+        let dvt = w[0][1] - sm * w[0][0];
+        let p_end = -v_n / dvn;
+        // The slip stops where v_t + dvt p = 0, if that is before the end of compression.
+        let stops = dvt * s.sigma() < 0.0 && -v_t / dvt < p_end;
+        if !stops {
+            return Ok(([-sm * p_end, p_end], ImpactRegime::Slide(s)));
+        }
+    }
+    // At rest along the floor (from the start or after the slip stopped).
+    if w[0][1].abs() <= mu0 * w[0][0] {
+        return Ok((stick(ing), ImpactRegime::Stick));
+    }
+    let back = Slide::of(w[0][1]);
+    let regime = if v_t == 0.0 {
+        ImpactRegime::Slide(back)
+    } else {
+        ImpactRegime::Reverse(Slide::of(v_t))
+    };
+    in_regime(ing, mu0, regime)
+        .filter(|l| l.iter().all(|x| x.is_finite()))
+        .map(|l| (l, regime))
+        .ok_or(ImpactJam { slip: back })
+}
+
+/// `Lambda = -W^-1 v` over `(t, n)`: the foot brought to rest.
+fn stick(ing: &Ingredients) -> [f64; 2] {
+    let w = &ing.w;
+    let det = w[0][0] * w[1][1] - w[0][1] * w[0][1];
+    let [v_t, v_n, _] = ing.v;
+    [
+        -(w[1][1] * v_t - w[0][1] * v_n) / det,
+        -(w[0][0] * v_n - w[0][1] * v_t) / det,
+    ]
+}
+
+/// The impulse of `regime` continued to the ingredients `ing` (the same phases, whatever the
+/// signs they would need): smooth in `ing` (linear in `v`), which makes the impact map's
+/// derivative within a regime; `None` for [`ImpactRegime::Frictionless`] or where a phase's
+/// denominator vanishes.
+pub fn in_regime(ing: &Ingredients, mu0: f64, regime: ImpactRegime) -> Option<[f64; 2]> {
+    let w = &ing.w;
+    let [v_t, v_n, _] = ing.v;
+    let slide = |v_n: f64, sm: f64| {
+        let d = w[1][1] - sm * w[0][1];
+        (d > 0.0).then(|| -v_n / d)
+    };
+    match regime {
+        ImpactRegime::Frictionless => None,
+        ImpactRegime::Stick => Some(stick(ing)),
+        ImpactRegime::Slide(s) => {
+            let sm = s.sigma() * mu0;
+            slide(v_n, sm).map(|p| [-sm * p, p])
+        }
+        ImpactRegime::Reverse(s) => {
+            let sm = s.sigma() * mu0;
+            let dvt = w[0][1] - sm * w[0][0];
+            if dvt == 0.0 {
+                return None;
+            }
+            let p1 = -v_t / dvt;
+            let v_n1 = v_n + (w[1][1] - sm * w[0][1]) * p1;
+            let p2 = slide(v_n1, -sm)?;
+            Some([-sm * p1 + sm * p2, p1 + p2])
+        }
+    }
+}
+
+/// The rear foot's impulse of the double-support test (see the module documentation): the
+/// impulse that keeps the rear foot on the floor with the fore foot's contact in the final mode
+/// of `regime` and the impulse `lambda` applied; non-negative means double support.
+pub fn rear_test(ing: &Ingredients, mu0: f64, lambda: [f64; 2], regime: ImpactRegime) -> f64 {
+    let w = &ing.w;
+    let v_r = ing.v[2] + w[2][0] * lambda[0] + w[2][1] * lambda[1];
+    let schur = match regime {
+        ImpactRegime::Stick => {
+            let det = w[0][0] * w[1][1] - w[0][1] * w[0][1];
+            let (a, b) = (w[2][0], w[2][1]);
+            w[2][2] - (w[1][1] * a * a - 2.0 * w[0][1] * a * b + w[0][0] * b * b) / det
+        }
+        ImpactRegime::Slide(s) | ImpactRegime::Reverse(s) => {
+            // The final phase's impulse direction d = (-s' mu0, 1) along (t, n).
+            let s_final = match regime {
+                ImpactRegime::Reverse(_) => -s.sigma(),
+                _ => s.sigma(),
+            };
+            let dt = -s_final * mu0;
+            let n_along_d = w[1][0] * dt + w[1][1];
+            let r_along_d = w[2][0] * dt + w[2][1];
+            w[2][2] - r_along_d * w[1][2] / n_along_d
+        }
+        ImpactRegime::Frictionless => w[2][2] - w[2][1] * w[2][1] / w[1][1],
+    };
+    -v_r / schur
+}
