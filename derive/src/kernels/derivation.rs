@@ -377,7 +377,7 @@ impl Derivation {
             },
             Kernel {
                 name: "impact_coulomb_level",
-                doc: "Ingredients of the level impact with Coulomb friction at the fore foot: velocities `qdl` after the torso lock, the contact velocities `[v_t, v_n, v_r]` there (fore foot along and normal to the floor, rear foot normal), the Delassus matrix `W` over `(t, n, r)` (upper triangle) and the response `R = M_L^-1 [J_t; J_n]^T`, so that `qdot+ = qdl + R [Lambda_t, Lambda_n]`",
+                doc: "Level impact with friction at the fore foot: `qdl` after the torso lock, `[v_t, v_n, v_r]`, Delassus `W`, response `R`",
                 equation: walker_scene::catalog::IMPACT_COULOMB_EQUATION,
                 args: impact_args.clone(),
                 outputs: coulomb_outputs(&coulomb_level),
@@ -386,7 +386,7 @@ impl Derivation {
             },
             Kernel {
                 name: "impact_coulomb_slope",
-                doc: "Ingredients of the slope impact with Coulomb friction at the fore foot (no torso lock: `qdl = qdot-`): the contact velocities `[v_t, v_n, v_r]` (along the slope, positive down it, and normal to it), the Delassus matrix `W` over `(t, n, r)` (upper triangle) and the response `R = M^-1 [J_t; J_n]^T`, so that `qdot+ = qdl + R [Lambda_t, Lambda_n]`",
+                doc: "Slope impact with friction at the fore foot: `qdl = qdot-`, `[v_t, v_n, v_r]`, Delassus `W`, response `R`",
                 equation: walker_scene::catalog::IMPACT_COULOMB_EQUATION,
                 args: impact_args.clone(),
                 outputs: coulomb_outputs(&coulomb_slope),

@@ -1193,10 +1193,8 @@ pub fn impact2_level_jacobian_checked(
     Ok(out)
 }
 
-/// Ingredients of the level impact with Coulomb friction at the fore foot: velocities `qdl` after
-/// the torso lock, the contact velocities `[v_t, v_n, v_r]` there (fore foot along and normal to
-/// the floor, rear foot normal), the Delassus matrix `W` over `(t, n, r)` (upper triangle) and the
-/// response `R = M_L^-1 [J_t; J_n]^T`, so that `qdot+ = qdl + R [Lambda_t, Lambda_n]`.
+/// Level impact with friction at the fore foot: `qdl` after the torso lock, `[v_t, v_n, v_r]`,
+/// Delassus `W`, response `R`.
 ///
 /// Paper: impact with Coulomb friction, not in the paper; Eqs. 6-10 with the foot's tangent added.
 ///

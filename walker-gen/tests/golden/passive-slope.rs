@@ -4129,10 +4129,8 @@ pub fn impact_slope_jacobian_checked(
     Ok(out)
 }
 
-/// Ingredients of the slope impact with Coulomb friction at the fore foot (no torso lock: `qdl =
-/// qdot-`): the contact velocities `[v_t, v_n, v_r]` (along the slope, positive down it, and normal
-/// to it), the Delassus matrix `W` over `(t, n, r)` (upper triangle) and the response `R = M^-1
-/// [J_t; J_n]^T`, so that `qdot+ = qdl + R [Lambda_t, Lambda_n]`.
+/// Slope impact with friction at the fore foot: `qdl = qdot-`, `[v_t, v_n, v_r]`, Delassus `W`,
+/// response `R`.
 ///
 /// Paper: impact with Coulomb friction, not in the paper; Eqs. 6-10 with the foot's tangent added.
 ///
