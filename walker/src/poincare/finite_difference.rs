@@ -9,11 +9,13 @@
 //! `1e-8`, and so are the multipliers' (a test checks the rimless wheel's against its closed
 //! form). Where one side of a difference has no step (a stuck foot pushed into a slide that
 //! Painleve's paradox forbids), the difference is one-sided, with an error of about `h`
-//! (`1e-4`) in that column. Where a stick-slip transition or an impact-regime switch lies within `h` of the point
+//! (`1e-4`) in that column; where a foot at rest can slide neither way, the map exists only with
+//! the foot at rest and the columns of its velocity (`xd`, `zd`) are left zero: perturbations
+//! along them are not motions of the walker. Where a stick-slip transition or an impact-regime switch lies within `h` of the point
 //! the map is not differentiable there and the difference mixes the two sides. The columns of
 //! `x` and `z` are zero: nothing depends on them and the map measures from the new foot.
 
-use crate::model::{ImpactRegime, Model};
+use crate::model::{FrictionLaw, ImpactRegime, Model};
 use crate::sim::{SimConfig, WalkLimits, walk};
 
 use super::error::MapError;
@@ -68,6 +70,7 @@ pub(crate) fn finite_difference_map(
     let cfg = tight(cfg);
     let (plus, period, dx) = one_step(model, &cfg, s)?;
     let mut jacobian = [[0.0; 8]; 8];
+    let foot_at_rest = model.friction_law() == FrictionLaw::Coulomb && s[4] == 0.0;
     for j in 2..8 {
         let h = 1e-4 * s[j].abs().max(1.0);
         let (mut up, mut down) = (*s, *s);
@@ -80,6 +83,9 @@ pub(crate) fn finite_difference_map(
             (Ok((pu, ..)), Ok((pd, ..))) => (pu, pd, up[j], down[j]),
             (Ok((pu, ..)), Err(_)) => (pu, &plus, up[j], s[j]),
             (Err(_), Ok((pd, ..))) => (&plus, pd, s[j], down[j]),
+            // A foot at rest that can slide neither way: the map exists only with the foot at
+            // rest, and there is no derivative along its velocity to take.
+            (Err(_), Err(_)) if foot_at_rest && (j == 4 || j == 5) => continue,
             (Err(e), Err(_)) => return Err(e.clone()),
         };
         for (i, row) in jacobian.iter_mut().enumerate() {

@@ -163,7 +163,12 @@ pub fn newton(
             reduce(&m.state_plus)[1] - r[1],
         ];
         let a = [[jr[0][0] - 1.0, jr[0][1]], [jr[1][0], jr[1][1] - 1.0]];
-        let (d, sing) = least_norm(a, [-fr[0], -fr[1]]);
+        let (mut d, sing) = least_norm(a, [-fr[0], -fr[1]]);
+        if m.state_plus[4] == 0.0 && r[0] == 0.0 {
+            // A sticking impact leaves the new foot exactly at rest (`Model::reset`): the
+            // cycle lies on `xd = 0`, and a step off it by rounding would start a slide.
+            d[0] = 0.0;
+        }
         singular |= sing;
         let mut step = 1.0;
         let mut next = None;
