@@ -116,8 +116,8 @@ mod tests {
     /// measured 9e-11 over these two steps (about 1 s; the README gives a median 2.6e-10 over
     /// 100 s walks at these tolerances); the bound `1e-8` leaves a factor 100 above that, while
     /// a frame taken at an accepted step's end instead of its own time would be off by the
-    /// angular velocity (about 1 rad/s) times part of a step (DOP853 takes steps of about
-    /// 1e-2 s here).
+    /// angular velocity (about 1 rad/s) times the gap to that end, up to a whole integration
+    /// step.
     #[test]
     fn frames_agree_with_a_tighter_integration_at_the_same_times() {
         let (m, s0, limits) = fig5();
