@@ -115,8 +115,9 @@ pub fn animated_gif(f: &Film) -> Result<Vec<u8>, String> {
                 .map(|c| q.index([c[0], c[1], c[2]]))
                 .collect();
             let mut frame = Frame::from_indexed_pixels(gw, gh, pixels, None);
+            // A frame is shown until the next one; the last for the hold.
             clock += if i + 1 == f.frames.len() {
-                f.frame_interval + f.hold
+                f.hold
             } else {
                 f.frame_interval
             };
