@@ -45,7 +45,7 @@ impl Written {
     #[must_use]
     pub fn text(&self) -> String {
         let mut s = format!(
-            "wrote {} ({} bytes): {} frames every {} s of the walk, {} x {} px",
+            "wrote {} ({} bytes): {} frames every {:.4} s of the walk, {} x {} px",
             self.file.display(),
             self.bytes,
             self.frames,
