@@ -311,3 +311,23 @@ fn reproduce_writes_the_animations_of_figs_5_and_14() {
     let fall = std::fs::read_to_string(dir.join("fig14_animation.svg")).expect("written");
     assert!(fall.contains("fell-backward in step 2"));
 }
+
+/// A walk that fails at once (`omega0 = 100` lifts the foot off at the start) is still drawn:
+/// one frame, the failure's, with its name.
+#[test]
+fn a_walk_failing_at_its_start_is_drawn_as_its_failure() {
+    let out = tmp("lift_off.svg");
+    let report = animate(&out, &["--scene", "active-level", "--omega0", "100"]);
+    assert_eq!(report["frames"].as_u64(), Some(1));
+    assert!(
+        report["failure"]
+            .as_str()
+            .is_some_and(|f| f.starts_with("lift-off"))
+    );
+    let text = std::fs::read_to_string(&out).expect("the SVG was written");
+    let doc = roxmltree::Document::parse(&text).expect("the SVG is well-formed XML");
+    for v in animations(&doc, "animateTransform", "translate") {
+        assert_eq!(v.len(), 2);
+    }
+    assert!(text.contains("lift-off in step 1"));
+}

@@ -31,7 +31,7 @@ pub struct Film {
     pub body: Body,
     /// The camera and picture size.
     pub view: View,
-    /// The frames, every `dt` of walk time.
+    /// The frames, every `dt` of walk time, and, if the walk failed, the frame at its failure.
     pub frames: Vec<Frame>,
     /// The pose at each frame.
     pub poses: Vec<Pose>,
@@ -41,8 +41,8 @@ pub struct Film {
     pub title: String,
     /// Where the walk failed, if it did ([`failure_label`]).
     pub failure: Option<String>,
-    /// Playback time between frames (s): `dt / speed`.
-    pub frame_interval: f64,
+    /// Playback speed (walk seconds per second of playback).
+    pub speed: f64,
     /// Playback time the last frame is held before the animation repeats (s).
     pub hold: f64,
 }
@@ -59,12 +59,18 @@ impl Film {
         title: String,
     ) -> Self {
         let body = Body::of(model);
-        let poses: Vec<Pose> = tr.frames.iter().map(|f| body.pose(f)).collect();
+        let mut frames = tr.frames.clone();
+        if let Some(ff) = tr.failure_frame
+            && frames.last().is_none_or(|last| ff.time > last.time)
+        {
+            frames.push(ff);
+        }
+        let poses: Vec<Pose> = frames.iter().map(|f| body.pose(f)).collect();
         let hubs: Vec<Point> = poses.iter().map(|p| p.hub).collect();
         let view = View::new(&body, &hubs, width, height);
         let along = 1.0 / body.phi.cos();
         let mut marks: Vec<Mark> = Vec::with_capacity(tr.frames.len());
-        for f in &tr.frames {
+        for f in &frames {
             let s = f.state[0] * along;
             let mark = match marks.last() {
                 Some(m) if m.step == f.step => Mark {
@@ -84,12 +90,12 @@ impl Film {
         Film {
             body,
             view,
-            frames: tr.frames.clone(),
+            frames,
             poses,
             marks,
             title,
             failure: failure_label(tr),
-            frame_interval: tr.dt / speed,
+            speed,
             hold: 1.0,
         }
     }
@@ -107,9 +113,18 @@ impl Film {
         out
     }
 
+    /// Playback time of frame `i` since the first frame (s).
+    #[must_use]
+    pub fn playback_time(&self, i: usize) -> f64 {
+        let t0 = self.frames.first().map_or(0.0, |f| f.time);
+        self.frames
+            .get(i)
+            .map_or(0.0, |f| (f.time - t0) / self.speed)
+    }
+
     /// Total playback time (s): the frames and the hold at the end.
     #[must_use]
     pub fn duration(&self) -> f64 {
-        self.frames.len().saturating_sub(1) as f64 * self.frame_interval + self.hold
+        self.playback_time(self.frames.len().saturating_sub(1)) + self.hold
     }
 }

@@ -15,6 +15,9 @@ use walker::sim::Frame;
 /// below `2 pi / 360` the wheel is drawn as 360 spokes).
 pub const MAX_SPOKES: usize = 360;
 
+/// The longest drawn force, in leg lengths (a force of 6 `m_t g`).
+pub const MAX_FORCE_LEGS: f64 = 3.0;
+
 /// A point `(x, z)` in world coordinates (m).
 pub type Point = (f64, f64);
 
@@ -81,6 +84,19 @@ impl Body {
         0.5 * self.l / self.weight
     }
 
+    /// The drawn length (m, signed) of a force component `f` (N): [`Body::force_scale`] times
+    /// it, at most [`MAX_FORCE_LEGS`] leg lengths either way (where `lambda` blows up, a
+    /// failure, the arrow stays in the picture); 0 if `f` is not finite.
+    #[must_use]
+    pub fn drawn_force(&self, f: f64) -> f64 {
+        let max = MAX_FORCE_LEGS * self.l;
+        if f.is_finite() {
+            (f * self.force_scale()).clamp(-max, max)
+        } else {
+            0.0
+        }
+    }
+
     /// The walker at `frame`.
     #[must_use]
     pub fn pose(&self, frame: &Frame) -> Pose {
@@ -97,10 +113,9 @@ impl Body {
             (hub.0 - self.r * c, hub.1 - self.r * s),
             (hub.0 + self.r * c, hub.1 + self.r * s),
         ];
-        let k = self.force_scale();
         let (n, t) = (self.normal(), self.tangent());
-        let normal = frame.reaction.normal * k;
-        let friction = frame.reaction.tangential * k;
+        let normal = self.drawn_force(frame.reaction.normal);
+        let friction = self.drawn_force(frame.reaction.tangential);
         Pose {
             hub,
             foot: (x, z),

@@ -102,7 +102,6 @@ pub fn animated_gif(f: &Film) -> Result<Vec<u8>, String> {
         enc.set_repeat(Repeat::Infinite)
             .map_err(|e| e.to_string())?;
         let mut rgb = vec![0u8; w as usize * h as usize * 3];
-        let mut clock = 0.0;
         let mut shown = 0.0;
         for i in 0..f.frames.len() {
             {
@@ -116,10 +115,10 @@ pub fn animated_gif(f: &Film) -> Result<Vec<u8>, String> {
                 .collect();
             let mut frame = Frame::from_indexed_pixels(gw, gh, pixels, None);
             // A frame is shown until the next one; the last for the hold.
-            clock += if i + 1 == f.frames.len() {
-                f.hold
+            let clock = if i + 1 == f.frames.len() {
+                f.duration()
             } else {
-                f.frame_interval
+                f.playback_time(i + 1)
             };
             let cs = ((clock - shown) * 100.0).round().clamp(1.0, 65535.0);
             shown += cs / 100.0;

@@ -105,7 +105,7 @@ impl Timing {
     fn of(f: &Film) -> Self {
         let dur = f.duration();
         let key_times: Vec<f64> = (0..f.frames.len())
-            .map(|i| i as f64 * f.frame_interval / dur)
+            .map(|i| f.playback_time(i) / dur)
             .collect();
         let mut kt: Vec<String> = key_times.iter().map(|&k| num_key(k)).collect();
         kt.push("1".to_owned());

@@ -5,10 +5,11 @@
 
 use serde::Serialize;
 
-use crate::model::{Contact, Reaction};
+use crate::model::{Contact, Model, Reaction};
 use crate::ode::Step;
 
-use super::foot::{Foot, control_input};
+use super::failure::Failure;
+use super::foot::{Foot, control_input, ground_reaction, initial_contact};
 use super::state::{N, finite, mech};
 
 /// The walk's motion at one time.
@@ -99,5 +100,33 @@ impl Frames {
                 });
             }
         }
+    }
+}
+
+/// The frame at the moment of `failure`, `time` since the start of the walk: the failure's
+/// state, with the contact of `last` (the last frame before it) if that is of the same step,
+/// else the contact the step began with (stuck where none is consistent, as for
+/// [`super::FailureKind::ContactInconsistent`]). The ground reaction may be huge or not finite
+/// there (a vanishing denominator of `lambda` is a failure).
+pub(super) fn at_failure(
+    model: &Model,
+    failure: &Failure,
+    time: f64,
+    last: Option<&Frame>,
+) -> Frame {
+    let mut y = [0.0; N];
+    y[..8].copy_from_slice(&failure.state);
+    let contact = match last {
+        Some(f) if f.step == failure.step => f.contact,
+        _ => initial_contact(model, &y, failure.step).unwrap_or(Contact::Stuck),
+    };
+    Frame {
+        time,
+        t: failure.t,
+        step: failure.step,
+        state: failure.state,
+        reaction: ground_reaction(model, failure.t, &y, contact),
+        u: control_input(model, failure.t, &y, contact),
+        contact,
     }
 }

@@ -7,7 +7,7 @@ use serde::Serialize;
 use crate::model::Model;
 
 use super::config::{SimConfig, WalkLimits};
-use super::frame::{Frame, Frames};
+use super::frame::{Frame, Frames, at_failure};
 use super::gait::Walk;
 use super::walk::walk_recording;
 
@@ -23,6 +23,9 @@ pub struct Trajectory {
     pub frames: Vec<Frame>,
     /// The walk went on beyond the last frame: `max_frames` was reached.
     pub truncated: bool,
+    /// The walk at the moment of its failure, if it failed (at [`Trajectory::end_time`],
+    /// usually between two frames): the failure's state, the contact of its step.
+    pub failure_frame: Option<Frame>,
 }
 
 impl Trajectory {
@@ -64,12 +67,17 @@ pub fn trajectory(
     let mut frames = Frames::new(dt, max_frames);
     let (walk, _) = walk_recording(model, cfg, initial, limits, Some(&mut frames));
     let (frames, truncated) = frames.finish();
-    Trajectory {
+    let mut tr = Trajectory {
         walk,
         dt,
         frames,
         truncated,
+        failure_frame: None,
+    };
+    if let Some(f) = &tr.walk.failure {
+        tr.failure_frame = Some(at_failure(model, f, tr.end_time(), tr.frames.last()));
     }
+    tr
 }
 
 #[cfg(test)]
@@ -138,5 +146,38 @@ mod tests {
             }
         }
         assert!(worst < 1e-8, "worst difference {worst:e}");
+    }
+
+    /// Fig. 14 (`phi = 0.10`, `mu0 = 0.19`, `omega0 = 0.5`): the wheel falls backward in its
+    /// second step (Section 5.3); the trajectory ends with the frame at that moment.
+    #[test]
+    fn a_failed_walk_ends_with_the_frame_at_its_failure() {
+        let m = Model::passive_slope(Runtime {
+            mu0: 0.19,
+            phi: 0.10,
+            ..Runtime::default()
+        });
+        let limits = WalkLimits {
+            max_steps: 5,
+            ..WalkLimits::default()
+        };
+        let tr = trajectory(
+            &m,
+            &SimConfig::default(),
+            m.initial_state(0.5),
+            &limits,
+            0.01,
+            10_000,
+        );
+        let failure = tr.walk.failure.as_ref().expect("Fig. 14 falls backward");
+        assert_eq!((failure.name(), failure.step), ("fell-backward", 1));
+        let last = tr.frames.last().expect("frames before the fall");
+        let ff = tr.failure_frame.expect("the frame at the failure");
+        assert_eq!(
+            (ff.time, ff.step, ff.state),
+            (tr.end_time(), 1, failure.state)
+        );
+        assert!(ff.time >= last.time && ff.time - last.time < 0.01);
+        assert!(ff.reaction.lambda.is_finite());
     }
 }
