@@ -174,7 +174,7 @@ fn write_file(path: &Path, bytes: &[u8]) -> Result<(), AnimateError> {
 /// Walk, sample, draw and write: the whole of `walker animate` for `model` from `initial`.
 ///
 /// # Errors
-/// As [`sample`] and [`write`].
+/// As [`sample`] and [`write()`].
 pub fn animate(
     model: &Model,
     cfg: &SimConfig,

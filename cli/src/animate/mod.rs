@@ -10,7 +10,8 @@
 //! ([`error`]).
 //!
 //! Imports run one way: [`job`] -> [`svg`], [`mod@gif`], [`strobe`] -> [`raster`] -> [`film`]
-//! -> [`geometry`], [`view`], [`caption`]; [`job`] -> [`request`], [`error`] -> [`crate::input`].
+//! -> [`geometry`], [`view`], [`caption`]; [`job`] -> [`request`] (-> [`mod@gif`]'s bound),
+//! [`error`] -> [`crate::input`].
 
 pub mod caption;
 pub mod error;
