@@ -247,7 +247,7 @@ fn the_stick_diagrams_are_written_as_svg_and_png() {
 fn bad_arguments_exit_2_naming_the_flag() {
     let svg = tmp("bad.svg");
     let svg = svg.to_str().expect("a UTF-8 path");
-    let cases: [(&[&str], &str); 10] = [
+    let cases: [(&[&str], &str); 11] = [
         (&["--fps", "0"], "fps"),
         (&["--fps", "51"], "fps"),
         (&["--speed", "1000"], "speed"),
@@ -256,6 +256,7 @@ fn bad_arguments_exit_2_naming_the_flag() {
         (&["--steps", "1001"], "steps"),
         (&["--duration", "-1"], "duration"),
         (&["--duration", "600", "--fps", "50"], "duration"),
+        (&["--steps", "3", "--duration", "2"], "duration"),
         (&["--omega0", "inf"], "omega0"),
         (&["--mu0", "-1"], "mu0"),
     ];
