@@ -236,7 +236,7 @@ fn the_stick_diagrams_are_written_as_svg_and_png() {
     let report = animate(&svg, &args);
     let text = std::fs::read_to_string(&svg).expect("the SVG was written");
     let doc = roxmltree::Document::parse(&text).expect("the SVG is well-formed XML");
-    // One path a pose (stance leg, fore leg, torso) besides the floor.
+    // One path a pose (stance, fore and rear legs, torso) besides the floor.
     let poses = doc.descendants().filter(|n| n.has_tag_name("path")).count() - 1;
     assert_eq!(Some(poses as u64), report["frames"].as_u64());
     assert!(text.contains("fell-backward"));

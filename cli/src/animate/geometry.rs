@@ -148,3 +148,17 @@ pub struct Pose {
     /// The friction part of the ground reaction as a drawn vector from the foot (m).
     pub friction_force: Point,
 }
+
+impl Pose {
+    /// The legs a stick diagram draws: the stance leg, the fore leg and the rear leg (the spoke
+    /// behind the stance leg, which the wheel falls back onto), fewer if the wheel has fewer
+    /// spokes.
+    #[must_use]
+    pub fn stick_legs(&self) -> Vec<Point> {
+        let n = self.spokes.len();
+        let mut idx = vec![0, 1, n.saturating_sub(1)];
+        idx.retain(|&k| k < n);
+        idx.dedup();
+        idx.iter().map(|&k| self.spokes[k]).collect()
+    }
+}

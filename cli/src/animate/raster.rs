@@ -121,7 +121,7 @@ pub fn slip<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The stick figure of `pose` (its stance leg, its fore leg and the torso) in thin lines of
+/// The stick figure of `pose` (its stance, fore and rear legs and the torso) in thin lines of
 /// `colour`, the camera at `centre`.
 ///
 /// # Errors
@@ -134,7 +134,7 @@ pub fn stick<DB: DrawingBackend>(
     colour: RGBColor,
 ) -> Result<(), String> {
     let hub = px(f, centre, pose.hub);
-    for &end in pose.spokes.iter().take(2) {
+    for end in pose.stick_legs() {
         area.draw(&PathElement::new(
             vec![hub, px(f, centre, end)],
             colour.stroke_width(1),

@@ -1,8 +1,8 @@
 //! The stick diagram (`walker animate --strobe`): the walker drawn at equal time intervals over
 //! the whole walk in one still picture, as walking papers print gaits (the paper's Figs. 11
 //! and 14), over the floor with the slip marks the stance feet left; as SVG (text, as the
-//! animation) or PNG (plotters). Each pose is its stance leg, its fore leg and the torso: all
-//! twelve spokes of every pose would hide the gait.
+//! animation) or PNG (plotters). Each pose is its stance leg, its fore leg, its rear leg and
+//! the torso: all twelve spokes of every pose would hide the gait.
 
 use std::path::Path;
 
@@ -59,7 +59,7 @@ pub fn strobe_svg(f: &Film) -> String {
     }
     for p in &f.poses {
         let mut d = String::new();
-        for e in p.spokes.iter().take(2) {
+        for e in &p.stick_legs() {
             d.push_str(&format!(
                 "M{} {}L{} {}",
                 num(p.hub.0),
@@ -104,7 +104,7 @@ pub fn strobe_svg(f: &Film) -> String {
 fn interval_text(f: &Film) -> String {
     let dt = f.frames.get(1).map_or(0.0, |g| g.time) - f.frames.first().map_or(0.0, |g| g.time);
     format!(
-        "{} poses every {} s: stance leg, fore leg, torso; orange: slip of the stance feet",
+        "{} poses every {} s (the last at the failure, if any): stance, fore and rear legs, torso; orange: slip",
         f.poses.len(),
         num(dt)
     )
