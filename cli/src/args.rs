@@ -216,6 +216,44 @@ pub enum Command {
         #[arg(long, allow_hyphen_values = true)]
         omega0: Option<f64>,
     },
+    /// Draw a walk to scale and play it: an animated SVG or GIF, or a stick diagram
+    /// (`--strobe`, SVG or PNG).
+    Animate {
+        /// The shared flags.
+        #[command(flatten)]
+        common: Common,
+        /// Friction coefficient mu0, >= 0.
+        #[arg(long, allow_hyphen_values = true)]
+        mu0: Option<f64>,
+        /// Ramp duration T_set (s), > 0 (active walker).
+        #[arg(long = "t-set", allow_hyphen_values = true)]
+        t_set: Option<f64>,
+        /// Initial angular velocity omega0 (rad/s).
+        #[arg(long, allow_hyphen_values = true)]
+        omega0: Option<f64>,
+        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
+        #[arg(long, allow_hyphen_values = true)]
+        phi: Option<f64>,
+        /// Walk this many steps, in [1, 1000] (default 6).
+        #[arg(long, allow_hyphen_values = true)]
+        steps: Option<usize>,
+        /// Walk for this long instead (s), in (0, 600].
+        #[arg(long, allow_hyphen_values = true)]
+        duration: Option<f64>,
+        /// Playback speed: seconds of the walk per second of playback, in [0.01, 100].
+        #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
+        speed: f64,
+        /// Frames per second of playback, in [1, 50] (default 30; with --strobe, poses per
+        /// second of playback, default 10: a pose every 0.1 s of the walk at --speed 1).
+        #[arg(long, allow_hyphen_values = true)]
+        fps: Option<f64>,
+        /// The file to write: FILE.svg or FILE.gif (with --strobe, FILE.svg or FILE.png).
+        #[arg(short = 'o', long)]
+        output: PathBuf,
+        /// Draw a stick diagram: the walker at equal time intervals in one picture.
+        #[arg(long)]
+        strobe: bool,
+    },
     /// Reproduce the paper's figures and claims.
     Reproduce {
         /// Output directory.

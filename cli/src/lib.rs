@@ -1,12 +1,14 @@
 //! The `walker` command line as a library, so that its parts are documented and tested: the
 //! clap definitions of its arguments ([`args`]), input checks named after the flags
 //! ([`input`]), the commands' work ([`run`]), what they print ([`report`]), progress bars
-//! ([`progress`]), figures ([`plot`]) and the reproduction of the paper ([`reproduce`]).
+//! ([`progress`]), figures ([`plot`]), the reproduction of the paper ([`reproduce`]) and
+//! animations and stick diagrams of a walk ([`animate`]).
 //! `src/main.rs` parses the arguments and dispatches to these.
 //!
-//! Imports run one way: [`args`], [`run`], [`reproduce`] -> [`input`], [`report`], [`plot`],
-//! [`progress`] -> the `walker` library.
+//! Imports run one way: [`args`], [`run`], [`reproduce`] -> [`animate`] -> [`input`],
+//! [`report`], [`plot`], [`progress`] -> the `walker` library.
 
+pub mod animate;
 pub mod args;
 pub mod input;
 pub mod plot;

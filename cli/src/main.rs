@@ -12,8 +12,8 @@ use clap::Parser;
 use walker::model::Kind;
 use walker::sim::WalkLimits;
 use walker_cli::args::{Cli, Command};
-use walker_cli::input::{InputError, duration as positive_duration, tolerance};
-use walker_cli::{report, reproduce, run};
+use walker_cli::input::{InputError, check, duration as positive_duration, tolerance};
+use walker_cli::{animate, report, reproduce, run};
 
 /// Why a command did not finish, and its exit code.
 #[derive(Debug, thiserror::Error)]
@@ -24,6 +24,9 @@ enum CliError {
     /// Writing the output files failed: exit code 1.
     #[error(transparent)]
     Write(#[from] reproduce::WriteError),
+    /// An animation could not be made: exit code 2 for bad input, else 1.
+    #[error(transparent)]
+    Animate(#[from] animate::AnimateError),
     /// Writing to standard output failed (a closed pipe): exit code 1.
     #[error("cannot write to standard output: {0}")]
     Stdout(#[source] std::io::Error),
@@ -34,6 +37,7 @@ impl CliError {
         match self {
             CliError::Input(_) => 2,
             CliError::Write(_) | CliError::Stdout(_) => 1,
+            CliError::Animate(e) => e.exit_code(),
         }
     }
 }
@@ -137,6 +141,32 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 emit(&format!("{}\n", out.json))?;
             } else {
                 emit(&out.text)?;
+            }
+        }
+        Command::Animate {
+            common,
+            mu0,
+            t_set,
+            omega0,
+            phi,
+            steps,
+            duration,
+            speed,
+            fps,
+            output,
+            strobe,
+        } => {
+            let req = animate::Request::new(steps, duration, speed, fps, &output, strobe)?;
+            let setup = run::setup(&common.scene, &common.overrides(mu0, t_set, phi))?;
+            let model = setup.model();
+            let w0 = omega0.unwrap_or_else(|| model.default_omega0());
+            check("omega0", w0, true, "finite")?;
+            let written =
+                animate::animate(&model, &common.config()?, model.initial_state(w0), &req)?;
+            if common.json {
+                emit(&format!("{}\n", serde_json::json!(written)))?;
+            } else {
+                emit(&written.text())?;
             }
         }
         Command::Reproduce { out } => {

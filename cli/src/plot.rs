@@ -10,7 +10,8 @@ use plotters::style::FontStyle;
 static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 
-fn register() {
+/// Register the bundled font as `sans-serif` for plotters (once; later calls do nothing).
+pub fn register() {
     REGISTER.call_once(|| {
         let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, FONT);
     });

@@ -5,6 +5,7 @@ use std::fs::{self, File};
 use std::io::Write as _;
 use std::path::Path;
 
+use super::animations::write_animations;
 use super::csv::write_csvs;
 use super::data::collect;
 use super::error::WriteError;
@@ -25,6 +26,7 @@ pub fn run(out: &Path) -> Result<String, WriteError> {
     let d = collect();
     write_csvs(out, &d)?;
     write_figures(out, &d)?;
+    write_animations(out)?;
     let mut s = summary(&d);
     s.push_str(&stability(out)?);
     summary_file

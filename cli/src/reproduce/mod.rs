@@ -11,6 +11,7 @@
 //! [`data`] -> [`models`] (and [`stability`] -> [`figures`], [`models`]); the writers ->
 //! [`error`].
 
+pub mod animations;
 pub mod csv;
 pub mod data;
 pub mod error;

@@ -13,23 +13,29 @@
 //! periodic stop), `foot.rs` (the stance foot, its contact and ground reaction), `stance.rs`
 //! (the stance ODE system and the sampling observer), `guard.rs` (the stance events,
 //! [`Guard`]), `step.rs` (one stance phase and its impact), `walk.rs` ([`walk()`],
-//! [`walk_with_stats`]).
+//! [`walk_with_stats`]), `trajectory.rs` (the walk sampled at given times, [`trajectory()`],
+//! for animations). `frame.rs` ([`Frame`], the motion at one time, and its collector) comes
+//! after `foot.rs`: the stance observer feeds it.
 
 mod config;
 mod failure;
 mod foot;
+mod frame;
 mod gait;
 mod guard;
 mod periodic;
 mod stance;
 mod state;
 mod step;
+mod trajectory;
 mod walk;
 
 pub use config::{SimConfig, WalkLimits};
 pub use failure::{Failure, FailureKind};
 pub use foot::{control_input, ground_reaction};
+pub use frame::Frame;
 pub use gait::{Sample, StepResult, Walk};
 pub use guard::Guard;
 pub use state::N;
+pub use trajectory::{Trajectory, trajectory};
 pub use walk::{walk, walk_with_stats};

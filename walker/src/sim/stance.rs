@@ -6,6 +6,7 @@ use crate::model::Model;
 use crate::ode::{Observer, OdeSystem, Step};
 
 use super::foot::{Foot, control_input, ground_reaction};
+use super::frame::Frames;
 use super::gait::Sample;
 use super::state::{N, mech};
 
@@ -82,7 +83,7 @@ impl OdeSystem<N> for Stance<'_> {
 }
 
 /// Records samples of the motion, if `out` is set: every accepted step's end and `interior`
-/// points inside it.
+/// points inside it; and frames at given times, if `frames` is set.
 pub(super) struct Recorder<'a> {
     /// The stance foot.
     pub(super) foot: &'a Foot<'a>,
@@ -94,14 +95,19 @@ pub(super) struct Recorder<'a> {
     pub(super) step: usize,
     /// Samples inside each accepted step.
     pub(super) interior: usize,
+    /// Where the frames at given times go ([`super::trajectory()`]).
+    pub(super) frames: Option<&'a mut Frames>,
 }
 
 impl Observer<N> for Recorder<'_> {
     fn wants_step(&mut self, _: f64, _: &[f64; N], _: f64, _: &[f64; N]) -> bool {
-        self.out.is_some()
+        self.out.is_some() || self.frames.is_some()
     }
 
     fn on_step(&mut self, st: &Step<'_, N>) {
+        if let Some(frames) = self.frames.as_deref_mut() {
+            frames.on_step(self.foot, self.t_offset, self.step, st);
+        }
         let Some(out) = self.out.as_deref_mut() else {
             return;
         };

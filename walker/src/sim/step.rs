@@ -12,17 +12,25 @@ use super::failure::{Failure, FailureKind};
 use super::foot::{
     Foot, at_rest, contact_at_rest, control_input, initial_contact, reaction_at_start,
 };
+use super::frame::Frames;
 use super::gait::{Sample, StepResult};
 use super::guard::{Guard, Guards};
 use super::stance::{Recorder, Stance};
 use super::state::{N, finite, mech};
 
-/// Where samples of the motion go: the vector and the time of the step's start since the start
-/// of the walk.
-pub(super) type Record<'r> = Option<(&'r mut Vec<Sample>, f64)>;
+/// Where samples of the motion go (none, either or both), and the time of the step's start
+/// since the start of the walk.
+pub(super) struct Record<'r> {
+    /// Samples for plots ([`super::WalkLimits::record`]).
+    pub(super) samples: Option<&'r mut Vec<Sample>>,
+    /// Frames at given times ([`super::trajectory()`]).
+    pub(super) frames: Option<&'r mut Frames>,
+    /// The time of the step's start since the start of the walk.
+    pub(super) t_offset: f64,
+}
 
-/// Integrate one stance phase from the post-impact state `s0` and apply the impact; with
-/// `record`, append samples of the motion (times offset by the second element) to the vector.
+/// Integrate one stance phase from the post-impact state `s0` and apply the impact; append
+/// samples and frames of the motion to those of `record`.
 pub(super) fn one_step(
     model: &Model,
     cfg: &SimConfig,
@@ -33,25 +41,27 @@ pub(super) fn one_step(
 ) -> Result<StepResult, Failure> {
     let lambda_max = cfg.lambda_blowup * model.physical.total_mass() * model.physical.g;
     let (foot, y0, r0) = start(model, step, s0, lambda_max)?;
-    let (out, t_offset) = match record {
-        Some((out, t_offset)) => {
-            out.push(Sample {
-                time: t_offset,
-                step,
-                state: s0,
-                lambda: r0.lambda,
-                u: control_input(model, 0.0, &y0, foot.contact()),
-            });
-            (Some(out), t_offset)
-        }
-        None => (None, 0.0),
-    };
+    let Record {
+        samples: mut out,
+        frames,
+        t_offset,
+    } = record;
+    if let Some(samples) = out.as_deref_mut() {
+        samples.push(Sample {
+            time: t_offset,
+            step,
+            state: s0,
+            lambda: r0.lambda,
+            u: control_input(model, 0.0, &y0, foot.contact()),
+        });
+    }
     let obs = Recorder {
         foot: &foot,
         out,
         t_offset,
         step,
         interior: 3,
+        frames,
     };
     let strike = stance_phase(cfg, integ, &foot, step, y0, r0.lambda, lambda_max, obs)?;
     impact(model, step, &s0, &strike)

@@ -5,10 +5,11 @@ use crate::model::Model;
 use crate::ode::{Integrator, Stats, Tolerances};
 
 use super::config::{SimConfig, WalkLimits};
+use super::frame::Frames;
 use super::gait::Walk;
 use super::periodic::is_periodic;
 use super::state::N;
-use super::step::one_step;
+use super::step::{Record, one_step};
 
 /// Simulate a walk of `model` from the post-impact state `initial`
 /// (`[x, z, th1, th2, xd, zd, th1d, th2d]`, time 0 = the 0th impact).
@@ -24,6 +25,17 @@ pub fn walk_with_stats(
     initial: [f64; 8],
     limits: &WalkLimits,
 ) -> (Walk, Stats) {
+    walk_recording(model, cfg, initial, limits, None)
+}
+
+/// [`walk_with_stats`], also sampling the motion into `frames` if given.
+pub(super) fn walk_recording(
+    model: &Model,
+    cfg: &SimConfig,
+    initial: [f64; 8],
+    limits: &WalkLimits,
+    mut frames: Option<&mut Frames>,
+) -> (Walk, Stats) {
     let mut integ = Integrator::<N>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut steps = Vec::new();
     let mut samples = Vec::new();
@@ -32,7 +44,11 @@ pub fn walk_with_stats(
     let mut failure = None;
     let mut periodic = false;
     for k in 0..limits.max_steps {
-        let record = limits.record.then_some((&mut samples, time));
+        let record = Record {
+            samples: limits.record.then_some(&mut samples),
+            frames: frames.as_deref_mut(),
+            t_offset: time,
+        };
         let res = one_step(model, cfg, &mut integ, k, state, record);
         match res {
             Ok(r) => {

@@ -1,0 +1,51 @@
+//! The words drawn on an animation: the step counter and the time of a frame, the walk's
+//! description ([`title`]), and where the walk failed (the failure's name, step and moment).
+
+use walker::model::{FrictionLaw, Kind, Model};
+use walker::sim::{Frame, Trajectory};
+
+/// The label of `frame`: its step (counted from 1 as a person counts) and its time since the
+/// start of the walk, to `decimals` decimals.
+#[must_use]
+pub fn frame_label(frame: &Frame, decimals: usize) -> String {
+    format!("step {}, t = {:.*} s", frame.step + 1, decimals, frame.time)
+}
+
+/// The failure's name, step and moment (time since the start of the walk and since the step's
+/// impact), if the walk failed.
+#[must_use]
+pub fn failure_label(tr: &Trajectory) -> Option<String> {
+    tr.walk.failure.as_ref().map(|f| {
+        format!(
+            "{} in step {} at t = {:.3} s ({:.3} s after its impact)",
+            f.name(),
+            f.step + 1,
+            tr.end_time(),
+            f.t
+        )
+    })
+}
+
+/// The legend of the forces and the slip trace.
+pub const LEGEND: &str = "blue: normal force, red: friction, orange: slip of the stance foot (a force of m_t g is l/2 long)";
+
+/// The line above the walker: which walker, its friction and control settings, the playback
+/// speed.
+#[must_use]
+pub fn title(model: &Model, speed: f64) -> String {
+    let r = &model.runtime;
+    let law = match model.friction_law() {
+        FrictionLaw::Tanh => format!("mu0 = {}, c = {} s/m", r.mu0, r.c),
+        FrictionLaw::Coulomb => format!("Coulomb friction, mu0 = {}", r.mu0),
+    };
+    let walker = match model.kind() {
+        Kind::ActiveLevel => format!("active walker, level floor, T_set = {} s", r.t_set),
+        Kind::PassiveSlope => format!("passive wheel, slope phi = {} rad", r.phi),
+    };
+    let speed = if (speed - 1.0).abs() < 1e-12 {
+        "real time".to_owned()
+    } else {
+        format!("{speed}x real time")
+    };
+    format!("{walker}, {law}; {speed}")
+}

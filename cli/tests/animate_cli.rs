@@ -1,0 +1,334 @@
+//! `walker animate` through the built binary: the animated SVG parses and has one keyframe per
+//! frame (and the held last one) on every moving part, its drawn walker is the simulated one
+//! at the frames' times, the GIF decodes with the frames and size it claims, the stick
+//! diagrams are written, and bad arguments exit with code 2 naming the flag.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use walker::model::{Model, Runtime};
+use walker::sim::{SimConfig, Trajectory, WalkLimits, trajectory};
+
+fn walker(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_walker"))
+        .args(args)
+        .output()
+        .expect("the walker binary runs")
+}
+
+/// A fresh path in the test's temporary directory.
+fn tmp(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("animate");
+    std::fs::create_dir_all(&dir).expect("the temporary directory can be made");
+    let p = dir.join(name);
+    let _ = std::fs::remove_file(&p);
+    p
+}
+
+/// `walker animate --json` with `args` writing `out`; its report.
+fn animate(out: &Path, args: &[&str]) -> serde_json::Value {
+    let mut all = vec![
+        "animate",
+        "--json",
+        "-o",
+        out.to_str().expect("a UTF-8 path"),
+    ];
+    all.extend_from_slice(args);
+    let o = walker(&all);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).expect("stdout is JSON")
+}
+
+/// The active walker of Fig. 5 (`mu0 = 0.4`, `T_set = 0.3`, `omega0 = 0.8`), sampled as
+/// `walker animate --steps 2 --fps 20` samples it (dt = 1/20 s at speed 1).
+fn fig5_two_steps() -> (Model, Trajectory) {
+    let m = Model::active_level(Runtime {
+        mu0: 0.4,
+        t_set: 0.3,
+        ..Runtime::default()
+    });
+    let limits = WalkLimits {
+        max_steps: 2,
+        ..WalkLimits::default()
+    };
+    let tr = trajectory(
+        &m,
+        &SimConfig::default(),
+        m.initial_state(0.8),
+        &limits,
+        0.05,
+        3000,
+    );
+    (m, tr)
+}
+
+const FIG5_ARGS: [&str; 10] = [
+    "--scene",
+    "active-level",
+    "--mu0",
+    "0.4",
+    "--t-set",
+    "0.3",
+    "--steps",
+    "2",
+    "--fps",
+    "20",
+];
+
+/// The `values` of the animation element of `kind` animating `attr` (`type` for
+/// `animateTransform`), in document order, split at `;`.
+fn animations<'a>(doc: &'a roxmltree::Document<'a>, kind: &str, attr: &str) -> Vec<Vec<&'a str>> {
+    doc.descendants()
+        .filter(|n| n.has_tag_name(kind))
+        .filter(|n| n.attribute("type") == Some(attr) || n.attribute("attributeName") == Some(attr))
+        .map(|n| n.attribute("values").unwrap_or("").split(';').collect())
+        .collect()
+}
+
+/// The `d` of the wheel's spokes (the dark grey path around the hub).
+fn spokes_path<'a>(doc: &'a roxmltree::Document<'a>) -> &'a str {
+    doc.descendants()
+        .filter(|n| n.has_tag_name("path") && n.attribute("stroke") == Some("#333"))
+        .find_map(|n| n.attribute("d"))
+        .expect("the spokes' path")
+}
+
+/// Two numbers of an `x z` value.
+fn pair(v: &str) -> (f64, f64) {
+    let mut it = v.split(' ').map(|s| s.parse::<f64>().expect("a number"));
+    (it.next().expect("x"), it.next().expect("z"))
+}
+
+#[test]
+fn the_svg_parses_with_one_keyframe_per_frame_on_every_moving_part() {
+    let out = tmp("fig5.svg");
+    let report = animate(&out, &FIG5_ARGS);
+    let (_, tr) = fig5_two_steps();
+    let n = tr.frames.len();
+    assert_eq!(report["frames"].as_u64(), Some(n as u64));
+    let text = std::fs::read_to_string(&out).expect("the SVG was written");
+    let doc = roxmltree::Document::parse(&text).expect("the SVG is well-formed XML");
+    assert_eq!(doc.root_element().tag_name().name(), "svg");
+    // Moving parts: the camera (the walk of two steps fits the picture, so it stands still),
+    // the hub, the wheel's rotation, the torso's rotation, the foot; the two force arrows' tips.
+    let translates = animations(&doc, "animateTransform", "translate");
+    let rotates = animations(&doc, "animateTransform", "rotate");
+    assert_eq!((translates.len(), rotates.len()), (2, 2));
+    let tips = [
+        animations(&doc, "animate", "x2"),
+        animations(&doc, "animate", "y2"),
+    ];
+    // `x2` also grows the slip marks: one per stance foot of the frames.
+    let feet = 1 + tr.frames.last().map_or(0, |f| f.step);
+    assert_eq!(tips[0].len(), 2 + feet);
+    assert_eq!(tips[1].len(), 2);
+    for v in translates.iter().chain(&rotates).chain(&tips[1]) {
+        // One keyframe a frame, and the last repeated for the hold at the end.
+        assert_eq!(v.len(), n + 1);
+        assert_eq!(v[n], v[n - 1]);
+    }
+    // All twelve spokes of alpha = pi/6 (Table 1) are drawn.
+    let spokes = spokes_path(&doc);
+    assert_eq!(spokes.matches("M0 0L").count(), 12);
+}
+
+/// The drawn walker at each frame is the simulated one at that frame's time: the drawn foot is
+/// the state's `(x, z)`, the drawn hub is `(x + l sin th1, z + l cos th1)`, the drawn stance
+/// spoke ends at the foot and the drawn fore spoke (the hub's translation and the wheel's
+/// rotation applied to the spoke) at the generated `fore_foot` kernel's fore foot. The SVG writes metres and degrees with 4 decimals
+/// (rounding by at most 5e-5); a point built from the rounded hub, the rounded spoke end and
+/// the rounded angle (5e-5 deg is 9e-7 rad, times l = 1) is within 1.1e-4 of the exact one, so
+/// 2e-4 bounds the difference while a frame off by one (dt = 0.05 s at about 0.5 m/s, 2.5 cm)
+/// would fail.
+#[test]
+fn the_drawn_foot_hub_and_fore_foot_are_the_simulated_ones_at_the_frame_times() {
+    let out = tmp("fig5_positions.svg");
+    animate(&out, &FIG5_ARGS);
+    let (model, tr) = fig5_two_steps();
+    let text = std::fs::read_to_string(&out).expect("the SVG was written");
+    let doc = roxmltree::Document::parse(&text).expect("the SVG is well-formed XML");
+    let translates = animations(&doc, "animateTransform", "translate");
+    let rotates = animations(&doc, "animateTransform", "rotate");
+    let (hubs, feet, wheel) = (&translates[0], &translates[1], &rotates[0]);
+    let spokes = spokes_path(&doc);
+    // The spokes in the wheel's own frame, `M0 0L x z` each; the wheel turns on by one spoke a
+    // step, so the fore leg of step `s` is spoke `s + 1` of the drawing.
+    let body: Vec<(f64, f64)> = spokes.split("M0 0L").skip(1).map(pair).collect();
+    let tol = 2e-4;
+    for (i, f) in tr.frames.iter().enumerate() {
+        let [x, z, th1, _, xd, zd, th1d, _] = f.state;
+        let foot = pair(feet[i]);
+        assert!(
+            (foot.0 - x).abs() < tol && (foot.1 - z).abs() < tol,
+            "frame {i}"
+        );
+        let hub = pair(hubs[i]);
+        assert!((hub.0 - (x + th1.sin())).abs() < tol, "frame {i}");
+        assert!((hub.1 - (z + th1.cos())).abs() < tol, "frame {i}");
+        let a = wheel[i].parse::<f64>().expect("an angle").to_radians();
+        let end = |k: usize| {
+            let p = body[k % body.len()];
+            (
+                hub.0 + a.cos() * p.0 - a.sin() * p.1,
+                hub.1 + a.sin() * p.0 + a.cos() * p.1,
+            )
+        };
+        let stance = end(f.step);
+        assert!(
+            (stance.0 - x).abs() < tol && (stance.1 - z).abs() < tol,
+            "frame {i}"
+        );
+        let drawn = end(f.step + 1);
+        let ff = model.fore_foot(x, z, th1, xd, zd, th1d);
+        assert!((drawn.0 - ff[0]).abs() < tol, "frame {i}: {drawn:?} {ff:?}");
+        assert!((drawn.1 - ff[1]).abs() < tol, "frame {i}: {drawn:?} {ff:?}");
+    }
+}
+
+#[test]
+fn the_gif_decodes_with_the_frames_and_size_it_reports() {
+    let out = tmp("fig5.gif");
+    let report = animate(&out, &FIG5_ARGS);
+    let (_, tr) = fig5_two_steps();
+    let file = std::fs::File::open(&out).expect("the GIF was written");
+    let mut opts = gif::DecodeOptions::new();
+    opts.set_color_output(gif::ColorOutput::Indexed);
+    let mut dec = opts.read_info(file).expect("a GIF header");
+    assert_eq!((dec.width(), dec.height()), (640, 360));
+    let mut frames = 0;
+    let mut centiseconds = 0u32;
+    while let Some(f) = dec.read_next_frame().expect("a frame decodes") {
+        assert_eq!((f.width, f.height), (640, 360));
+        centiseconds += u32::from(f.delay);
+        frames += 1;
+    }
+    assert_eq!(frames, tr.frames.len());
+    assert_eq!(report["frames"].as_u64(), Some(frames as u64));
+    // The delays add up to the playback time: (frames - 1) / fps and the 1 s hold, to the
+    // centisecond the GIF counts in (the rounding is carried, not accumulated).
+    let playback = (frames - 1) as f64 / 20.0 + 1.0;
+    assert!((f64::from(centiseconds) / 100.0 - playback).abs() <= 0.005 + 1e-9);
+}
+
+#[test]
+fn the_stick_diagrams_are_written_as_svg_and_png() {
+    let png = tmp("fig14.png");
+    let args = [
+        "--scene",
+        "passive-slope",
+        "--mu0",
+        "0.19",
+        "--phi",
+        "0.1",
+        "--strobe",
+    ];
+    let report = animate(&png, &args);
+    // Fig. 14 falls backward after the first impact (Section 5.3).
+    assert_eq!(report["steps"].as_u64(), Some(1));
+    assert!(
+        report["failure"]
+            .as_str()
+            .is_some_and(|f| f.starts_with("fell-backward"))
+    );
+    let bytes = std::fs::read(&png).expect("the PNG was written");
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let svg = tmp("fig14.svg");
+    let report = animate(&svg, &args);
+    let text = std::fs::read_to_string(&svg).expect("the SVG was written");
+    let doc = roxmltree::Document::parse(&text).expect("the SVG is well-formed XML");
+    // One path a pose (stance, fore and rear legs, torso) besides the floor.
+    let poses = doc.descendants().filter(|n| n.has_tag_name("path")).count() - 1;
+    assert_eq!(Some(poses as u64), report["frames"].as_u64());
+    assert!(text.contains("fell-backward"));
+}
+
+/// Each bad argument exits with code 2 and a message naming its flag.
+#[test]
+fn bad_arguments_exit_2_naming_the_flag() {
+    let svg = tmp("bad.svg");
+    let svg = svg.to_str().expect("a UTF-8 path");
+    let cases: [(&[&str], &str); 11] = [
+        (&["--fps", "0"], "fps"),
+        (&["--fps", "51"], "fps"),
+        (&["--speed", "1000"], "speed"),
+        (&["--speed", "nan"], "speed"),
+        (&["--steps", "0"], "steps"),
+        (&["--steps", "1001"], "steps"),
+        (&["--duration", "-1"], "duration"),
+        (&["--duration", "600", "--fps", "50"], "duration"),
+        (&["--steps", "3", "--duration", "2"], "duration"),
+        (&["--omega0", "inf"], "omega0"),
+        (&["--mu0", "-1"], "mu0"),
+    ];
+    for (extra, flag) in cases {
+        let mut args = vec!["animate", "--scene", "active-level", "-o", svg];
+        args.extend_from_slice(extra);
+        let o = walker(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{extra:?}: {err}");
+        assert!(err.contains(flag), "{extra:?}: {err}");
+    }
+    // The output's kind, and a walk too long for the frames a GIF may have.
+    let o = walker(&["animate", "--scene", "active-level", "-o", "walk.txt"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("output"));
+    let gif = tmp("long.gif");
+    let o = walker(&[
+        "animate",
+        "--scene",
+        "active-level",
+        "--steps",
+        "200",
+        "--fps",
+        "50",
+        "-o",
+        gif.to_str().expect("a UTF-8 path"),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("steps") && err.contains("600 frames"), "{err}");
+    assert!(!gif.exists());
+}
+
+/// `walker reproduce` adds the animations of Fig. 5's gait and Fig. 14's fall, and the stick
+/// diagram of the fall (its other outputs are tested in `reproduce_cli.rs`).
+#[test]
+fn reproduce_writes_the_animations_of_figs_5_and_14() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("animate_reproduce");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("the directory can be made");
+    walker_cli::reproduce::animations::write_animations(&dir).expect("the animations are written");
+    for name in [
+        "fig5_animation.svg",
+        "fig5_animation.gif",
+        "fig14_animation.svg",
+        "fig14_animation.gif",
+        "fig14_strobe.svg",
+        "fig14_strobe.png",
+    ] {
+        let len = std::fs::metadata(dir.join(name)).map_or(0, |m| m.len());
+        assert!(len > 1000, "{name}: {len} bytes");
+    }
+    let fall = std::fs::read_to_string(dir.join("fig14_animation.svg")).expect("written");
+    assert!(fall.contains("fell-backward in step 2"));
+}
+
+/// A walk that fails at once (`omega0 = 100` lifts the foot off at the start) is still drawn:
+/// one frame, the failure's, with its name.
+#[test]
+fn a_walk_failing_at_its_start_is_drawn_as_its_failure() {
+    let out = tmp("lift_off.svg");
+    let report = animate(&out, &["--scene", "active-level", "--omega0", "100"]);
+    assert_eq!(report["frames"].as_u64(), Some(1));
+    assert!(
+        report["failure"]
+            .as_str()
+            .is_some_and(|f| f.starts_with("lift-off"))
+    );
+    let text = std::fs::read_to_string(&out).expect("the SVG was written");
+    let doc = roxmltree::Document::parse(&text).expect("the SVG is well-formed XML");
+    for v in animations(&doc, "animateTransform", "translate") {
+        assert_eq!(v.len(), 2);
+    }
+    assert!(text.contains("lift-off in step 1"));
+}
