@@ -27,8 +27,9 @@
 //! equals wherever the slip does not reverse; with a reversal the algebraic rule's impulse
 //! would lie on the cone's edge against the final slip, while here it follows the slip through
 //! zero. If `W_nn - s mu0 W_tn <= 0` while the foot slips, more normal impulse makes the foot
-//! approach faster: the rigid-body impact has no solution ([`ImpactJam`], Painleve's paradox at
-//! an impact). The energy lost is never negative (Stronge, Sec. 5.2, for `e = 0`); the tests
+//! approach faster; if its slip then never stops, the rigid-body impact has no solution
+//! ([`ImpactJam`], Painleve's paradox at an impact); if it stops, sticking (or the slip back)
+//! ends the compression as above. The energy lost is never negative (Stronge, Sec. 5.2, for `e = 0`); the tests
 //! check it.
 //!
 //! The double-support test of the paper (Eqs. 11, 46: keep the rear foot on the floor and read
@@ -109,7 +110,8 @@ impl ImpactRegime {
 }
 
 /// The impact with friction has no rigid-body solution: while the foot slips in `slip`, more
-/// normal impulse makes it approach the floor faster (`W_nn - s mu0 W_tn <= 0`).
+/// normal impulse makes it approach the floor faster (`W_nn - s mu0 W_tn <= 0`) and the slip
+/// never stops.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, thiserror::Error)]
 #[error("the impact with friction jams: slipping {slip:?}, the normal velocity cannot reach zero")]
 pub struct ImpactJam {
@@ -135,15 +137,20 @@ pub fn plastic_coulomb(ing: &Ingredients, mu0: f64) -> Result<([f64; 2], ImpactR
         let s = Slide::of(v_t);
         let sm = s.sigma() * mu0;
         let dvn = w[1][1] - sm * w[0][1];
-        if dvn <= 0.0 {
-            return Err(ImpactJam { slip: s });
-        }
         let dvt = w[0][1] - sm * w[0][0];
-        let p_end = -v_n / dvn;
-        // The slip stops where v_t + dvt p = 0, if that is before the end of compression.
-        let stops = dvt * s.sigma() < 0.0 && -v_t / dvt < p_end;
-        if !stops {
-            return Ok(([-sm * p_end, p_end], ImpactRegime::Slide(s)));
+        // Where compression ends (if the normal velocity grows with p while slipping) and
+        // where the slip stops (if it decelerates): whichever comes first.
+        let p_end = (dvn > 0.0).then(|| -v_n / dvn);
+        let p_stop = (dvt * s.sigma() < 0.0).then(|| -v_t / dvt);
+        match (p_end, p_stop) {
+            (Some(p_end), stop) if stop.is_none_or(|p_stop| p_stop >= p_end) => {
+                return Ok(([-sm * p_end, p_end], ImpactRegime::Slide(s)));
+            }
+            // Slipping, the foot approaches faster and faster and never stops slipping.
+            (None, None) => return Err(ImpactJam { slip: s }),
+            // The slip stops first (also where, slipping, the normal velocity would never
+            // reach zero: sticking ends that).
+            _ => {}
         }
     }
     // At rest along the floor (from the start or after the slip stopped).
