@@ -63,10 +63,25 @@ pub enum FailureKind {
         /// The rear-foot impulse (`impact3_level`'s or `impact2_slope`'s `lambda_I[1]`).
         rear_impulse: f64,
     },
-    /// `lambda` blew up (the denominator of Eq. 23 vanished: a Painleve-type singularity).
+    /// `lambda` blew up because the denominator `D` of Eq. 23 vanished (a Painleve-type
+    /// singularity): `|D|` is at most `1e3 / lambda_blowup` times its constant term `I1`
+    /// (`1e-3 I1` by default; see `sim/blowup.rs`).
     LambdaDenominatorZero {
         /// `lambda` there (huge or not finite; non-finite values are reported as `null`).
         lambda: f64,
+    },
+    /// `|lambda|` exceeded the blow-up threshold
+    /// ([`super::SimConfig::lambda_blowup`] `m_t g`) with a regular denominator of Eq. 23: its
+    /// numerator `m_t (I1 (g - l th1d^2 cos th1) - l u sin th1)` is huge, through the control
+    /// input `u` (a ramp `T_set` so short that `ydd_d = 60 alpha / T_set^2` is huge: from
+    /// about `1e-100` to `1e-4` s with Table 1; shorter ramps overflow the kernels, which is
+    /// [`FailureKind::NonFinite`]) or the spin `th1d^2` (`omega0 = 1e5` to `1e150`). Also a
+    /// stuck foot's reaction beyond the threshold (it has no pole).
+    LambdaNumeratorHuge {
+        /// `lambda` there (finite).
+        lambda: f64,
+        /// The control input `u` of Eq. 31 there (finite; 0 for the passive wheel).
+        u: f64,
     },
     /// The wheel rolled back until the rear spoke reached the floor.
     FellBackward {
@@ -99,6 +114,7 @@ impl FailureKind {
             FailureKind::ImpactBeforeTSet { .. } => "impact-before-t-set",
             FailureKind::DoubleSupport { .. } => "double-support",
             FailureKind::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
+            FailureKind::LambdaNumeratorHuge { .. } => "lambda-numerator-huge",
             FailureKind::FellBackward { .. } => "fell-backward",
             FailureKind::ImpactAtStart => "impact-at-start",
             FailureKind::NoImpact => "no-impact",

@@ -12,9 +12,10 @@
 //! `config.rs` ([`SimConfig`], [`WalkLimits`]), `failure.rs` ([`Failure`], [`FailureKind`]), `gait.rs` ([`StepResult`], [`Sample`], [`Walk`]), `periodic.rs` (the
 //! periodic stop), `foot.rs` (the stance foot, its contact and ground reaction), `stance.rs`
 //! (the stance ODE system and the sampling observer), `guard.rs` (the stance events,
-//! [`Guard`]), `step.rs` (one stance phase and its impact), `walk.rs` ([`walk()`],
+//! [`Guard`]), `blowup.rs` (which failure a blown-up `lambda` is), `step.rs` (one stance phase and its impact), `walk.rs` ([`walk()`],
 //! [`walk_with_stats`]).
 
+mod blowup;
 mod config;
 mod failure;
 mod foot;
