@@ -131,3 +131,26 @@ fn the_poincare_map_of_a_stiff_tanh_law_ends_with_too_many_steps() {
         assert!(t > 0.0 && t < 1e-5, "c = {c:e}: {err:?}");
     }
 }
+
+/// Under exact Coulomb friction a foot at rest chooses its contact from the forces that would
+/// hold it; with a spin whose square overflows (`walker simulate --friction coulomb --omega0
+/// 1e300`) they are not finite, and the walk is `non-finite` at the start, not
+/// `contact-inconsistent` with `null` forces (found by `cli/tests/cli_extremes.rs`).
+#[test]
+fn an_overflowing_spin_under_coulomb_friction_is_non_finite() {
+    for omega0 in [1e300, -1e300, f64::MAX] {
+        for model in [
+            Model::coulomb_level(Physical::TABLE1, Runtime::default()),
+            Model::coulomb_slope(Physical::TABLE1, Runtime::default()),
+        ] {
+            let start = model.initial_state(omega0);
+            let w = walk(&model, &SimConfig::default(), start, &limits());
+            assert_eq!(
+                w.failure,
+                Some(FailureKind::NonFinite.at(0, 0.0, start)),
+                "omega0 = {omega0:e}, {:?}",
+                model.kind()
+            );
+        }
+    }
+}
