@@ -1,7 +1,8 @@
 //! Every numeric flag of every command at extreme values, systematically (not at random, as
 //! `cli_fuzz.rs` does for `simulate`): `0`, `-0`, subnormal, tiny, huge, the largest `f64`,
 //! negative, not finite, and each flag's own edges just inside and outside its range, for
-//! `simulate`, `sweep` and `fixed-point` on both built-in scenes. Every case ends, within a
+//! `simulate`, `sweep` and `fixed-point` on both built-in scenes (the first two also under
+//! Coulomb friction and under RODAS4). Every case ends, within a
 //! wall-time bound, with exit code 0 and a JSON result (possibly a named failure) whose numbers
 //! are all finite, or with exit code 2 and a message naming the flag; never a panic (101), a
 //! signal or a hang (issue 21).
@@ -18,17 +19,24 @@ use std::time::{Duration, Instant};
 
 use serde_json::Value;
 
-/// A command under test: its name and the flags it always gets (a small budget: two steps and
-/// one second of walking, a sweep of one `mu0`), each left out where a row sets that flag.
+/// A command under test: its name, the flags it always gets (a small budget: two steps and
+/// one second of walking, a sweep of one `mu0`), each left out where a row sets that flag, and
+/// the variants of its other flags that every row is run with.
 #[derive(Clone, Copy, Debug)]
 struct Command {
     name: &'static str,
     defaults: &'static [(&'static str, &'static str)],
+    variants: &'static [&'static [&'static str]],
 }
+
+/// The default method and friction law, exact Coulomb friction (other kernels, stick-slip
+/// events) and the stiff method.
+const VARIANTS: &[&[&str]] = &[&[], &["--friction", "coulomb"], &["--method", "rodas4"]];
 
 const SIMULATE: Command = Command {
     name: "simulate",
     defaults: &[("max-steps", "2"), ("duration", "1")],
+    variants: VARIANTS,
 };
 
 const SWEEP: Command = Command {
@@ -40,14 +48,18 @@ const SWEEP: Command = Command {
         ("max-steps", "2"),
         ("duration", "1"),
     ],
+    variants: VARIANTS,
 };
 
 /// `fixed-point` has no budget flag: its work is bounded by the library (30 warm-up steps, at
 /// most 30 Newton iterations of at most 8 map evaluations, each stance phase at most the
-/// integrator's 100 000 attempted steps).
+/// integrator's 100 000 attempted steps). It refuses Coulomb friction, and under RODAS4 its
+/// map (72 equations, the Jacobian by finite differences) takes up to 12 s of a release build
+/// at extreme values (`docs/stability.md`): the default method only.
 const FIXED_POINT: Command = Command {
     name: "fixed-point",
     defaults: &[],
+    variants: &[&[]],
 };
 
 /// One numeric flag of one command, run on both built-in scenes with every value of
@@ -162,10 +174,10 @@ const EXTREMES: &[&str] = &[
 /// `simulate` or a sweep point at most two stance phases, each at most the integrator's 100 000
 /// attempted steps (about 1.3 million evaluations of the right-hand side with DOP853, 0.3 s
 /// here); `fixed-point` at most 30 warm-up steps and 30 Newton iterations of at most 8 map
-/// evaluations. The slowest case measured took 0.73 s (`fixed-point --atol 5e-324`, which
-/// spends a budget of 100 000 steps; test profile, on two cores shared with other builds; the
-/// 940 cases took 5.4 s). 30 s is 40 times that: only a case that makes no progress (the hangs
-/// of issue 21 ran for hours) or a forty-fold slowdown reaches it.
+/// evaluations. The slowest case measured took 0.95 s (`fixed-point --atol 1e-300`, whose
+/// warm-up walk spends a budget of 100 000 steps; test profile, on two cores shared with other
+/// builds; the 2336 cases took 12.3 s). 30 s is 30 times that: only a case that makes no
+/// progress (the hangs of issue 21 ran for hours) or a thirty-fold slowdown reaches it.
 const CASE_BOUND: Duration = Duration::from_secs(30);
 
 /// One case: the arguments, the flags that carry the value under test, and its row's index.
@@ -175,8 +187,8 @@ struct Case {
     row: usize,
 }
 
-/// The command line of `row` (the `index`th) on `scene` with `value`.
-fn case(index: usize, row: &Row, scene: &str, value: &str) -> Case {
+/// The command line of `row` (the `index`th) in `variant` on `scene` with `value`.
+fn case(index: usize, row: &Row, variant: &[&str], scene: &str, value: &str) -> Case {
     let mut flags = vec![row.flag];
     flags.extend(row.same);
     let mut args: Vec<String> = vec![
@@ -185,6 +197,7 @@ fn case(index: usize, row: &Row, scene: &str, value: &str) -> Case {
         scene.to_owned(),
         "--json".to_owned(),
     ];
+    args.extend(variant.iter().map(|a| (*a).to_owned()));
     let fixed = row
         .command
         .defaults
@@ -307,9 +320,11 @@ fn check(case: &Case, outcome: Option<(Option<i32>, String, String, Duration)>) 
 fn every_flag_at_every_extreme_value_gives_a_result_or_names_the_flag() {
     let mut cases = Vec::new();
     for (index, row) in ROWS.iter().enumerate() {
-        for scene in SCENES {
-            for value in EXTREMES.iter().chain(row.edges) {
-                cases.push(case(index, row, scene, value));
+        for variant in row.command.variants {
+            for scene in SCENES {
+                for value in EXTREMES.iter().chain(row.edges) {
+                    cases.push(case(index, row, variant, scene, value));
+                }
             }
         }
     }
