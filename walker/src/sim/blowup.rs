@@ -19,8 +19,8 @@
 //! is of the order of `m_t g` (at most `1.31 m_t g` on level ground with Table 1 and `mu0 =
 //! 0.4`, where `D >= 0.384`), 760 times below it; at a pole reached from a walking gait the
 //! guard fires at `|lambda| = lambda_max` with a numerator within a factor 10 of `N_g` (`l
-//! th1d^2` and `l |u sin th1| / I1` below `10 g`), so `|lambda_g| >= lambda_max / 10`, 100
-//! times above it. A blow-up with both (a vanishing denominator and a huge numerator) is named
+//! th1d^2 + l |u sin th1| / I1` below `9 g`), so `|lambda_g| >= lambda_max / 10`, 100 times
+//! above it. A blow-up with both (a vanishing denominator and a huge numerator) is named
 //! for the pole.
 
 use super::failure::FailureKind;
