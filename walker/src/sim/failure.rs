@@ -71,7 +71,8 @@ pub enum FailureKind {
         lambda: f64,
     },
     /// `|lambda|` exceeded the blow-up threshold
-    /// ([`super::SimConfig::lambda_blowup`] `m_t g`) with a regular denominator of Eq. 23: its
+    /// ([`super::SimConfig::lambda_blowup`] `m_t g`; a thousandth of it where the integrator
+    /// gave up or met a non-finite value) with a regular denominator of Eq. 23: its
     /// numerator `m_t (I1 (g - l th1d^2 cos th1) - l u sin th1)` is huge, through the control
     /// input `u` (a ramp `T_set` so short that `ydd_d = 60 alpha / T_set^2` is huge: from
     /// about `1e-100` to `1e-4` s with Table 1; shorter ramps overflow the kernels, which is
