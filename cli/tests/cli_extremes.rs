@@ -2,10 +2,10 @@
 //! `cli_fuzz.rs` does for `simulate`): `0`, `-0`, subnormal, tiny, huge, the largest `f64`,
 //! negative, not finite, and each flag's own edges just inside and outside its range, for
 //! `simulate`, `sweep` and `fixed-point` on both built-in scenes (the first two also under
-//! Coulomb friction and under RODAS4). Every case ends, within a
-//! wall-time bound, with exit code 0 and a JSON result (possibly a named failure) whose numbers
-//! are all finite, or with exit code 2 and a message naming the flag; never a panic (101), a
-//! signal or a hang (issue 21).
+//! Coulomb friction and under RODAS4). Every case ends, within a wall-time bound, with exit
+//! code 0 and a JSON result (possibly a named failure) whose numbers are all finite, or with
+//! exit code 2 and a message naming the flag; never a panic (101), a signal or a hang (issue
+//! 21).
 //!
 //! The cases are a table: [`ROWS`] lists one line per (command, flag), with the command's
 //! small budget in [`Command`]; a new flag is one more line.
@@ -54,8 +54,8 @@ const SWEEP: Command = Command {
 /// `fixed-point` has no budget flag: its work is bounded by the library (30 warm-up steps, at
 /// most 30 Newton iterations of at most 8 map evaluations, each stance phase at most the
 /// integrator's 100 000 attempted steps). It refuses Coulomb friction, and under RODAS4 its
-/// map (72 equations, the Jacobian by finite differences) takes up to 12 s of a release build
-/// at extreme values (`docs/stability.md`): the default method only.
+/// map (72 equations, the Jacobian by finite differences) takes 6 to 12 s of a release build at
+/// extreme values (`docs/stability.md`): the default method only.
 const FIXED_POINT: Command = Command {
     name: "fixed-point",
     defaults: &[],
