@@ -92,8 +92,9 @@ fn run(cli: Cli) -> Result<(), CliError> {
             max_steps,
             until_periodic,
         } => {
+            // A non-finite `--mu0-from` is refused by `run::sweep`, naming it (not as `mu0`).
             let ov = common.overrides(
-                Some(mu0_from.max(0.0)),
+                Some(mu0_from.max(0.0)).filter(|m| m.is_finite()),
                 t_set.first().copied(),
                 phi.first().copied(),
             );

@@ -4,6 +4,7 @@
 
 use walker::model::{Model, Physical, Runtime};
 use walker::ode::GaveUp;
+use walker::poincare::MapError;
 use walker::sim::{FailureKind, SimConfig, WalkLimits, walk, walk_with_stats};
 
 /// A few steps, at most one second of walking (as `walker simulate --duration 1`).
@@ -101,6 +102,54 @@ fn an_overflowing_ramp_is_non_finite_not_a_pole() {
                 w.failure,
                 Some(FailureKind::NonFinite.at(0, 0.0, start)),
                 "T_set = {t_set:e}"
+            );
+        }
+    }
+}
+
+/// The Poincare map integrates the same stance phase with the variational equations appended:
+/// under the stiff law it spends the integrator's budget of attempted steps (one budget for the
+/// whole stance phase, across the breakpoint `T_set`) and reports it as the integrator's "too
+/// many steps", with the time reached, before `T_set` (the budget runs out within `1e-5` s, as
+/// the walks above), not a hang or a panic.
+#[test]
+fn the_poincare_map_of_a_stiff_tanh_law_ends_with_too_many_steps() {
+    for c in [1e12, 1e300] {
+        let model = Model::active_level(Runtime {
+            c,
+            ..Runtime::default()
+        });
+        let start = model.initial_state(model.default_omega0());
+        let err = walker::poincare::poincare_map(&model, &SimConfig::default(), &start);
+        let t = match err {
+            Err(MapError::Integrator {
+                t,
+                cause: GaveUp::TooManySteps,
+            }) => t,
+            _ => f64::NAN,
+        };
+        assert!(t > 0.0 && t < 1e-5, "c = {c:e}: {err:?}");
+    }
+}
+
+/// Under exact Coulomb friction a foot at rest chooses its contact from the forces that would
+/// hold it; with a spin whose square overflows (`walker simulate --friction coulomb --omega0
+/// 1e300`) they are not finite, and the walk is `non-finite` at the start, not
+/// `contact-inconsistent` with `null` forces (found by `cli/tests/cli_extremes.rs`).
+#[test]
+fn an_overflowing_spin_under_coulomb_friction_is_non_finite() {
+    for omega0 in [1e300, -1e300, f64::MAX] {
+        for model in [
+            Model::coulomb_level(Physical::TABLE1, Runtime::default()),
+            Model::coulomb_slope(Physical::TABLE1, Runtime::default()),
+        ] {
+            let start = model.initial_state(omega0);
+            let w = walk(&model, &SimConfig::default(), start, &limits());
+            assert_eq!(
+                w.failure,
+                Some(FailureKind::NonFinite.at(0, 0.0, start)),
+                "omega0 = {omega0:e}, {:?}",
+                model.kind()
             );
         }
     }

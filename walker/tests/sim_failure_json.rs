@@ -1,6 +1,8 @@
 //! The JSON of a failure is one flat object with the keys it had when `Failure` was an enum of
 //! struct variants: `kind`, `step`, `t`, `state` and the kind's own data (users' scripts read
-//! them). The one change: `ImpactAtStart` now has a `t` (0).
+//! them). The one change: `ImpactAtStart` now has a `t` (0). `LambdaNumeratorHuge` (a blown-up
+//! `lambda` with a regular denominator, named `LambdaDenominatorZero` before) is new, with its
+//! `lambda` and `u`.
 
 use std::collections::BTreeSet;
 
@@ -53,6 +55,14 @@ fn every_kind() -> Vec<(FailureKind, &'static str, &'static [&'static str])> {
             FailureKind::LambdaDenominatorZero { lambda: 1e9 },
             "LambdaDenominatorZero",
             &["lambda"],
+        ),
+        (
+            FailureKind::LambdaNumeratorHuge {
+                lambda: -3e24,
+                u: 2.5e7,
+            },
+            "LambdaNumeratorHuge",
+            &["lambda", "u"],
         ),
         (
             FailureKind::FellBackward { th1: -0.2 },
@@ -138,6 +148,7 @@ fn failure_names_are_the_cli_s_kebab_case_names() {
             "impact-before-t-set",
             "double-support",
             "lambda-denominator-zero",
+            "lambda-numerator-huge",
             "fell-backward",
             "impact-at-start",
             "no-impact",

@@ -230,6 +230,33 @@ impl Model {
         }
     }
 
+    /// `lambda` of Eqs. 22-23 at the angle `th1` and foot velocity `xd` of `y` (the sliding
+    /// direction of `contact` under Coulomb friction) with gravity alone in the numerator: the
+    /// stance leg at rest and no control input (`th1d = u = 0`), so `m_t I1 g / D` on level
+    /// ground and `m_t I1 g cos^2 phi / D` on the slope, `D` the denominator of Eq. 23. Where
+    /// `D` is regular (of the size of `I1 + m_t l^2 sin^2 th1`) this is of the order of the body
+    /// weight `m_t g`; near a zero of `D` it grows without bound, whatever the spin and the
+    /// control input of the state. `None` for a stuck foot, whose reaction (`stick_level`,
+    /// `stick_slope`) has no such denominator.
+    pub fn gravity_lambda(&self, y: &[f64], contact: Contact) -> Option<f64> {
+        let (th1, xd) = (y[2], y[4]);
+        match (&self.kernels, contact) {
+            (Kernels::ActiveLevel(p), _) => Some(active_level::lambda_level(p, th1, 0.0, 0.0, xd)),
+            (Kernels::GeneralLevel(p), _) => {
+                Some(general_level::lambda_level(p, th1, 0.0, 0.0, xd))
+            }
+            (Kernels::PassiveSlope(p), _) => Some(passive_slope::lambda_slope(p, th1, 0.0, xd)),
+            (Kernels::GeneralSlope(p), _) => Some(general_slope::lambda_slope(p, th1, 0.0, xd)),
+            (Kernels::CoulombLevel(p), Contact::Sliding(s)) => Some(
+                general_level_coulomb::lambda_level(p, th1, 0.0, 0.0, s.sigma()),
+            ),
+            (Kernels::CoulombSlope(p), Contact::Sliding(s)) => {
+                Some(general_slope_coulomb::lambda_slope(p, th1, 0.0, s.sigma()))
+            }
+            (Kernels::CoulombLevel(_) | Kernels::CoulombSlope(_), _) => None,
+        }
+    }
+
     /// The ground's force on the stance foot at `(t, y)` in the contact `contact`, with the
     /// control input of that point: sliding, `lambda` of Eqs. 22-23 (`lambda_level`,
     /// `lambda_slope`) and `mu` times the normal force along the floor (Eqs. 24, 38); stuck, the

@@ -112,7 +112,14 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
     let mut sys = Variational { model, jac };
     let mut integ = Integrator::<NA>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut t = 0.0;
+    // One budget of attempted steps for the whole stance phase, as in the simulation
+    // (`sim/step.rs`): each call after a breakpoint gets what the earlier ones left, and every
+    // call spends at least one attempt, so the loop ends with `TooManySteps` at the latest.
+    let budget = integ.config().max_steps;
     let (te, ye) = loop {
+        let spent = integ.stats().accepted_steps + integ.stats().rejected_steps;
+        integ.config_mut().max_steps =
+            budget.saturating_sub(usize::try_from(spent).unwrap_or(usize::MAX));
         match integ.integrate(
             &mut sys,
             t,

@@ -13,8 +13,11 @@ pub struct SimConfig {
     pub atol: f64,
     /// Longest stance phase before [`FailureKind::NoImpact`](super::FailureKind::NoImpact) is reported (s).
     pub max_step_time: f64,
-    /// `|lambda|` above this many times `m_t g` counts as a vanishing denominator of Eq. 23
-    /// ([`FailureKind::LambdaDenominatorZero`](super::FailureKind::LambdaDenominatorZero)).
+    /// `|lambda|` above this many times `m_t g` counts as a blow-up of the ground reaction:
+    /// a vanishing denominator of Eq. 23
+    /// ([`FailureKind::LambdaDenominatorZero`](super::FailureKind::LambdaDenominatorZero)) or
+    /// a huge numerator
+    /// ([`FailureKind::LambdaNumeratorHuge`](super::FailureKind::LambdaNumeratorHuge)).
     pub lambda_blowup: f64,
 }
 

@@ -60,21 +60,38 @@ pub enum FailureKind {
     /// impact would lead to double support (Eq. 11 on level ground, Eq. 46 on the slope); `t`
     /// is the time of the heel strike and the state the pre-impact state.
     DoubleSupport {
-        /// The rear-foot impulse (`impact3_level`'s or `impact2_slope`'s `lambda_I[1]`).
+        /// The rear-foot impulse (`impact3_level`'s or `impact2_slope`'s `lambda_I[1]`; with
+        /// friction at the impact, `walker::model::rear_test`).
         rear_impulse: f64,
     },
     /// The impact with Coulomb friction at the striking foot has no rigid-body solution: while
-    /// the foot slips, more normal impulse makes it approach the floor faster (Painleve's
-    /// paradox at an impact, `docs/impacts.md`); `t` is the time of the heel strike and the
+    /// the foot slips, more normal impulse makes it approach the floor faster and the slip
+    /// never stops (Painleve's paradox at an impact, `docs/impacts.md`); `t` is the time of the heel strike and the
     /// state the pre-impact state.
     ImpactJam {
         /// The slip direction in which the impact jams.
         slip: crate::model::Slide,
     },
-    /// `lambda` blew up (the denominator of Eq. 23 vanished: a Painleve-type singularity).
+    /// `lambda` blew up because the denominator `D` of Eq. 23 vanished (a Painleve-type
+    /// singularity): `|D|` is at most `1e3 / lambda_blowup` times its constant term `I1`
+    /// (`1e-3 I1` by default; see `sim/blowup.rs`).
     LambdaDenominatorZero {
         /// `lambda` there (huge or not finite; non-finite values are reported as `null`).
         lambda: f64,
+    },
+    /// `|lambda|` exceeded the blow-up threshold
+    /// ([`super::SimConfig::lambda_blowup`] `m_t g`; a thousandth of it where the integrator
+    /// gave up or met a non-finite value) with a regular denominator of Eq. 23: its
+    /// numerator `m_t (I1 (g - l th1d^2 cos th1) - l u sin th1)` is huge, through the control
+    /// input `u` (a ramp `T_set` so short that `ydd_d = 60 alpha / T_set^2` is huge: from
+    /// about `1e-100` to `1e-4` s with Table 1; shorter ramps overflow the kernels, which is
+    /// [`FailureKind::NonFinite`]) or the spin `th1d^2` (`omega0 = 1e5` to `1e150`). Also a
+    /// stuck foot's reaction beyond the threshold (it has no pole).
+    LambdaNumeratorHuge {
+        /// `lambda` there (finite).
+        lambda: f64,
+        /// The control input `u` of Eq. 31 there (finite; 0 for the passive wheel).
+        u: f64,
     },
     /// The wheel rolled back until the rear spoke reached the floor.
     FellBackward {
@@ -108,6 +125,7 @@ impl FailureKind {
             FailureKind::DoubleSupport { .. } => "double-support",
             FailureKind::ImpactJam { .. } => "impact-jam",
             FailureKind::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
+            FailureKind::LambdaNumeratorHuge { .. } => "lambda-numerator-huge",
             FailureKind::FellBackward { .. } => "fell-backward",
             FailureKind::ImpactAtStart => "impact-at-start",
             FailureKind::NoImpact => "no-impact",

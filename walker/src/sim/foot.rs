@@ -107,7 +107,9 @@ impl<'a> Foot<'a> {
 /// The contact of a foot at rest (`xd = 0`) under Coulomb friction at `(t, y)`: stuck if the
 /// tangential force that holds it is within the friction cone (`|lambda_t| <= mu0 lambda_n`),
 /// otherwise sliding the way the unbalanced force pushes it, if that slide is consistent (the
-/// foot accelerates in its own direction; Painleve's paradox otherwise).
+/// foot accelerates in its own direction; Painleve's paradox otherwise). Forces or an
+/// acceleration that are not finite (a spin whose square overflows) decide nothing: the
+/// failure is [`FailureKind::NonFinite`], not an inconsistent contact.
 pub(super) fn contact_at_rest(
     model: &Model,
     t: f64,
@@ -115,11 +117,17 @@ pub(super) fn contact_at_rest(
     step: usize,
 ) -> Result<Contact, Failure> {
     let held = ground_reaction(model, t, y, Contact::Stuck);
+    if !(held.normal.is_finite() && held.tangential.is_finite()) {
+        return Err(FailureKind::NonFinite.at(step, t, mech(y)));
+    }
     if held.tangential.abs() <= model.runtime.mu0 * held.normal {
         return Ok(Contact::Stuck);
     }
     let slide = Slide::of(-held.tangential);
     let (qdd, _) = model.stance(t, y, Contact::Sliding(slide));
+    if !qdd[0].is_finite() {
+        return Err(FailureKind::NonFinite.at(step, t, mech(y)));
+    }
     if qdd[0] * slide.sigma() > 0.0 {
         Ok(Contact::Sliding(slide))
     } else {

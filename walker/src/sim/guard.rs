@@ -21,7 +21,7 @@ pub enum Guard {
     /// `th1` falls through the rear-contact angle: the wheel rolled back onto its rear spoke.
     FellBackward,
     /// `|lambda|` rises through [`super::SimConfig::lambda_blowup`] `m_t g`: the denominator of
-    /// Eq. 23 vanishes.
+    /// Eq. 23 vanishes, or its numerator is huge (`sim/blowup.rs` tells which).
     LambdaBlowUp,
     /// The power kink: `ydot u` changes sign before `T_set` (where `|ydot u|`, the power
     /// quadrature's integrand, has a kink; see the stance system's error test,

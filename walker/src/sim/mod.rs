@@ -12,11 +12,12 @@
 //! `config.rs` ([`SimConfig`], [`WalkLimits`]), `failure.rs` ([`Failure`], [`FailureKind`]), `gait.rs` ([`StepResult`], [`Sample`], [`Walk`]), `periodic.rs` (the
 //! periodic stop), `foot.rs` (the stance foot, its contact and ground reaction), `stance.rs`
 //! (the stance ODE system and the sampling observer), `guard.rs` (the stance events,
-//! [`Guard`]), `step.rs` (one stance phase and its impact), `walk.rs` ([`walk()`],
-//! [`walk_with_stats`]), `trajectory.rs` (the walk sampled at given times, [`trajectory()`],
-//! for animations). `frame.rs` ([`Frame`], the motion at one time, and its collector) comes
-//! after `foot.rs`: the stance observer feeds it.
+//! [`Guard`]), `blowup.rs` (which failure a blown-up `lambda` is), `step.rs` (one stance phase
+//! and its impact), `walk.rs` ([`walk()`], [`walk_with_stats`]), `trajectory.rs` (the walk
+//! sampled at given times, [`trajectory()`], for animations). `frame.rs` ([`Frame`], the motion
+//! at one time, and its collector) comes after `foot.rs`: the stance observer feeds it.
 
+mod blowup;
 mod config;
 mod failure;
 mod foot;

@@ -7,6 +7,7 @@
 use crate::model::{Contact, Model, Reaction, Slide};
 use crate::ode::{GaveUp, Integrator, Outcome, Stats};
 
+use super::blowup::{blow_up, blown_up};
 use super::config::SimConfig;
 use super::failure::{Failure, FailureKind};
 use super::foot::{
@@ -94,17 +95,8 @@ fn start(
 
     let r0 = foot.reaction(0.0, &y0);
     if !r0.lambda.is_finite() || r0.lambda.abs() > lambda_max {
-        // Where the angular velocities alone overflow `lambda` (their squares exceed the
-        // floating-point range) its denominator is regular: the state is the problem.
-        let mut unspun = y0;
-        unspun[6] = 0.0;
-        unspun[7] = 0.0;
-        let l_rest = foot.reaction(0.0, &unspun).lambda;
-        let kind = if !r0.lambda.is_finite() && l_rest.abs() <= lambda_max {
-            FailureKind::NonFinite
-        } else {
-            FailureKind::LambdaDenominatorZero { lambda: r0.lambda }
-        };
+        // A pole, a huge numerator (spin whose square is huge or overflows), or non-finite.
+        let kind = blow_up(&foot, 0.0, &y0, r0.lambda, lambda_max);
         return Err(kind.at(step, 0.0, s0));
     }
     reaction_at_start(&foot, 0.0, &y0, step)?;
@@ -220,12 +212,6 @@ fn segments(
     }
 }
 
-/// Whether `lambda` at the end of a segment counts as blown up (not finite, or above a
-/// thousandth of the blow-up threshold `lambda_max`).
-fn blown_up(lam: f64, lambda_max: f64) -> bool {
-    !lam.is_finite() || lam.abs() > lambda_max * 1e-3
-}
-
 /// The consequence of the outcome `out` of a segment (`lam` is `lambda` at its end): go on from
 /// a breakpoint, a power kink or a stick-slip transition, stop at the heel strike, or fail.
 fn after_segment(
@@ -248,7 +234,7 @@ fn after_segment(
         Outcome::Reached { t, y } => Err(FailureKind::NoImpact.at(step, t, mech(&y))),
         Outcome::NonFinite { t, y } => {
             let kind = if blown_up(lam, lambda_max) && desired_finite(foot.model, t) {
-                FailureKind::LambdaDenominatorZero { lambda: lam }
+                blow_up(foot, t, &y, lam, lambda_max)
             } else {
                 FailureKind::NonFinite
             };
@@ -256,11 +242,11 @@ fn after_segment(
         }
         Outcome::StepSizeTooSmall { t, y, h } => {
             let stop = GaveUp::StepSizeTooSmall { h };
-            Err(gave_up(stop, lam, lambda_max).at(step, t, mech(&y)))
+            Err(gave_up(stop, foot, t, &y, lam, lambda_max).at(step, t, mech(&y)))
         }
         Outcome::MaxSteps { t, y } => {
             let stop = GaveUp::TooManySteps;
-            Err(gave_up(stop, lam, lambda_max).at(step, t, mech(&y)))
+            Err(gave_up(stop, foot, t, &y, lam, lambda_max).at(step, t, mech(&y)))
         }
         Outcome::InvalidInput { t, y, reason } => {
             let reason = GaveUp::InvalidInput(reason);
@@ -269,11 +255,18 @@ fn after_segment(
     }
 }
 
-/// Why the integrator gave up with `reason`: a blown-up `lambda` (`lam`) is the cause where
-/// there is one, otherwise the integrator's reason.
-fn gave_up(reason: GaveUp, lam: f64, lambda_max: f64) -> FailureKind {
+/// Why the integrator gave up with `reason` at `(t, y)`: a blown-up `lambda` (`lam`) is the
+/// cause where there is one ([`blow_up`] names which), otherwise the integrator's reason.
+fn gave_up(
+    reason: GaveUp,
+    foot: &Foot<'_>,
+    t: f64,
+    y: &[f64; N],
+    lam: f64,
+    lambda_max: f64,
+) -> FailureKind {
     if blown_up(lam, lambda_max) {
-        FailureKind::LambdaDenominatorZero { lambda: lam }
+        blow_up(foot, t, y, lam, lambda_max)
     } else {
         FailureKind::Integrator { reason }
     }
@@ -308,9 +301,7 @@ fn on_guard(
         }
         Some(Guard::LiftOff) if !blown_up(lam, lambda_max) => FailureKind::LiftOff { lambda: lam },
         Some(Guard::FellBackward) => FailureKind::FellBackward { th1: y[2] },
-        Some(Guard::LiftOff | Guard::LambdaBlowUp) | None => {
-            FailureKind::LambdaDenominatorZero { lambda: lam }
-        }
+        Some(Guard::LiftOff | Guard::LambdaBlowUp) | None => blow_up(foot, t, &y, lam, lambda_max),
     };
     Err(kind.at(step, t, mech(&y)))
 }
