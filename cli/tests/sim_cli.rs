@@ -259,8 +259,8 @@ fn sweep_chains_keep_their_order_and_a_pipe_gets_no_progress_bar() {
 }
 
 /// `--friction coulomb` on a built-in scene and `friction = "coulomb"` in a scene file give the
-/// same walker; the JSON reports the stuck time; `fixed-point` refuses Coulomb friction naming
-/// the flag.
+/// same walker; the JSON reports the stuck time; `fixed-point` finds its cycle with the map's
+/// Jacobian by differences of simulated steps.
 #[test]
 fn coulomb_friction_from_the_flag_or_a_scene_file() {
     let run = |args: &[&str]| {
