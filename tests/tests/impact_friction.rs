@@ -27,7 +27,7 @@ use nalgebra::Vector4;
 use proptest::prelude::*;
 use serde_json::Value;
 use walker::kernels::{general_level_coulomb as glc, general_slope_coulomb as gsc};
-use walker::model::{ImpactRegime, Ingredients, Slide, plastic_coulomb, rear_test};
+use walker::model::{ImpactRegime, Ingredients, Slide, in_regime, plastic_coulomb, rear_test};
 use walker_tests::{EPS, Phys, cases};
 
 /// See the module documentation.
@@ -136,9 +136,17 @@ fn check_case(c: &Value) -> Result<f64, String> {
     );
     let ing = ingredients(&p, slope, th1, qd);
     let (lam, regime) = plastic_coulomb(&ing, mu0).map_err(|e| {
+        // What the reference's regime would give with these ingredients (for the report).
+        let alt = match c["regime"].as_str() {
+            Some("stick") => in_regime(&ing, mu0, ImpactRegime::Stick),
+            _ => None,
+        };
+        let r: Vec<f64> = c["impulse"]
+            .as_array()
+            .map_or(Vec::new(), |a| a.iter().map(parse).collect());
         format!(
-            "{name}: the library fails ({e}) where the reference has a {} \
-            impact",
+            "{name}: the library fails ({e}) where the reference has a {} impact with \
+             Lambda = {r:?}; the stick impulse in_regime(Stick) = {alt:?}",
             c["regime"]
         )
     })?;
