@@ -5,8 +5,13 @@ kernel table, one per step case, the closed forms and the operation counts) then
 forked worker processes, one per CPU.  Every output is deterministic (fixed seeds, no timing
 in any file); timings go to stdout only.
 
-Usage: python generate.py [--jobs N]   (writes ../tests/data/*.json, closed_forms.txt,
-                                         opcount.json, report.json)
+Usage: python generate.py [--jobs N] [--only NAME ...]
+  (writes ../tests/data/*.json, closed_forms.txt, opcount.json, report.json)
+
+--only regenerates just the named outputs: kernel names (tests/data/<kernel>.json), `step:active`
+/ `step:passive`, `impact_friction` (tests/data/impact_friction.json), `closed_forms`, `opcount`;
+report.json then keeps every other entry as it was.  For the impact with friction:
+`bash sympy_ref/run.sh --only impact_coulomb_level impact_coulomb_slope impact_friction`.
 """
 from __future__ import annotations
 
@@ -39,6 +44,10 @@ def task(spec):
         with open(os.path.join(HERE, "closed_forms.txt"), "w") as fh:
             fh.write(closed_forms.text())
         res, line = None, "closed_forms.txt"
+    elif kind == "impact_friction":
+        import impact_friction
+        res = impact_friction.main(os.path.join(DATA, "impact_friction.json"))
+        line = "impact_friction"
     elif kind == "opcount":
         import opcount
         opcount.main(os.path.join(HERE, "opcount.json"))
@@ -51,23 +60,42 @@ def task(spec):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--only", nargs="+", metavar="NAME",
+                    help="regenerate only these outputs (see the module docstring)")
     args = ap.parse_args()
     t0 = time.time()
     mdl = md.derive()
     print(f"derivation: {time.time() - t0:.1f} s", flush=True)
     os.makedirs(DATA, exist_ok=True)
     # longest first, for load balance
-    specs = [("step", "passive"), ("step", "active"), ("opcount", None),
-             ("closed_forms", None)] + [("kernel", k) for k in mdl.kernels]
+    specs = [("step", "passive"), ("step", "active"), ("impact_friction", None),
+             ("opcount", None), ("closed_forms", None)] + [("kernel", k) for k in mdl.kernels]
+    if args.only:
+        def name(spec):
+            kind, arg = spec
+            return arg if kind == "kernel" else (f"step:{arg}" if kind == "step" else kind)
+        unknown = set(args.only) - {name(s) for s in specs}
+        if unknown:
+            ap.error(f"--only: unknown {sorted(unknown)}; valid: {[name(s) for s in specs]}")
+        specs = [s for s in specs if name(s) in args.only]
     results = {}
     ctx = multiprocessing.get_context("fork")
     with ctx.Pool(args.jobs) as pool:
         for spec, res, line in pool.imap_unordered(task, specs, chunksize=1):
             results[spec] = res
             print(line, flush=True)
+    old = {}
+    if args.only:
+        with open(os.path.join(HERE, "report.json")) as fh:
+            old = json.load(fh)
+    pick = lambda spec, section, key: (results[spec] if spec in results
+                                       else old.get(section, {}).get(key))
     report = {
-        "kernels": {k: results[("kernel", k)] for k in mdl.kernels},
-        "steps": {c: results[("step", c)] for c in ("active", "passive")},
+        "kernels": {k: pick(("kernel", k), "kernels", k) for k in mdl.kernels},
+        "steps": {c: pick(("step", c), "steps", c) for c in ("active", "passive")},
+        "impact_friction": (results[("impact_friction", None)]
+                            if ("impact_friction", None) in results
+                            else old.get("impact_friction")),
     }
     with open(os.path.join(HERE, "report.json"), "w") as fh:
         json.dump(report, fh, indent=1)

@@ -109,6 +109,14 @@ class Numeric:
         self.JI = {k: L(v) for k, v in mdl.JI.items()}
         self.fore = L(sp.Matrix([*mdl.fore, *mdl.fore_vel]))
         self.energy = L(sp.Matrix([mdl.T, mdl.V]))
+        # impact with friction: the gradients of the scalar contact coordinates (the fore foot's
+        # coordinate along the floor and its signed distance from it, the rear foot's distance)
+        xf, zf = mdl.fore
+        coords = lambda a: sp.Matrix([[sp.diff(c, qi) for qi in md.Q] for c in (
+            xf * sp.cos(a) - zf * sp.sin(a), zf * sp.cos(a) + xf * sp.sin(a),
+            z * sp.cos(a) + x * sp.sin(a))])
+        self.JC = {"impact_coulomb_level": L(coords(sp.Integer(0))),
+                   "impact_coulomb_slope": L(coords(phi))}
 
     def __call__(self, name, vals):
         if name in JACOBIANS:
@@ -186,6 +194,23 @@ class Numeric:
             qdd, (fx, fz) = solve(U)
             lam = [fx * mp.cos(ph) - fz * mp.sin(ph), fx * mp.sin(ph) + fz * mp.cos(ph)]
             return qdd + ([U] if name == "closed_loop_stick_level" else []) + lam
+        if name.startswith("impact_coulomb"):
+            # the lock (level) by its Schur complement: M_L^-1 = M^-1 - M^-1 j^T (j M^-1 j^T)^-1
+            # j M^-1 with j = [0, 0, 1, -1], qd_L = qd - M^-1 j^T (j M^-1 j^T)^-1 j qd
+            Minv = mp.inverse(M)
+            qdl = qd
+            if name.endswith("level"):
+                jl = mp.matrix([[0, 0, 1, -1]])
+                X = (jl * Minv * jl.T)[0, 0]
+                qdl = qd - Minv * jl.T * ((jl * qd)[0, 0] / X)
+                Minv = Minv - Minv * jl.T * jl * Minv / X
+            JC = mp.matrix(self.JC[name](*a))
+            vc = JC * qdl
+            W = JC * Minv * JC.T
+            R = Minv * JC.T
+            return (flat(qdl) + flat(vc)
+                    + [W[i, j] for i, j in ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))]
+                    + [R[i, j] for i in range(4) for j in range(2)])
         if name.startswith("impact"):
             JI = mp.matrix(self.JI[name](*a))
             Minv = mp.inverse(M)
@@ -233,10 +258,12 @@ def kernel_edges(name, k):
         if name.startswith("impact"):
             E.append(("edge:phi=0,th1=alpha/2", setv(phi=lambda v: 0.0,
                                                      th1=lambda v: v[alpha] / 2)))
-    if name in ("impact3_level", "impact2_level", "impact2_level_jacobian"):
+    if name in ("impact3_level", "impact2_level", "impact2_level_jacobian",
+                "impact_coulomb_level"):
         E.append(("edge:pre_impact(th1=alpha/2,zd=0,th2d=th1d)",
                   setv(th1=lambda v: v[alpha] / 2, zd=lambda v: 0.0, th2d=lambda v: v[th1d])))
-    if name in ("impact_slope", "impact2_slope", "impact_slope_jacobian"):
+    if name in ("impact_slope", "impact2_slope", "impact_slope_jacobian",
+                "impact_coulomb_slope"):
         E.append(("edge:pre_impact(th1=alpha/2+phi,zd=-xd*tan(phi))",
                   setv(th1=lambda v: v[alpha] / 2 + v[phi],
                        zd=lambda v: float(-mp.mpf(v[xd]) * mp.tan(v[phi])))))

@@ -145,6 +145,7 @@ class Model:
     J_slope: sp.Matrix
     Jmu_slope: sp.Matrix
     JI: dict
+    JC: dict = field(default_factory=dict)
     kernels: dict = field(default_factory=dict)
 
 
@@ -263,6 +264,51 @@ def stuck_foot(Minv, h, S, uval, slope_angle):
     return qdd, lam
 
 
+def foot_rows(fore, slope_angle):
+    """The three contact rows of the impact with friction (not in the paper), each the foot
+    Jacobian Jp = d(x_p, z_p)/dq of a contact point projected on a unit vector of the floor:
+    the fore foot along the unit tangent tau = (cos phi, -sin phi) (the floor's +x, down the
+    slope) and along the unit normal n = (sin phi, cos phi), and the rear (stance) foot
+    (x, z) along n.  Returns the 3x4 matrix with rows (t, n, r)."""
+    xf, zf = fore
+    tau = sp.Matrix([[sp.cos(slope_angle), -sp.sin(slope_angle)]])
+    nrm = sp.Matrix([[sp.sin(slope_angle), sp.cos(slope_angle)]])
+    Jf = sp.Matrix([_grad(xf), _grad(zf)])
+    Jr = sp.Matrix([_grad(x), _grad(z)])
+    return sp.Matrix.vstack(tau * Jf, nrm * Jf, nrm * Jr)
+
+
+def coulomb_impact(Mp, JC, lock):
+    """Ingredients of the impact with Coulomb friction at the fore foot (poly form).
+
+    Route, chosen to differ from the Rust derivation (which subtracts the lock's Schur
+    complement from M^-1): the torso lock th1d = th2d is a frictionless bilateral impulse
+    applied first, and the locked walker is described by its own coordinates w = (x, z, th)
+    with qd = P w, P = [[1,0,0],[0,1,0],[0,0,1],[0,0,1]].  Its inertia is M_r = P^T M P and its
+    inverse mass in q is M_L^-1 = P M_r^-1 P^T.  The lock's impulse lies along (0, 0, 1, -1),
+    orthogonal to the columns of P, so P^T M qd is conserved by it:
+    qd_L = P M_r^-1 P^T M qd-.  Without the lock (slope) P = I.
+    Then v = J qd_L, W = J M_L^-1 J^T, R = M_L^-1 [J_t; J_n]^T for the rows J of foot_rows.
+    """
+    qdm = sp.Matrix(QD)
+    if lock:
+        P = sp.Matrix([[1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 1]])
+    else:
+        P = sp.eye(4)
+    Mr = _rs_mat(P.T * Mp * P)
+    detMr = rsimp(Mr.det(method="berkowitz"))
+    Mr_inv = _rs_mat(Mr.adjugate() / detMr)
+    ML_inv = _rs_mat(P * Mr_inv * P.T)
+    qdl = _rs_mat(P * (Mr_inv * (P.T * (Mp * qdm))))
+    if lock:
+        assert rsimp(qdl[2] - qdl[3]) == 0
+    vc = _rs_mat(JC * qdl)
+    W = _rs_mat(JC * ML_inv * JC.T)
+    assert _rs_mat(W - W.T) == sp.zeros(3, 3)
+    R = _rs_mat(ML_inv * JC[0:2, :].T)
+    return qdl, vc, W, R
+
+
 def impact(Minv, JI):
     """lambda_I = -(J_I M^-1 J_I^T)^-1 J_I qd-, qd+ = qd- + M^-1 J_I^T lambda_I (poly form)."""
     qdm = sp.Matrix(QD)
@@ -275,6 +321,13 @@ def impact(Minv, JI):
     return detX, lamI, qdp
 
 
+def fore_foot_position():
+    """The fore-leg end: the hip (x + l sin th1, z + l cos th1) minus the leg at th1 - alpha."""
+    xh = x + l * sp.sin(th1)
+    zh = z + l * sp.cos(th1)
+    return xh - l * sp.sin(th1 - alpha), zh - l * sp.cos(th1 - alpha)
+
+
 @functools.lru_cache(maxsize=None)
 def derive() -> Model:
     M, h, T, V = euler_lagrange()
@@ -285,8 +338,7 @@ def derive() -> Model:
 
     xh = x + l * sp.sin(th1)
     zh = z + l * sp.cos(th1)
-    xf = xh - l * sp.sin(th1 - alpha)
-    zf = zh - l * sp.cos(th1 - alpha)
+    xf, zf = fore_foot_position()
     xfd = _time_derivative(xf)
     zfd = _time_derivative(zf)
 
@@ -305,9 +357,11 @@ def derive() -> Model:
         "impact_slope": fore_slope,
         "impact2_slope": sp.Matrix.vstack(fore_slope, rear_slope),
     }
+    JC = {"impact_coulomb_level": foot_rows((xf, zf), sp.Integer(0)),
+          "impact_coulomb_slope": foot_rows((xf, zf), phi)}
     mdl = Model(M=M, h=h, S=S, T=T, V=V, hip=(xh, zh), fore=(xf, zf), fore_vel=(xfd, zfd),
                 J_level=J_level, Jmu_level=Jmu_level, J_slope=J_slope, Jmu_slope=Jmu_slope,
-                JI=JI)
+                JI=JI, JC=JC)
     mdl.kernels = build_kernels(mdl)
     return mdl
 
@@ -347,6 +401,15 @@ def build_kernels(mdl: Model):
         mdl.detX[name] = detX
         outs = [(f"lambdaI{i}", lamI[i]) for i in range(lamI.rows)]
         outs += [(f"qdp{i}", qdp[i]) for i in range(4)]
+        add(name, imp_in, outs)
+    # impact with Coulomb friction at the fore foot (not in the paper), see coulomb_impact
+    for name, lock in (("impact_coulomb_level", True), ("impact_coulomb_slope", False)):
+        qdl, vc, W, R = coulomb_impact(Mp, P(mdl.JC[name]), lock)
+        outs = [(f"qdl{i}", qdl[i]) for i in range(4)]
+        outs += [(n, vc[i]) for i, n in enumerate(("v_t", "v_n", "v_r"))]
+        outs += [(n, W[i, j]) for n, i, j in (("W_tt", 0, 0), ("W_tn", 0, 1), ("W_tr", 0, 2),
+                                              ("W_nn", 1, 1), ("W_nr", 1, 2), ("W_rr", 2, 2))]
+        outs += [(f"R{i}{j}", R[i, j]) for i in range(4) for j in range(2)]
         add(name, imp_in, outs)
     xf, zf = mdl.fore
     xfd, zfd = mdl.fore_vel

@@ -18,7 +18,10 @@
 //!   directly);
 //! - the closed loops (Eq. 31 sliding, and its stick counterpart) by three KKT solves:
 //!   `A = S^T x_S`, `B = S^T x_h` from the right-hand sides `[S; 0]`, `[h; 0]`, then
-//!   `u = (v + B) / A` and the system solved again at that `u`.
+//!   `u = (v + B) / A` and the system solved again at that `u`;
+//! - the ingredients of the impact with Coulomb friction (`coulomb_impact`): the contact rows
+//!   from the feet's Cartesian Jacobians projected on the floor's unit tangent and normal, the
+//!   torso lock by the impact KKT system, `M_L^-1 J^T` by KKT solves.
 //!
 //! Next to each value the generic path returns an *error scale* `s` (documented per function):
 //! a conditioning-based magnitude such that a backward-stable evaluation of the same quantity,
@@ -39,6 +42,8 @@
 //! - `invariants`: energy conservation (RK4 stance, drift ~ h^4), horizontal momentum, the
 //!   impact constraints after the impact, angular momentum about the new contact point,
 //!   `J M^-1 Y = 0`;
+//! - `impact_friction`: the library's impact with Coulomb friction against the SymPy/mpmath
+//!   reference `tests/data/impact_friction.json`, and its properties over random states;
 //! - `specialisation`: the Table 1 scenes (`active_level`, `passive_slope`) agree with the
 //!   general kernels at those parameters, and the frictionless scene has no `tanh`.
 //!
@@ -57,12 +62,15 @@
 //! One concept per module, re-exported here: `cases` (case counts), `float` (`EPS`, `ulp`),
 //! `phys` (parameters and prepared kernels), `matrices` (the paper's `S`, `M`, `h`, `J`, rows),
 //! `friction` (the `tanh` law), `linear` (solves with conditioning), `stance`, `stick`,
-//! `closed_loop` and `impact` (the generic path of each phase), `kinematics` (positions,
-//! energies, momenta). Imports run one way: `phys <- matrices <- {stance, stick, impact,
-//! kinematics}`, `linear <- {stance, stick, impact}`, `{stance, stick} <- closed_loop`.
+//! `closed_loop`, `impact` and `coulomb_impact` (the generic path of each phase), `kinematics`
+//! (positions, energies, momenta). Imports run one way:
+//! `phys <- matrices <- {stance, stick, impact, coulomb_impact, kinematics}`,
+//! `linear <- {stance, stick, impact, coulomb_impact}`, `impact <- coulomb_impact`,
+//! `{stance, stick} <- closed_loop`.
 
 mod cases;
 mod closed_loop;
+mod coulomb_impact;
 mod float;
 mod friction;
 mod impact;
@@ -75,6 +83,7 @@ mod stick;
 
 pub use cases::{LONG_FACTOR, cases};
 pub use closed_loop::{ClosedLoop, Contact, closed_loop};
+pub use coulomb_impact::{CoulombIngredients, contact_rows, coulomb_ingredients, coulomb_outputs};
 pub use float::{EPS, ulp};
 pub use friction::{mu_law, xd_for_mu};
 pub use impact::{Impact, impact, impact_rows};

@@ -15,7 +15,7 @@
 //!   of such an evaluation is `gamma_n * (absolute-value evaluation)` with `n <= ~12`, on both
 //!   the generated and the generic side: `2 * 12 < 32`.
 //! - `C_SOLVE = 256` for everything obtained from a linear system (reactions, accelerations,
-//!   `Y`, `A`, `B`, impacts): the generic side is LU with partial pivoting on `n <= 7`, backward
+//!   `Y`, `A`, `B`, impacts, the impact with friction's `qdl`, `v`, `W`, `R`): the generic side is LU with partial pivoting on `n <= 7`, backward
 //!   error `||dK|| <= gamma_{3n} rho ||K||` (`3n <= 21`, growth `rho <= 2` for these small
 //!   KKT matrices) plus the rounding of the right-hand side (`b_abs` in the scale); the
 //!   generated closed form's roundings act as relative perturbations of ~20 eps of the data
@@ -157,6 +157,45 @@ fn check_fore_foot_energy(
     let (e, eabs) = walker_tests::energy(p, s.z, th1, qd);
     for i in 0..2 {
         close(&format!("energy[{i}]"), en[i], e[i], C_DIRECT, eabs[i])?;
+    }
+    Ok(())
+}
+
+/// `impact_coulomb_level` / `impact_coulomb_slope` (`qdl`, `v`, `W`, `R`) against the generic
+/// path ([`walker_tests::coulomb_ingredients`]: contact rows from the feet's Cartesian
+/// Jacobians, `M_L^-1 J^T` by KKT solves), each output with its scale and `C_SOLVE` (the lock
+/// and the columns are `n <= 5` KKT solves; `v` and `W` add one product with the rows, whose
+/// rounding is within `||J|| ||X||` of the scale).
+fn check_coulomb(
+    name: &str,
+    p: &Phys,
+    th1: f64,
+    s: &State,
+    out: &[f64; 21],
+) -> Result<(), TestCaseError> {
+    let qd = Vector4::new(s.xd, s.zd, s.th1d, s.th2d);
+    let lock = name == "impact_coulomb_level";
+    let c = walker_tests::coulomb_ingredients(p, th1, qd, lock).map_err(TestCaseError::fail)?;
+    let (v, sc) = walker_tests::coulomb_outputs(&c);
+    const NAMES: [&str; 21] = [
+        "qdl0", "qdl1", "qdl2", "qdl3", "v_t", "v_n", "v_r", "W_tt", "W_tn", "W_tr", "W_nn",
+        "W_nr", "W_rr", "R00", "R01", "R10", "R11", "R20", "R21", "R30", "R31",
+    ];
+    for i in 0..21 {
+        close(
+            &format!("{name} {}", NAMES[i]),
+            out[i],
+            v[i],
+            C_SOLVE,
+            sc[i],
+        )?;
+    }
+    // The slope has no lock: qdl is qd- itself.
+    if !lock {
+        prop_assert!(
+            out[..4] == [s.xd, s.zd, s.th1d, s.th2d],
+            "{name}: qdl != qd-"
+        );
     }
     Ok(())
 }
@@ -316,6 +355,7 @@ proptest! {
 
         check_impact("impact3_level", &p, th1, &s, &gl::impact3_level(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
         check_impact("impact2_level", &p, th1, &s, &gl::impact2_level(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+        check_coulomb("impact_coulomb_level", &p, th1, &s, &gl::impact_coulomb_level(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
     }
 
     #[test]
@@ -345,6 +385,7 @@ proptest! {
 
         check_impact("impact_slope", &p, th1, &s, &gs::impact_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
         check_impact("impact2_slope", &p, th1, &s, &gs::impact2_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+        check_coulomb("impact_coulomb_slope", &p, th1, &s, &gs::impact_coulomb_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
     }
 
     #[test]
@@ -386,6 +427,7 @@ proptest! {
 
         check_impact("impact3_level", &p, th1, &s, &glc::impact3_level(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
         check_impact("impact2_level", &p, th1, &s, &glc::impact2_level(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+        check_coulomb("impact_coulomb_level", &p, th1, &s, &glc::impact_coulomb_level(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
     }
 
     #[test]
@@ -412,6 +454,7 @@ proptest! {
 
         check_impact("impact_slope", &p, th1, &s, &gsc::impact_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
         check_impact("impact2_slope", &p, th1, &s, &gsc::impact2_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
+        check_coulomb("impact_coulomb_slope", &p, th1, &s, &gsc::impact_coulomb_slope(&k, th1, s.xd, s.zd, s.th1d, s.th2d))?;
     }
 
     /// Where `tanh` saturates, the tanh law is the Coulomb law: `tanh(c xd)` with `c xd = ±40`

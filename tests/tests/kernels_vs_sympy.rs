@@ -36,6 +36,12 @@
 //! reference `mu` is realised exactly with `mu0 = |mu|`, `sigma = -sign(mu)` (a product with
 //! `±1`), so `dmu = 0` there. The stick kernels have no `mu`.
 //!
+//! The impact with Coulomb friction (`impact_coulomb_level` / `impact_coulomb_slope`): the
+//! scales of [`walker_tests::CoulombIngredients`], the lock's impact solve for `qdl`, the KKT
+//! solves of `M_L^-1 J^T` for `R`, and their products with the contact rows for `v` and `W`
+//! (the product's own rounding, a few eps of `||J|| ||X||`, is inside the scale): `C_SOLVE`.
+//! On the slope `qdl = qd-` is returned exactly.
+//!
 //! Closed loops (`closed_loop_level`, `closed_loop_stick_level`): the scale is that of
 //! [`walker_tests::ClosedLoop`], the solve at `u` plus the first-order propagation of the
 //! errors of `A`, `B` through `u = (v + B) / A`; the same `C_SOLVE` (see
@@ -63,7 +69,7 @@ const MU0: f64 = 2.5;
 const C_LAW: f64 = 1.0;
 
 /// The kernels of the tanh scenes `general_level` / `general_slope` checked here.
-const KERNELS: [&str; 15] = [
+const KERNELS: [&str; 17] = [
     "mass_matrix",
     "bias",
     "lambda_level",
@@ -77,12 +83,14 @@ const KERNELS: [&str; 15] = [
     "impact2_level",
     "impact_slope",
     "impact2_slope",
+    "impact_coulomb_level",
+    "impact_coulomb_slope",
     "fore_foot",
     "energy",
 ];
 
 /// The kernels of `general_level_coulomb`.
-const COULOMB_LEVEL: [&str; 10] = [
+const COULOMB_LEVEL: [&str; 11] = [
     "lambda_level",
     "control_level",
     "accel_level",
@@ -91,17 +99,19 @@ const COULOMB_LEVEL: [&str; 10] = [
     "closed_loop_stick_level",
     "impact3_level",
     "impact2_level",
+    "impact_coulomb_level",
     "fore_foot",
     "energy",
 ];
 
 /// The kernels of `general_slope_coulomb`.
-const COULOMB_SLOPE: [&str; 7] = [
+const COULOMB_SLOPE: [&str; 8] = [
     "lambda_slope",
     "accel_slope",
     "stick_slope",
     "impact_slope",
     "impact2_slope",
+    "impact_coulomb_slope",
     "fore_foot",
     "energy",
 ];
@@ -210,6 +220,10 @@ fn generated_coulomb(kernel: &str, module: Module, pt: &Point) -> Vec<f64> {
                 let (a, b, c, d) = imp();
                 gsc::impact2_slope(&k, th1, a, b, c, d).to_vec()
             }
+            "impact_coulomb_slope" => {
+                let (a, b, c, d) = imp();
+                gsc::impact_coulomb_slope(&k, th1, a, b, c, d).to_vec()
+            }
             "fore_foot" => {
                 let (x, z, xd, zd, w) = ff();
                 gsc::fore_foot(&k, x, z, th1, xd, zd, w).to_vec()
@@ -238,6 +252,10 @@ fn generated_coulomb(kernel: &str, module: Module, pt: &Point) -> Vec<f64> {
         "impact2_level" => {
             let (a, b, c, d) = imp();
             glc::impact2_level(&k, th1, a, b, c, d).to_vec()
+        }
+        "impact_coulomb_level" => {
+            let (a, b, c, d) = imp();
+            glc::impact_coulomb_level(&k, th1, a, b, c, d).to_vec()
         }
         "fore_foot" => {
             let (x, z, xd, zd, w) = ff();
@@ -320,6 +338,14 @@ fn generated(kernel: &str, module: Module, pt: &Point) -> Vec<f64> {
         "impact2_slope" => {
             let (a, b, c, d) = imp();
             gs::impact2_slope(&ks, th1, a, b, c, d).to_vec()
+        }
+        "impact_coulomb_level" => {
+            let (a, b, c, d) = imp();
+            gl::impact_coulomb_level(&kl, th1, a, b, c, d).to_vec()
+        }
+        "impact_coulomb_slope" => {
+            let (a, b, c, d) = imp();
+            gs::impact_coulomb_slope(&ks, th1, a, b, c, d).to_vec()
         }
         "fore_foot" => gl::fore_foot(
             &kl,
@@ -421,6 +447,13 @@ fn generic(kernel: &str, module: Module, pt: &Point, mu: f64) -> (Vec<f64>, Vec<
             v.extend(imp.qd_plus.iter());
             let n = v.len();
             (v, n_out(n, C_SOLVE, imp.scale))
+        }
+        "impact_coulomb_level" | "impact_coulomb_slope" => {
+            let lock = kernel == "impact_coulomb_level";
+            let c = walker_tests::coulomb_ingredients(&p, th1, pt.qd(), lock)
+                .expect("Coulomb impact solves");
+            let (v, s) = walker_tests::coulomb_outputs(&c);
+            (v, s.iter().map(|x| C_SOLVE * x).collect())
         }
         "fore_foot" => {
             let (v, a) = walker_tests::fore_foot(
