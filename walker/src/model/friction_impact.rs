@@ -27,9 +27,11 @@
 //! equals wherever the slip does not reverse; with a reversal the algebraic rule's impulse
 //! would lie on the cone's edge against the final slip, while here it follows the slip through
 //! zero. If `W_nn - s mu0 W_tn <= 0` while the foot slips, more normal impulse makes the foot
-//! approach faster; if its slip then never stops, the rigid-body impact has no solution
-//! ([`ImpactJam`], Painleve's paradox at an impact); if it stops, sticking (or the slip back)
-//! ends the compression as above. The energy lost is never negative (Stronge, Sec. 5.2, for `e = 0`); the tests
+//! approach faster; but with `W` positive definite the slip then decelerates (`d . W d > 0` for
+//! the impulse direction `d = (-s mu0, 1)`) and stops, and sticking or the slip back (under
+//! which the approach always shrinks) ends the compression. A slip that would never stop
+//! ([`ImpactJam`], Painleve's paradox at an impact) can only come from a `W` that rounding made
+//! indefinite. The energy lost is never negative (Stronge, Sec. 5.2, for `e = 0`); the tests
 //! check it.
 //!
 //! The double-support test of the paper (Eqs. 11, 46: keep the rear foot on the floor and read
