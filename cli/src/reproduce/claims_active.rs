@@ -141,8 +141,9 @@ pub fn convergence(s: &mut String, d: &Data) {
         s,
         "- Fig. 7 (T_set = 0.3, mu0 = 0.4, start 0.1 rad/s above the steady th1d+): \
          |qd+ - qd+_eq| falls monotonically: {monotone}; by a factor {rate_first:.4} at the 1st \
-         impact, {rate_last:.4} per impact at the {n}th; d xd+ at the 0th impact {}, negative at \
-         {} of impacts 1-{n}; d th1d+ at the 0th impact {} ({:+.4}), negative at {} of impacts 1-{n}",
+         impact, {rate_last:.4} per impact at the {n}th; d xd+: sign {} at the 0th impact, negative \
+         at {} of impacts 1-{n}; d th1d+: sign {} at the 0th impact ({:+.4}), negative at {} of \
+         impacts 1-{n}",
         sign(first[1]),
         count(1, true),
         sign(first[2]),

@@ -184,7 +184,7 @@ pub fn sticks(s: &mut String, d: &Data) {
         .collect();
     let _ = writeln!(
         s,
-        "- Fig. 11 (phi = 0.2, from (P2b)): the foot slides along the slope (dx - 2 l sin(alpha/2)) \
+        "- Fig. 11 (phi = 0.2, from (P2b)): the foot slides along the slope (dx - 2 l sin(alpha/2)): \
          {}",
         parts.join("; ")
     );
