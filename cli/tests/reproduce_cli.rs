@@ -95,6 +95,50 @@ fn reproduce_writes_every_figure_its_data_and_the_summary() {
     assert_eq!(flags.len(), 3 * 71, "three phi, mu0 0 to 0.7 by 0.01");
     assert!(flags.iter().all(|f| *f == "true" || *f == "false"));
     assert!(flags.contains(&"true") && flags.contains(&"false"));
+    readme_quotes_the_summary(&summary);
+}
+
+/// The decimal numbers (`0.45`, `62.95`; not integers, not `1e-6`) in `text`.
+fn decimals(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut current = String::new();
+    for c in text.chars().chain(std::iter::once(' ')) {
+        if c.is_ascii_digit() || (c == '.' && !current.is_empty() && !current.contains('.')) {
+            current.push(c);
+        } else {
+            if current.contains('.') && !current.ends_with('.') {
+                out.push(current.clone());
+            }
+            current.clear();
+        }
+    }
+    out
+}
+
+/// The README's claims table is quoted from `summary.txt`, not typed by hand: every decimal
+/// number in its "found" column occurs in the summary this run wrote.
+fn readme_quotes_the_summary(summary: &str) {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let readme = std::fs::read_to_string(root.join("README.md")).expect("README.md");
+    let table = readme
+        .split_once("| claim (paper) | found |")
+        .map(|(_, t)| t)
+        .expect("the README's claims table");
+    let rows: Vec<&str> = table
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .collect();
+    assert!(rows.len() >= 15, "{} rows", rows.len());
+    for row in rows {
+        let found = row.split('|').nth(2).unwrap_or_default();
+        for n in decimals(found) {
+            assert!(
+                summary.contains(&n),
+                "README claims table quotes {n}, which summary.txt does not contain:\n{row}"
+            );
+        }
+    }
 }
 
 /// The README's main command as a user types it (`cargo run --release -p walker -- reproduce
