@@ -16,6 +16,7 @@ use crate::progress::Progress;
 pub const OMEGAS: [f64; 3] = [0.6, 0.7, 0.8];
 /// `T_set` values of Fig. 8.
 pub const T_SETS: [f64; 3] = [0.2, 0.3, 0.4];
+
 /// The collected data of every figure.
 pub struct Data {
     /// Fig. 3 (`mu0 = 0`) and Fig. 5 (`mu0 = 0.4`) motions, `T_set = 0.3`, `omega0 = 0.8`.
