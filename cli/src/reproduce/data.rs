@@ -48,27 +48,6 @@ pub struct Data {
     pub fall: Walk,
 }
 
-/// [`sweep_chains`] with a progress bar named `label` on a terminal: `(chain value, points)` for
-/// each of `chains`.
-#[allow(clippy::too_many_arguments)]
-fn sweep_with_bar(
-    label: &str,
-    chains: &[f64],
-    make: impl Fn(f64, f64) -> Model + Sync,
-    cfg: &SimConfig,
-    grid: &[f64],
-    initial: impl Fn(f64) -> [f64; 8] + Sync,
-    limits: &WalkLimits,
-    restart: bool,
-) -> Vec<(f64, Vec<SweepPoint>)> {
-    let bar = Progress::new(label, chains.len() * grid.len());
-    let points = sweep_chains(chains, make, cfg, grid, initial, limits, restart, &|| {
-        bar.tick()
-    });
-    bar.finish();
-    chains.iter().copied().zip(points).collect()
-}
-
 /// At most `max_steps` steps, no time limit; samples kept if `record`.
 fn limits(max_steps: usize, record: bool) -> WalkLimits {
     WalkLimits {
@@ -125,24 +104,28 @@ pub fn collect() -> Data {
         record: false,
         periodic: None,
     };
-    let active_sweep = sweep_with_bar(
-        "Fig. 8 sweep",
-        &T_SETS,
-        |ts, mu0| active(mu0, ts),
-        &cfg,
-        &grid,
-        |ts| active(0.0, ts).initial_state(0.8),
-        &long,
-        false,
-    );
-    // The Coulomb sweep is one sequential chain: it runs on a thread of its own next to the
-    // passive sweeps, under one progress bar.
+    // Every sweep at once, under one progress bar: the sequential chains (three `T_set` of
+    // Fig. 8, its Coulomb chain, the continued passive chains) each on a thread of their own,
+    // the independent passive walks on the rayon pool, so that no core waits for the longest
+    // chain of one sweep while another sweep has work.
     let bar = Progress::new(
-        "Figs. 10, 13 and Fig. 8 Coulomb sweeps",
-        passive_walks() + grid.len(),
+        "Figs. 8, 10 and 13 sweeps",
+        (T_SETS.len() + 1) * grid.len() + passive_walks(),
     );
     let tick = || bar.tick();
-    let (coulomb_sweep, sweeps) = std::thread::scope(|scope| {
+    let (active_sweep, coulomb_sweep, sweeps) = std::thread::scope(|scope| {
+        let fig8 = scope.spawn(|| {
+            sweep_chains(
+                &T_SETS,
+                |ts, mu0| active(mu0, ts),
+                &cfg,
+                &grid,
+                |ts| active(0.0, ts).initial_state(0.8),
+                &long,
+                false,
+                &tick,
+            )
+        });
         let coulomb = scope.spawn(|| {
             sweep_chains(
                 &[0.3],
@@ -156,10 +139,12 @@ pub fn collect() -> Data {
             )
         });
         let passive = passive_sweeps(&cfg, &tick);
-        let coulomb = coulomb
-            .join()
-            .unwrap_or_else(|e| std::panic::resume_unwind(e));
-        (vec![0.3].into_iter().zip(coulomb).collect(), passive)
+        let join = |h: std::thread::ScopedJoinHandle<'_, Vec<Vec<SweepPoint>>>| {
+            h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
+        };
+        let fig8: Vec<(f64, Vec<SweepPoint>)> = T_SETS.iter().copied().zip(join(fig8)).collect();
+        let coulomb = vec![0.3].into_iter().zip(join(coulomb)).collect();
+        (fig8, coulomb, passive)
     });
     bar.finish();
     let PassiveSweeps {
