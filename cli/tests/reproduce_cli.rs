@@ -31,7 +31,7 @@ const FIGURES: [&str; 21] = [
 ];
 
 /// The data behind them.
-const CSVS: [&str; 11] = [
+const CSVS: [&str; 13] = [
     "fig3_motion_mu0_0",
     "fig5_motion_mu0_0.4",
     "fig4_steps_mu0_0",
@@ -41,6 +41,8 @@ const CSVS: [&str; 11] = [
     "fig8_sweep_coulomb",
     "fig10_sweep",
     "fig10_sweep_continued",
+    "passive_large_mu0",
+    "passive_inertia",
     "fig12_step_length",
     "stability",
 ];
@@ -70,7 +72,8 @@ fn reproduce_writes_every_figure_its_data_and_the_summary() {
     assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), summary.trim());
     for claim in [
         "limit cycles not unique",
-        "T_set = 0.2: failures at mu0 0.00:lift-off",
+        "T_set = 0.2 (Fig. 8): lift-off for mu0 in [0.00, ",
+        "not periodic after 100 s for mu0 in [0.19, ",
         "exact Coulomb friction",
         "(Fig. 14): fell-backward at step 1",
         "Stability from the Floquet multipliers",
@@ -78,6 +81,64 @@ fn reproduce_writes_every_figure_its_data_and_the_summary() {
         assert!(summary.contains(claim), "missing {claim:?} in\n{summary}");
     }
     assert!(!summary.contains("NaN"), "{summary}");
+    // The passive sweeps' CSV marks every point: `periodic` is `true` or `false` on every row.
+    let sweep = std::fs::read_to_string(out.join("fig10_sweep.csv")).expect("fig10_sweep.csv");
+    let mut rows = sweep.lines();
+    let header: Vec<&str> = rows.next().unwrap_or_default().split(',').collect();
+    let col = header
+        .iter()
+        .position(|h| *h == "periodic")
+        .expect("a periodic column");
+    let flags: Vec<&str> = rows
+        .map(|r| r.split(',').nth(col).unwrap_or_default())
+        .collect();
+    assert_eq!(flags.len(), 3 * 71, "three phi, mu0 0 to 0.7 by 0.01");
+    assert!(flags.iter().all(|f| *f == "true" || *f == "false"));
+    assert!(flags.contains(&"true") && flags.contains(&"false"));
+    readme_quotes_the_summary(&summary);
+}
+
+/// The decimal numbers (`0.45`, `62.95`; not integers, not `1e-6`) in `text`.
+fn decimals(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut current = String::new();
+    for c in text.chars().chain(std::iter::once(' ')) {
+        if c.is_ascii_digit() || (c == '.' && !current.is_empty() && !current.contains('.')) {
+            current.push(c);
+        } else {
+            if current.contains('.') && !current.ends_with('.') {
+                out.push(current.clone());
+            }
+            current.clear();
+        }
+    }
+    out
+}
+
+/// The README's claims table is quoted from `summary.txt`, not typed by hand: every decimal
+/// number in its "found" column occurs in the summary this run wrote.
+fn readme_quotes_the_summary(summary: &str) {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let readme = std::fs::read_to_string(root.join("README.md")).expect("README.md");
+    let table = readme
+        .split_once("| claim (paper) | found |")
+        .map(|(_, t)| t)
+        .expect("the README's claims table");
+    let rows: Vec<&str> = table
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .collect();
+    assert!(rows.len() >= 15, "{} rows", rows.len());
+    for row in rows {
+        let found = row.split('|').nth(2).unwrap_or_default();
+        for n in decimals(found) {
+            assert!(
+                summary.contains(&n),
+                "README claims table quotes {n}, which summary.txt does not contain:\n{row}"
+            );
+        }
+    }
 }
 
 /// The README's main command as a user types it (`cargo run --release -p walker -- reproduce

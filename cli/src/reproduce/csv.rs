@@ -68,18 +68,30 @@ fn series_csv(path: &Path, label: &str, walks: &[(f64, Walk)]) -> Result<(), Wri
 }
 
 /// The points of sweep chains, each tagged by its `label` value (`T_set`, `phi`): `mu0`, the
-/// steps walked, the status and the last step.
+/// steps walked, the status, with `periodic` whether the walk settled to a periodic gait (the
+/// passive sweeps, [`crate::reproduce::passive::PERIODIC_TOL`]; `false` for a failure or a walk
+/// that reached its duration first), and the last step.
 fn sweep_csv(
     path: &Path,
     label: &str,
     chains: &[(f64, Vec<SweepPoint>)],
+    periodic: bool,
 ) -> Result<(), WriteError> {
-    let mut out = format!("{label},mu0,steps,status,{}\n", steps_header());
+    let periodic_col = if periodic { "periodic," } else { "" };
+    let mut out = format!(
+        "{label},mu0,steps,status,{periodic_col}{}\n",
+        steps_header()
+    );
     for (v, pts) in chains {
         for p in pts {
             let status = p.failure.as_ref().map_or("ok", |f| f.name());
             let row = p.last.as_ref().map_or_else(|| ",".repeat(12), step_row);
-            let _ = writeln!(out, "{v},{:.4},{},{status},{row}", p.mu0, p.steps);
+            let flag = if periodic {
+                format!("{},", p.periodic)
+            } else {
+                String::new()
+            };
+            let _ = writeln!(out, "{v},{:.4},{},{status},{flag}{row}", p.mu0, p.steps);
         }
     }
     write(path, out)
@@ -112,17 +124,31 @@ pub fn write_csvs(out: &Path, d: &Data) -> Result<(), WriteError> {
         &d.omega_series[1],
     )?;
     convergence_csv(&out.join("fig7_convergence.csv"), &d.convergence)?;
-    sweep_csv(&out.join("fig8_sweep.csv"), "T_set", &d.active_sweep)?;
-    sweep_csv(&out.join("fig10_sweep.csv"), "phi", &d.passive_sweep)?;
+    sweep_csv(&out.join("fig8_sweep.csv"), "T_set", &d.active_sweep, false)?;
+    sweep_csv(&out.join("fig10_sweep.csv"), "phi", &d.passive_sweep, true)?;
     sweep_csv(
         &out.join("fig10_sweep_continued.csv"),
         "phi",
         &d.passive_continuation,
+        true,
+    )?;
+    sweep_csv(
+        &out.join("passive_large_mu0.csv"),
+        "phi",
+        &d.passive_large_mu0,
+        true,
+    )?;
+    sweep_csv(
+        &out.join("passive_inertia.csv"),
+        "I1",
+        &d.passive_inertia,
+        true,
     )?;
     sweep_csv(
         &out.join("fig8_sweep_coulomb.csv"),
         "T_set",
         &d.coulomb_sweep,
+        false,
     )?;
     for (mu0, w) in &d.sticks {
         samples_csv(&out.join(format!("fig11_stick_mu0_{mu0}.csv")), &w.samples)?;

@@ -1,20 +1,21 @@
 //! The experiments behind the paper's figures: the walks and `mu0` sweeps of Figs. 3-8 and
-//! 10-14 with the paper's settings ([`OMEGAS`], [`T_SETS`], [`PHIS`]), collected once into
-//! [`Data`] for the CSV files, the figures and the summary.
+//! 10-14 with the paper's settings ([`OMEGAS`], [`T_SETS`], [`PHIS`]; the passive sweeps in
+//! [`super::passive`]), collected once into [`Data`] for the CSV files, the figures and the
+//! summary.
 
 use walker::model::{Model, Physical};
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
 
 use super::models::{active, passive, runtime};
+pub use super::passive::PHIS;
+use super::passive::{PassiveSweeps, passive_sweeps, passive_walks};
 use crate::progress::Progress;
 
 /// Omega0 values of Figs. 4 and 6.
 pub const OMEGAS: [f64; 3] = [0.6, 0.7, 0.8];
 /// `T_set` values of Fig. 8.
 pub const T_SETS: [f64; 3] = [0.2, 0.3, 0.4];
-/// Slope angles of Fig. 10.
-pub const PHIS: [f64; 3] = [0.10, 0.15, 0.20];
 
 /// The collected data of every figure.
 pub struct Data {
@@ -27,10 +28,16 @@ pub struct Data {
     /// Fig. 8: sweeps over `mu0` for `T_set` = 0.2, 0.3, 0.4.
     pub active_sweep: Vec<(f64, Vec<SweepPoint>)>,
     /// Figs. 10 and 13: sweeps over `mu0` for `phi` = 0.10, 0.15, 0.20, each `mu0` from (P2b)
-    /// (the paper's (P5b) "Repeat from (P2b)", `walker sweep --restart`).
+    /// (the paper's (P5b) "Repeat from (P2b)", `walker sweep --restart`), 100 s per `mu0`.
     pub passive_sweep: Vec<(f64, Vec<SweepPoint>)>,
-    /// Fig. 10 read the other way: each `mu0` from the previous steady state ((P4b)).
+    /// Fig. 10 read the other way: each `mu0` from the previous one's last state ((P4b)).
     pub passive_continuation: Vec<(f64, Vec<SweepPoint>)>,
+    /// The passive wheel (Table 1) beyond the paper's `mu0`, per `phi`, each `mu0` from (P2b),
+    /// 100 s ([`super::passive::LARGE_MU0`]).
+    pub passive_large_mu0: Vec<(f64, Vec<SweepPoint>)>,
+    /// The passive wheel with other wheel inertias `I1`, each `mu0` from (P2b), 100 s: `(I1,
+    /// points)` ([`super::passive::INERTIAS`]).
+    pub passive_inertia: Vec<(f64, Vec<SweepPoint>)>,
     /// The Fig. 8 sweep at `T_set = 0.3` with exact Coulomb friction (Eq. 25, stick-slip).
     pub coulomb_sweep: Vec<(f64, Vec<SweepPoint>)>,
     /// Fig. 11: motions at `phi = 0.2`, `mu0` = 0.2 and 0.5.
@@ -39,27 +46,6 @@ pub struct Data {
     pub step_lengths: Vec<(f64, Walk)>,
     /// Fig. 14: the motion at `phi = 0.10`, `mu0 = 0.19`.
     pub fall: Walk,
-}
-
-/// [`sweep_chains`] with a progress bar named `label` on a terminal: `(chain value, points)` for
-/// each of `chains`.
-#[allow(clippy::too_many_arguments)]
-fn sweep_with_bar(
-    label: &str,
-    chains: &[f64],
-    make: impl Fn(f64, f64) -> Model + Sync,
-    cfg: &SimConfig,
-    grid: &[f64],
-    initial: impl Fn(f64) -> [f64; 8] + Sync,
-    limits: &WalkLimits,
-    restart: bool,
-) -> Vec<(f64, Vec<SweepPoint>)> {
-    let bar = Progress::new(label, chains.len() * grid.len());
-    let points = sweep_chains(chains, make, cfg, grid, initial, limits, restart, &|| {
-        bar.tick()
-    });
-    bar.finish();
-    chains.iter().copied().zip(points).collect()
 }
 
 /// At most `max_steps` steps, no time limit; samples kept if `record`.
@@ -118,41 +104,55 @@ pub fn collect() -> Data {
         record: false,
         periodic: None,
     };
-    let active_sweep = sweep_with_bar(
-        "Fig. 8 sweep",
-        &T_SETS,
-        |ts, mu0| active(mu0, ts),
-        &cfg,
-        &grid,
-        |ts| active(0.0, ts).initial_state(0.8),
-        &long,
-        false,
+    // Every sweep at once, under one progress bar: the sequential chains (three `T_set` of
+    // Fig. 8, its Coulomb chain, the continued passive chains) each on a thread of their own,
+    // the independent passive walks on the rayon pool, so that no core waits for the longest
+    // chain of one sweep while another sweep has work.
+    let bar = Progress::new(
+        "Figs. 8, 10 and 13 sweeps",
+        (T_SETS.len() + 1) * grid.len() + passive_walks(),
     );
-    let pgrid = mu0_grid(0.0, 0.7, 0.01);
-    let passive_chains = |label, restart| {
-        sweep_with_bar(
-            label,
-            &PHIS,
-            |phi, mu0| passive(mu0, phi),
-            &cfg,
-            &pgrid,
-            |phi| passive(0.0, phi).initial_state(0.5),
-            &limits(20, false),
-            restart,
-        )
-    };
-    let passive_sweep = passive_chains("Fig. 10 sweep", true);
-    let passive_continuation = passive_chains("Fig. 10 sweep, continued", false);
-    let coulomb_sweep = sweep_with_bar(
-        "Fig. 8 sweep, Coulomb",
-        &[0.3],
-        |ts, mu0| Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts)),
-        &cfg,
-        &grid,
-        |ts| active(0.0, ts).initial_state(0.8),
-        &long,
-        false,
-    );
+    let tick = || bar.tick();
+    let (active_sweep, coulomb_sweep, sweeps) = std::thread::scope(|scope| {
+        let fig8 = scope.spawn(|| {
+            sweep_chains(
+                &T_SETS,
+                |ts, mu0| active(mu0, ts),
+                &cfg,
+                &grid,
+                |ts| active(0.0, ts).initial_state(0.8),
+                &long,
+                false,
+                &tick,
+            )
+        });
+        let coulomb = scope.spawn(|| {
+            sweep_chains(
+                &[0.3],
+                |ts, mu0| Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts)),
+                &cfg,
+                &grid,
+                |ts| active(0.0, ts).initial_state(0.8),
+                &long,
+                false,
+                &tick,
+            )
+        });
+        let passive = passive_sweeps(&cfg, &tick);
+        let join = |h: std::thread::ScopedJoinHandle<'_, Vec<Vec<SweepPoint>>>| {
+            h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
+        };
+        let fig8: Vec<(f64, Vec<SweepPoint>)> = T_SETS.iter().copied().zip(join(fig8)).collect();
+        let coulomb = vec![0.3].into_iter().zip(join(coulomb)).collect();
+        (fig8, coulomb, passive)
+    });
+    bar.finish();
+    let PassiveSweeps {
+        restart: passive_sweep,
+        continued: passive_continuation,
+        large_mu0: passive_large_mu0,
+        inertia: passive_inertia,
+    } = sweeps;
     let sticks = [0.2, 0.5]
         .iter()
         .map(|&mu0| {
@@ -179,6 +179,8 @@ pub fn collect() -> Data {
         active_sweep,
         passive_sweep,
         passive_continuation,
+        passive_large_mu0,
+        passive_inertia,
         coulomb_sweep,
         sticks,
         step_lengths,

@@ -82,6 +82,53 @@ fn per_mu0(
         .collect()
 }
 
+/// `key` of the last step against `mu0` for the passive sweeps (points from `mu0_min` on), per
+/// chain `phi = value` the periodic gaits and, as a series of its own labelled `not periodic
+/// after 100 s`, the walks that reached 100 s without settling (transients). With `magnify`,
+/// the axis is that of the periodic gaits and each chain's transients are marked by a row of
+/// points above them (one row per chain, 4 % of the range apart), their values off scale.
+fn per_mu0_marked(
+    chains: &[(f64, Vec<SweepPoint>)],
+    key: fn(&StepResult) -> f64,
+    mu0_min: f64,
+    magnify: bool,
+) -> Vec<Series> {
+    let shown = |p: &&SweepPoint| p.failure.is_none() && p.mu0 >= mu0_min;
+    let (bottom, top) = chains
+        .iter()
+        .flat_map(|(_, pts)| pts.iter().filter(shown))
+        .filter(|p| p.periodic)
+        .filter_map(|p| p.last.as_ref().map(key))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
+            (a.min(y), b.max(y))
+        });
+    let mut series = Vec::new();
+    let mut rows = 0.0;
+    for (v, pts) in chains {
+        let points = |periodic: bool| -> Vec<(f64, f64)> {
+            pts.iter()
+                .filter(shown)
+                .filter(|p| p.periodic == periodic)
+                .filter_map(|p| p.last.as_ref().map(|r| (p.mu0, key(r))))
+                .collect()
+        };
+        series.push(Series::new(format!("phi = {v}"), points(true)));
+        let mut unsettled = points(false);
+        if unsettled.is_empty() {
+            continue;
+        }
+        let mut label = format!("phi = {v}: not periodic after 100 s");
+        if magnify {
+            rows += 1.0;
+            let row = top + rows * 0.04 * (top - bottom);
+            unsettled.iter_mut().for_each(|p| p.1 = row);
+            label.push_str(" (row: V off scale)");
+        }
+        series.push(Series::new(label, unsettled));
+    }
+    series
+}
+
 /// Stick diagram: the stance spoke (foot to hip) at every few samples, and the hip path.
 fn stick_fig(title: &str, s: &[Sample], l: f64) -> Figure {
     let hip = |p: &Sample| {
@@ -225,17 +272,21 @@ fn fig8_coulomb(d: &Data) -> Vec<Panel> {
     vec![("fig8c_coulomb", fig(title, "mu0", "V [m/s]", s, true))]
 }
 
-/// Fig. 10: period and speed against `mu0` from (P2b), and the speed continued ((P4b)).
+/// Fig. 10: period and speed against `mu0` from (P2b), and the speed continued ((P4b)); walks
+/// of 100 s that did not settle to a periodic gait are series of their own.
 fn fig10(d: &Data) -> Vec<Panel> {
-    let speed = |chains| per_mu0(chains, "phi", |s| Some(s.speed), 0.0);
-    let period = per_mu0(&d.passive_sweep, "phi", |s| Some(s.period), 0.0);
-    let continued = "Fig. 10(b), each mu0 continued from the previous one ((P4b))";
+    let speed = |chains| per_mu0_marked(chains, |s| s.speed, 0.0, false);
+    let period = per_mu0_marked(&d.passive_sweep, |s| s.period, 0.0, false);
+    let continued = "Fig. 10(b), each mu0 continued from the previous one ((P4b)), 100 s";
     vec![
-        ("fig10a", fig("Fig. 10(a)", "mu0", "T [s]", period, true)),
+        (
+            "fig10a",
+            fig("Fig. 10(a), 100 s per mu0", "mu0", "T [s]", period, true),
+        ),
         (
             "fig10b",
             fig(
-                "Fig. 10(b)",
+                "Fig. 10(b), 100 s per mu0",
                 "mu0",
                 "V [m/s]",
                 speed(&d.passive_sweep),
@@ -279,9 +330,9 @@ fn fig12(d: &Data) -> Vec<Panel> {
     )]
 }
 
-/// Fig. 13: Fig. 10(b) from `mu0 = 0.2` on.
+/// Fig. 13: Fig. 10(b) from `mu0 = 0.2` on, magnified to the periodic gaits.
 fn fig13(d: &Data) -> Vec<Panel> {
-    let s = per_mu0(&d.passive_sweep, "phi", |s| Some(s.speed), 0.2);
+    let s = per_mu0_marked(&d.passive_sweep, |s| s.speed, 0.2, true);
     let title = "Fig. 13: magnified Fig. 10(b)";
     vec![("fig13", fig(title, "mu0", "V [m/s]", s, true))]
 }

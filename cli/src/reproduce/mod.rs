@@ -2,22 +2,28 @@
 //! as PNG and SVG, and a summary of the paper's claims with the values found.
 //!
 //! One concept per file: the paper's walkers at a given `mu0` ([`models`]), the experiments
-//! behind the figures ([`data`]), their CSV files ([`csv`]), one function per figure
-//! ([`figures`]), the claims text ([`mod@summary`]), the Floquet stability along `mu0`
-//! ([`stability`]) and the whole job, writing everything into one directory ([`job`]), or why
-//! it could not ([`error`]).
+//! behind the figures ([`data`], the passive wheel's sweeps in [`passive`]), their CSV files
+//! ([`csv`]), one function per figure ([`figures`]), the animations of Figs. 5 and 14
+//! ([`animations`]), the claims text ([`mod@summary`], with the claims of Sections 4 and 5 in
+//! [`claims_active`] and [`claims_passive`] and the sweeps stated as ranges of `mu0` by
+//! [`ranges`]), the Floquet stability along `mu0` ([`stability`]) and the whole job, writing
+//! everything into one directory ([`job`]), or why it could not ([`error`]).
 //!
 //! Imports run one way: [`job`] -> [`stability`], [`mod@summary`], [`figures`], [`csv`] ->
-//! [`data`] -> [`models`] (and [`stability`] -> [`figures`], [`models`]); the writers ->
-//! [`error`].
+//! [`data`] -> [`passive`] -> [`models`] (and [`stability`] -> [`figures`], [`models`]; [`mod@summary`] ->
+//! [`claims_passive`] -> [`claims_active`] -> [`ranges`]); the writers -> [`error`].
 
 pub mod animations;
+pub mod claims_active;
+pub mod claims_passive;
 pub mod csv;
 pub mod data;
 pub mod error;
 pub mod figures;
 pub mod job;
 pub mod models;
+pub mod passive;
+pub mod ranges;
 pub mod stability;
 pub mod summary;
 

@@ -1,12 +1,20 @@
 //! The claims text of `walker reproduce`: each of the paper's claims with the values found in
-//! the collected [`Data`] (the first part of `summary.txt`; the stability lines follow).
+//! the collected [`Data`], in the paper's order (the first part of `summary.txt`; the stability
+//! lines follow). Sweeps are stated as ranges of `mu0` with one outcome each ([`super::ranges`]);
+//! the claims of Sections 4 and 5 beyond the sweeps are in [`super::claims_active`] and
+//! [`super::claims_passive`].
 
 use std::fmt::Write as _;
 
 use walker::sim::{StepResult, Walk};
 use walker::sweep::SweepPoint;
 
+use super::claims_active::{
+    convergence, fig8_details, period_convergence, slides_backward, slides_forward, step_limit,
+};
+use super::claims_passive::{large_mu0, passive_sweeps, step_lengths, sticks};
 use super::data::Data;
+use super::ranges::describe;
 
 /// The `mu0 > 0` of the valid points of a sweep where `key` of the last step is largest
 /// (`max`) or smallest, with that value, or `none`.
@@ -26,24 +34,8 @@ fn argbest(pts: &[SweepPoint], key: impl Fn(&StepResult) -> Option<f64>, max: bo
     )
 }
 
-/// The failures of a sweep as `mu0:name` pairs, or `none`.
-fn failures(pts: &[SweepPoint]) -> String {
-    let fails: Vec<String> = pts
-        .iter()
-        .filter_map(|p| {
-            p.failure
-                .as_ref()
-                .map(|f| format!("{:.2}:{}", p.mu0, f.name()))
-        })
-        .collect();
-    if fails.is_empty() {
-        "none".to_owned()
-    } else {
-        fails.join(" ")
-    }
-}
-
-/// Figs. 4 and 6: the steady speed reached from each `omega0`.
+/// Figs. 4 and 6: the steady speed reached from each `omega0` (`mu0 = 0` first, then the claims
+/// of Fig. 4(a) and Fig. 5 between them, in the paper's order).
 fn uniqueness(s: &mut String, d: &Data) {
     let steady_v = |w: &Walk| w.steps.last().map_or(f64::NAN, |s| s.speed);
     let v0: Vec<String> = d.omega_series[0]
@@ -59,6 +51,8 @@ fn uniqueness(s: &mut String, d: &Data) {
         "- mu0 = 0: limit cycles not unique (Fig. 4): {}",
         v0.join(", ")
     );
+    period_convergence(s, d);
+    slides_forward(s, d);
     let _ = writeln!(
         s,
         "- mu0 = 0.4: unique limit cycle (Fig. 6), after 30 steps: {}",
@@ -66,11 +60,14 @@ fn uniqueness(s: &mut String, d: &Data) {
     );
 }
 
-/// Fig. 8: per `T_set`, the failures, the best speed and specific resistance, and the step
-/// length at the largest `mu0` against its limit `2 l sin(alpha/2)`.
+/// Fig. 8: per `T_set`, where it walks and fails, the best speed and specific resistance, the
+/// step length at the largest `mu0` against its limit `2 l sin(alpha/2)`, the jump from
+/// `mu0 = 0` to 0.01 and where the step length lies above its limit.
 fn active_sweep(s: &mut String, d: &Data) {
     for (ts, pts) in &d.active_sweep {
-        let _ = writeln!(s, "- T_set = {ts}: failures at mu0 {}", failures(pts));
+        let outcome =
+            |p: &SweepPoint| Some(p.failure.as_ref().map_or("walks", |f| f.name()).to_owned());
+        let _ = writeln!(s, "- T_set = {ts} (Fig. 8): {}", describe(pts, outcome));
         let _ = writeln!(
             s,
             "  max V at {}; min SR at {}",
@@ -83,23 +80,10 @@ fn active_sweep(s: &mut String, d: &Data) {
                 "  dx at mu0 = {:.2}: {:.6} (limit 2 l sin(alpha/2) = {:.6})",
                 pts.last().map_or(f64::NAN, |p| p.mu0),
                 last.dx,
-                2.0 * (std::f64::consts::PI / 12.0).sin()
+                step_limit()
             );
         }
-    }
-}
-
-/// Fig. 10: the failures per `phi`, from (P2b) and continued ((P4b)).
-fn passive_sweeps(s: &mut String, d: &Data) {
-    for (phi, pts) in &d.passive_sweep {
-        let _ = writeln!(s, "- phi = {phi}: failures at mu0 {}", failures(pts));
-    }
-    for (phi, pts) in &d.passive_continuation {
-        let _ = writeln!(
-            s,
-            "- phi = {phi}, each mu0 continued from the previous one ((P4b)): failures at mu0 {}",
-            failures(pts)
-        );
+        fig8_details(s, pts);
     }
 }
 
@@ -144,10 +128,15 @@ fn fall(s: &mut String, d: &Data) {
 #[must_use]
 pub fn summary(d: &Data) -> String {
     let mut s = String::from("Claims of the paper and values found\n");
+    slides_backward(&mut s, d);
     uniqueness(&mut s, d);
+    convergence(&mut s, d);
     active_sweep(&mut s, d);
     passive_sweeps(&mut s, d);
-    coulomb(&mut s, d);
+    sticks(&mut s, d);
+    step_lengths(&mut s, d);
     fall(&mut s, d);
+    large_mu0(&mut s, d);
+    coulomb(&mut s, d);
     s
 }

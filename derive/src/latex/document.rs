@@ -9,7 +9,7 @@ use crate::error::Result;
 use crate::kernels::{Derivation, Kernel, Shape};
 use crate::mechanics::{self, Floor};
 use crate::ratfunc::RatFunc;
-use crate::symbol::{BaseAngle, Sym};
+use crate::symbol::{Atom, BaseAngle, Sym};
 
 /// Outputs larger than this (terms of numerator and denominator together) are described,
 /// not printed: a formula of hundreds of terms is not read by anyone, and GitHub's renderer
@@ -128,12 +128,24 @@ fn kernel_section(out: &mut String, kernel: &Kernel) {
     kernel_outputs(out, kernel);
 }
 
-/// The paper's pre-impact state and posture applied to every output of an impact kernel.
+/// The paper's pre-impact state and posture applied to every output of an impact kernel. On
+/// level ground the torso is locked (`th2d = th1d`, [`mechanics::paper_pre_impact`]); on the
+/// slope the torso is passive and not locked (Section 5: it decouples from the wheel), so only
+/// the stance foot's constraint `zd = -xd tan phi` is substituted and `th2d` stays its own.
 fn at_paper_impact(kernel: &Kernel, floor: Floor) -> Result<Vec<RatFunc>> {
     kernel
         .outputs
         .iter()
-        .map(|(_, r)| mechanics::paper_pre_impact(&mechanics::at_impact_posture(r, floor)?, floor))
+        .map(|(_, r)| {
+            let r = mechanics::at_impact_posture(r, floor)?;
+            match floor {
+                Floor::Level => mechanics::paper_pre_impact(&r, floor),
+                Floor::Slope => {
+                    let zd = -(&mechanics::sym(Sym::Xd) * &mechanics::tan_phi()?);
+                    r.substitute(Atom::Sym(Sym::Zd), &zd)
+                }
+            }
+        })
         .collect()
 }
 
@@ -211,8 +223,11 @@ pub fn equations_markdown(d: &Derivation) -> Result<String> {
         "\n## The paper's closed forms at the impact posture\n\n\
          The impact kernels with the paper's pre-impact state substituted: $\\theta_1 = \\alpha/2$ on\n\
          level ground and $\\theta_1 = \\alpha/2 + \\phi$ on the slope; the stance foot not moving into\n\
-         the floor ($\\dot{z}^- = 0$, on the slope $\\dot{z}^- = -\\dot{x}^-\\tan\\phi$); the torso locked\n\
-         ($\\dot{\\theta}_2^- = \\dot{\\theta}_1^-$). The velocity symbols below are the pre-impact ones.\n",
+         the floor ($\\dot{z}^- = 0$, on the slope $\\dot{z}^- = -\\dot{x}^-\\tan\\phi$); on level ground the\n\
+         torso locked ($\\dot{\\theta}_2^- = \\dot{\\theta}_1^-$, Eq. 5). On the slope the torso is passive and not\n\
+         locked: it decouples from the wheel (Section 5), the impact leaves its velocity as it was\n\
+         ($\\dot{\\theta}_2^+ = \\dot{\\theta}_2$) and no other output depends on it. The velocity symbols\n\
+         below are the pre-impact ones.\n",
     );
     let level3 = impact_closed_form(
         &mut out,
