@@ -31,7 +31,7 @@ const FIGURES: [&str; 21] = [
 ];
 
 /// The data behind them.
-const CSVS: [&str; 13] = [
+const CSVS: [&str; 14] = [
     "fig3_motion_mu0_0",
     "fig5_motion_mu0_0.4",
     "fig4_steps_mu0_0",
@@ -39,6 +39,7 @@ const CSVS: [&str; 13] = [
     "fig7_convergence",
     "fig8_sweep",
     "fig8_sweep_coulomb",
+    "fig8_sweep_coulomb_impact",
     "fig10_sweep",
     "fig10_sweep_continued",
     "passive_large_mu0",
@@ -75,6 +76,7 @@ fn reproduce_writes_every_figure_its_data_and_the_summary() {
         "T_set = 0.2 (Fig. 8): lift-off for mu0 in [0.00, ",
         "not periodic after 100 s for mu0 in [0.19, ",
         "exact Coulomb friction",
+        "in stance and at the impact (docs/impacts.md), T_set = 0.3: max V at mu0 = 0.2",
         "(Fig. 14): fell-backward at step 1",
         "Stability from the Floquet multipliers",
     ] {

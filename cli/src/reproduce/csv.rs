@@ -150,6 +150,12 @@ pub fn write_csvs(out: &Path, d: &Data) -> Result<(), WriteError> {
         &d.coulomb_sweep,
         false,
     )?;
+    sweep_csv(
+        &out.join("fig8_sweep_coulomb_impact.csv"),
+        "T_set",
+        &d.coulomb_impact_sweep,
+        false,
+    )?;
     for (mu0, w) in &d.sticks {
         samples_csv(&out.join(format!("fig11_stick_mu0_{mu0}.csv")), &w.samples)?;
     }

@@ -3,7 +3,7 @@
 //! [`super::passive`]), collected once into [`Data`] for the CSV files, the figures and the
 //! summary.
 
-use walker::model::{Model, Physical};
+use walker::model::{ImpactLaw, Model, Physical};
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
 
@@ -40,6 +40,8 @@ pub struct Data {
     pub passive_inertia: Vec<(f64, Vec<SweepPoint>)>,
     /// The Fig. 8 sweep at `T_set = 0.3` with exact Coulomb friction (Eq. 25, stick-slip).
     pub coulomb_sweep: Vec<(f64, Vec<SweepPoint>)>,
+    /// The same with Coulomb friction at the impact too (`docs/impacts.md`).
+    pub coulomb_impact_sweep: Vec<(f64, Vec<SweepPoint>)>,
     /// Fig. 11: motions at `phi = 0.2`, `mu0` = 0.2 and 0.5.
     pub sticks: Vec<(f64, Walk)>,
     /// Fig. 12: step lengths at `phi = 0.2` for four `mu0`.
@@ -105,15 +107,15 @@ pub fn collect() -> Data {
         periodic: None,
     };
     // Every sweep at once, under one progress bar: the sequential chains (three `T_set` of
-    // Fig. 8, its Coulomb chain, the continued passive chains) each on a thread of their own,
+    // Fig. 8, its two Coulomb chains, the continued passive chains) each on a thread of their own,
     // the independent passive walks on the rayon pool, so that no core waits for the longest
     // chain of one sweep while another sweep has work.
     let bar = Progress::new(
         "Figs. 8, 10 and 13 sweeps",
-        (T_SETS.len() + 1) * grid.len() + passive_walks(),
+        (T_SETS.len() + 2) * grid.len() + passive_walks(),
     );
     let tick = || bar.tick();
-    let (active_sweep, coulomb_sweep, sweeps) = std::thread::scope(|scope| {
+    let (active_sweep, coulomb_sweep, coulomb_impact_sweep, sweeps) = std::thread::scope(|scope| {
         let fig8 = scope.spawn(|| {
             sweep_chains(
                 &T_SETS,
@@ -138,13 +140,29 @@ pub fn collect() -> Data {
                 &tick,
             )
         });
+        let coulomb_impact = scope.spawn(|| {
+            sweep_chains(
+                &[0.3],
+                |ts, mu0| {
+                    Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts))
+                        .with_impact_law(ImpactLaw::Coulomb)
+                },
+                &cfg,
+                &grid,
+                |ts| active(0.0, ts).initial_state(0.8),
+                &long,
+                false,
+                &tick,
+            )
+        });
         let passive = passive_sweeps(&cfg, &tick);
         let join = |h: std::thread::ScopedJoinHandle<'_, Vec<Vec<SweepPoint>>>| {
             h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
         };
         let fig8: Vec<(f64, Vec<SweepPoint>)> = T_SETS.iter().copied().zip(join(fig8)).collect();
         let coulomb = vec![0.3].into_iter().zip(join(coulomb)).collect();
-        (fig8, coulomb, passive)
+        let coulomb_impact = vec![0.3].into_iter().zip(join(coulomb_impact)).collect();
+        (fig8, coulomb, coulomb_impact, passive)
     });
     bar.finish();
     let PassiveSweeps {
@@ -182,6 +200,7 @@ pub fn collect() -> Data {
         passive_large_mu0,
         passive_inertia,
         coulomb_sweep,
+        coulomb_impact_sweep,
         sticks,
         step_lengths,
         fall,

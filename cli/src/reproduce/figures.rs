@@ -259,7 +259,8 @@ fn fig8(d: &Data) -> Vec<Panel> {
     ]
 }
 
-/// Fig. 8(c) at `T_set = 0.3` with the tanh law and with exact Coulomb friction.
+/// Fig. 8(c) at `T_set = 0.3` with the tanh law, with exact Coulomb friction, and with exact
+/// Coulomb friction in stance and at the impact.
 fn fig8_coulomb(d: &Data) -> Vec<Panel> {
     let mut s = per_mu0(&d.active_sweep[1..2], "tanh, T_set", |s| Some(s.speed), 0.0);
     s.extend(per_mu0(
@@ -268,7 +269,13 @@ fn fig8_coulomb(d: &Data) -> Vec<Panel> {
         |s| Some(s.speed),
         0.0,
     ));
-    let title = "Fig. 8(c) at T_set = 0.3: tanh law (c = 100) and exact Coulomb friction";
+    s.extend(per_mu0(
+        &d.coulomb_impact_sweep,
+        "Coulomb with impact friction, T_set",
+        |s| Some(s.speed),
+        0.0,
+    ));
+    let title = "Fig. 8(c) at T_set = 0.3: tanh law (c = 100), exact Coulomb friction, and friction at the impact";
     vec![("fig8c_coulomb", fig(title, "mu0", "V [m/s]", s, true))]
 }
 

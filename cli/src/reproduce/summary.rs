@@ -6,6 +6,7 @@
 
 use std::fmt::Write as _;
 
+use walker::model::ImpactRegime;
 use walker::sim::{StepResult, Walk};
 use walker::sweep::SweepPoint;
 
@@ -87,19 +88,28 @@ fn active_sweep(s: &mut String, d: &Data) {
     }
 }
 
-/// Exact Coulomb friction against the tanh law at `T_set = 0.3`.
+/// The largest relative difference of the steady speeds of two sweeps over the same grid
+/// (`mu0 > 0`, both points walking), and where.
+fn max_speed_difference(a: &[SweepPoint], b: &[SweepPoint]) -> (f64, f64) {
+    a.iter()
+        .zip(b)
+        .filter(|(a, b)| a.mu0 > 0.0 && a.failure.is_none() && b.failure.is_none())
+        .filter_map(|(a, b)| Some((a.mu0, a.last?.speed, b.last?.speed)))
+        .map(|(mu0, a, b)| (((a - b) / b).abs(), mu0))
+        .fold(
+            (0.0, f64::NAN),
+            |best, x| if x.0 > best.0 { x } else { best },
+        )
+}
+
+/// Exact Coulomb friction against the tanh law at `T_set = 0.3`, in stance only and in stance
+/// and at the impact.
 fn coulomb(s: &mut String, d: &Data) {
-    if let (Some((_, tanh)), Some((_, exact))) = (
-        d.active_sweep.iter().find(|(ts, _)| *ts == 0.3),
-        d.coulomb_sweep.first(),
-    ) {
-        let dv = tanh
-            .iter()
-            .zip(exact)
-            .filter(|(a, b)| a.mu0 > 0.0 && a.failure.is_none() && b.failure.is_none())
-            .filter_map(|(a, b)| Some((a.last?.speed, b.last?.speed)))
-            .map(|(a, b)| ((a - b) / b).abs())
-            .fold(0.0, f64::max);
+    let Some((_, tanh)) = d.active_sweep.iter().find(|(ts, _)| *ts == 0.3) else {
+        return;
+    };
+    if let Some((_, exact)) = d.coulomb_sweep.first() {
+        let (dv, _) = max_speed_difference(tanh, exact);
         let fails = exact.iter().filter(|p| p.failure.is_some()).count();
         let _ = writeln!(
             s,
@@ -107,6 +117,26 @@ fn coulomb(s: &mut String, d: &Data) {
              V differs from the tanh law (c = 100) by at most {:.2} % for mu0 in (0, 1]; {fails} failed points",
             argbest(exact, |r| Some(r.speed), true),
             argbest(exact, |r| r.sr, false),
+            100.0 * dv
+        );
+    }
+    if let Some((_, both)) = d.coulomb_impact_sweep.first() {
+        let (dv, at) = max_speed_difference(tanh, both);
+        let fails = both.iter().filter(|p| p.failure.is_some()).count();
+        // From which mu0 on every impact sticks.
+        let sticks_from = both
+            .iter()
+            .rev()
+            .take_while(|p| p.last.is_some_and(|r| r.impact == ImpactRegime::Stick))
+            .last()
+            .map_or_else(|| "none".to_owned(), |p| format!("{:.2}", p.mu0));
+        let _ = writeln!(
+            s,
+            "- exact Coulomb friction in stance and at the impact (docs/impacts.md), T_set = 0.3: \
+             max V at {}; min SR at {}; V differs from the paper's model by at most {:.2} % \
+             (at mu0 = {at:.2}); the impact sticks for mu0 >= {sticks_from}; {fails} failed points",
+            argbest(both, |r| Some(r.speed), true),
+            argbest(both, |r| r.sr, false),
             100.0 * dv
         );
     }
