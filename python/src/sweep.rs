@@ -197,3 +197,66 @@ pub fn sweep<'py>(
     d.set_item("mu0", mu0_col)?;
     Ok(d)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use walker::sweep::sweep_chains;
+
+    /// The chunked sweep walks exactly what `walker::sweep::sweep_chains` (the command line's
+    /// sweep) walks, in both modes, across chunk boundaries and through failures: `T_set = 0.2`
+    /// lifts off for `mu0 <= 0.4` over 5 s walks and walks from `mu0 = 0.5` on (measured), so the
+    /// continuation's reset to the initial condition after a failure is exercised.
+    #[test]
+    fn chunked_chains_equal_the_librarys_sweep_with_and_without_restart() {
+        let setup = Setup::active_level();
+        let cfg = SimConfig::default();
+        let limits = WalkLimits {
+            max_steps: 1000,
+            duration: 5.0,
+            record: false,
+            periodic: None,
+        };
+        let grid = mu0_grid(0.0, 1.0, 0.1);
+        let chains = [0.2, 0.3];
+        let initial = |c: f64| {
+            let m = make(&setup, c, 0.0);
+            m.initial_state(m.default_omega0())
+        };
+        for restart in [false, true] {
+            let want = sweep_chains(
+                &chains,
+                |c, mu0| make(&setup, c, mu0),
+                &cfg,
+                &grid,
+                initial,
+                &limits,
+                restart,
+                &|| {},
+            );
+            for (&value, want) in chains.iter().zip(&want) {
+                let mut ch = Chain {
+                    value,
+                    initial: initial(value),
+                    state: initial(value),
+                    points: Vec::new(),
+                };
+                for part in grid.chunks(CHUNK) {
+                    advance(&setup, &cfg, &limits, restart, &mut ch, part);
+                }
+                let got: Vec<_> = ch
+                    .points
+                    .iter()
+                    .map(|o| (o.steps, o.last, o.failure.clone(), o.periodic))
+                    .collect();
+                let want: Vec<_> = want
+                    .iter()
+                    .map(|p| (p.steps, p.last, p.failure.clone(), p.periodic))
+                    .collect();
+                assert_eq!(got, want, "T_set = {value}, restart = {restart}");
+            }
+            let low = &want[0];
+            assert!(low[0].failure.is_some() && low[10].failure.is_none());
+        }
+    }
+}
