@@ -100,19 +100,16 @@ pub fn setup(scene: &str, ov: &Overrides) -> Result<Setup, ArgError> {
     Ok(Setup::resolve(scene, ov)?)
 }
 
-/// `max_steps` if it is at most [`MAX_STEPS`].
+/// `n` given as `arg` if it is in `[lo, hi]` (a Python int: negative ones are named here, not
+/// left to the conversion).
 ///
 /// # Errors
-/// More than [`MAX_STEPS`].
-pub fn max_steps(n: usize) -> Result<usize, ArgError> {
-    if n > MAX_STEPS {
-        return Err(ArgError::out_of_range(
-            "max_steps",
-            n,
-            &format!("in [0, {MAX_STEPS}]"),
-        ));
+/// Outside `[lo, hi]`.
+pub fn count(arg: &str, n: i64, lo: usize, hi: usize) -> Result<usize, ArgError> {
+    match usize::try_from(n) {
+        Ok(k) if (lo..=hi).contains(&k) => Ok(k),
+        _ => Err(ArgError::out_of_range(arg, n, &format!("in [{lo}, {hi}]"))),
     }
-    Ok(n)
 }
 
 /// The limits of a walk: `duration` finite and > 0 (`None`: no limit), `max_steps` at most
@@ -122,7 +119,7 @@ pub fn max_steps(n: usize) -> Result<usize, ArgError> {
 /// One of them is out of its range.
 pub fn limits(
     duration: Option<f64>,
-    max_steps_: usize,
+    max_steps: i64,
     until_periodic: Option<f64>,
 ) -> Result<WalkLimits, ArgError> {
     let duration = match duration {
@@ -133,7 +130,7 @@ pub fn limits(
         .map(|x| check("until_periodic", x, x > 0.0 && x < 1.0, "in (0, 1)"))
         .transpose()?;
     Ok(WalkLimits {
-        max_steps: max_steps(max_steps_)?,
+        max_steps: count("max_steps", max_steps, 0, MAX_STEPS)?,
         duration,
         record: false,
         periodic,
@@ -157,9 +154,10 @@ mod tests {
         let arg = |r: Result<WalkLimits, ArgError>| r.err().map(|e| e.arg);
         assert_eq!(arg(limits(Some(0.0), 10, None)), Some("duration".into()));
         assert_eq!(
-            arg(limits(None, MAX_STEPS + 1, None)),
+            arg(limits(None, MAX_STEPS as i64 + 1, None)),
             Some("max_steps".into())
         );
+        assert_eq!(arg(limits(None, -1, None)), Some("max_steps".into()));
         assert_eq!(
             arg(limits(None, 1, Some(1.0))),
             Some("until_periodic".into())

@@ -41,7 +41,7 @@ pub fn walk_points<'py>(
     rtol: Option<f64>,
     atol: Option<f64>,
     duration: Option<f64>,
-    max_steps: usize,
+    max_steps: i64,
     until_periodic: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let friction = options::friction(friction)?;

@@ -7,7 +7,7 @@ use pyo3::types::PyDict;
 use walker::setup::Overrides;
 use walker::sim::{trajectory, walk};
 
-use crate::error::{ArgError, check};
+use crate::error::check;
 use crate::options;
 use crate::table::steps_dict;
 
@@ -37,9 +37,9 @@ pub fn simulate<'py>(
     rtol: Option<f64>,
     atol: Option<f64>,
     duration: Option<f64>,
-    max_steps: usize,
+    max_steps: i64,
     trajectory_dt: Option<f64>,
-    max_frames: usize,
+    max_frames: i64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let ov = Overrides {
         mu0,
@@ -65,14 +65,7 @@ pub fn simulate<'py>(
         return steps_dict(py, &w);
     };
     check("dt", dt, dt > 0.0, "finite and > 0")?;
-    if max_frames == 0 || max_frames > MAX_FRAMES {
-        return Err(ArgError::out_of_range(
-            "max_frames",
-            max_frames,
-            &format!("in [1, {MAX_FRAMES}]"),
-        )
-        .into());
-    }
+    let max_frames = options::count("max_frames", max_frames, 1, MAX_FRAMES)?;
     let tr = py.detach(|| trajectory(&model, &cfg, initial, &limits, dt, max_frames));
     let d = steps_dict(py, &tr.walk)?;
     d.set_item(

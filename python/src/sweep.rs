@@ -104,7 +104,7 @@ pub fn sweep<'py>(
     rtol: Option<f64>,
     atol: Option<f64>,
     duration: f64,
-    max_steps: usize,
+    max_steps: i64,
     until_periodic: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let ov = Overrides {

@@ -15,6 +15,7 @@ import slippery_walker as sw
         (dict(atol=0.0), "atol", "in (0, 1)"),
         (dict(duration=-1.0), "duration", "> 0"),
         (dict(max_steps=sw.MAX_STEPS + 1), "max_steps", "[0, 1000000]"),
+        (dict(max_steps=-1), "max_steps", "[0, 1000000]"),
         (dict(friction="dry"), "friction", '"tanh" or "coulomb"'),
         (dict(impact="elastic"), "impact", '"frictionless" or "coulomb"'),
         (dict(method="rk4"), "method", '"dop853" or "rodas4"'),
@@ -22,6 +23,7 @@ import slippery_walker as sw
         (dict(scene="moon"), "scene", "active-level, passive-slope"),
         (dict(trajectory=True, dt=0.0), "dt", "> 0"),
         (dict(trajectory=True, max_frames=0), "max_frames", "[1, 1000000]"),
+        (dict(trajectory=True, max_frames=-3), "max_frames", "[1, 1000000]"),
         (dict(omega0=float("inf")), "omega0", "finite"),
     ],
 )
