@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# The Python tests: make a virtual environment (python/.venv, git-ignored), install the pinned
+# test requirements and this package (built by maturin from the Rust crate), and run pytest.
+# Usage: bash python/run-tests.sh [pytest arguments]
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+cd "$here"
+python="${PYTHON:-python3}"
+if [ ! -x .venv/bin/python ]; then
+    "$python" -m venv .venv
+fi
+.venv/bin/python -m pip install --quiet --upgrade pip
+.venv/bin/python -m pip install --quiet -r requirements-test.txt
+.venv/bin/python -m pip install --quiet --force-reinstall --no-deps .
+# From tests/, so that the installed package is imported, not the source folder.
+cd tests
+exec ../.venv/bin/python -m pytest -q -p no:cacheprovider "$@"

@@ -1,0 +1,86 @@
+//! `simulate(...)`: one walk from the scene's initial condition, as `walker simulate`, with its
+//! per-step descriptors and, on request, the motion sampled at exact times
+//! ([`walker::sim::trajectory`]).
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use walker::setup::Overrides;
+use walker::sim::{trajectory, walk};
+
+use crate::error::check;
+use crate::options;
+use crate::table::steps_dict;
+
+/// The most frames a trajectory may have (`max_frames`): a frame is nine numbers, so this
+/// bounds the memory of a call as [`options::MAX_STEPS`] bounds the steps.
+pub const MAX_FRAMES: usize = 1_000_000;
+
+/// Simulate one walk (see the Python docstring of `slippery_walker.simulate`).
+///
+/// # Errors
+/// `ValueError` naming a bad argument and its valid range; a walker failure is a result.
+#[pyfunction]
+#[pyo3(signature = (*, scene, mu0, t_set, omega0, phi, c, friction, impact, method, rtol, atol,
+    duration, max_steps, trajectory_dt, max_frames))]
+#[allow(clippy::too_many_arguments)]
+pub fn simulate<'py>(
+    py: Python<'py>,
+    scene: &str,
+    mu0: Option<f64>,
+    t_set: Option<f64>,
+    omega0: Option<f64>,
+    phi: Option<f64>,
+    c: Option<f64>,
+    friction: Option<&str>,
+    impact: Option<&str>,
+    method: &str,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    duration: Option<f64>,
+    max_steps: i64,
+    trajectory_dt: Option<f64>,
+    max_frames: i64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let ov = Overrides {
+        mu0,
+        c,
+        t_set,
+        phi,
+        friction: options::friction(friction)?,
+        impact: options::impact(impact)?,
+    };
+    let setup = options::setup(scene, &ov)?;
+    let cfg = options::config(method, rtol, atol)?;
+    let limits = options::limits(duration, max_steps, None)?;
+    let model = setup.model();
+    let w0 = check(
+        "omega0",
+        omega0.unwrap_or_else(|| model.default_omega0()),
+        true,
+        "finite",
+    )?;
+    let initial = model.initial_state(w0);
+    let Some(dt) = trajectory_dt else {
+        let w = py.detach(|| walk(&model, &cfg, initial, &limits));
+        return steps_dict(py, &w);
+    };
+    check("dt", dt, dt > 0.0, "finite and > 0")?;
+    let max_frames = options::count("max_frames", max_frames, 1, MAX_FRAMES)?;
+    let tr = py.detach(|| trajectory(&model, &cfg, initial, &limits, dt, max_frames));
+    let d = steps_dict(py, &tr.walk)?;
+    d.set_item(
+        "times",
+        tr.frames.iter().map(|f| f.time).collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "states",
+        tr.frames.iter().flat_map(|f| f.state).collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "frame_steps",
+        tr.frames.iter().map(|f| f.step).collect::<Vec<_>>(),
+    )?;
+    d.set_item("truncated", tr.truncated)?;
+    d.set_item("end_time", tr.end_time())?;
+    Ok(d)
+}
