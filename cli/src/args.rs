@@ -136,6 +136,23 @@ impl Common {
     }
 }
 
+/// The flags of one walk's parameters and start, shared by `simulate` and `animate`.
+#[derive(clap::Args, Debug)]
+pub struct WalkFlags {
+    /// Friction coefficient mu0, >= 0.
+    #[arg(long, allow_hyphen_values = true)]
+    pub mu0: Option<f64>,
+    /// Ramp duration T_set (s), > 0 (active walker).
+    #[arg(long = "t-set", allow_hyphen_values = true)]
+    pub t_set: Option<f64>,
+    /// Initial angular velocity omega0 (rad/s).
+    #[arg(long, allow_hyphen_values = true)]
+    pub omega0: Option<f64>,
+    /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
+    #[arg(long, allow_hyphen_values = true)]
+    pub phi: Option<f64>,
+}
+
 /// The commands.
 #[derive(Subcommand, Debug)]
 pub enum Command {
@@ -144,18 +161,9 @@ pub enum Command {
         /// The shared flags.
         #[command(flatten)]
         common: Common,
-        /// Friction coefficient mu0, >= 0.
-        #[arg(long, allow_hyphen_values = true)]
-        mu0: Option<f64>,
-        /// Ramp duration T_set (s), > 0 (active walker).
-        #[arg(long = "t-set", allow_hyphen_values = true)]
-        t_set: Option<f64>,
-        /// Initial angular velocity omega0 (rad/s).
-        #[arg(long, allow_hyphen_values = true)]
-        omega0: Option<f64>,
-        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
-        #[arg(long, allow_hyphen_values = true)]
-        phi: Option<f64>,
+        /// The walker's parameters and start.
+        #[command(flatten)]
+        walk: WalkFlags,
         /// Stop after the step that passes this time (s).
         #[arg(long, allow_hyphen_values = true)]
         duration: Option<f64>,
@@ -222,18 +230,9 @@ pub enum Command {
         /// The shared flags.
         #[command(flatten)]
         common: Common,
-        /// Friction coefficient mu0, >= 0.
-        #[arg(long, allow_hyphen_values = true)]
-        mu0: Option<f64>,
-        /// Ramp duration T_set (s), > 0 (active walker).
-        #[arg(long = "t-set", allow_hyphen_values = true)]
-        t_set: Option<f64>,
-        /// Initial angular velocity omega0 (rad/s).
-        #[arg(long, allow_hyphen_values = true)]
-        omega0: Option<f64>,
-        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
-        #[arg(long, allow_hyphen_values = true)]
-        phi: Option<f64>,
+        /// The walker's parameters and start.
+        #[command(flatten)]
+        walk: WalkFlags,
         /// Walk this many steps, in [1, 1000] (default 6).
         #[arg(long, allow_hyphen_values = true)]
         steps: Option<usize>,

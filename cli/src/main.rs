@@ -11,7 +11,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use walker::model::Kind;
 use walker::sim::WalkLimits;
-use walker_cli::args::{Cli, Command};
+use walker_cli::args::{Cli, Command, WalkFlags};
 use walker_cli::input::{InputError, check, duration as positive_duration, tolerance};
 use walker_cli::{animate, report, reproduce, run};
 
@@ -55,10 +55,13 @@ fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Simulate {
             common,
-            mu0,
-            t_set,
-            omega0,
-            phi,
+            walk:
+                WalkFlags {
+                    mu0,
+                    t_set,
+                    omega0,
+                    phi,
+                },
             duration,
             max_steps,
         } => {
@@ -146,10 +149,13 @@ fn run(cli: Cli) -> Result<(), CliError> {
         }
         Command::Animate {
             common,
-            mu0,
-            t_set,
-            omega0,
-            phi,
+            walk:
+                WalkFlags {
+                    mu0,
+                    t_set,
+                    omega0,
+                    phi,
+                },
             steps,
             duration,
             speed,
