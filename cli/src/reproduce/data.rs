@@ -128,33 +128,28 @@ pub fn collect() -> Data {
                 &tick,
             )
         });
-        let coulomb = scope.spawn(|| {
-            sweep_chains(
-                &[0.3],
-                |ts, mu0| Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts)),
-                &cfg,
-                &grid,
-                |ts| active(0.0, ts).initial_state(0.8),
-                &long,
-                false,
-                &tick,
-            )
-        });
-        let coulomb_impact = scope.spawn(|| {
-            sweep_chains(
-                &[0.3],
-                |ts, mu0| {
-                    Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts))
-                        .with_impact_law(ImpactLaw::Coulomb)
-                },
-                &cfg,
-                &grid,
-                |ts| active(0.0, ts).initial_state(0.8),
-                &long,
-                false,
-                &tick,
-            )
-        });
+        // Fig. 8 at T_set = 0.3 under exact Coulomb friction, with the paper's impact and with
+        // friction at the impact.
+        let coulomb_chain = |law: ImpactLaw| {
+            let (cfg, grid, long, tick) = (&cfg, &grid, &long, &tick);
+            scope.spawn(move || {
+                sweep_chains(
+                    &[0.3],
+                    |ts, mu0| {
+                        Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts))
+                            .with_impact_law(law)
+                    },
+                    cfg,
+                    grid,
+                    |ts| active(0.0, ts).initial_state(0.8),
+                    long,
+                    false,
+                    tick,
+                )
+            })
+        };
+        let coulomb = coulomb_chain(ImpactLaw::Frictionless);
+        let coulomb_impact = coulomb_chain(ImpactLaw::Coulomb);
         let passive = passive_sweeps(&cfg, &tick);
         let join = |h: std::thread::ScopedJoinHandle<'_, Vec<Vec<SweepPoint>>>| {
             h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
