@@ -20,12 +20,12 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use crate::symbol::{Atom, NUM_ANGLES, NUM_ATOMS};
+use crate::symbol::{Atom, Valuation, is_cos_slot};
 
 mod gcd;
 mod mono;
 
-pub use mono::{Mono, atom_name};
+pub use mono::Mono;
 
 /// An exact rational number.
 pub type Q = BigRational;
@@ -147,12 +147,17 @@ impl Poly {
 
     /// Whether an atom slot occurs.
     pub fn contains(&self, slot: usize) -> bool {
-        self.terms.iter().any(|(m, _)| m.0[slot] > 0)
+        self.terms.iter().any(|(m, _)| m.exponent(slot) > 0)
     }
 
     /// Slots that occur, in increasing order.
     pub fn slots(&self) -> Vec<usize> {
-        (0..NUM_ATOMS).filter(|&s| self.contains(s)).collect()
+        let set: std::collections::BTreeSet<usize> = self
+            .terms
+            .iter()
+            .flat_map(|(m, _)| m.factors().map(|(s, _)| s))
+            .collect();
+        set.into_iter().collect()
     }
 
     /// Sum.
@@ -173,7 +178,7 @@ impl Poly {
                 Ordering::Equal => {
                     let c = &a[i].1 + &b[j].1;
                     if !c.is_zero() {
-                        out.push((a[i].0, c));
+                        out.push((a[i].0.clone(), c));
                     }
                     i += 1;
                     j += 1;
@@ -188,7 +193,7 @@ impl Poly {
     /// Negation.
     pub fn neg(&self) -> Poly {
         Poly {
-            terms: self.terms.iter().map(|(m, c)| (*m, -c)).collect(),
+            terms: self.terms.iter().map(|(m, c)| (m.clone(), -c)).collect(),
         }
     }
 
@@ -203,7 +208,7 @@ impl Poly {
             return Poly::zero();
         }
         Poly {
-            terms: self.terms.iter().map(|(m, c)| (*m, c * k)).collect(),
+            terms: self.terms.iter().map(|(m, c)| (m.clone(), c * k)).collect(),
         }
     }
 
@@ -261,7 +266,7 @@ impl Poly {
     fn needs_reduction(&self) -> bool {
         self.terms
             .iter()
-            .any(|(m, _)| (0..NUM_ANGLES).any(|k| m.0[2 * k + 1] >= 2))
+            .any(|(m, _)| m.factors().any(|(s, e)| is_cos_slot(s) && e >= 2))
     }
 
     /// The reduced form: `cos^2(a) -> 1 - sin^2(a)` for every base angle.
@@ -271,24 +276,24 @@ impl Poly {
         }
         let mut out: Vec<(Mono, Q)> = Vec::new();
         for (m, c) in self.terms {
+            let cosines: Vec<usize> = m
+                .factors()
+                .filter(|&(s, e)| is_cos_slot(s) && e >= 2)
+                .map(|(s, _)| s)
+                .collect();
             let mut expansion = vec![(m, c)];
-            for k in 0..NUM_ANGLES {
-                let (s, co) = (2 * k, 2 * k + 1);
+            for co in cosines {
+                let s = co - 1;
                 let mut next = Vec::new();
                 for (mm, cc) in expansion {
-                    let e = mm.0[co];
-                    if e < 2 {
-                        next.push((mm, cc));
-                        continue;
-                    }
+                    let e = mm.exponent(co);
                     // cos^e = cos^(e mod 2) (1 - sin^2)^(e / 2), binomially expanded.
                     let half = u32::from(e / 2);
-                    let mut base = mm;
-                    base.0[co] = e % 2;
+                    let base = mm.with_exponent(co, e % 2);
+                    let sin_e = base.exponent(s);
                     let mut binom = BigInt::one();
                     for j in 0..=half {
-                        let mut t = base;
-                        t.0[s] += 2 * j as u8;
+                        let t = base.with_exponent(s, sin_e + 2 * j as u8);
                         let sign = if j % 2 == 0 {
                             BigInt::one()
                         } else {
@@ -310,19 +315,21 @@ impl Poly {
         let terms = self
             .terms
             .iter()
-            .filter(|(m, _)| m.0[slot] > 0)
+            .filter(|(m, _)| m.exponent(slot) > 0)
             .map(|(m, c)| {
-                let mut mm = *m;
-                let e = mm.0[slot];
-                mm.0[slot] -= 1;
-                (mm, c * q_int(i64::from(e)))
+                let e = m.exponent(slot);
+                (m.with_exponent(slot, e - 1), c * q_int(i64::from(e)))
             });
         Poly::from_terms(terms)
     }
 
     /// Degree in one slot.
     pub fn degree_in(&self, slot: usize) -> u8 {
-        self.terms.iter().map(|(m, _)| m.0[slot]).max().unwrap_or(0)
+        self.terms
+            .iter()
+            .map(|(m, _)| m.exponent(slot))
+            .max()
+            .unwrap_or(0)
     }
 
     /// Coefficients in one slot: `self = sum_k coeffs[k] * atom^k`.
@@ -330,10 +337,8 @@ impl Poly {
         let d = usize::from(self.degree_in(slot));
         let mut buckets: Vec<Vec<(Mono, Q)>> = vec![Vec::new(); d + 1];
         for (m, c) in &self.terms {
-            let mut mm = *m;
-            let e = usize::from(mm.0[slot]);
-            mm.0[slot] = 0;
-            buckets[e].push((mm, c.clone()));
+            let e = usize::from(m.exponent(slot));
+            buckets[e].push((m.with_exponent(slot, 0), c.clone()));
         }
         buckets.into_iter().map(Poly::from_terms).collect()
     }
@@ -351,15 +356,20 @@ impl Poly {
         // In an exact division deg_v(quotient) = deg_v(self) - deg_v(divisor) for every atom
         // v; a quotient term beyond that bound proves the division inexact (and stops the
         // lexicographic reduction from wandering through exponentially many terms).
-        let mut bound = [0u8; NUM_ATOMS];
-        for (slot, b) in bound.iter_mut().enumerate() {
-            *b = self.degree_in(slot).checked_sub(divisor.degree_in(slot))?;
+        let mut bound = std::collections::BTreeMap::new();
+        for slot in self.slots().into_iter().chain(divisor.slots()) {
+            bound.insert(
+                slot,
+                self.degree_in(slot).checked_sub(divisor.degree_in(slot))?,
+            );
         }
         let mut rem = self.clone();
         let mut quot: Vec<(Mono, Q)> = Vec::new();
         while let Some((rm, rc)) = rem.leading().cloned() {
             let m = rm.div(lm)?;
-            if m.0.iter().zip(bound.iter()).any(|(e, b)| e > b) {
+            if m.factors()
+                .any(|(s, e)| bound.get(&s).is_none_or(|b| e > *b))
+            {
                 return None;
             }
             let k = &rc / lc;
@@ -408,28 +418,28 @@ impl Poly {
         acc
     }
 
-    /// Evaluates with `f64` values for every atom slot.
-    pub fn eval(&self, values: &[f64; NUM_ATOMS]) -> f64 {
+    /// Evaluates with `f64` values of the atom slots.
+    pub fn eval(&self, values: &impl Valuation<f64>) -> f64 {
         use num_traits::ToPrimitive;
         self.terms
             .iter()
             .map(|(m, c)| {
                 let mut t = c.to_f64().unwrap_or(f64::NAN);
                 for (slot, e) in m.factors() {
-                    t *= values[slot].powi(i32::from(e));
+                    t *= values.value(slot).powi(i32::from(e));
                 }
                 t
             })
             .sum()
     }
 
-    /// Evaluates exactly with rational values for every slot that occurs.
-    pub fn eval_exact(&self, values: &[Q; NUM_ATOMS]) -> Q {
+    /// Evaluates exactly with rational values of the slots that occur.
+    pub fn eval_exact(&self, values: &impl Valuation<Q>) -> Q {
         let mut acc = Q::zero();
         for (m, c) in &self.terms {
             let mut t = c.clone();
             for (slot, e) in m.factors() {
-                t *= num_traits::pow(values[slot].clone(), usize::from(e));
+                t *= num_traits::pow(values.value(slot), usize::from(e));
             }
             acc += t;
         }
@@ -438,16 +448,11 @@ impl Poly {
 
     /// The greatest monomial dividing every term.
     pub fn monomial_content(&self) -> Mono {
-        let mut e = [u8::MAX; NUM_ATOMS];
-        for (m, _) in &self.terms {
-            for (a, b) in e.iter_mut().zip(m.0.iter()) {
-                *a = (*a).min(*b);
-            }
-        }
-        if self.terms.is_empty() {
+        let mut terms = self.terms.iter();
+        let Some((first, _)) = terms.next() else {
             return Mono::ONE;
-        }
-        Mono(e)
+        };
+        terms.fold(first.clone(), |g, (m, _)| g.gcd(m))
     }
 }
 

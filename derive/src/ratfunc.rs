@@ -12,7 +12,7 @@ use num_traits::{One, Zero};
 
 use crate::error::{Error, Result};
 use crate::poly::{Poly, Q};
-use crate::symbol::{Atom, BaseAngle, NUM_ATOMS, Sym};
+use crate::symbol::{Atom, BaseAngle, Sym, Valuation};
 
 /// A quotient of two reduced polynomials. (No `Hash`: equality is semantic, see the module
 /// docs, and a structural hash would disagree with it.)
@@ -288,12 +288,12 @@ impl RatFunc {
     }
 
     /// Evaluates in `f64`.
-    pub fn eval(&self, values: &[f64; NUM_ATOMS]) -> f64 {
+    pub fn eval(&self, values: &impl Valuation<f64>) -> f64 {
         self.num.eval(values) / self.den.eval(values)
     }
 
     /// Evaluates exactly; an error if the denominator vanishes at the point.
-    pub fn eval_exact(&self, values: &[Q; NUM_ATOMS]) -> Result<Q> {
+    pub fn eval_exact(&self, values: &impl Valuation<Q>) -> Result<Q> {
         let d = self.den.eval_exact(values);
         if d.is_zero() {
             return Err(Error::DivisionByZero);
@@ -312,8 +312,7 @@ impl RatFunc {
 /// `d sin(b)/d sym = cos(b) / k`, `d cos(b)/d sym = -sin(b) / k` where `sym = k b`.
 pub fn diff_poly(p: &Poly, sym: Sym) -> Poly {
     let mut out = p.diff_atom(sym.slot());
-    if let Some(angle) = BaseAngle::of_symbol(sym) {
-        let (_, k) = angle.symbol_and_multiple();
+    if let Some((angle, k)) = sym.base_angle() {
         let inv_k = Q::new(One::one(), k.into());
         let s = Poly::atom(Atom::Sin(angle));
         let c = Poly::atom(Atom::Cos(angle));

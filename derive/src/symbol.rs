@@ -1,73 +1,123 @@
-//! The symbols of the model and their slots in a monomial.
+//! The symbols of a model, their table, and their slots in a monomial.
 //!
 //! A polynomial of this engine lives in `Q[atoms]`, where each atom is either a plain symbol
 //! (a coordinate, a velocity, a parameter, an input) or the sine or cosine of a *base angle*.
-//! Base angles are `th1`, `th2`, `alpha/2` and `phi`: `alpha` enters through its half so that
+//! A base angle is an angle symbol divided by a positive integer: the paper's walker has `th1`,
+//! `th2`, `alpha/2` and `phi`, where `alpha` enters through its half so that
 //! `sin(alpha) = 2 sin(alpha/2) cos(alpha/2)` and `1 - cos(alpha) = 2 sin^2(alpha/2)` need no
 //! square root and lose no digits.
 //!
-//! Slots are fixed: atom `2k` is `sin` of base angle `k` and atom `2k + 1` its `cos`, so that the
-//! reduction `cos^2 -> 1 - sin^2` needs no lookup table.
+//! Symbols and base angles are indices into the model's [`Symbols`] table: nothing here knows a
+//! walker, and a model has as many of them as it declares. Slots are self-describing, so that the
+//! arithmetic needs no table: slot `2k` is `sin` of base angle `k` and `2k + 1` its `cos` (the
+//! reduction `cos^2 -> 1 - sin^2` pairs them by parity), and the plain symbol `i` is slot
+//! [`SYM_SLOT_BASE`]` + i`, after every trigonometric slot. A [`Sym`] carries its own base angle
+//! and multiple, so that differentiation follows the chain rule through `sin` and `cos` without
+//! a lookup; names, LaTeX and roles are the table's.
+//!
+//! The paper's walker (one derivation for its level and slope kernels) has its table in
+//! [`Symbols::paper`], and its symbols as constants ([`Sym::Th1`], [`BaseAngle::HalfAlpha`], ...)
+//! for the code that derives and documents that walker by hand.
 
 use crate::error::Error;
 
-/// Number of atom slots in a monomial.
-pub const NUM_ATOMS: usize = 48;
+/// The first slot of a plain symbol: slots below it are sines (even) and cosines (odd) of base
+/// angles.
+pub const SYM_SLOT_BASE: usize = 1 << 16;
 
-/// The base angles whose sine and cosine are atoms.
+/// A base angle: an index into [`Symbols::angles`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum BaseAngle {
-    /// The stance-leg angle `theta_1`.
-    Th1 = 0,
-    /// The torso angle `theta_2`.
-    Th2 = 1,
-    /// Half the inter-leg angle, `alpha / 2`.
-    HalfAlpha = 2,
-    /// The slope angle `phi`.
-    Phi = 3,
-}
-
-/// Number of base angles.
-pub const NUM_ANGLES: usize = 4;
+pub struct BaseAngle(u16);
 
 impl BaseAngle {
-    /// All base angles, in slot order.
-    pub const ALL: [BaseAngle; NUM_ANGLES] = [
-        BaseAngle::Th1,
-        BaseAngle::Th2,
-        BaseAngle::HalfAlpha,
-        BaseAngle::Phi,
-    ];
+    /// The base angle with index `k` of its table.
+    pub const fn new(k: u16) -> BaseAngle {
+        BaseAngle(k)
+    }
+
+    /// Its index in the table.
+    pub const fn index(self) -> usize {
+        self.0 as usize
+    }
 
     /// The atom slot of `sin` of this angle.
     pub const fn sin_slot(self) -> usize {
-        2 * self as usize
+        2 * self.0 as usize
     }
 
     /// The atom slot of `cos` of this angle.
     pub const fn cos_slot(self) -> usize {
-        2 * self as usize + 1
+        2 * self.0 as usize + 1
     }
+}
 
-    /// The symbol this base angle is measured in, and how many base angles make one unit of it
-    /// (`alpha = 2 * (alpha/2)`).
-    pub const fn symbol_and_multiple(self) -> (Sym, i64) {
-        match self {
-            BaseAngle::Th1 => (Sym::Th1, 1),
-            BaseAngle::Th2 => (Sym::Th2, 1),
-            BaseAngle::HalfAlpha => (Sym::Alpha, 2),
-            BaseAngle::Phi => (Sym::Phi, 1),
+/// A symbol: an index into [`Symbols::syms`], with its base angle and multiple when it is an
+/// angle (`alpha = 2 (alpha/2)`). Symbols compare by index: within one table the index decides
+/// the angle.
+#[derive(Clone, Copy, Debug)]
+pub struct Sym {
+    index: u16,
+    angle: Option<(BaseAngle, u8)>,
+}
+
+impl PartialEq for Sym {
+    fn eq(&self, other: &Sym) -> bool {
+        self.index == other.index
+    }
+}
+
+impl Eq for Sym {}
+
+impl std::hash::Hash for Sym {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.index.hash(state);
+    }
+}
+
+impl PartialOrd for Sym {
+    fn partial_cmp(&self, other: &Sym) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Sym {
+    fn cmp(&self, other: &Sym) -> std::cmp::Ordering {
+        self.index.cmp(&other.index)
+    }
+}
+
+impl Sym {
+    /// A plain (non-angle) symbol with index `i`.
+    pub const fn plain(i: u16) -> Sym {
+        Sym {
+            index: i,
+            angle: None,
         }
     }
 
-    /// The base angle of an angle symbol, if it is one.
-    pub const fn of_symbol(sym: Sym) -> Option<BaseAngle> {
-        match sym {
-            Sym::Th1 => Some(BaseAngle::Th1),
-            Sym::Th2 => Some(BaseAngle::Th2),
-            Sym::Alpha => Some(BaseAngle::HalfAlpha),
-            Sym::Phi => Some(BaseAngle::Phi),
-            _ => None,
+    /// An angle symbol with index `i`, equal to `multiple` times the base angle `base`.
+    pub const fn angle(i: u16, base: BaseAngle, multiple: u8) -> Sym {
+        Sym {
+            index: i,
+            angle: Some((base, multiple)),
+        }
+    }
+
+    /// Its index in the table.
+    pub const fn index(self) -> usize {
+        self.index as usize
+    }
+
+    /// The atom slot of this symbol.
+    pub const fn slot(self) -> usize {
+        SYM_SLOT_BASE + self.index as usize
+    }
+
+    /// The base angle and the multiple, if this is an angle: `self = multiple * base`.
+    pub const fn base_angle(self) -> Option<(BaseAngle, i64)> {
+        match self.angle {
+            Some((b, k)) => Some((b, k as i64)),
+            None => None,
         }
     }
 }
@@ -87,117 +137,6 @@ pub enum SymKind {
     Input,
 }
 
-macro_rules! symbols {
-    ($( $(#[$doc:meta])* $var:ident = $slot:expr, $name:literal, $latex:literal, $kind:ident; )*) => {
-        /// A symbol of the model, with a fixed atom slot.
-        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-        pub enum Sym {
-            $( $(#[$doc])* $var = $slot, )*
-        }
-
-        impl Sym {
-            /// Every symbol, in slot order.
-            pub const ALL: &'static [Sym] = &[$(Sym::$var),*];
-
-            /// The atom slot of this symbol.
-            pub const fn slot(self) -> usize {
-                self as usize
-            }
-
-            /// The plain-text name (as used in scene files and kernel argument lists).
-            pub const fn name(self) -> &'static str {
-                match self { $(Sym::$var => $name,)* }
-            }
-
-            /// The LaTeX rendering, in the paper's notation.
-            pub const fn latex(self) -> &'static str {
-                match self { $(Sym::$var => $latex,)* }
-            }
-
-            /// The role of the symbol.
-            pub const fn kind(self) -> SymKind {
-                match self { $(Sym::$var => SymKind::$kind,)* }
-            }
-        }
-    };
-}
-
-symbols! {
-    /// Horizontal position of the stance-leg end.
-    X = 8, "x", "x", Coordinate;
-    /// Vertical position of the stance-leg end.
-    Z = 9, "z", "z", Coordinate;
-    /// Stance-leg angle from the vertical.
-    Th1 = 10, "th1", "\\theta_1", Coordinate;
-    /// Torso angle from the horizontal.
-    Th2 = 11, "th2", "\\theta_2", Coordinate;
-    /// Time derivative of `x`.
-    Xd = 12, "xd", "\\dot{x}", Velocity;
-    /// Time derivative of `z`.
-    Zd = 13, "zd", "\\dot{z}", Velocity;
-    /// Time derivative of `th1`.
-    Th1d = 14, "th1d", "\\dot{\\theta}_1", Velocity;
-    /// Time derivative of `th2`.
-    Th2d = 15, "th2d", "\\dot{\\theta}_2", Velocity;
-    /// Second time derivative of `x`.
-    Xdd = 16, "xdd", "\\ddot{x}", Acceleration;
-    /// Second time derivative of `z`.
-    Zdd = 17, "zdd", "\\ddot{z}", Acceleration;
-    /// Second time derivative of `th1`.
-    Th1dd = 18, "th1dd", "\\ddot{\\theta}_1", Acceleration;
-    /// Second time derivative of `th2`.
-    Th2dd = 19, "th2dd", "\\ddot{\\theta}_2", Acceleration;
-    /// Mass of the rimless wheel.
-    M1 = 20, "m1", "m_1", Parameter;
-    /// Mass of the torso.
-    M2 = 21, "m2", "m_2", Parameter;
-    /// Leg length (radius of the wheel).
-    L = 22, "l", "l", Parameter;
-    /// Half the torso length.
-    R = 23, "r", "r", Parameter;
-    /// Inertia moment of the wheel.
-    I1 = 24, "I1", "I_1", Parameter;
-    /// Inertia moment of the torso.
-    I2 = 25, "I2", "I_2", Parameter;
-    /// Gravity acceleration.
-    G = 26, "g", "g", Parameter;
-    /// Angle between neighbouring legs.
-    Alpha = 27, "alpha", "\\alpha", Parameter;
-    /// Slope angle.
-    Phi = 28, "phi", "\\phi", Parameter;
-    /// Friction coefficient with direction (Eq. 24).
-    Mu = 29, "mu", "\\mu", Input;
-    /// Joint torque between stance leg and torso.
-    U = 30, "u", "u", Input;
-    /// Magnitude of the sliding friction coefficient (Eqs. 25-26).
-    Mu0 = 31, "mu0", "\\mu_0", Parameter;
-    /// Sharpness of the `tanh` friction law (Eq. 26).
-    C = 32, "c", "c", Parameter;
-    /// Time since the last impact.
-    T = 33, "t", "t", Input;
-    /// Duration of the output ramp `y_d` (Section 3.2).
-    TSet = 34, "T_set", "T_{\\mathrm{set}}", Parameter;
-    /// Proportional gain (Eq. 32).
-    Kp = 35, "K_P", "K_P", Parameter;
-    /// Derivative gain (Eq. 32).
-    Kd = 36, "K_D", "K_D", Parameter;
-    /// Auxiliary input of the output-following control (Eq. 31).
-    V = 37, "v", "v", Input;
-}
-
-impl Sym {
-    /// Looks a symbol up by its plain-text name.
-    pub fn from_name(name: &str) -> Result<Sym, Error> {
-        Sym::ALL
-            .iter()
-            .copied()
-            .find(|s| s.name() == name)
-            .ok_or_else(|| Error::UnknownSymbol {
-                name: name.to_owned(),
-            })
-    }
-}
-
 /// What an atom slot holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Atom {
@@ -205,26 +144,23 @@ pub enum Atom {
     Sin(BaseAngle),
     /// `cos` of a base angle.
     Cos(BaseAngle),
-    /// A plain symbol.
+    /// A plain symbol. From [`Atom::of_slot`] it carries no angle (a slot does not know it);
+    /// [`Symbols::by_index`] gives the whole symbol.
     Sym(Sym),
 }
 
 impl Atom {
-    /// The atom in a slot, if any.
-    pub fn of_slot(slot: usize) -> Option<Atom> {
-        if slot < 2 * NUM_ANGLES {
-            let angle = BaseAngle::ALL[slot / 2];
-            return Some(if slot.is_multiple_of(2) {
-                Atom::Sin(angle)
-            } else {
-                Atom::Cos(angle)
-            });
+    /// The atom in a slot.
+    pub fn of_slot(slot: usize) -> Atom {
+        if slot >= SYM_SLOT_BASE {
+            return Atom::Sym(Sym::plain((slot - SYM_SLOT_BASE) as u16));
         }
-        Sym::ALL
-            .iter()
-            .copied()
-            .find(|s| s.slot() == slot)
-            .map(Atom::Sym)
+        let angle = BaseAngle((slot / 2) as u16);
+        if slot.is_multiple_of(2) {
+            Atom::Sin(angle)
+        } else {
+            Atom::Cos(angle)
+        }
     }
 
     /// The slot of this atom.
@@ -233,6 +169,431 @@ impl Atom {
             Atom::Sin(a) => a.sin_slot(),
             Atom::Cos(a) => a.cos_slot(),
             Atom::Sym(s) => s.slot(),
+        }
+    }
+}
+
+/// Whether a slot is the cosine of a base angle (the slots the reduction works on).
+pub const fn is_cos_slot(slot: usize) -> bool {
+    slot < SYM_SLOT_BASE && slot % 2 == 1
+}
+
+/// One symbol of a table.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SymbolInfo {
+    /// The symbol (its index and, for an angle, its base angle).
+    pub sym: Sym,
+    /// Plain-text name, as in model, scene files and kernel argument lists.
+    pub name: String,
+    /// LaTeX rendering.
+    pub latex: String,
+    /// Its role.
+    pub kind: SymKind,
+}
+
+/// One base angle of a table: `symbol / multiple`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct AngleInfo {
+    /// The angle symbol it is a fraction of.
+    pub symbol: Sym,
+    /// How many base angles make the symbol.
+    pub multiple: i64,
+}
+
+/// A model's symbol table: every symbol with its name, LaTeX and role, and every base angle.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Symbols {
+    syms: Vec<SymbolInfo>,
+    angles: Vec<AngleInfo>,
+}
+
+impl Symbols {
+    /// An empty table.
+    pub fn new() -> Symbols {
+        Symbols::default()
+    }
+
+    /// Adds a plain symbol.
+    ///
+    /// # Errors
+    /// [`Error::CheckFailed`] if the name is taken or the table is full.
+    pub fn push(&mut self, name: &str, latex: &str, kind: SymKind) -> Result<Sym, Error> {
+        let sym = Sym::plain(self.next_index(name)?);
+        self.syms.push(SymbolInfo {
+            sym,
+            name: name.to_owned(),
+            latex: latex.to_owned(),
+            kind,
+        });
+        Ok(sym)
+    }
+
+    /// Adds an angle symbol whose base angle is the symbol divided by `multiple` (a new base
+    /// angle, after the existing ones).
+    ///
+    /// # Errors
+    /// [`Error::CheckFailed`] if the name is taken, the multiple is not in `1..=255` or the
+    /// table is full.
+    pub fn push_angle(
+        &mut self,
+        name: &str,
+        latex: &str,
+        kind: SymKind,
+        multiple: i64,
+    ) -> Result<Sym, Error> {
+        let index = self.next_index(name)?;
+        let k = u8::try_from(multiple)
+            .ok()
+            .filter(|k| *k > 0)
+            .ok_or_else(|| Error::CheckFailed {
+                what: format!("the base angle of `{name}` is `{name}/{multiple}`: the divisor must be in 1..=255"),
+            })?;
+        let base = u16::try_from(self.angles.len())
+            .ok()
+            .filter(|b| usize::from(*b) < SYM_SLOT_BASE / 2)
+            .map(BaseAngle)
+            .ok_or_else(|| Error::CheckFailed {
+                what: "too many angles".to_owned(),
+            })?;
+        let sym = Sym::angle(index, base, k);
+        self.angles.push(AngleInfo {
+            symbol: sym,
+            multiple,
+        });
+        self.syms.push(SymbolInfo {
+            sym,
+            name: name.to_owned(),
+            latex: latex.to_owned(),
+            kind,
+        });
+        Ok(sym)
+    }
+
+    fn next_index(&self, name: &str) -> Result<u16, Error> {
+        if self.syms.iter().any(|s| s.name == name) {
+            return Err(Error::CheckFailed {
+                what: format!("symbol `{name}` declared twice"),
+            });
+        }
+        u16::try_from(self.syms.len()).map_err(|_| Error::CheckFailed {
+            what: "too many symbols".to_owned(),
+        })
+    }
+
+    /// Every symbol, in index order.
+    pub fn syms(&self) -> impl Iterator<Item = Sym> + '_ {
+        self.syms.iter().map(|s| s.sym)
+    }
+
+    /// Every symbol's entry, in index order.
+    pub fn infos(&self) -> &[SymbolInfo] {
+        &self.syms
+    }
+
+    /// Every base angle's entry, in index order.
+    pub fn angles(&self) -> &[AngleInfo] {
+        &self.angles
+    }
+
+    /// Every base angle, in index order.
+    pub fn base_angles(&self) -> impl Iterator<Item = BaseAngle> + '_ {
+        (0..self.angles.len()).map(|k| BaseAngle(k as u16))
+    }
+
+    /// The number of symbols.
+    pub fn len(&self) -> usize {
+        self.syms.len()
+    }
+
+    /// Whether the table is empty.
+    pub fn is_empty(&self) -> bool {
+        self.syms.is_empty()
+    }
+
+    /// The entry of a symbol by index.
+    fn info(&self, index: usize) -> Option<&SymbolInfo> {
+        self.syms.get(index)
+    }
+
+    /// The symbol with index `index` (with its angle), if the table has it.
+    pub fn by_index(&self, index: usize) -> Option<Sym> {
+        self.info(index).map(|s| s.sym)
+    }
+
+    /// The plain-text name of a symbol (`?` for a symbol of another table).
+    pub fn name(&self, s: Sym) -> &str {
+        self.info(s.index()).map_or("?", |i| i.name.as_str())
+    }
+
+    /// The LaTeX of a symbol.
+    pub fn latex(&self, s: Sym) -> &str {
+        self.info(s.index()).map_or("?", |i| i.latex.as_str())
+    }
+
+    /// The role of a symbol.
+    pub fn kind(&self, s: Sym) -> SymKind {
+        self.info(s.index()).map_or(SymKind::Input, |i| i.kind)
+    }
+
+    /// The role of the symbol with index `index`.
+    pub fn kind_of_index(&self, index: usize) -> Option<SymKind> {
+        self.info(index).map(|i| i.kind)
+    }
+
+    /// The symbol a base angle is a fraction of, and the multiple: `symbol = multiple * angle`.
+    pub fn angle(&self, a: BaseAngle) -> Option<(Sym, i64)> {
+        self.angles.get(a.index()).map(|i| (i.symbol, i.multiple))
+    }
+
+    /// Looks a symbol up by its plain-text name.
+    ///
+    /// # Errors
+    /// [`Error::UnknownSymbol`].
+    pub fn lookup(&self, name: &str) -> Result<Sym, Error> {
+        self.syms
+            .iter()
+            .find(|s| s.name == name)
+            .map(|s| s.sym)
+            .ok_or_else(|| Error::UnknownSymbol {
+                name: name.to_owned(),
+            })
+    }
+
+    /// The symbol an atom slot stands for, or the angle symbol of a trigonometric slot.
+    pub fn symbol_of_slot(&self, slot: usize) -> Option<Sym> {
+        match Atom::of_slot(slot) {
+            Atom::Sym(s) => self.by_index(s.index()),
+            Atom::Sin(a) | Atom::Cos(a) => self.angle(a).map(|(s, _)| s),
+        }
+    }
+
+    /// Plain-text name of an atom slot (`sin(th1)`, `cos(alpha/2)`, `m1`).
+    pub fn atom_name(&self, slot: usize) -> String {
+        let angle = |a: BaseAngle| match self.angle(a) {
+            Some((s, 1)) => self.name(s).to_owned(),
+            Some((s, k)) => format!("{}/{k}", self.name(s)),
+            None => format!("angle{}", a.index()),
+        };
+        match Atom::of_slot(slot) {
+            Atom::Sin(a) => format!("sin({})", angle(a)),
+            Atom::Cos(a) => format!("cos({})", angle(a)),
+            Atom::Sym(s) => self
+                .info(s.index())
+                .map_or_else(|| format!("#{}", s.index()), |i| i.name.clone()),
+        }
+    }
+}
+
+/// The paper's walker: its symbols as constants, in the order of [`Symbols::paper`].
+macro_rules! paper_symbols {
+    (
+        angles { $( $(#[$adoc:meta])* $angle:ident = $aslot:expr; )* }
+        symbols { $( $(#[$doc:meta])* $var:ident = $idx:expr, $name:literal, $latex:literal, $kind:ident $(, $base:ident * $mult:expr)?; )* }
+    ) => {
+        #[allow(non_upper_case_globals, reason = "the paper's notation, as the former enum variants")]
+        impl BaseAngle {
+            $( $(#[$adoc])* pub const $angle: BaseAngle = BaseAngle($aslot); )*
+        }
+
+        #[allow(non_upper_case_globals, reason = "the paper's notation, as the former enum variants")]
+        impl Sym {
+            $( $(#[$doc])* pub const $var: Sym = paper_symbols!(@sym $idx $(, $base, $mult)?); )*
+        }
+
+        impl Symbols {
+            /// The table of the paper's walker (Fig. 1, Table 1, Sections 3-5): one table for
+            /// its level and slope kernels, in the slot order every derivation so far used.
+            pub fn paper() -> Symbols {
+                let syms = vec![
+                    $( SymbolInfo {
+                        sym: Sym::$var,
+                        name: $name.to_owned(),
+                        latex: $latex.to_owned(),
+                        kind: SymKind::$kind,
+                    }, )*
+                ];
+                let angles = syms
+                    .iter()
+                    .filter_map(|s| s.sym.base_angle().map(|(b, k)| (b, AngleInfo { symbol: s.sym, multiple: k })))
+                    .collect::<std::collections::BTreeMap<_, _>>()
+                    .into_values()
+                    .collect();
+                Symbols { syms, angles }
+            }
+        }
+    };
+    (@sym $idx:expr) => { Sym::plain($idx) };
+    (@sym $idx:expr, $base:ident, $mult:expr) => { Sym::angle($idx, BaseAngle::$base, $mult) };
+}
+
+paper_symbols! {
+    angles {
+        /// The stance-leg angle `theta_1`.
+        Th1 = 0;
+        /// The torso angle `theta_2`.
+        Th2 = 1;
+        /// Half the inter-leg angle, `alpha / 2`.
+        HalfAlpha = 2;
+        /// The slope angle `phi`.
+        Phi = 3;
+    }
+    symbols {
+        /// Horizontal position of the stance-leg end.
+        X = 0, "x", "x", Coordinate;
+        /// Vertical position of the stance-leg end.
+        Z = 1, "z", "z", Coordinate;
+        /// Stance-leg angle from the vertical.
+        Th1 = 2, "th1", "\\theta_1", Coordinate, Th1 * 1;
+        /// Torso angle from the horizontal.
+        Th2 = 3, "th2", "\\theta_2", Coordinate, Th2 * 1;
+        /// Time derivative of `x`.
+        Xd = 4, "xd", "\\dot{x}", Velocity;
+        /// Time derivative of `z`.
+        Zd = 5, "zd", "\\dot{z}", Velocity;
+        /// Time derivative of `th1`.
+        Th1d = 6, "th1d", "\\dot{\\theta}_1", Velocity;
+        /// Time derivative of `th2`.
+        Th2d = 7, "th2d", "\\dot{\\theta}_2", Velocity;
+        /// Second time derivative of `x`.
+        Xdd = 8, "xdd", "\\ddot{x}", Acceleration;
+        /// Second time derivative of `z`.
+        Zdd = 9, "zdd", "\\ddot{z}", Acceleration;
+        /// Second time derivative of `th1`.
+        Th1dd = 10, "th1dd", "\\ddot{\\theta}_1", Acceleration;
+        /// Second time derivative of `th2`.
+        Th2dd = 11, "th2dd", "\\ddot{\\theta}_2", Acceleration;
+        /// Mass of the rimless wheel.
+        M1 = 12, "m1", "m_1", Parameter;
+        /// Mass of the torso.
+        M2 = 13, "m2", "m_2", Parameter;
+        /// Leg length (radius of the wheel).
+        L = 14, "l", "l", Parameter;
+        /// Half the torso length.
+        R = 15, "r", "r", Parameter;
+        /// Inertia moment of the wheel.
+        I1 = 16, "I1", "I_1", Parameter;
+        /// Inertia moment of the torso.
+        I2 = 17, "I2", "I_2", Parameter;
+        /// Gravity acceleration.
+        G = 18, "g", "g", Parameter;
+        /// Angle between neighbouring legs.
+        Alpha = 19, "alpha", "\\alpha", Parameter, HalfAlpha * 2;
+        /// Slope angle.
+        Phi = 20, "phi", "\\phi", Parameter, Phi * 1;
+        /// Friction coefficient with direction (Eq. 24).
+        Mu = 21, "mu", "\\mu", Input;
+        /// Joint torque between stance leg and torso.
+        U = 22, "u", "u", Input;
+        /// Magnitude of the sliding friction coefficient (Eqs. 25-26).
+        Mu0 = 23, "mu0", "\\mu_0", Parameter;
+        /// Sharpness of the `tanh` friction law (Eq. 26).
+        C = 24, "c", "c", Parameter;
+        /// Time since the last impact.
+        T = 25, "t", "t", Input;
+        /// Duration of the output ramp `y_d` (Section 3.2).
+        TSet = 26, "T_set", "T_{\\mathrm{set}}", Parameter;
+        /// Proportional gain (Eq. 32).
+        Kp = 27, "K_P", "K_P", Parameter;
+        /// Derivative gain (Eq. 32).
+        Kd = 28, "K_D", "K_D", Parameter;
+        /// Auxiliary input of the output-following control (Eq. 31).
+        V = 29, "v", "v", Input;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paper_table_resolves_its_constants() {
+        let t = Symbols::paper();
+        assert_eq!(t.lookup("alpha"), Ok(Sym::Alpha));
+        assert_eq!(t.angle(BaseAngle::HalfAlpha), Some((Sym::Alpha, 2)));
+        assert_eq!(t.angles().len(), 4);
+        assert_eq!(t.atom_name(BaseAngle::HalfAlpha.cos_slot()), "cos(alpha/2)");
+        assert_eq!(t.atom_name(Sym::Th1d.slot()), "th1d");
+        for (i, s) in t.syms().enumerate() {
+            assert_eq!(s.index(), i);
+        }
+    }
+
+    #[test]
+    fn slots_describe_themselves() {
+        assert!(is_cos_slot(BaseAngle::Phi.cos_slot()));
+        assert!(!is_cos_slot(BaseAngle::Phi.sin_slot()));
+        assert!(!is_cos_slot(Sym::X.slot() + 1));
+        assert_eq!(Atom::of_slot(Sym::G.slot()), Atom::Sym(Sym::G));
+        assert_eq!(
+            Atom::of_slot(BaseAngle::Th2.sin_slot()),
+            Atom::Sin(BaseAngle::Th2)
+        );
+    }
+}
+
+/// Values of the atoms at one point, as an expression evaluator reads them.
+pub trait Valuation<T> {
+    /// The value of an atom slot.
+    fn value(&self, slot: usize) -> T;
+}
+
+impl<T, F: Fn(usize) -> T> Valuation<T> for F {
+    fn value(&self, slot: usize) -> T {
+        self(slot)
+    }
+}
+
+/// The values of every atom of a table at one point: the symbols by index, the sines and
+/// cosines by base angle (zero for a slot the table does not have).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point<T> {
+    trig: Vec<T>,
+    syms: Vec<T>,
+}
+
+impl<T: Clone + num_traits::Zero> Point<T> {
+    /// Every atom of `symbols` at zero (so every cosine too: set the angles with
+    /// [`Point::set_angle`] or by slot).
+    pub fn zeros(symbols: &Symbols) -> Point<T> {
+        Point {
+            trig: vec![T::zero(); 2 * symbols.angles().len()],
+            syms: vec![T::zero(); symbols.len()],
+        }
+    }
+
+    /// Sets the value of one atom slot (ignored for a slot the table does not have).
+    pub fn set(&mut self, slot: usize, value: T) {
+        let cell = if slot >= SYM_SLOT_BASE {
+            self.syms.get_mut(slot - SYM_SLOT_BASE)
+        } else {
+            self.trig.get_mut(slot)
+        };
+        if let Some(c) = cell {
+            *c = value;
+        }
+    }
+}
+
+impl<T: Clone + num_traits::Zero> Valuation<T> for Point<T> {
+    fn value(&self, slot: usize) -> T {
+        let cell = if slot >= SYM_SLOT_BASE {
+            self.syms.get(slot - SYM_SLOT_BASE)
+        } else {
+            self.trig.get(slot)
+        };
+        cell.cloned().unwrap_or_else(T::zero)
+    }
+}
+
+impl Point<f64> {
+    /// Sets a symbol, and for an angle the sine and cosine of its base angle
+    /// (`sin(x / k)`, `cos(x / k)` for `s = k b`).
+    pub fn set_sym(&mut self, s: Sym, x: f64) {
+        self.set(s.slot(), x);
+        if let Some((b, k)) = s.base_angle() {
+            let a = x / k as f64;
+            self.set(b.sin_slot(), a.sin());
+            self.set(b.cos_slot(), a.cos());
         }
     }
 }

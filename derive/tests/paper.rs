@@ -16,7 +16,7 @@ use num_traits::ToPrimitive;
 use walker_symbolic::mechanics::{
     self, Floor, cos, frac, int, sin, sin_half_alpha, tan_phi, total_inertia, total_mass,
 };
-use walker_symbolic::symbol::{Atom, BaseAngle, NUM_ATOMS};
+use walker_symbolic::symbol::{Atom, BaseAngle, Point, Symbols, Valuation};
 use walker_symbolic::{Error, Matrix, Poly, Q, RatFunc, Sym};
 
 // ---------------------------------------------------------------------------------------------
@@ -113,17 +113,9 @@ impl Pt {
         self.i1 + self.i2
     }
 
-    fn atoms(&self) -> [f64; NUM_ATOMS] {
-        let mut v = [0.0; NUM_ATOMS];
-        let set = |v: &mut [f64; NUM_ATOMS], s: Sym, x: f64| {
-            v[s.slot()] = x;
-            if let Some(base) = BaseAngle::of_symbol(s) {
-                let (_, k) = base.symbol_and_multiple();
-                let a = x / k as f64;
-                v[base.sin_slot()] = a.sin();
-                v[base.cos_slot()] = a.cos();
-            }
-        };
+    fn atoms(&self) -> Point<f64> {
+        let mut v = Point::zeros(&Symbols::paper());
+        let set = |v: &mut Point<f64>, s: Sym, x: f64| v.set_sym(s, x);
         for (s, x) in [
             (Sym::M1, self.m1),
             (Sym::M2, self.m2),
@@ -1212,15 +1204,16 @@ fn table1_numbers_of_the_text() {
 /// A rational point: rational parameters, and every angle at a rational point of the unit
 /// circle (`sin = 2t/(1+t^2)`, `cos = (1-t^2)/(1+t^2)`), so that `sin^2 + cos^2 = 1` holds
 /// exactly and the reduced form evaluates to the function's exact value.
-fn rational_point(seed: u64) -> ([Q; NUM_ATOMS], [f64; NUM_ATOMS]) {
+fn rational_point(seed: u64) -> (Point<Q>, Point<f64>) {
     let mut rng = Rng(seed);
-    let mut q: [Q; NUM_ATOMS] = std::array::from_fn(|_| Q::from_integer(0.into()));
+    let table = Symbols::paper();
+    let mut q: Point<Q> = Point::zeros(&table);
     let mut rat = |lo: i64, hi: i64| {
         let n = lo + (rng.next() * (hi - lo) as f64) as i64;
         Q::new(n.into(), 16.into())
     };
-    for s in Sym::ALL {
-        q[s.slot()] = rat(4, 40);
+    for s in table.syms() {
+        q.set(s.slot(), rat(4, 40));
     }
     for s in [
         Sym::Mu,
@@ -1231,28 +1224,36 @@ fn rational_point(seed: u64) -> ([Q; NUM_ATOMS], [f64; NUM_ATOMS]) {
         Sym::Th2d,
         Sym::V,
     ] {
-        q[s.slot()] = rat(-20, 20);
+        q.set(s.slot(), rat(-20, 20));
     }
-    for a in BaseAngle::ALL {
+    for a in table.base_angles() {
         let t = rat(-6, 6);
         let one = Q::from_integer(1.into());
         let two = Q::from_integer(2.into());
         let den = &one + &t * &t;
-        q[a.sin_slot()] = &two * &t / &den;
-        q[a.cos_slot()] = (&one - &t * &t) / &den;
+        q.set(a.sin_slot(), &two * &t / &den);
+        q.set(a.cos_slot(), (&one - &t * &t) / &den);
     }
-    let f = std::array::from_fn(|k| q[k].to_f64().unwrap_or(f64::NAN));
+    let mut f = Point::zeros(&table);
+    for s in table.syms() {
+        f.set(s.slot(), q.value(s.slot()).to_f64().unwrap_or(f64::NAN));
+    }
+    for a in table.base_angles() {
+        for slot in [a.sin_slot(), a.cos_slot()] {
+            f.set(slot, q.value(slot).to_f64().unwrap_or(f64::NAN));
+        }
+    }
     (q, f)
 }
 
 /// Sum of the absolute values of the terms at a point.
-fn abs_sum(p: &Poly, v: &[f64; NUM_ATOMS]) -> f64 {
+fn abs_sum(p: &Poly, v: &Point<f64>) -> f64 {
     p.terms()
         .iter()
         .map(|(m, c)| {
             let mut t = c.to_f64().unwrap_or(f64::NAN).abs();
             for (slot, e) in m.factors() {
-                t *= v[slot].abs().powi(i32::from(e));
+                t *= v.value(slot).abs().powi(i32::from(e));
             }
             t
         })
@@ -1337,25 +1338,26 @@ fn division_by_zero_is_an_error() {
     );
     // exact evaluation at a pole
     let r = div(&int(1), &s(Sym::M1));
-    let zeros: [Q; NUM_ATOMS] = std::array::from_fn(|_| Q::from_integer(0.into()));
+    let zeros: Point<Q> = Point::zeros(&Symbols::paper());
     assert_eq!(r.eval_exact(&zeros), Err(Error::DivisionByZero));
 }
 
 #[test]
 fn unknown_names_are_errors() {
     assert_eq!(
-        Sym::from_name("theta1"),
+        Symbols::paper().lookup("theta1"),
         Err(Error::UnknownSymbol {
             name: "theta1".into()
         })
     );
     // A name turns into its symbol and so into an expression of the canonical form; a near
     // miss is an error, not a fresh symbol.
-    for &x in Sym::ALL {
-        assert_eq!(Sym::from_name(x.name()).map(mechanics::sym), Ok(s(x)));
+    let table = Symbols::paper();
+    for x in table.syms() {
+        assert_eq!(table.lookup(table.name(x)).map(mechanics::sym), Ok(s(x)));
     }
     assert_eq!(
-        Sym::from_name("m3").map(mechanics::sym),
+        table.lookup("m3").map(mechanics::sym),
         Err(Error::UnknownSymbol { name: "m3".into() })
     );
     assert!(matches!(

@@ -25,7 +25,7 @@ mod common;
 use common::{Rng, cos1, derivation, div, out, s, sin1};
 
 use walker_symbolic::mechanics::{self, int, total_mass};
-use walker_symbolic::symbol::{Atom, BaseAngle, NUM_ATOMS};
+use walker_symbolic::symbol::{Atom, BaseAngle, Point, Symbols};
 use walker_symbolic::{RatFunc, Sym};
 
 /// `m_t l^2 + I1`: the wheel's moment of inertia about the stuck foot.
@@ -246,16 +246,10 @@ fn sliding_with_mu_equal_to_the_force_ratio_is_sticking() {
     }
 }
 
-fn atoms(values: &[(Sym, f64)]) -> [f64; NUM_ATOMS] {
-    let mut v = [0.0; NUM_ATOMS];
+fn atoms(values: &[(Sym, f64)]) -> Point<f64> {
+    let mut v = Point::zeros(&Symbols::paper());
     for &(s, x) in values {
-        v[s.slot()] = x;
-        if let Some(base) = BaseAngle::of_symbol(s) {
-            let (_, k) = base.symbol_and_multiple();
-            let a = x / k as f64;
-            v[base.sin_slot()] = a.sin();
-            v[base.cos_slot()] = a.cos();
-        }
+        v.set_sym(s, x);
     }
     v
 }

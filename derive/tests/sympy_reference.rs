@@ -7,40 +7,35 @@
 //! absolute values of the terms to the absolute value of the result. We compute that bound at
 //! each point and require the error to stay below 8 times it (plus a few ulps of the result).
 
-use walker_symbolic::symbol::{BaseAngle, NUM_ATOMS};
-use walker_symbolic::{Derivation, RatFunc, Sym};
+use walker_symbolic::symbol::{Point, Symbols, Valuation};
+use walker_symbolic::{Derivation, RatFunc};
 
-fn atoms(names: &[String], values: &[f64]) -> [f64; NUM_ATOMS] {
-    let mut v = [0.0; NUM_ATOMS];
+fn atoms(names: &[String], values: &[f64]) -> Point<f64> {
+    let table = Symbols::paper();
+    let mut v = Point::zeros(&table);
     for (n, x) in names.iter().zip(values) {
-        let s = Sym::from_name(n).expect("reference input names are symbols");
-        v[s.slot()] = *x;
-        if let Some(base) = BaseAngle::of_symbol(s) {
-            let (_, k) = base.symbol_and_multiple();
-            let angle = *x / k as f64;
-            v[base.sin_slot()] = angle.sin();
-            v[base.cos_slot()] = angle.cos();
-        }
+        let s = table.lookup(n).expect("reference input names are symbols");
+        v.set_sym(s, *x);
     }
     v
 }
 
 /// Sum of absolute values of the terms of a polynomial at a point.
-fn abs_sum(p: &walker_symbolic::Poly, v: &[f64; NUM_ATOMS]) -> f64 {
+fn abs_sum(p: &walker_symbolic::Poly, v: &Point<f64>) -> f64 {
     use num_traits::ToPrimitive;
     p.terms()
         .iter()
         .map(|(m, c)| {
             let mut t = c.to_f64().unwrap_or(f64::NAN).abs();
             for (slot, e) in m.factors() {
-                t *= v[slot].abs().powi(i32::from(e));
+                t *= v.value(slot).abs().powi(i32::from(e));
             }
             t
         })
         .sum()
 }
 
-fn error_bound(r: &RatFunc, v: &[f64; NUM_ATOMS]) -> f64 {
+fn error_bound(r: &RatFunc, v: &Point<f64>) -> f64 {
     let n = r.num().eval(v);
     let d = r.den().eval(v);
     let cn = abs_sum(r.num(), v) / n.abs().max(f64::MIN_POSITIVE);

@@ -23,7 +23,7 @@ use num_traits::ToPrimitive;
 /// The symbolic derivation [`lower`] reads kernels from (re-exported from `walker-symbolic`).
 pub use walker_symbolic::Derivation;
 use walker_symbolic::poly::Mono;
-use walker_symbolic::symbol::{Atom, BaseAngle, NUM_ATOMS, SymKind};
+use walker_symbolic::symbol::{Atom, BaseAngle, SymKind, Symbols};
 use walker_symbolic::{Poly, RatFunc, Sym};
 
 use crate::bind::ParamNodes;
@@ -58,6 +58,7 @@ pub fn lower(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
         })?;
         let lowered = Lowering {
             scene,
+            symbols: &derivation.symbols,
             params: &params,
             kernel: kernel.name,
         }
@@ -69,6 +70,7 @@ pub fn lower(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
 
 struct Lowering<'a> {
     scene: &'a Scene,
+    symbols: &'a Symbols,
     params: &'a ParamNodes,
     kernel: &'static str,
 }
@@ -84,13 +86,15 @@ impl Lowering<'_> {
     fn kernel(&self, g: &mut Graph, k: &walker_symbolic::Kernel) -> Result<Kernel, Error> {
         let mut args = Vec::new();
         for &a in &k.args {
-            let name = match a {
-                Sym::Mu => match self.friction_argument() {
+            let name = if a == Sym::Mu {
+                match self.friction_argument() {
                     Some(name) => name,
                     None => continue,
-                },
-                Sym::U if self.scene.torso == Torso::Passive => continue,
-                other => other.name(),
+                }
+            } else if a == Sym::U && self.scene.torso == Torso::Passive {
+                continue;
+            } else {
+                self.symbols.name(a)
             };
             if !args.iter().any(|x: &String| x == name) {
                 args.push(name.to_owned());
@@ -172,29 +176,23 @@ impl Lowering<'_> {
     }
 
     fn param(&self, s: Sym) -> Result<NodeId, Error> {
-        let p = Param::from_name(s.name())
-            .ok_or_else(|| self.error(format!("`{}` is not a scene parameter", s.name())))?;
-        self.params.get(p).ok_or_else(|| {
-            self.error(format!(
-                "the scene's structure has no parameter `{}`",
-                s.name()
-            ))
-        })
+        let name = self.symbols.name(s);
+        let p = Param::from_name(name)
+            .ok_or_else(|| self.error(format!("`{name}` is not a scene parameter")))?;
+        self.params
+            .get(p)
+            .ok_or_else(|| self.error(format!("the scene's structure has no parameter `{name}`")))
     }
 
     fn fixed(&self, s: Sym) -> Option<f64> {
-        Param::from_name(s.name()).and_then(|p| self.scene.fixed_value(p))
+        Param::from_name(self.symbols.name(s)).and_then(|p| self.scene.fixed_value(p))
     }
 
     /// Whether an atom depends on parameters only (and so belongs to `prepare`).
-    fn is_parameter_atom(slot: usize) -> bool {
-        match Atom::of_slot(slot) {
-            Some(Atom::Sym(s)) => s.kind() == SymKind::Parameter,
-            Some(Atom::Sin(a) | Atom::Cos(a)) => {
-                a.symbol_and_multiple().0.kind() == SymKind::Parameter
-            }
-            None => false,
-        }
+    fn is_parameter_atom(&self, slot: usize) -> bool {
+        self.symbols
+            .symbol_of_slot(slot)
+            .is_some_and(|s| self.symbols.kind(s) == SymKind::Parameter)
     }
 
     /// The node of an atom slot.
@@ -203,12 +201,14 @@ impl Lowering<'_> {
             return Ok(n);
         }
         let node = match Atom::of_slot(slot) {
-            Some(Atom::Sym(Sym::Mu)) => self.friction(g)?,
-            Some(Atom::Sym(s)) if s.kind() == SymKind::Parameter => self.param(s)?,
-            Some(Atom::Sym(s)) => g.input(s.name()),
-            Some(Atom::Sin(a)) => self.trig(g, a, true)?,
-            Some(Atom::Cos(a)) => self.trig(g, a, false)?,
-            None => return Err(self.error(format!("unknown atom slot {slot}"))),
+            Atom::Sym(s) if s == Sym::Mu => self.friction(g)?,
+            Atom::Sym(s) => match self.symbols.by_index(s.index()) {
+                Some(s) if self.symbols.kind(s) == SymKind::Parameter => self.param(s)?,
+                Some(s) => g.input(self.symbols.name(s)),
+                None => return Err(self.error(format!("unknown atom slot {slot}"))),
+            },
+            Atom::Sin(a) => self.trig(g, a, true)?,
+            Atom::Cos(a) => self.trig(g, a, false)?,
         };
         atoms.0.insert(slot, node);
         Ok(node)
@@ -216,15 +216,18 @@ impl Lowering<'_> {
 
     /// `sin` or `cos` of a base angle; folded to a constant when the angle is fixed.
     fn trig(&self, g: &mut Graph, a: BaseAngle, sin: bool) -> Result<NodeId, Error> {
-        let (s, k) = a.symbol_and_multiple();
+        let (s, k) = self
+            .symbols
+            .angle(a)
+            .ok_or_else(|| self.error(format!("unknown base angle {}", a.index())))?;
         let f = |x: f64| if sin { libm::sin(x) } else { libm::cos(x) };
         if let Some(v) = self.fixed(s) {
             return Ok(g.constant(f(v / k as f64)));
         }
-        let angle = if s.kind() == SymKind::Parameter {
+        let angle = if self.symbols.kind(s) == SymKind::Parameter {
             self.param(s)?
         } else {
-            g.input(s.name())
+            g.input(self.symbols.name(s))
         };
         let angle = if k == 1 {
             angle
@@ -276,10 +279,10 @@ impl Lowering<'_> {
         for (m, c) in p.terms() {
             let (mut state, mut param) = (Mono::ONE, Mono::ONE);
             for (slot, e) in m.factors() {
-                if Self::is_parameter_atom(slot) {
-                    param.0[slot] = e;
+                if self.is_parameter_atom(slot) {
+                    param = param.mul(&Mono::power(slot, e));
                 } else {
-                    state.0[slot] = e;
+                    state = state.mul(&Mono::power(slot, e));
                 }
             }
             let c = c
@@ -311,25 +314,28 @@ impl Lowering<'_> {
         atoms: &mut AtomNodes,
         terms: Vec<(Mono, NodeId)>,
     ) -> Result<NodeId, Error> {
-        let mut counts = [0usize; NUM_ATOMS];
+        let mut counts: BTreeMap<usize, usize> = BTreeMap::new();
         for (m, _) in &terms {
             for (slot, _) in m.factors() {
-                counts[slot] += 1;
+                *counts.entry(slot).or_default() += 1;
             }
         }
-        let best = (0..NUM_ATOMS)
-            .filter(|&s| counts[s] > 0)
-            .max_by_key(|&s| (counts[s], NUM_ATOMS - s));
+        // The most frequent atom; the lowest slot among equals.
+        let best = counts
+            .iter()
+            .max_by_key(|&(&s, &n)| (n, std::cmp::Reverse(s)))
+            .map(|(&s, _)| s);
         let Some(slot) = best else {
             let nodes: Vec<NodeId> = terms.into_iter().map(|(_, n)| n).collect();
             return Ok(g.sum(&nodes));
         };
-        let (with, without): (Vec<_>, Vec<_>) = terms.into_iter().partition(|(m, _)| m.0[slot] > 0);
+        let (with, without): (Vec<_>, Vec<_>) =
+            terms.into_iter().partition(|(m, _)| m.exponent(slot) > 0);
         let with = with
             .into_iter()
-            .map(|(mut m, n)| {
-                m.0[slot] -= 1;
-                (m, n)
+            .map(|(m, n)| {
+                let e = m.exponent(slot);
+                (m.with_exponent(slot, e - 1), n)
             })
             .collect();
         let inner = self.horner(g, atoms, with)?;

@@ -6,11 +6,13 @@ use crate::error::{Error, Result};
 use crate::matrix::Matrix;
 use crate::mechanics::{self, Floor, ImpactConstraint, sym};
 use crate::ratfunc::RatFunc;
-use crate::symbol::{Atom, Sym};
+use crate::symbol::{Atom, Sym, Symbols};
 
 /// Everything derived: the intermediate symbolic objects and the kernels.
 #[derive(Clone, Debug)]
 pub struct Derivation {
+    /// The symbol table every expression of the derivation is written in.
+    pub symbols: Symbols,
     /// `M`, `h`, `S` and the geometry.
     pub dynamics: mechanics::Dynamics,
     /// Stance phase on level ground.
@@ -99,8 +101,8 @@ fn substitute_u_zero(m: &Matrix) -> Result<Matrix> {
 impl Derivation {
     /// Derives everything from the physics.
     pub fn new() -> Result<Derivation> {
+        let symbols = Symbols::paper();
         use ImpactConstraint::*;
-        use Sym::*;
         let dynamics = mechanics::dynamics()?;
         let level = mechanics::stance(&dynamics, Floor::Level)?;
         let slope = mechanics::stance(&dynamics, Floor::Slope)?;
@@ -116,7 +118,7 @@ impl Derivation {
         let coulomb_level = mechanics::coulomb_impact(&dynamics, Floor::Level, true)?;
         let coulomb_slope = mechanics::coulomb_impact(&dynamics, Floor::Slope, false)?;
         let g = &dynamics.geometry;
-        let impact_args = vec![Th1, Xd, Zd, Th1d, Th2d];
+        let impact_args = vec![Sym::Th1, Sym::Xd, Sym::Zd, Sym::Th1d, Sym::Th2d];
         // On the slope the paper scales foot impulses to their vertical component (Eq. 42 has
         // `tan phi, 1` where the unit normal has `sin phi, cos phi`): report them that way.
         let cos_phi = RatFunc::cos_of(crate::symbol::BaseAngle::Phi);
@@ -132,24 +134,25 @@ impl Derivation {
         ];
         // Closed loop (Eq. 27 with u from Eq. 31): with u = (v + B) / A the output obeys
         // yddot = v exactly, and the accelerations depend on (th1, th1d, mu, v) only.
-        let u_closed = (&sym(V) + &control.b).div(&control.a)?;
+        let u_closed = (&sym(Sym::V) + &control.b).div(&control.a)?;
         let closed = level
             .accel
-            .try_map(|r| r.substitute(Atom::Sym(U), &u_closed))?;
+            .try_map(|r| r.substitute(Atom::Sym(Sym::U), &u_closed))?;
         let mut closed_outputs = named("qdd", &closed);
         closed_outputs.push(("u".into(), u_closed.clone()));
-        let closed_jac = Matrix::jacobian(closed.entries(), &[Th1, Th1d, Mu, V]);
+        let closed_jac =
+            Matrix::jacobian(closed.entries(), &[Sym::Th1, Sym::Th1d, Sym::Mu, Sym::V]);
         let slope_accel = substitute_u_zero(&slope.accel)?;
-        let slope_jac = Matrix::jacobian(slope_accel.entries(), &[Th1, Th1d, Mu]);
-        let impact_vars = [Th1, Xd, Zd, Th1d, Th2d];
+        let slope_jac = Matrix::jacobian(slope_accel.entries(), &[Sym::Th1, Sym::Th1d, Sym::Mu]);
+        let impact_vars = [Sym::Th1, Sym::Xd, Sym::Zd, Sym::Th1d, Sym::Th2d];
         // Stick phase (not in the paper): qdd, then [lambda_t, lambda_n].
         let mut level_stick_outputs = named("qdd", &stick_level.accel);
         level_stick_outputs.push(("lambda_t".into(), stick_level.forces.get(0, 0).clone()));
         level_stick_outputs.push(("lambda_n".into(), stick_level.forces.get(1, 0).clone()));
         // The stuck foot's closed loop: u = (v + B_s) / A_s (Eqs. 30-31 with Y_s), so that
         // yddot = v, then the stick accelerations and forces with that u.
-        let u_stick = (&sym(V) + &stick_control.b).div(&stick_control.a)?;
-        let with_u_stick = |r: &RatFunc| r.substitute(Atom::Sym(U), &u_stick);
+        let u_stick = (&sym(Sym::V) + &stick_control.b).div(&stick_control.a)?;
+        let with_u_stick = |r: &RatFunc| r.substitute(Atom::Sym(Sym::U), &u_stick);
         let mut closed_stick_outputs = named("qdd", &stick_level.accel.try_map(with_u_stick)?);
         closed_stick_outputs.push(("u".into(), u_stick.clone()));
         closed_stick_outputs.push((
@@ -171,7 +174,7 @@ impl Derivation {
                 name: "mass_matrix",
                 doc: "Inertia matrix M(q)",
                 equation: "Eq. 2",
-                args: vec![Th1],
+                args: vec![Sym::Th1],
                 outputs: named("M", &dynamics.mass),
                 shape: Shape::Matrix(4, 4),
                 staged: None,
@@ -180,7 +183,7 @@ impl Derivation {
                 name: "bias",
                 doc: "Coriolis, centrifugal and gravity vector h(q, qdot)",
                 equation: "Eq. 20",
-                args: vec![Th1, Th1d],
+                args: vec![Sym::Th1, Sym::Th1d],
                 outputs: named("h", &dynamics.bias),
                 shape: Shape::Vector(4),
                 staged: None,
@@ -189,7 +192,7 @@ impl Derivation {
                 name: "lambda_level",
                 doc: "Vertical ground reaction lambda on level ground",
                 equation: "Eqs. 22-23",
-                args: vec![Th1, Th1d, U, Mu],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::U, Sym::Mu],
                 outputs: vec![("lambda".into(), level.lambda.clone())],
                 shape: Shape::Scalar,
                 staged: None,
@@ -198,7 +201,7 @@ impl Derivation {
                 name: "projection_level",
                 doc: "Projection Y(q, qdot) that eliminates lambda on level ground",
                 equation: "Eqs. 28-29",
-                args: vec![Th1, Mu],
+                args: vec![Sym::Th1, Sym::Mu],
                 outputs: named("Y", &level.projection),
                 shape: Shape::Matrix(4, 4),
                 staged: None,
@@ -207,7 +210,7 @@ impl Derivation {
                 name: "control_level",
                 doc: "Scalars A and B of the output-following control, yddot = A u - B",
                 equation: "Eqs. 30-31",
-                args: vec![Th1, Th1d, Mu],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
                 outputs: vec![
                     ("A".into(), control.a.clone()),
                     ("B".into(), control.b.clone()),
@@ -219,7 +222,7 @@ impl Derivation {
                 name: "accel_level",
                 doc: "Accelerations qddot of the active walker on level ground",
                 equation: "Eq. 27",
-                args: vec![Th1, Th1d, U, Mu],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::U, Sym::Mu],
                 outputs: named("qdd", &level.accel),
                 shape: Shape::Vector(4),
                 staged: None,
@@ -228,10 +231,12 @@ impl Derivation {
                 name: "lambda_slope",
                 doc: "Vertical ground reaction lambda of the passive wheel on the slope (u = 0)",
                 equation: "Eq. 22 with Eqs. 36, 38",
-                args: vec![Th1, Th1d, Mu],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
                 outputs: vec![(
                     "lambda".into(),
-                    slope.lambda.substitute(Atom::Sym(U), &RatFunc::zero())?,
+                    slope
+                        .lambda
+                        .substitute(Atom::Sym(Sym::U), &RatFunc::zero())?,
                 )],
                 shape: Shape::Scalar,
                 staged: None,
@@ -240,7 +245,7 @@ impl Derivation {
                 name: "accel_slope",
                 doc: "Accelerations qddot of the passive wheel on the slope (u = 0)",
                 equation: "Eq. 27 with Eqs. 36, 38",
-                args: vec![Th1, Th1d, Mu],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
                 outputs: named("qdd", &substitute_u_zero(&slope.accel)?),
                 shape: Shape::Vector(4),
                 staged: None,
@@ -285,19 +290,19 @@ impl Derivation {
                 name: "closed_loop_level",
                 doc: "Accelerations qddot and torque u of the active walker under the output-following control, with yddot = v",
                 equation: "Eqs. 27, 31",
-                args: vec![Th1, Th1d, Mu, V],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::Mu, Sym::V],
                 outputs: closed_outputs,
                 shape: Shape::Parts,
                 // u once (Eq. 31), then Eq. 27 with that u: sin_cos, mu and the denominators
                 // of A, B and qdd are shared instead of multiplied together.
                 staged: Some(Staged {
-                    locals: vec![(U, u_closed.clone())],
+                    locals: vec![(Sym::U, u_closed.clone())],
                     outputs: level
                         .accel
                         .entries()
                         .iter()
                         .cloned()
-                        .chain([sym(U)])
+                        .chain([sym(Sym::U)])
                         .collect(),
                 }),
             },
@@ -305,7 +310,7 @@ impl Derivation {
                 name: "closed_loop_level_jacobian",
                 doc: "Partial derivatives of the closed-loop accelerations by (th1, th1d, mu, v), for implicit integrators and variational equations",
                 equation: "Eqs. 27, 31",
-                args: vec![Th1, Th1d, Mu, V],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::Mu, Sym::V],
                 outputs: named("J", &closed_jac),
                 shape: Shape::Matrix(4, 4),
                 staged: None,
@@ -314,7 +319,7 @@ impl Derivation {
                 name: "accel_slope_jacobian",
                 doc: "Partial derivatives of the passive wheel's accelerations on the slope by (th1, th1d, mu)",
                 equation: "Eq. 27 with Eqs. 36, 38",
-                args: vec![Th1, Th1d, Mu],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
                 outputs: named("J", &slope_jac),
                 shape: Shape::Matrix(4, 3),
                 staged: None,
@@ -341,7 +346,7 @@ impl Derivation {
                 name: "stick_level",
                 doc: "Accelerations qddot and the ground force `[lambda_t, lambda_n]` with the stance foot stuck to the level floor (`lambda_t` horizontal along +x, `lambda_n` vertical)",
                 equation: STICK_EQUATION,
-                args: vec![Th1, Th1d, U],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::U],
                 outputs: level_stick_outputs,
                 shape: Shape::Parts,
                 staged: None,
@@ -350,18 +355,18 @@ impl Derivation {
                 name: "closed_loop_stick_level",
                 doc: "Accelerations qddot, torque u and the ground force `[lambda_t, lambda_n]` of the active walker with the stance foot stuck to the level floor, under the output-following control with yddot = v",
                 equation: STICK_CONTROL_EQUATION,
-                args: vec![Th1, Th1d, V],
+                args: vec![Sym::Th1, Sym::Th1d, Sym::V],
                 outputs: closed_stick_outputs,
                 shape: Shape::Parts,
                 // u once (Eqs. 30-31 with Y_s), then stick_level with that u.
                 staged: Some(Staged {
-                    locals: vec![(U, u_stick.clone())],
+                    locals: vec![(Sym::U, u_stick.clone())],
                     outputs: stick_level
                         .accel
                         .entries()
                         .iter()
                         .cloned()
-                        .chain([sym(U)])
+                        .chain([sym(Sym::U)])
                         .chain(stick_level.forces.entries().iter().cloned())
                         .collect(),
                 }),
@@ -370,7 +375,7 @@ impl Derivation {
                 name: "stick_slope",
                 doc: "Accelerations qddot and the ground force `[lambda_t, lambda_n]` (`lambda_t` down the slope, `lambda_n` normal to it) of the passive wheel with the stance foot stuck",
                 equation: STICK_EQUATION,
-                args: vec![Th1, Th1d],
+                args: vec![Sym::Th1, Sym::Th1d],
                 outputs: slope_stick_outputs,
                 shape: Shape::Parts,
                 staged: None,
@@ -397,7 +402,7 @@ impl Derivation {
                 name: "fore_foot",
                 doc: "Position and velocity of the fore-leg end",
                 equation: "Eqs. 3, 39",
-                args: vec![X, Z, Th1, Xd, Zd, Th1d],
+                args: vec![Sym::X, Sym::Z, Sym::Th1, Sym::Xd, Sym::Zd, Sym::Th1d],
                 outputs: vec![
                     ("x_f".into(), g.fore_foot[0].clone()),
                     ("z_f".into(), g.fore_foot[1].clone()),
@@ -411,7 +416,7 @@ impl Derivation {
                 name: "energy",
                 doc: "Kinetic and potential energy",
                 equation: "Section 2.1",
-                args: vec![Z, Th1, Xd, Zd, Th1d, Th2d],
+                args: vec![Sym::Z, Sym::Th1, Sym::Xd, Sym::Zd, Sym::Th1d, Sym::Th2d],
                 outputs: vec![
                     ("T".into(), g.kinetic.clone()),
                     ("V".into(), g.potential.clone()),
@@ -422,7 +427,7 @@ impl Derivation {
         ];
         for k in &kernels {
             k.check_staged()?;
-            let free = k.free_symbols();
+            let free = k.free_symbols(&symbols);
             if !free.is_empty() {
                 return Err(Error::CheckFailed {
                     what: format!(
@@ -433,6 +438,7 @@ impl Derivation {
             }
         }
         Ok(Derivation {
+            symbols,
             dynamics,
             level,
             slope,

@@ -5,7 +5,7 @@ use std::collections::BTreeSet;
 
 use crate::error::{Error, Result};
 use crate::ratfunc::RatFunc;
-use crate::symbol::{Atom, Sym, SymKind};
+use crate::symbol::{Atom, Sym, SymKind, Symbols};
 
 /// The shape of a kernel's output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -57,23 +57,17 @@ pub struct Staged {
 }
 
 impl Kernel {
-    /// The parameters the outputs contain, in symbol order.
-    pub fn params(&self) -> Vec<Sym> {
+    /// The parameters the outputs contain (`symbols`: the table of the derivation), in symbol
+    /// order.
+    pub fn params(&self, symbols: &Symbols) -> Vec<Sym> {
         let mut set = BTreeSet::new();
         for (_, r) in &self.outputs {
             for p in [r.num(), r.den()] {
                 for slot in p.slots() {
-                    match Atom::of_slot(slot) {
-                        Some(Atom::Sym(s)) if s.kind() == SymKind::Parameter => {
-                            set.insert(s);
-                        }
-                        Some(Atom::Sin(a) | Atom::Cos(a)) => {
-                            let (s, _) = a.symbol_and_multiple();
-                            if s.kind() == SymKind::Parameter {
-                                set.insert(s);
-                            }
-                        }
-                        _ => {}
+                    if let Some(s) = symbols.symbol_of_slot(slot)
+                        && symbols.kind(s) == SymKind::Parameter
+                    {
+                        set.insert(s);
                     }
                 }
             }
@@ -118,18 +112,16 @@ impl Kernel {
     }
 
     /// Every symbol the outputs depend on, that is not an argument or a parameter (must be
-    /// empty for a well-formed kernel).
-    pub fn free_symbols(&self) -> Vec<Sym> {
+    /// empty for a well-formed kernel; `symbols`: the table of the derivation).
+    pub fn free_symbols(&self, symbols: &Symbols) -> Vec<Sym> {
         let mut set = BTreeSet::new();
         for (_, r) in &self.outputs {
             for p in [r.num(), r.den()] {
                 for slot in p.slots() {
-                    let s = match Atom::of_slot(slot) {
-                        Some(Atom::Sym(s)) => s,
-                        Some(Atom::Sin(a) | Atom::Cos(a)) => a.symbol_and_multiple().0,
-                        None => continue,
+                    let Some(s) = symbols.symbol_of_slot(slot) else {
+                        continue;
                     };
-                    if s.kind() != SymKind::Parameter && !self.args.contains(&s) {
+                    if symbols.kind(s) != SymKind::Parameter && !self.args.contains(&s) {
                         set.insert(s);
                     }
                 }

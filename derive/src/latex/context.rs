@@ -6,7 +6,7 @@ use num_traits::One;
 
 use super::notation::{atom_power, exponent};
 use crate::poly::{Mono, Poly, Q};
-use crate::symbol::{Atom, BaseAngle, NUM_ATOMS, Sym};
+use crate::symbol::{Atom, BaseAngle, SYM_SLOT_BASE, Sym};
 use crate::trig::sin_cos_combination;
 
 /// The plain symbols in the order they are printed in a product (and preferred when a common
@@ -83,11 +83,12 @@ pub(super) struct Ctx {
 
 impl Ctx {
     fn new() -> Ctx {
-        let mut free =
-            (2 * crate::symbol::NUM_ANGLES..NUM_ATOMS).filter(|&s| Atom::of_slot(s).is_none());
-        let mt = free.next();
-        let it = free.next();
-        let psi = free.next().zip(free.next());
+        // Slots after every symbol of the table: the engine treats them as plain symbols (the
+        // pseudo angle's `cos^2` is reduced by [`Ctx::reduce`]).
+        let first = SYM_SLOT_BASE + super::table().len();
+        let mt = Some(first);
+        let it = Some(first + 1);
+        let psi = Some((first + 2, first + 3));
         Ctx {
             mt,
             it,
@@ -113,25 +114,25 @@ impl Ctx {
             }
         }
         match Atom::of_slot(slot) {
-            Some(Atom::Sym(s)) => SYM_ORDER
+            Atom::Sym(s) if s.index() < super::table().len() => SYM_ORDER
                 .iter()
                 .position(|&o| o == s)
                 .map_or(100 + slot as u32, |p| 10 + p as u32),
-            Some(Atom::Sin(a)) => 200 + 2 * angle_rank(a),
-            Some(Atom::Cos(a)) => 201 + 2 * angle_rank(a),
-            None => 300 + slot as u32,
+            Atom::Sym(s) => 300 + s.index() as u32,
+            Atom::Sin(a) => 200 + 2 * angle_rank(a),
+            Atom::Cos(a) => 201 + 2 * angle_rank(a),
         }
     }
 
     pub(super) fn is_trig(&self, slot: usize) -> bool {
-        matches!(Atom::of_slot(slot), Some(Atom::Sin(_) | Atom::Cos(_)))
+        matches!(Atom::of_slot(slot), Atom::Sin(_) | Atom::Cos(_))
             || self.psi.is_some_and(|(s, c)| slot == s || slot == c)
     }
 
     /// The `(sin, cos)` slot pairs: base angles, and `psi` when in use.
     pub(super) fn trig_pairs(&self) -> Vec<(usize, usize)> {
-        let mut v: Vec<(usize, usize)> = BaseAngle::ALL
-            .iter()
+        let mut v: Vec<(usize, usize)> = super::table()
+            .base_angles()
             .map(|a| (a.sin_slot(), a.cos_slot()))
             .collect();
         if let (Some(p), Some(_)) = (self.psi, self.psi_latex) {
@@ -166,8 +167,10 @@ impl Ctx {
             }
         }
         match Atom::of_slot(slot) {
-            Some(a) => atom_power(a, e),
-            None => format!("\\mathrm{{a}}_{{{slot}}}{p}"),
+            Atom::Sym(s) if s.index() >= super::table().len() => {
+                format!("\\mathrm{{a}}_{{{slot}}}{p}")
+            }
+            a => atom_power(a, e),
         }
     }
 }

@@ -102,12 +102,24 @@ fn kernel_section(out: &mut String, kernel: &Kernel) {
     let args: Vec<String> = kernel
         .args
         .iter()
-        .map(|s| format!("`{}` (${}$)", s.name(), s.latex()))
+        .map(|s| {
+            format!(
+                "`{}` (${}$)",
+                super::table().name(*s),
+                super::table().latex(*s)
+            )
+        })
         .collect();
     let params: Vec<String> = kernel
-        .params()
+        .params(super::table())
         .iter()
-        .map(|s| format!("`{}` (${}$)", s.name(), s.latex()))
+        .map(|s| {
+            format!(
+                "`{}` (${}$)",
+                super::table().name(*s),
+                super::table().latex(*s)
+            )
+        })
         .collect();
     let _ = writeln!(out, "- inputs: {}", args.join(", "));
     let _ = writeln!(

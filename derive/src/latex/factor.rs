@@ -63,18 +63,22 @@ pub(super) fn factor(p: &Poly, ctx: &Ctx) -> Factored {
     }
     let (c1, prim) = p.content_primitive();
     let mono1 = prim.monomial_content();
-    let prim = prim.div_exact(&Poly::term(mono1, Q::one())).unwrap_or(prim);
+    let prim = prim
+        .div_exact(&Poly::term(mono1.clone(), Q::one()))
+        .unwrap_or(prim);
     let (mt_power, prim) = abbreviate(prim, Sym::M1, Sym::M2, ctx.mt);
     let (it_power, prim) = abbreviate(prim, Sym::I1, Sym::I2, ctx.it);
     let (c2, prim) = prim.content_primitive();
     let mono2 = prim.monomial_content();
-    let mut rest = prim.div_exact(&Poly::term(mono2, Q::one())).unwrap_or(prim);
+    let mut rest = prim
+        .div_exact(&Poly::term(mono2.clone(), Q::one()))
+        .unwrap_or(prim);
     let mut mono = mono1.mul(&mono2);
     if let Some(s) = ctx.mt {
-        mono.0[s] += mt_power;
+        mono = mono.mul(&Mono::power(s, mt_power));
     }
     if let Some(s) = ctx.it {
-        mono.0[s] += it_power;
+        mono = mono.mul(&Mono::power(s, it_power));
     }
     let mut coef = c1 * c2;
     // Cosine factors that the reduced form hides (`I_1 - I_1 \sin^2\phi` is
@@ -91,10 +95,12 @@ pub(super) fn factor(p: &Poly, ctx: &Ctx) -> Factored {
                 let (k, q) = q.content_primitive();
                 coef *= k;
                 rest = q;
-                mono.0[c] += 1;
+                mono = mono.mul(&Mono::atom(c));
                 let m = rest.monomial_content();
                 if !m.is_one() {
-                    rest = rest.div_exact(&Poly::term(m, Q::one())).unwrap_or(rest);
+                    rest = rest
+                        .div_exact(&Poly::term(m.clone(), Q::one()))
+                        .unwrap_or(rest);
                     mono = mono.mul(&m);
                 }
             }

@@ -37,12 +37,11 @@ fn fraction(num: &Poly, den: &Poly, ctx: &Ctx) -> String {
     }
     let n = factor(num, ctx);
     let d = factor(den, ctx);
-    let (mut nm, mut dm) = (n.mono, d.mono);
-    for (a, b) in nm.0.iter_mut().zip(dm.0.iter_mut()) {
-        let common = (*a).min(*b);
-        *a -= common;
-        *b -= common;
-    }
+    let common = n.mono.gcd(&d.mono);
+    let (nm, dm) = (
+        n.mono.div(&common).unwrap_or(n.mono),
+        d.mono.div(&common).unwrap_or(d.mono),
+    );
     let c = &n.coef / &d.coef;
     let top = Q::from_integer(c.numer().clone());
     let bottom = Q::from_integer(c.denom().clone());

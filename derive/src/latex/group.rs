@@ -7,7 +7,6 @@ use super::context::Ctx;
 use super::factor::factor;
 use super::notation::rational;
 use crate::poly::{Mono, Poly, Q};
-use crate::symbol::NUM_ATOMS;
 
 /// The atoms of a monomial in print order, split into (non-trigonometric, trigonometric).
 fn mono_parts(m: &Mono, ctx: &Ctx) -> (Vec<String>, Vec<String>) {
@@ -89,8 +88,12 @@ fn group(p: &Poly, ctx: &Ctx, items: &mut Vec<Item>) {
     }
     let mut best: Option<(usize, usize)> = None;
     if n > 2 {
-        for slot in 0..NUM_ATOMS {
-            let count = p.terms().iter().filter(|(m, _)| m.0[slot] > 0).count();
+        for slot in p.slots() {
+            let count = p
+                .terms()
+                .iter()
+                .filter(|(m, _)| m.exponent(slot) > 0)
+                .count();
             if count < 2 || count == n {
                 continue;
             }
@@ -109,8 +112,11 @@ fn group(p: &Poly, ctx: &Ctx, items: &mut Vec<Item>) {
         }
         return;
     };
-    let (with, without): (Vec<_>, Vec<_>) =
-        p.terms().iter().cloned().partition(|(m, _)| m.0[slot] > 0);
+    let (with, without): (Vec<_>, Vec<_>) = p
+        .terms()
+        .iter()
+        .cloned()
+        .partition(|(m, _)| m.exponent(slot) > 0);
     items.push(item_of(&Poly::from_terms(with), ctx));
     group(&Poly::from_terms(without), ctx, items);
 }

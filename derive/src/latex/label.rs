@@ -37,7 +37,7 @@ pub fn output_label(kernel: &Kernel, k: usize) -> String {
             if let Some(row) = q_label(i, dots, post) {
                 return format!(
                     "\\frac{{\\partial {row}}}{{\\partial {}}}",
-                    kernel.args[j].latex()
+                    super::table().latex(kernel.args[j])
                 );
             }
         }

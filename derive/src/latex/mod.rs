@@ -50,3 +50,10 @@ pub use document::{MAX_PRINTED_TERMS, equations_markdown};
 pub use formula::{matrix, poly, ratfunc, ratfunc_at_most};
 pub use label::output_label;
 pub use notation::{angle, atom_power, rational, symbols};
+
+/// The symbol table of the walker these documents print: the paper's.
+pub(crate) fn table() -> &'static crate::symbol::Symbols {
+    static TABLE: std::sync::LazyLock<crate::symbol::Symbols> =
+        std::sync::LazyLock::new(crate::symbol::Symbols::paper);
+    &TABLE
+}

@@ -15,12 +15,12 @@ pub(super) fn exponent(e: u8) -> String {
 }
 
 /// The LaTeX of a base angle: `\theta_1`, `\theta_2`, `\frac{\alpha}{2}`, `\phi`.
-pub fn angle(a: BaseAngle) -> &'static str {
-    match a {
-        BaseAngle::Th1 => "\\theta_1",
-        BaseAngle::Th2 => "\\theta_2",
-        BaseAngle::HalfAlpha => "\\frac{\\alpha}{2}",
-        BaseAngle::Phi => "\\phi",
+pub fn angle(a: BaseAngle) -> String {
+    let t = super::table();
+    match t.angle(a) {
+        Some((s, 1)) => t.latex(s).to_owned(),
+        Some((s, k)) => format!("\\frac{{{}}}{{{k}}}", t.latex(s)),
+        None => format!("\\vartheta_{{{}}}", a.index()),
     }
 }
 
@@ -28,7 +28,7 @@ pub fn angle(a: BaseAngle) -> &'static str {
 pub fn atom_power(atom: Atom, e: u8) -> String {
     let p = if e == 1 { String::new() } else { exponent(e) };
     match atom {
-        Atom::Sym(s) => format!("{}{p}", s.latex()),
+        Atom::Sym(s) => format!("{}{p}", super::table().latex(s)),
         Atom::Sin(a) => format!("\\sin{p}{}", angle(a)),
         Atom::Cos(a) => format!("\\cos{p}{}", angle(a)),
     }
@@ -48,7 +48,7 @@ pub fn rational(q: &Q) -> String {
 /// A list of symbols in LaTeX, comma separated.
 pub fn symbols(syms: &[Sym]) -> String {
     syms.iter()
-        .map(|s| s.latex())
+        .map(|s| super::table().latex(*s))
         .collect::<Vec<_>>()
         .join(", ")
 }

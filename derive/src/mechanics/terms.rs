@@ -34,10 +34,10 @@ fn combination(angle: &[(Sym, i64)]) -> Result<Vec<(BaseAngle, i64)>> {
     angle
         .iter()
         .map(|&(s, n)| {
-            let base = BaseAngle::of_symbol(s).ok_or_else(|| Error::UnsupportedAngle {
-                what: format!("`{}` is not an angle", s.name()),
+            let (base, k) = s.base_angle().ok_or_else(|| Error::UnsupportedAngle {
+                what: format!("symbol {} is not an angle", s.index()),
             })?;
-            Ok((base, n * base.symbol_and_multiple().1))
+            Ok((base, n * k))
         })
         .collect()
 }

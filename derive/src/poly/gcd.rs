@@ -8,7 +8,6 @@ use num_integer::Integer;
 use num_traits::{One, Zero};
 
 use super::{Mono, Poly, Q};
-use crate::symbol::NUM_ATOMS;
 
 impl Poly {
     /// Greatest common divisor in the free ring `Z[atoms]`, normalised to a primitive
@@ -23,12 +22,8 @@ impl Poly {
         Poly::from_terms(
             self.terms
                 .iter()
-                .filter(|(m, _)| m.0[slot] == d)
-                .map(|(m, c)| {
-                    let mut mm = *m;
-                    mm.0[slot] = 0;
-                    (mm, c.clone())
-                }),
+                .filter(|(m, _)| m.exponent(slot) == d)
+                .map(|(m, c)| (m.with_exponent(slot, 0), c.clone())),
         )
     }
 }
@@ -92,17 +87,26 @@ fn pow_mod(mut b: u64, mut e: u64) -> u64 {
     r
 }
 
-/// The image of `p` in `F_p[v]` with every other atom set to a fixed value.
-fn univariate_image(p: &Poly, slot: usize, point: &[u64; NUM_ATOMS]) -> Option<Vec<u64>> {
+/// The value every other atom takes in [`univariate_image`]: fixed, distinct per slot, and
+/// generic enough that a leading coefficient rarely vanishes there (which is detected anyway).
+fn image_point(slot: usize) -> u64 {
+    let i = slot as u64 % PRIME;
+    (1_000_003 + 7_919 * i % PRIME * ((i + 13) % PRIME)) % PRIME
+}
+
+/// The image of `p` in `F_p[v]` with every other atom set to a fixed value ([`image_point`]).
+fn univariate_image(p: &Poly, slot: usize) -> Option<Vec<u64>> {
     let mut out = vec![0u64; usize::from(p.degree_in(slot)) + 1];
     for (m, c) in &p.terms {
         let mut t = mod_p(c)?;
+        let mut k = 0;
         for (s, e) in m.factors() {
-            if s != slot {
-                t = t * pow_mod(point[s], u64::from(e)) % PRIME;
+            if s == slot {
+                k = usize::from(e);
+            } else {
+                t = t * pow_mod(image_point(s), u64::from(e)) % PRIME;
             }
         }
-        let k = usize::from(m.0[slot]);
         out[k] = (out[k] + t) % PRIME;
     }
     Some(out)
@@ -139,18 +143,11 @@ fn univariate_gcd_degree(mut a: Vec<u64>, mut b: Vec<u64>) -> usize {
 /// `F_p[v]` (all other atoms at a fixed point that keeps the degrees) have a constant gcd,
 /// then the gcd has degree zero in every atom. `false` means "not proven", not "not coprime".
 fn coprime_by_images(a: &Poly, b: &Poly) -> bool {
-    let mut point = [0u64; NUM_ATOMS];
-    for (i, v) in point.iter_mut().enumerate() {
-        *v = 1_000_003 + 7_919 * i as u64 * (i as u64 + 13);
-    }
-    for slot in 0..NUM_ATOMS {
-        if !(a.contains(slot) && b.contains(slot)) {
+    for slot in a.slots() {
+        if !b.contains(slot) {
             continue;
         }
-        let (Some(ia), Some(ib)) = (
-            univariate_image(a, slot, &point),
-            univariate_image(b, slot, &point),
-        ) else {
+        let (Some(ia), Some(ib)) = (univariate_image(a, slot), univariate_image(b, slot)) else {
             return false;
         };
         let degrees_kept = ia.last() != Some(&0) && ib.last() != Some(&0);
@@ -174,8 +171,7 @@ fn prem(a: &Poly, b: &Poly, slot: usize) -> Poly {
     while !r.is_zero() && r.degree_in(slot) >= db {
         let dr = r.degree_in(slot);
         let lr = r.lc_in(slot);
-        let mut shift = Mono::ONE;
-        shift.0[slot] = dr - db;
+        let shift = Mono::power(slot, dr - db);
         r = lb
             .mul_raw(&r)
             .sub(&lr.mul_raw(&b.mul_term(&shift, &Q::one())));
@@ -194,13 +190,8 @@ fn gcd(a: &Poly, b: &Poly) -> Poly {
         return Poly::one();
     }
     if a.len() == 1 || b.len() == 1 {
-        let ma = a.monomial_content();
-        let mb = b.monomial_content();
-        let mut e = [0u8; NUM_ATOMS];
-        for (x, (p, q)) in e.iter_mut().zip(ma.0.iter().zip(mb.0.iter())) {
-            *x = (*p).min(*q);
-        }
-        return Poly::term(Mono(e), Q::one());
+        let g = a.monomial_content().gcd(&b.monomial_content());
+        return Poly::term(g, Q::one());
     }
     if coprime_by_images(a, b) {
         return Poly::one();
@@ -210,7 +201,14 @@ fn gcd(a: &Poly, b: &Poly) -> Poly {
         return normalize(small);
     }
     // An atom only one of them contains: the gcd divides every coefficient in it.
-    if let Some(slot) = (0..NUM_ATOMS).find(|&s| a.contains(s) != b.contains(s)) {
+    let (sa, sb) = (a.slots(), b.slots());
+    let only_one = sa
+        .iter()
+        .filter(|s| !sb.contains(s))
+        .chain(sb.iter().filter(|s| !sa.contains(s)))
+        .min()
+        .copied();
+    if let Some(slot) = only_one {
         return if a.contains(slot) {
             gcd_with_coeffs(b, a, slot)
         } else {
@@ -218,8 +216,9 @@ fn gcd(a: &Poly, b: &Poly) -> Poly {
         };
     }
     // Otherwise eliminate the shared atom of lowest degree: the remainder sequence is shortest.
-    let Some(slot) = (0..NUM_ATOMS)
-        .filter(|&s| a.contains(s))
+    let Some(slot) = sa
+        .iter()
+        .copied()
         .min_by_key(|&s| (a.degree_in(s).max(b.degree_in(s)), a.len() + b.len(), s))
     else {
         return Poly::one();
