@@ -296,6 +296,11 @@ impl Parser<'_> {
             .parse()
             .map_err(|_| self.error(ParseErrorKind::TooLarge, Span::new(digits_start, end)))?;
         self.pos = end;
+        // `x^2^3` would be `x^(2^3)`: an exponent that is not a literal.
+        if self.peek() == Some('^') {
+            return Err(self.non_integer_exponent(start));
+        }
+        self.pos = end;
         Ok((n, end))
     }
 
