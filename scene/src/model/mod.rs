@@ -14,6 +14,7 @@
 //! ```
 
 pub mod angles;
+mod control;
 pub mod divisors;
 pub mod error;
 pub mod expr;

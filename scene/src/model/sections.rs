@@ -1,24 +1,30 @@
 //! The sections after the declarations: floor, bodies, points, stance, strike, falls,
-//! relabelling, impact, inputs, control, outputs and descriptors, each checked against the
-//! symbol table; then each angle's base-angle divisor.
+//! relabelling and impact, each checked against the symbol table (the actuated sections are in
+//! [`control`](super::control)); then each angle's base-angle divisor.
 
 use std::collections::HashSet;
 
 use crate::model::angles::angle_combination;
+use crate::model::control::Actuation;
 use crate::model::divisors::base_divisors;
 use crate::model::error::{ModelError, ModelErrorKind};
 use crate::model::load::{Loader, Use, is_identifier, is_kebab_name};
 use crate::model::raw::{RawModel, Str};
 use crate::model::symbols::SymbolKind;
 use crate::model::types::{
-    Body, Control, Coordinate, Descriptor, Desired, Fall, FallCondition, Floor, Impact, Input,
-    Model, ModelExpr, Name, Output, Parameter, Point, Relabel, Stance, Strike,
+    Body, Coordinate, Fall, FallCondition, Floor, Impact, Model, ModelExpr, Name, Parameter, Point,
+    Relabel, Stance, Strike,
 };
 use crate::structure::{Friction, ImpactLaw};
 
 impl Loader<'_> {
     /// A reference to a declared parameter (an angle one when `angle`).
-    fn parameter_ref(&self, s: &Str, field: &str, angle: bool) -> Result<Name, ModelError> {
+    pub(crate) fn parameter_ref(
+        &self,
+        s: &Str,
+        field: &str,
+        angle: bool,
+    ) -> Result<Name, ModelError> {
         let name = s.get_ref();
         match self.symbols.get(name) {
             Some(sym) if sym.kind == SymbolKind::Parameter && (!angle || sym.angle) => {
@@ -60,7 +66,7 @@ impl Loader<'_> {
     }
 
     /// A unique name in its own namespace (`seen`), an identifier or a kebab name.
-    fn unique(
+    pub(crate) fn unique(
         &self,
         s: &Str,
         what: &str,
@@ -341,178 +347,12 @@ impl Loader<'_> {
             double_support: impact_raw.and_then(|i| i.double_support).unwrap_or(true),
         };
 
-        let mut inputs = Vec::new();
-        for input in &raw.input {
-            let i = input.get_ref();
-            let force = i.force.get_ref();
-            if force.len() != coordinates.len() {
-                return Err(self.error(
-                    i.force.span(),
-                    ModelErrorKind::Count,
-                    format!(
-                        "input `{}` force: expected one expression per coordinate, {}; found {}",
-                        i.name.get_ref(),
-                        coordinates.len(),
-                        force.len()
-                    ),
-                ));
-            }
-            let force = force
-                .iter()
-                .map(|f| {
-                    self.expr(
-                        f,
-                        &format!("input `{}` force", i.name.get_ref()),
-                        Use::Configuration,
-                    )
-                })
-                .collect::<Result<Vec<_>, _>>()?;
-            inputs.push(Input {
-                name: self.name(&i.name),
-                doc: i.doc.clone(),
-                force,
-            });
-        }
-
-        let control = match (&raw.control, inputs.is_empty()) {
-            (Some(c), false) => {
-                let c = c.get_ref();
-                Some(Control {
-                    kp: self.parameter_ref(&c.kp, "kp", false)?,
-                    kd: self.parameter_ref(&c.kd, "kd", false)?,
-                })
-            }
-            (Some(c), true) => {
-                return Err(self.error(
-                    c.span(),
-                    ModelErrorKind::Inconsistent,
-                    "[control] without [[input]]: output-following control needs inputs".to_owned(),
-                ));
-            }
-            (None, false) => {
-                return Err(self.error(raw.input[0].span(), ModelErrorKind::Inconsistent, "[[input]] without [control]: expected [control] with the gains kp and kd, and one [[output]] per input".to_owned()));
-            }
-            (None, true) => None,
-        };
-        if raw.output.len() != inputs.len() {
-            let span = raw.output.first().map_or_else(
-                || raw.input.first().map_or(0..0, |i| i.span()),
-                |o| o.span(),
-            );
-            return Err(self.error(
-                span,
-                ModelErrorKind::Count,
-                format!("{} [[output]] for {} [[input]]: expected as many outputs as inputs (A must be square)", raw.output.len(), inputs.len()),
-            ));
-        }
-        let mut seen_outputs = HashSet::new();
-        let mut outputs = Vec::new();
-        for o in &raw.output {
-            let o = o.get_ref();
-            let name = self.unique(&o.name, "output", false, &mut seen_outputs)?;
-            let what = format!("output `{}`", name.name);
-            let h = self.expr(&o.h, &format!("{what} h"), Use::Configuration)?;
-            let aux = match &o.aux {
-                Some(a) => self.name(a),
-                None => Name {
-                    name: format!("v_{}", name.name),
-                    location: name.location,
-                },
-            };
-            let d = o.desired.get_ref();
-            let field = |f: &Option<Str>, key: &str| -> Result<ModelExpr, ModelError> {
-                match f {
-                    Some(s) => self.expr(s, &format!("{what} desired {key}"), Use::Constant),
-                    None => Err(self.error(
-                        o.desired.span(),
-                        ModelErrorKind::Toml,
-                        format!(
-                            "{what} desired: missing field `{key}` for shape \"{}\"",
-                            d.shape.get_ref()
-                        ),
-                    )),
-                }
-            };
-            let extra = |present: &[(&Option<Str>, &str)]| -> Result<(), ModelError> {
-                match present.iter().find(|(f, _)| f.is_some()) {
-                    Some((f, key)) => Err(self.error(
-                        f.as_ref().map_or(0..0, Str::span),
-                        ModelErrorKind::Toml,
-                        format!(
-                            "{what} desired: `{key}` does not belong to shape \"{}\"",
-                            d.shape.get_ref()
-                        ),
-                    )),
-                    None => Ok(()),
-                }
-            };
-            let desired = match d.shape.get_ref().as_str() {
-                "quintic" => {
-                    extra(&[(&d.value, "value")])?;
-                    Desired::Quintic {
-                        from: field(&d.from, "from")?,
-                        to: field(&d.to, "to")?,
-                        duration: field(&d.duration, "duration")?,
-                    }
-                }
-                "hold" => {
-                    extra(&[(&d.from, "from"), (&d.to, "to"), (&d.duration, "duration")])?;
-                    Desired::Hold {
-                        value: field(&d.value, "value")?,
-                    }
-                }
-                other => {
-                    return Err(self.error(
-                        d.shape.span(),
-                        ModelErrorKind::Toml,
-                        format!("{what} desired shape `{other}`: expected \"quintic\" or \"hold\""),
-                    ));
-                }
-            };
-            outputs.push(Output {
-                name,
-                h,
-                aux,
-                desired,
-            });
-        }
-
-        let descriptors = match &raw.descriptors {
-            None => Descriptor::ALL
-                .into_iter()
-                .filter(|d| !d.needs_inputs() || !inputs.is_empty())
-                .collect(),
-            Some(d) => {
-                let mut out = Vec::new();
-                for s in d.get_ref().report.get_ref() {
-                    let Some(desc) = Descriptor::ALL
-                        .into_iter()
-                        .find(|d| d.name() == s.get_ref())
-                    else {
-                        return Err(self.error(s.span(), ModelErrorKind::Toml, format!("descriptor `{}`: expected one of \"T\", \"dx\", \"V\", \"power\", \"specific_resistance\"", s.get_ref())));
-                    };
-                    if out.contains(&desc) {
-                        return Err(self.error(
-                            s.span(),
-                            ModelErrorKind::Duplicate,
-                            format!("descriptor `{}` is listed twice", s.get_ref()),
-                        ));
-                    }
-                    if desc.needs_inputs() && inputs.is_empty() {
-                        return Err(self.error(
-                            s.span(),
-                            ModelErrorKind::Inconsistent,
-                            format!(
-                                "descriptor `{}` needs inputs; this model has none",
-                                s.get_ref()
-                            ),
-                        ));
-                    }
-                    out.push(desc);
-                }
-                out
-            }
-        };
+        let Actuation {
+            inputs,
+            control,
+            outputs,
+            descriptors,
+        } = self.actuation(&raw, coordinates.len())?;
 
         let mut model = Model {
             path: self.path.to_owned(),
