@@ -602,3 +602,32 @@ fn power_descriptors_need_inputs() {
     );
     assert_error(r, ModelErrorKind::Inconsistent, "72:16", "needs inputs");
 }
+
+#[test]
+fn an_error_in_a_literal_string_points_inside_it() {
+    let r = load_with(MINI, "mass = \"m\"", "mass = 'm + q'");
+    assert_error(
+        r,
+        ModelErrorKind::UnknownSymbol,
+        "53:13",
+        "unknown symbol `q`",
+    );
+}
+
+#[test]
+fn an_error_in_a_multi_line_string_points_at_its_start() {
+    let r = load_with(MINI, "mass = \"m\"", "mass = \"\"\"\nm + q\"\"\"");
+    assert_error(
+        r,
+        ModelErrorKind::UnknownSymbol,
+        "53:8",
+        "unknown symbol `q`",
+    );
+}
+
+#[test]
+fn columns_count_characters_not_bytes() {
+    // `doc = "lég" x`: the `x` is the 13th character and the 14th byte.
+    let r = load_with(MINI, "doc = \"leg\"", "doc = \"lég\" x");
+    assert_error(r, ModelErrorKind::Toml, "15:13", "");
+}

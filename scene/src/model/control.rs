@@ -74,7 +74,7 @@ impl Loader<'_> {
                 ));
             }
             (None, false) => {
-                return Err(self.error(raw.input[0].span(), ModelErrorKind::Inconsistent, "[[input]] without [control]: expected [control] with the gains kp and kd, and one [[output]] per input".to_owned()));
+                return Err(self.error(raw.input.first().map_or(0..0, |i| i.span()), ModelErrorKind::Inconsistent, "[[input]] without [control]: expected [control] with the gains kp and kd, and one [[output]] per input".to_owned()));
             }
             (None, true) => None,
         };

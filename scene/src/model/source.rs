@@ -23,7 +23,11 @@ impl<'a> SourceMap<'a> {
             offset -= 1;
         }
         let line = self.line_starts.partition_point(|&s| s <= offset);
-        let start = self.line_starts[line.saturating_sub(1)];
+        let start = self
+            .line_starts
+            .get(line.saturating_sub(1))
+            .copied()
+            .unwrap_or(0);
         let column = self.text[start..offset].chars().count() + 1;
         Location { line, column }
     }
