@@ -87,14 +87,15 @@ enum Mutation {
     Delete(usize),
     Duplicate(usize),
     Replace(usize, &'static str),
+    Expression(usize, String),
     Truncate(usize),
 }
 
 fn mutation() -> impl Strategy<Value = Mutation> {
     prop_oneof![
-        any::<usize>().prop_map(Mutation::Delete),
-        any::<usize>().prop_map(Mutation::Duplicate),
-        (
+        1 => any::<usize>().prop_map(Mutation::Delete),
+        1 => any::<usize>().prop_map(Mutation::Duplicate),
+        2 => (
             any::<usize>(),
             prop::sample::select(vec![
                 "\"\"",
@@ -118,7 +119,8 @@ fn mutation() -> impl Strategy<Value = Mutation> {
             ])
         )
             .prop_map(|(i, v)| Mutation::Replace(i, v)),
-        any::<usize>().prop_map(Mutation::Truncate),
+        1 => any::<usize>().prop_map(Mutation::Truncate),
+        6 => (any::<usize>(), "[a-z0-9 +*/^()._-]{0,16}").prop_map(|(i, e)| Mutation::Expression(i, e)),
     ]
 }
 
@@ -140,6 +142,15 @@ fn apply(text: &str, mutations: &[Mutation]) -> String {
                 if let Some(eq) = l.find(" = ") {
                     l.truncate(eq + 3);
                     l.push_str(v);
+                }
+            }
+            Mutation::Expression(i, ref e) if !lines.is_empty() => {
+                // Replace the first string on the line by a random expression.
+                let l = &mut lines[i % n];
+                if let Some(open) = l.find('"')
+                    && let Some(len) = l[open + 1..].find('"')
+                {
+                    l.replace_range(open + 1..open + 1 + len, e);
                 }
             }
             Mutation::Truncate(at) => truncate = Some(at),
@@ -211,6 +222,11 @@ proptest! {
         let again = parse_expr(&text);
         prop_assert!(again.as_ref().is_ok_and(|a| a.same_as(&e)), "{text} -> {again:?}");
     }
+
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
 
     #[test]
     fn mutated_model_files_never_panic_and_errors_lie_in_the_file(

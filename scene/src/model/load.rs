@@ -1,9 +1,9 @@
 //! The loader: model file text to a checked [`Model`], or the first error with its file, line,
 //! column and what was expected.
 //!
-//! serde reads the layout ([`raw`](crate::model::raw)), keeping the span of every name and
+//! serde reads the layout (`raw.rs`), keeping the span of every name and
 //! expression; this file then checks the declarations (names, units, ranges) and builds the
-//! symbol table, and [`sections`](crate::model::sections) checks the rest against it. Beyond
+//! symbol table, and `sections.rs` and `control.rs` check the rest against it. Beyond
 //! the format's own list of checks, each expression may use only the symbols its field is
 //! about: positions, masses, inertias, forces, outputs, locks and the relabelling use
 //! coordinates and parameters; guards may also use velocities and `t`; desired trajectories
