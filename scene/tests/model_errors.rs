@@ -183,8 +183,14 @@ fn a_reserved_name_cannot_be_declared() {
         ("mu", "`mu` is reserved"),
         ("t", "`t` is reserved"),
         ("sin", "`sin` is reserved"),
-        ("thd", "`thd` is reserved: it is a velocity"),
-        ("xdd", "`xdd` is reserved: it is an acceleration"),
+        (
+            "thd",
+            "`thd` is reserved: it is the velocity of coordinate `th`",
+        ),
+        (
+            "xdd",
+            "`xdd` is reserved: it is the acceleration of coordinate `x`",
+        ),
     ] {
         let r = load_with(MINI, "name = \"l\"", &format!("name = \"{name}\""));
         assert_error(r, ModelErrorKind::Reserved, "24:8", fragment);

@@ -183,32 +183,34 @@ impl Loader<'_> {
             ));
         }
         if let Some(existing) = self.symbols.get(name) {
-            let (kind_taken, reserved) = (
-                existing.kind,
-                matches!(
-                    existing.kind,
-                    SymbolKind::Velocity | SymbolKind::Acceleration
-                ),
-            );
-            return Err(if reserved {
-                self.error(
-                    s.span(),
-                    ModelErrorKind::Reserved,
-                    format!(
-                        "`{name}` is reserved: it is {} of the coordinates",
-                        kind_taken.describe()
-                    ),
-                )
-            } else {
-                self.error(
-                    s.span(),
+            let derived = match existing.kind {
+                SymbolKind::Velocity => Some("velocity"),
+                SymbolKind::Acceleration => Some("acceleration"),
+                _ => None,
+            };
+            let (kind, message) = match derived {
+                Some(what) => {
+                    let coordinate = self
+                        .symbols
+                        .symbols
+                        .get(existing.index)
+                        .map_or("", |c| c.name.as_str());
+                    (
+                        ModelErrorKind::Reserved,
+                        format!(
+                            "`{name}` is reserved: it is the {what} of coordinate `{coordinate}`"
+                        ),
+                    )
+                }
+                None => (
                     ModelErrorKind::Duplicate,
                     format!(
                         "`{name}` is declared twice: it is already {}",
-                        kind_taken.describe()
+                        existing.kind.describe()
                     ),
-                )
-            });
+                ),
+            };
+            return Err(self.error(s.span(), kind, message));
         }
         self.symbols.push(name, kind, index, angle);
         Ok(())

@@ -40,6 +40,9 @@ pub enum ParseErrorKind {
     /// An operand followed by something that is not an operator.
     #[error("expected an operator or the end of the expression, found `{0}`")]
     ExpectedOperator(String),
+    /// A `)` without its `(`.
+    #[error("`)` without a matching `(`")]
+    Unmatched,
     /// A `(` without its `)`.
     #[error("expected `)` to close the `(`, found {found}")]
     Unclosed {
@@ -103,7 +106,7 @@ pub fn parse_expr(text: &str) -> Result<Expr, ParseError> {
     if p.pos < text.len() {
         let (tok, span) = p.peek_token();
         let kind = if tok == ")" {
-            ParseErrorKind::ExpectedOperator(") without a matching (".to_owned())
+            ParseErrorKind::Unmatched
         } else {
             ParseErrorKind::ExpectedOperator(tok)
         };
