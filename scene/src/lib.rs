@@ -15,6 +15,7 @@
 
 pub mod catalog;
 pub mod error;
+pub mod model;
 pub mod param;
 pub mod scene;
 pub mod structure;
