@@ -14,6 +14,7 @@ pub mod kernels;
 pub mod latex;
 pub mod matrix;
 pub mod mechanics;
+pub mod model;
 pub mod poly;
 pub mod ratfunc;
 pub mod symbol;

@@ -446,6 +446,17 @@ impl Poly {
         acc
     }
 
+    /// The same polynomial with every atom slot renamed by `f` (a map between two tables'
+    /// slots that sends sines to sines and cosines to cosines), merged and sorted.
+    pub fn map_slots(&self, f: &impl Fn(usize) -> usize) -> Poly {
+        Poly::from_terms(self.terms.iter().map(|(m, c)| {
+            (
+                Mono::from_factors(m.factors().map(|(s, e)| (f(s), e))),
+                c.clone(),
+            )
+        }))
+    }
+
     /// The greatest monomial dividing every term.
     pub fn monomial_content(&self) -> Mono {
         let mut terms = self.terms.iter();

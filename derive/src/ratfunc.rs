@@ -287,6 +287,15 @@ impl RatFunc {
         sub(&self.num)?.div(&sub(&self.den)?)
     }
 
+    /// The same function with every atom slot renamed by `f` (see [`Poly::map_slots`]): to
+    /// compare expressions written in two symbol tables.
+    ///
+    /// # Errors
+    /// [`Error::DivisionByZero`] if `f` is not injective and the denominator collapses.
+    pub fn map_slots(&self, f: &impl Fn(usize) -> usize) -> Result<RatFunc> {
+        RatFunc::new(self.num.map_slots(f), self.den.map_slots(f))
+    }
+
     /// Evaluates in `f64`.
     pub fn eval(&self, values: &impl Valuation<f64>) -> f64 {
         self.num.eval(values) / self.den.eval(values)

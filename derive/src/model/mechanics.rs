@@ -1,0 +1,218 @@
+//! The mechanics of any model, derived from its file exactly as the paper derives its walker:
+//! energies from the bodies, `M(q)` and `h(q, qdot)` by Euler-Lagrange (Eqs. 2, 19-20), the input
+//! map `S` from the inputs' generalised forces, the sliding stance contact and its friction
+//! (Eqs. 21-29; Section 5.1 on a slope), the output-following control generalised to several
+//! outputs (Eqs. 30-31), the stuck foot, and the impact maps (Eqs. 1, 6-16, 39-46).
+
+use walker_scene::model::{Model, ModelExpr};
+
+use super::table::ModelSymbols;
+use crate::error::{Error, Result};
+use crate::matrix::Matrix;
+use crate::ratfunc::RatFunc;
+use crate::symbol::Sym;
+
+/// Total time derivative along the motion: `sum dF/dq qdot + dF/dqdot qddot`.
+pub fn time_derivative(s: &ModelSymbols, f: &RatFunc) -> RatFunc {
+    let mut acc = RatFunc::zero();
+    for (q, qd) in s.q.iter().zip(&s.qd) {
+        acc = acc + &(f.diff(*q) * RatFunc::sym(*qd));
+    }
+    for (qd, qdd) in s.qd.iter().zip(&s.qdd) {
+        acc = acc + &(f.diff(*qd) * RatFunc::sym(*qdd));
+    }
+    acc
+}
+
+/// The floor of a model: its gravity and, on a slope, `sin` and `cos` of the slope angle.
+#[derive(Clone, Debug)]
+pub struct FloorGeometry {
+    /// `g`.
+    pub gravity: RatFunc,
+    /// `(sin phi, cos phi)` on a slope.
+    pub slope: Option<(RatFunc, RatFunc)>,
+}
+
+impl FloorGeometry {
+    /// Signed distance of a point from the floor: `z`, or `z cos phi + x sin phi`.
+    pub fn gap(&self, x: &RatFunc, z: &RatFunc) -> RatFunc {
+        match &self.slope {
+            None => z.clone(),
+            Some((s, c)) => &(z * c) + &(x * s),
+        }
+    }
+
+    /// A point's coordinate along the floor: `x`, or `x cos phi - z sin phi`.
+    pub fn tangent(&self, x: &RatFunc, z: &RatFunc) -> RatFunc {
+        match &self.slope {
+            None => x.clone(),
+            Some((s, c)) => &(x * c) - &(z * s),
+        }
+    }
+}
+
+/// Everything derived from a model.
+#[derive(Clone, Debug)]
+pub struct Mechanics {
+    /// The symbols.
+    pub syms: ModelSymbols,
+    /// The floor.
+    pub floor: FloorGeometry,
+    /// Kinetic energy `T`.
+    pub kinetic: RatFunc,
+    /// Potential energy `V`.
+    pub potential: RatFunc,
+    /// `M(q)`.
+    pub mass: Matrix,
+    /// `M^-1`.
+    pub mass_inv: Matrix,
+    /// `h(q, qdot)`, a column.
+    pub bias: Matrix,
+    /// `S`, one column per input (n x m; n x 0 for a passive walker).
+    pub input_map: Matrix,
+    /// `S u`, a column (zero without inputs).
+    pub input_force: Matrix,
+    /// The named points `(x, z)`.
+    pub points: Vec<(String, [RatFunc; 2])>,
+    /// The stance foot's contact: `J` (a row, the gradient of the foot's floor gap).
+    pub contact: Matrix,
+    /// `J_mu = mu [J_z, -J_x, 0, ...]`: the friction's direction times `mu` (Eq. 24).
+    pub friction: Matrix,
+}
+
+/// Lowers a list of expressions.
+fn lower_all(syms: &ModelSymbols, es: &[ModelExpr]) -> Result<Vec<RatFunc>> {
+    es.iter().map(|e| syms.lower(e)).collect()
+}
+
+impl Mechanics {
+    /// Derives the energies, `M`, `h`, `S`, the points and the stance contact of `model`.
+    ///
+    /// # Errors
+    /// An expression that does not lower, or a singular `M` (no body's energy depends on some
+    /// coordinate), named with the model's file.
+    pub fn new(model: &Model) -> Result<Mechanics> {
+        let syms = ModelSymbols::new(model)?;
+        let n = syms.q.len();
+        let gravity = RatFunc::sym(syms.get(&model.floor.gravity.name)?);
+        let slope = match &model.floor.slope {
+            None => None,
+            Some(name) => {
+                let phi = syms.get(&name.name)?;
+                Some((
+                    crate::mechanics::sin(&[(phi, 1)])?,
+                    crate::mechanics::cos(&[(phi, 1)])?,
+                ))
+            }
+        };
+        let floor = FloorGeometry { gravity, slope };
+        let half = RatFunc::constant(crate::poly::Q::new(1.into(), 2.into()));
+        let (mut kinetic, mut potential) = (RatFunc::zero(), RatFunc::zero());
+        for b in &model.bodies {
+            let m = syms.lower(&b.mass)?;
+            let [cx, cz] = [syms.lower(&b.com[0])?, syms.lower(&b.com[1])?];
+            let (vx, vz) = (time_derivative(&syms, &cx), time_derivative(&syms, &cz));
+            let mut t = &m * &(&(&vx * &vx) + &(&vz * &vz));
+            if let Some((inertia, angle)) = &b.rotation {
+                let (i, a) = (syms.lower(inertia)?, syms.lower(angle)?);
+                let w = time_derivative(&syms, &a);
+                t = t + &(&(&i * &w) * &w);
+            }
+            kinetic = kinetic + &(&half * &t);
+            potential = potential + &(&(&m * &floor.gravity) * &cz);
+        }
+        let lagrangian = &kinetic - &potential;
+        let mut mass = Matrix::zeros(n, n);
+        let mut bias = Vec::with_capacity(n);
+        for i in 0..n {
+            let p = lagrangian.diff(syms.qd[i]);
+            let el = &time_derivative(&syms, &p) - &lagrangian.diff(syms.q[i]);
+            let mut rest = el.clone();
+            for (j, qdd) in syms.qdd.iter().enumerate() {
+                let mij = el.diff(*qdd);
+                rest = &rest - &(&mij * &RatFunc::sym(*qdd));
+                mass.set(i, j, mij);
+            }
+            bias.push(rest);
+        }
+        let mass_inv = mass.inverse("M").map_err(|_| Error::CheckFailed {
+            what: format!(
+                "{}: the mass matrix M is singular: some coordinate moves no body with mass or inertia",
+                model.path
+            ),
+        })?;
+        let mut columns = Vec::with_capacity(model.inputs.len());
+        for input in &model.inputs {
+            columns.push(lower_all(&syms, &input.force)?);
+        }
+        let input_map = Matrix::from_rows(
+            (0..n)
+                .map(|i| columns.iter().map(|c| c[i].clone()).collect())
+                .collect(),
+        )
+        .unwrap_or_else(|_| Matrix::zeros(n, 0));
+        let mut input_force = Matrix::zeros(n, 1);
+        for (k, u) in syms.inputs.iter().enumerate() {
+            for i in 0..n {
+                let f = &columns[k][i] * &RatFunc::sym(*u);
+                input_force.set(i, 0, input_force.get(i, 0) + &f);
+            }
+        }
+        let mut points = Vec::with_capacity(model.points.len());
+        for p in &model.points {
+            points.push((
+                p.name.name.clone(),
+                [syms.lower(&p.at[0])?, syms.lower(&p.at[1])?],
+            ));
+        }
+        let (x, z) = (RatFunc::sym(syms.q[0]), RatFunc::sym(syms.q[1]));
+        let contact = Matrix::jacobian(&[floor.gap(&x, &z)], &syms.q);
+        let mu = RatFunc::sym(syms.mu);
+        let mut friction = Matrix::zeros(1, n);
+        friction.set(0, 0, &mu * contact.get(0, 1));
+        friction.set(0, 1, -(&mu * contact.get(0, 0)));
+        Ok(Mechanics {
+            syms,
+            floor,
+            kinetic,
+            potential,
+            mass,
+            mass_inv,
+            bias: Matrix::column(bias),
+            input_map,
+            input_force,
+            points,
+            contact,
+            friction,
+        })
+    }
+
+    /// The point called `name`.
+    ///
+    /// # Errors
+    /// [`Error::CheckFailed`] if the model has no such point.
+    pub fn point(&self, name: &str) -> Result<&[RatFunc; 2]> {
+        self.points
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| p)
+            .ok_or_else(|| Error::CheckFailed {
+                what: format!("no point `{name}`"),
+            })
+    }
+
+    /// The generalized velocities as a column.
+    pub fn qd_column(&self) -> Matrix {
+        Matrix::column(self.syms.qd.iter().map(|s| RatFunc::sym(*s)).collect())
+    }
+
+    /// The gradient (a row) of a scalar function of `q`.
+    pub fn gradient(&self, f: &RatFunc) -> Matrix {
+        Matrix::jacobian(std::slice::from_ref(f), &self.syms.q)
+    }
+
+    /// The symbols `q`.
+    pub fn q(&self) -> &[Sym] {
+        &self.syms.q
+    }
+}

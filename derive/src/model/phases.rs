@@ -1,0 +1,219 @@
+//! The phases of any model: the sliding stance with its friction (Eqs. 19-29), the stuck foot,
+//! the output-following control with several outputs (Eqs. 30-31), and the impact maps at the
+//! strike with the model's locks, with and without the old stance foot held (Eqs. 1, 6-16,
+//! 39-46).
+
+use walker_scene::model::Model;
+
+use super::mechanics::Mechanics;
+use crate::error::Result;
+use crate::matrix::Matrix;
+use crate::ratfunc::RatFunc;
+
+/// The sliding stance: `M qdd + h = S u + (J + J_mu)^T lambda_n`, `J qdd = 0`.
+#[derive(Clone, Debug)]
+pub struct Sliding {
+    /// The normal force `lambda_n`, the multiplier of the unit-normal constraint.
+    pub normal_force: RatFunc,
+    /// The vertical ground reaction, `lambda_n cos phi` (the paper's `lambda`, Eqs. 22-23 and
+    /// Section 5.1).
+    pub lambda: RatFunc,
+    /// The denominator `J M^-1 (J + J_mu)^T` of the normal force (Eq. 22).
+    pub lambda_den: RatFunc,
+    /// `Y = I - (J + J_mu)^T J M^-1 / den` (Eqs. 28-29).
+    pub projection: Matrix,
+    /// `qdd` (Eq. 27), a column.
+    pub accel: Matrix,
+}
+
+/// Derives the sliding stance of a model.
+///
+/// # Errors
+/// An arithmetic error (a denominator that vanishes identically).
+pub fn sliding(m: &Mechanics) -> Result<Sliding> {
+    let n = m.syms.q.len();
+    let jhat = m.contact.add(&m.friction)?;
+    let j_minv = m.contact.mul(&m.mass_inv)?;
+    let su_minus_h = m.input_force.sub(&m.bias)?;
+    let lambda_den = j_minv.mul(&jhat.transpose())?.scalar()?;
+    let normal_force = (-j_minv.mul(&su_minus_h)?.scalar()?).div(&lambda_den)?;
+    let forces = su_minus_h.add(&jhat.transpose().scale(&normal_force))?;
+    let lambda = &normal_force * m.contact.get(0, 1);
+    let accel = m.mass_inv.mul(&forces)?;
+    let projection =
+        Matrix::identity(n).sub(&jhat.transpose().mul(&j_minv)?.scale(&lambda_den.recip()?))?;
+    Ok(Sliding {
+        normal_force,
+        lambda,
+        lambda_den,
+        projection,
+        accel,
+    })
+}
+
+/// The output-following control (Section 3.2) with `m` outputs and `m` inputs:
+/// `yddot = A u - B`, `u = A^-1 (v + B)`.
+#[derive(Clone, Debug)]
+pub struct OutputControl {
+    /// `H = dh/dq`, m x n.
+    pub output_jacobian: Matrix,
+    /// `A = H M^-1 Y S`, m x m.
+    pub a: Matrix,
+    /// `B = H M^-1 Y h - Hdot qdot`, a column (`Hdot = 0` for outputs linear in `q`, as the
+    /// paper's `y = S^T q`).
+    pub b: Matrix,
+    /// `u = A^-1 (v + B)`, a column.
+    pub u: Matrix,
+}
+
+/// Derives the control terms for a projection `Y` with `M qdd = Y (S u - h)`.
+///
+/// # Errors
+/// A model without outputs, or `A` singular identically (the outputs are not independent
+/// through the inputs).
+pub fn output_control(m: &Mechanics, model: &Model, projection: &Matrix) -> Result<OutputControl> {
+    let outputs = model
+        .outputs
+        .iter()
+        .map(|o| m.syms.lower(&o.h))
+        .collect::<Result<Vec<_>>>()?;
+    let h_jac = Matrix::jacobian(&outputs, &m.syms.q);
+    // ydot = H qdot; yddot = H qdd + sum_j d(H qdot)/dq_j qd_j.
+    let hq = h_jac.mul(&m.qd_column())?;
+    let mut drift = Vec::with_capacity(outputs.len());
+    for i in 0..outputs.len() {
+        let mut acc = RatFunc::zero();
+        for (q, qd) in m.syms.q.iter().zip(&m.syms.qd) {
+            acc = acc + &(hq.get(i, 0).diff(*q) * RatFunc::sym(*qd));
+        }
+        drift.push(acc);
+    }
+    let h_minv_y = h_jac.mul(&m.mass_inv)?.mul(projection)?;
+    let a = h_minv_y.mul(&m.input_map)?;
+    let b = h_minv_y.mul(&m.bias)?.sub(&Matrix::column(drift))?;
+    let v = Matrix::column(m.syms.aux.iter().map(|s| RatFunc::sym(*s)).collect());
+    let u = a.inverse("A")?.mul(&v.add(&b)?)?;
+    Ok(OutputControl {
+        output_jacobian: h_jac,
+        a,
+        b,
+        u,
+    })
+}
+
+/// The stance foot stuck to the floor: both foot coordinates held.
+#[derive(Clone, Debug)]
+pub struct Stuck {
+    /// `J_s`: the gradients of the foot's coordinate along the floor and of its gap.
+    pub jacobian: Matrix,
+    /// `[lambda_t, lambda_n]`, a column.
+    pub forces: Matrix,
+    /// `qdd`, a column.
+    pub accel: Matrix,
+    /// `Y_s = I - J_s^T (J_s M^-1 J_s^T)^-1 J_s M^-1`.
+    pub projection: Matrix,
+}
+
+/// Derives the stuck stance.
+///
+/// # Errors
+/// An arithmetic error.
+pub fn stuck(m: &Mechanics) -> Result<Stuck> {
+    let n = m.syms.q.len();
+    let (x, z) = (RatFunc::sym(m.syms.q[0]), RatFunc::sym(m.syms.q[1]));
+    let jacobian = Matrix::jacobian(
+        &[m.floor.tangent(&x, &z), m.floor.gap(&x, &z)],
+        &m.syms.q,
+    );
+    let j_minv = jacobian.mul(&m.mass_inv)?;
+    let schur_inv = j_minv
+        .mul(&jacobian.transpose())?
+        .inverse("J_s M^-1 J_s^T")?;
+    let su_minus_h = m.input_force.sub(&m.bias)?;
+    let forces = schur_inv
+        .mul(&j_minv.mul(&su_minus_h)?)?
+        .scale(&RatFunc::int(-1));
+    let accel = m
+        .mass_inv
+        .mul(&su_minus_h.add(&jacobian.transpose().mul(&forces)?)?)?;
+    let projection =
+        Matrix::identity(n).sub(&jacobian.transpose().mul(&schur_inv)?.mul(&j_minv)?)?;
+    Ok(Stuck {
+        jacobian,
+        forces,
+        accel,
+        projection,
+    })
+}
+
+/// A frictionless impact map: the constraint rows, their impulses and `qdot+`.
+#[derive(Clone, Debug)]
+pub struct ImpactMap {
+    /// `J_I`, one row per constraint.
+    pub jacobian: Matrix,
+    /// `lambda_I = -(J_I M^-1 J_I^T)^-1 J_I qdot-`, a column.
+    pub impulse: Matrix,
+    /// `qdot+ = qdot- + M^-1 J_I^T lambda_I`, a column.
+    pub velocity: Matrix,
+}
+
+/// The impact map for constraint functions `rows` of `q` (their rates are set to zero).
+///
+/// # Errors
+/// Dependent constraints (`J_I M^-1 J_I^T` singular).
+pub fn impact_map(m: &Mechanics, rows: &[RatFunc]) -> Result<ImpactMap> {
+    let jacobian = Matrix::jacobian(rows, &m.syms.q);
+    let x_inv = jacobian
+        .mul(&m.mass_inv)?
+        .mul(&jacobian.transpose())?
+        .inverse("X_I")?;
+    let qd = m.qd_column();
+    let impulse = x_inv.mul(&jacobian.mul(&qd)?)?.scale(&RatFunc::int(-1));
+    let velocity = qd.add(&m.mass_inv.mul(&jacobian.transpose())?.mul(&impulse)?)?;
+    Ok(ImpactMap {
+        jacobian,
+        impulse,
+        velocity,
+    })
+}
+
+/// The model's strike impacts: the striking point's gap, then (for the double-support test)
+/// the old stance foot's gap, then the locks.
+#[derive(Clone, Debug)]
+pub struct StrikeImpacts {
+    /// The old stance foot leaves the floor: `[strike, locks...]`.
+    pub single: ImpactMap,
+    /// The old stance foot held: `[strike, stance foot, locks...]` (Eq. 11, Eq. 46), when the
+    /// model asks for the double-support test.
+    pub double: Option<ImpactMap>,
+}
+
+/// Derives the strike impacts of `model`.
+///
+/// # Errors
+/// An unknown strike point, a lock that does not lower, or dependent constraints.
+pub fn strike_impacts(m: &Mechanics, model: &Model) -> Result<StrikeImpacts> {
+    let [px, pz] = m.point(&model.strike.point.name)?;
+    let strike = m.floor.gap(px, pz);
+    let locks = model
+        .impact
+        .locks
+        .iter()
+        .map(|e| m.syms.lower(e))
+        .collect::<Result<Vec<_>>>()?;
+    let single_rows: Vec<RatFunc> = std::iter::once(strike.clone())
+        .chain(locks.iter().cloned())
+        .collect();
+    let single = impact_map(m, &single_rows)?;
+    let double = if model.impact.double_support {
+        let (x, z) = (RatFunc::sym(m.syms.q[0]), RatFunc::sym(m.syms.q[1]));
+        let rows: Vec<RatFunc> = [strike, m.floor.gap(&x, &z)]
+            .into_iter()
+            .chain(locks)
+            .collect();
+        Some(impact_map(m, &rows)?)
+    } else {
+        None
+    };
+    Ok(StrikeImpacts { single, double })
+}

@@ -1,0 +1,115 @@
+//! The paper's two walkers written as model files (`models/paper-active.toml`,
+//! `models/paper-passive.toml`) derive exactly the mechanics of the hand-written derivation:
+//! every entry of `M`, `h`, `S`, the stance quantities, the control terms, the stuck foot and the
+//! impact maps is the same rational function (compared exactly, after renaming the model's
+//! symbols into the paper's table by name).
+
+use walker_scene::model::Model;
+use walker_symbolic::Derivation;
+use walker_symbolic::matrix::Matrix;
+use walker_symbolic::model::{Mechanics, output_control, sliding, strike_impacts, stuck};
+use walker_symbolic::ratfunc::RatFunc;
+use walker_symbolic::symbol::{Atom, Sym, Symbols};
+
+fn load(name: &str) -> Model {
+    let path = format!("{}/../models/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+    Model::from_file(std::path::Path::new(&path)).expect("shipped model loads")
+}
+
+/// Renames the model's atom slots into the paper table's, by symbol name.
+fn renamer(model: &Symbols, paper: &Symbols) -> impl Fn(usize) -> usize {
+    let model = model.clone();
+    let paper = paper.clone();
+    move |slot| {
+        let to_paper = |s: Sym| paper.lookup(model.name(s)).expect("a paper symbol");
+        match Atom::of_slot(slot) {
+            Atom::Sym(s) => to_paper(model.by_index(s.index()).expect("a model symbol")).slot(),
+            Atom::Sin(a) | Atom::Cos(a) => {
+                let (s, k) = model.angle(a).expect("a model angle");
+                let p = to_paper(s);
+                let (b, pk) = p.base_angle().expect("an angle in the paper");
+                assert_eq!(k, pk, "base angle of {}", model.name(s));
+                if matches!(Atom::of_slot(slot), Atom::Sin(_)) {
+                    b.sin_slot()
+                } else {
+                    b.cos_slot()
+                }
+            }
+        }
+    }
+}
+
+fn same(what: &str, got: &Matrix, want: &Matrix, rename: &impl Fn(usize) -> usize) {
+    assert_eq!((got.rows(), got.cols()), (want.rows(), want.cols()), "{what}: shape");
+    for (k, (g, w)) in got.entries().iter().zip(want.entries()).enumerate() {
+        let g = g.map_slots(rename).expect("renamed");
+        assert!(g == *w, "{what}[{k}]: {g:?} != {w:?}");
+    }
+}
+
+fn one(r: &RatFunc) -> Matrix {
+    Matrix::column(vec![r.clone()])
+}
+
+#[test]
+fn the_active_model_file_derives_the_papers_level_mechanics_exactly() {
+    let model = load("paper-active");
+    let m = Mechanics::new(&model).expect("derives");
+    let d = Derivation::new().expect("paper derivation");
+    let r = renamer(&m.syms.table, &d.symbols);
+    same("M", &m.mass, &d.dynamics.mass, &r);
+    same("h", &m.bias, &d.dynamics.bias, &r);
+    same("S", &m.input_map, &d.dynamics.input_map, &r);
+    let s = sliding(&m).expect("stance");
+    same("lambda", &one(&s.lambda), &one(&d.level.lambda), &r);
+    same("Y", &s.projection, &d.level.projection, &r);
+    same("qdd", &s.accel, &d.level.accel, &r);
+    let c = output_control(&m, &model, &s.projection).expect("control");
+    same("A", &c.a, &one(&d.control.a), &r);
+    same("B", &c.b, &one(&d.control.b), &r);
+    let st = stuck(&m).expect("stuck");
+    same("lambda_s", &st.forces, &d.stick_level.forces, &r);
+    same("qdd_s", &st.accel, &d.stick_level.accel, &r);
+    let imp = strike_impacts(&m, &model).expect("impacts");
+    same("impact2 qd+", &imp.single.velocity, &d.impact2.velocity, &r);
+    same("impact2 lambda_I", &imp.single.impulse, &d.impact2.impulse, &r);
+    let double = imp.double.expect("double-support test");
+    same("impact3 qd+", &double.velocity, &d.impact3.velocity, &r);
+    same("impact3 lambda_I", &double.impulse, &d.impact3.impulse, &r);
+    let energy = [m.kinetic.clone(), m.potential.clone()];
+    let want = [d.dynamics.geometry.kinetic.clone(), d.dynamics.geometry.potential.clone()];
+    same("T, V", &Matrix::column(energy.to_vec()), &Matrix::column(want.to_vec()), &r);
+    let fore = m.point("fore_foot").expect("fore foot");
+    same(
+        "fore foot",
+        &Matrix::column(fore.to_vec()),
+        &Matrix::column(d.dynamics.geometry.fore_foot.to_vec()),
+        &r,
+    );
+}
+
+#[test]
+fn the_passive_model_file_derives_the_papers_slope_mechanics_exactly() {
+    let model = load("paper-passive");
+    let m = Mechanics::new(&model).expect("derives");
+    let d = Derivation::new().expect("paper derivation");
+    let r = renamer(&m.syms.table, &d.symbols);
+    same("M", &m.mass, &d.dynamics.mass, &r);
+    same("h", &m.bias, &d.dynamics.bias, &r);
+    let u_zero = |x: &Matrix| {
+        x.try_map(|e| e.substitute(Atom::Sym(Sym::U), &RatFunc::zero()))
+            .expect("u = 0")
+    };
+    let s = sliding(&m).expect("stance");
+    same("lambda", &one(&s.lambda), &u_zero(&one(&d.slope.lambda)), &r);
+    same("Y", &s.projection, &d.slope.projection, &r);
+    same("qdd", &s.accel, &u_zero(&d.slope.accel), &r);
+    let st = stuck(&m).expect("stuck");
+    same("lambda_s", &st.forces, &u_zero(&d.stick_slope.forces), &r);
+    let imp = strike_impacts(&m, &model).expect("impacts");
+    same("impact qd+", &imp.single.velocity, &d.impact_slope.velocity, &r);
+    same("impact lambda_I", &imp.single.impulse, &d.impact_slope.impulse, &r);
+    let double = imp.double.expect("double-support test");
+    same("impact2 qd+", &double.velocity, &d.impact2_slope.velocity, &r);
+    same("impact2 lambda_I", &double.impulse, &d.impact2_slope.impulse, &r);
+}
