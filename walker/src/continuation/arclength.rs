@@ -223,7 +223,7 @@ pub(super) fn from_seed<G: GaitProblem + ?Sized>(
         }
         run(problem, frame, s, opts)
     } else {
-        (Vec::new(), EndReason::Seed)
+        (Vec::new(), EndReason::ParameterBound)
     };
     let (backward, end_b) = if q > 0.0 {
         let mut s = seed.clone();
@@ -232,7 +232,7 @@ pub(super) fn from_seed<G: GaitProblem + ?Sized>(
         }
         run(problem, frame, s, opts)
     } else {
-        (Vec::new(), EndReason::Seed)
+        (Vec::new(), EndReason::ParameterBound)
     };
     let mut nodes: Vec<Node> = backward.into_iter().skip(1).rev().collect();
     if forward.is_empty() {
@@ -263,7 +263,6 @@ pub(super) fn run<G: GaitProblem + ?Sized>(
     };
     let mut e_q = DVector::zeros(n + 1);
     e_q[n] = 1.0;
-    let bound = if seed.tangent[n] > 0.0 { 1.0 } else { 0.0 };
     let mut nodes = vec![Node {
         s: seed,
         label: None,
@@ -276,6 +275,8 @@ pub(super) fn run<G: GaitProblem + ?Sized>(
         };
         let a = a.clone();
         let tq = a.tangent[n];
+        // The end of the range ahead (after a fold, the other one).
+        let bound = if tq > 0.0 { 1.0 } else { 0.0 };
         let to_bound = if (bound - a.q()) * tq > 0.0 {
             (bound - a.q()) / tq
         } else {

@@ -127,8 +127,6 @@ pub struct Point {
 pub enum EndReason {
     /// The parameter reached the end of the asked range.
     ParameterBound,
-    /// The seed lies on this end of the range: nothing to continue.
-    Seed,
     /// The map failed ahead and the step size fell below the minimum.
     MapFailed {
         /// The last failure (its text).

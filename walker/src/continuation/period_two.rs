@@ -141,14 +141,23 @@ pub fn period_two<G: GaitProblem + ?Sized>(
     let scale = pd.state.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
     for eps in OFFSETS.map(|e| e * scale) {
         let pred = &z_pd + &dir * eps;
+        // The period doubling is a singular point of `P o P - r` (its Jacobian in `r` and in
+        // `p` vanish along `v`): the corrector's matrix is taken at the predicted point.
+        let r_pred: Vec<f64> = pred.rows(0, n).iter().copied().collect();
+        let Ok(v_pred) = twice.map(&r_pred, pd.parameter) else {
+            continue;
+        };
+        let Ok(start) = complete(&twice, &frame, pred.clone(), v_pred, f64::NAN, &dir) else {
+            continue;
+        };
         let Ok((z, value, res, _)) = correct(
             &twice,
             &frame,
             pred.clone(),
             &dir,
             &pred,
-            &at_pd.jac,
-            &at_pd.fq,
+            &start.jac,
+            &start.fq,
             opts.tol,
         ) else {
             continue;
