@@ -147,6 +147,7 @@ pub(super) fn correct<G: GaitProblem + ?Sized>(
 ) -> Result<(DVector<f64>, MapValue, f64, usize), CorrectError> {
     let n = jac.nrows();
     let mut m = bordered(jac, fq, normal);
+    let fixes_q = normal[n] == 1.0 && normal.rows(0, n).iter().all(|v| *v == 0.0);
     let mut z = z0;
     let (mut f, mut value) = residual(problem, frame, &z).map_err(CorrectError::Map)?;
     let first = f.amax();
@@ -166,6 +167,11 @@ pub(super) fn correct<G: GaitProblem + ?Sized>(
         b[n] = -normal.dot(&(&z - anchor));
         let dz = solve(m.clone(), &b).ok_or(CorrectError::NoConvergence)?;
         z += &dz;
+        if fixes_q {
+            // Exactly on the asked parameter (an end of the range, a user point): rounding in
+            // the solve must not move it.
+            z[n] = anchor[n];
+        }
         let f_old = f;
         (f, value) = residual(problem, frame, &z).map_err(CorrectError::Map)?;
         // Broyden's update of the rows of `F`: `M += (dF - M dz) dz^T / |dz|^2`. The bordering
