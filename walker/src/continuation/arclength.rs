@@ -489,6 +489,7 @@ pub(super) fn assemble<G: GaitProblem + ?Sized>(
                 number += 1;
                 Label {
                     kind,
+                    tag: kind.tag(),
                     number,
                     bracket,
                 }

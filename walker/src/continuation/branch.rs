@@ -75,6 +75,8 @@ impl LabelKind {
 pub struct Label {
     /// What is special.
     pub kind: LabelKind,
+    /// Its short tag ([`LabelKind::tag`]: `FP`, `PD`, `LO`, ...).
+    pub tag: &'static str,
     /// The running number of the label along the branch (1, 2, ...), as AUTO's `LAB`.
     pub number: usize,
     /// The width of the final bracket of the location in the parameter (0 for end points and

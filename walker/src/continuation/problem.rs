@@ -99,15 +99,13 @@ pub enum ProblemError {
         /// Time of the heel strike (s).
         t: f64,
     },
-    /// The parameter value is outside what the problem accepts.
-    #[error("{name} = {value} is outside its valid range {range}")]
-    Parameter {
+    /// The walker has no such parameter.
+    #[error(
+        "{name} is not a parameter of this walker (phi: the passive wheel; T_set, K_P, K_D: the active walker; c: tanh friction)"
+    )]
+    NotAParameter {
         /// The parameter's name.
         name: &'static str,
-        /// The rejected value.
-        value: f64,
-        /// The valid range in words.
-        range: &'static str,
     },
 }
 

@@ -38,7 +38,7 @@ impl PaperWalker {
     /// The walker of `setup` with `param` free, simulated with `cfg`.
     ///
     /// # Errors
-    /// [`ProblemError::Parameter`] if the walker has no such parameter (`phi` on level
+    /// [`ProblemError::NotAParameter`] if the walker has no such parameter (`phi` on level
     /// ground, `T_set`, `K_P`, `K_D` for the passive wheel, `c` under exact Coulomb friction).
     pub fn new(setup: Setup, param: Param, cfg: SimConfig) -> Result<Self, ProblemError> {
         let active = setup.model().is_active();
@@ -49,11 +49,7 @@ impl PaperWalker {
             _ => false,
         };
         if absent {
-            return Err(ProblemError::Parameter {
-                name: param.name(),
-                value: crate::params::value(&setup.physical, &setup.runtime, param),
-                range: "a parameter of this walker",
-            });
+            return Err(ProblemError::NotAParameter { name: param.name() });
         }
         Ok(Self {
             setup,
