@@ -376,6 +376,16 @@ pub(super) fn run<G: GaitProblem + ?Sized>(
             };
             return (nodes, reason);
         }
+        if near_one(&b) && b.tangent[n].abs() < FOLD_NOISE {
+            // The branch stands vertical on a multiplier at 1: a family of cycles at one
+            // parameter value (the passive wheel's sliding gaits of every speed where friction
+            // balances the slope on average), not a fold; following it only adds speed.
+            nodes.push(Node {
+                s: b,
+                label: Some((LabelKind::Family, 0.0)),
+            });
+            return (nodes, EndReason::Family);
+        }
         nodes.push(Node { s: b, label: None });
         h = if iterations <= 3 {
             step * 1.5
