@@ -225,6 +225,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                         .iter()
                         .map(|b| (format!("period {}", b.period), b))
                         .collect(),
+                    simulated: (String::new(), Vec::new()),
                 };
                 continue_cmd::diagram::save(&d, path).map_err(|message| CliError::File {
                     path: path.display().to_string(),

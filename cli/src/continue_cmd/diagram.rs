@@ -27,6 +27,9 @@ pub struct Diagram<'a> {
     pub x_label: String,
     /// The branches with their legend labels.
     pub branches: Vec<(String, &'a Branch)>,
+    /// Simulated steady gaits `(parameter, V)` drawn as small black crosses under this legend
+    /// label (none if empty).
+    pub simulated: (String, Vec<(f64, f64)>),
 }
 
 /// Runs of consecutive points with the same stability and physicality (neighbouring runs share
@@ -123,20 +126,34 @@ where
                 continue;
             }
             let xy = (p.parameter, p.cycle.speed);
-            chart
-                .draw_series([Circle::new(xy, 4, c.filled())])
-                .map_err(|x| e(&x))?;
-            chart
-                .draw_series([Text::new(
+            // The marker at the point, the tag beside it, above and to the right.
+            let marked = EmptyElement::at(xy)
+                + Circle::new((0, 0), 4, c.filled())
+                + Text::new(
                     l.tag.to_owned(),
-                    xy,
+                    (6, -16),
                     ("sans-serif", 13).into_font().color(&BLACK),
-                )])
-                .map_err(|x| e(&x))?;
+                );
+            chart.draw_series([marked]).map_err(|x| e(&x))?;
         }
+    }
+    let (label, pts) = &d.simulated;
+    if !pts.is_empty() {
+        let cross = |p: (f64, f64)| Cross::new(p, 3, BLACK.stroke_width(1));
+        chart
+            .draw_series(
+                pts.iter()
+                    .copied()
+                    .filter(|(x, y)| x.is_finite() && y.is_finite())
+                    .map(cross),
+            )
+            .map_err(|x| e(&x))?
+            .label(label.clone())
+            .legend(move |(x, y)| Cross::new((x + 9, y), 3, BLACK.stroke_width(1)));
     }
     chart
         .configure_series_labels()
+        .position(SeriesLabelPosition::LowerRight)
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
         .label_font(("sans-serif", 13))
