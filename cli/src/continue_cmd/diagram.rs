@@ -32,11 +32,14 @@ pub struct Diagram<'a> {
     pub simulated: (String, Vec<(f64, f64)>),
 }
 
+/// A run of a branch drawn in one style: stable, physical, and its `(parameter, V)` points.
+type Run = (bool, bool, Vec<(f64, f64)>);
+
 /// Runs of consecutive points with the same stability and physicality (neighbouring runs share
 /// their end point, so the curve is unbroken).
-fn runs(points: &[Point]) -> Vec<(bool, bool, Vec<(f64, f64)>)> {
+fn runs(points: &[Point]) -> Vec<Run> {
     let key = |p: &Point| (p.stability == Stability::Stable, p.physical);
-    let mut out: Vec<(bool, bool, Vec<(f64, f64)>)> = Vec::new();
+    let mut out: Vec<Run> = Vec::new();
     for (i, p) in points.iter().enumerate() {
         let k = key(p);
         let xy = (p.parameter, p.cycle.speed);
@@ -112,12 +115,10 @@ where
                 chart.draw_series(DashedLineSeries::new(pts, 6, 5, style))
             }
             .map_err(|x| e(&x))?;
-            if physical {
-                if let Some(label) = legend.take() {
-                    ann.label(label).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2))
-                    });
-                }
+            if physical && let Some(label) = legend.take() {
+                ann.label(label).legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2))
+                });
             }
         }
         for p in b.special() {

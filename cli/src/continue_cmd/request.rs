@@ -150,10 +150,10 @@ impl Request {
                 ));
             }
         }
-        if let Some(h) = max_step {
-            if !(h.is_finite() && h > 0.0 && h <= 1.0) {
-                return Err(InputError::out_of_range("max-step", h, "in (0, 1]"));
-            }
+        if let Some(h) = max_step
+            && !(h.is_finite() && h > 0.0 && h <= 1.0)
+        {
+            return Err(InputError::out_of_range("max-step", h, "in (0, 1]"));
         }
         Ok(Request {
             setup,

@@ -451,24 +451,25 @@ fn detect_between<G: GaitProblem + ?Sized>(
             });
         }
     }
-    if detect::structure(&a.value.tests) != detect::structure(&b.value.tests) {
-        if let Some((pt, bracket)) = loc.structure_change(a, b) {
-            found.push(Node {
-                s: pt,
-                label: Some((LabelKind::SlipChange, bracket * span)),
-            });
-        }
+    if detect::structure(&a.value.tests) != detect::structure(&b.value.tests)
+        && let Some((pt, bracket)) = loc.structure_change(a, b)
+    {
+        found.push(Node {
+            s: pt,
+            label: Some((LabelKind::SlipChange, bracket * span)),
+        });
     }
     let (qa, qb) = (a.q(), b.q());
     for &p in &opts.user_points {
         let q = (p - loc.frame.from) / loc.frame.span;
-        if q > qa.min(qb) && q <= qa.max(qb) {
-            if let Some(pt) = loc.at_parameter(a, b, q) {
-                found.push(Node {
-                    s: pt,
-                    label: Some((LabelKind::UserPoint, 0.0)),
-                });
-            }
+        if q > qa.min(qb)
+            && q <= qa.max(qb)
+            && let Some(pt) = loc.at_parameter(a, b, q)
+        {
+            found.push(Node {
+                s: pt,
+                label: Some((LabelKind::UserPoint, 0.0)),
+            });
         }
     }
     found.sort_by(|x, y| (&x.s.z - &a.z).norm().total_cmp(&(&y.s.z - &a.z).norm()));
@@ -485,10 +486,10 @@ pub(super) fn assemble<G: GaitProblem + ?Sized>(
 ) -> Branch {
     let last = nodes.len().saturating_sub(1);
     for i in [0, last] {
-        if let Some(node) = nodes.get_mut(i) {
-            if node.label.is_none() {
-                node.label = Some((LabelKind::EndPoint, 0.0));
-            }
+        if let Some(node) = nodes.get_mut(i)
+            && node.label.is_none()
+        {
+            node.label = Some((LabelKind::EndPoint, 0.0));
         }
     }
     let mut number = 0;
