@@ -226,6 +226,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                         .map(|b| (format!("period {}", b.period), b))
                         .collect(),
                     simulated: (String::new(), Vec::new()),
+                    legend: plotters::chart::SeriesLabelPosition::LowerRight,
                 };
                 continue_cmd::diagram::save(&d, path).map_err(|message| CliError::File {
                     path: path.display().to_string(),

@@ -30,6 +30,8 @@ pub struct Diagram<'a> {
     /// Simulated steady gaits `(parameter, V)` drawn as small black crosses under this legend
     /// label (none if empty).
     pub simulated: (String, Vec<(f64, f64)>),
+    /// Where the legend goes (where the curves leave room).
+    pub legend: SeriesLabelPosition,
 }
 
 /// A run of a branch drawn in one style: stable, physical, and its `(parameter, V)` points.
@@ -154,7 +156,7 @@ where
     }
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
+        .position(d.legend.clone())
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
         .label_font(("sans-serif", 13))

@@ -8,6 +8,7 @@
 
 use std::path::Path;
 
+use plotters::chart::SeriesLabelPosition;
 use walker::continuation::{Branch, ContinuationOptions, PaperWalker, continuation};
 use walker::setup::Setup;
 use walker::sim::SimConfig;
@@ -50,9 +51,11 @@ fn simulated(sweeps: &[(f64, Vec<SweepPoint>)]) -> Vec<(f64, f64)> {
 }
 
 /// Draw `branches` as `stem.png`, `stem.svg` and write `stem.csv`.
+#[allow(clippy::too_many_arguments, reason = "one per part of the figure")]
 fn write(
     out: &Path,
     stem: &str,
+    legend: SeriesLabelPosition,
     title: &str,
     x_label: &str,
     branches: &[(String, Branch)],
@@ -63,6 +66,7 @@ fn write(
         x_label: x_label.to_owned(),
         branches: branches.iter().map(|(n, b)| (n.clone(), b)).collect(),
         simulated: ("100 s walks (periodic)".to_owned(), sim),
+        legend,
     };
     for ext in ["png", "svg"] {
         let path = out.join(format!("{stem}.{ext}"));
@@ -127,6 +131,7 @@ pub fn write_bifurcation(out: &Path, d: &Data) -> Result<(), WriteError> {
     write(
         out,
         "fig8_bifurcation",
+        SeriesLabelPosition::MiddleRight,
         "Fig. 8 by continuation: V against mu0 (dashed: unstable, pale: not physical)",
         "mu0",
         &fig8,
@@ -135,6 +140,7 @@ pub fn write_bifurcation(out: &Path, d: &Data) -> Result<(), WriteError> {
     write(
         out,
         "fig10_bifurcation",
+        SeriesLabelPosition::LowerRight,
         "Fig. 10 by continuation: V against mu0 (dashed: unstable, pale: not physical)",
         "mu0",
         &fig10,
@@ -147,6 +153,7 @@ pub fn write_bifurcation(out: &Path, d: &Data) -> Result<(), WriteError> {
     write(
         out,
         "fig10_bifurcation_phi",
+        SeriesLabelPosition::LowerRight,
         "The passive wheel by continuation: V against phi (dashed: unstable)",
         "phi (rad)",
         &over_phi,
