@@ -253,6 +253,43 @@ pub enum Command {
         #[arg(long)]
         strobe: bool,
     },
+    /// Follow a branch of periodic gaits as a parameter moves (pseudo-arclength
+    /// continuation), stable or not, with its folds, period doublings and the boundaries where
+    /// it stops being physical (docs/continuation.md).
+    Continue {
+        /// The shared flags.
+        #[command(flatten)]
+        common: Common,
+        /// The parameter to move: mu0, c, T_set, K_P, K_D, phi (or a physical one: m1, m2, l,
+        /// I1, I2, g, alpha).
+        #[arg(long)]
+        param: String,
+        /// Start of the range (within the parameter's valid range).
+        #[arg(long, allow_hyphen_values = true)]
+        from: f64,
+        /// End of the range (within the parameter's valid range, not equal to --from).
+        #[arg(long, allow_hyphen_values = true)]
+        to: f64,
+        /// Fix another parameter: NAME=VALUE (repeat), e.g. --set T_set=0.2.
+        #[arg(long = "set")]
+        set: Vec<String>,
+        /// Also place a point exactly at this parameter value (repeat; within the range).
+        #[arg(long, allow_hyphen_values = true)]
+        at: Vec<f64>,
+        /// Also follow the period-two branch born at each period doubling.
+        #[arg(long = "period-two")]
+        period_two: bool,
+        /// Largest continuation step in the scaled arclength, in (0, 1] (default 0.2; the
+        /// whole range has length 1).
+        #[arg(long = "max-step", allow_hyphen_values = true)]
+        max_step: Option<f64>,
+        /// Write the points as CSV to FILE.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw the bifurcation diagram (V against the parameter) to FILE.png or FILE.svg.
+        #[arg(long)]
+        plot: Option<PathBuf>,
+    },
     /// Reproduce the paper's figures and claims.
     Reproduce {
         /// Output directory.

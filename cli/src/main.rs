@@ -13,7 +13,7 @@ use walker::model::Kind;
 use walker::sim::WalkLimits;
 use walker_cli::args::{Cli, Command, WalkFlags};
 use walker_cli::input::{InputError, check, duration as positive_duration, tolerance};
-use walker_cli::{animate, report, reproduce, run};
+use walker_cli::{animate, continue_cmd, report, reproduce, run};
 
 /// Why a command did not finish, and its exit code.
 #[derive(Debug, thiserror::Error)]
@@ -30,6 +30,17 @@ enum CliError {
     /// Writing to standard output failed (a closed pipe): exit code 1.
     #[error("cannot write to standard output: {0}")]
     Stdout(#[source] std::io::Error),
+    /// A continuation found no branch (1) or was given bad input (2).
+    #[error(transparent)]
+    Continue(#[from] continue_cmd::ContinueError),
+    /// Writing a file of `walker continue` failed: exit code 1.
+    #[error("cannot write {path}: {message}")]
+    File {
+        /// The file.
+        path: String,
+        /// What went wrong.
+        message: String,
+    },
 }
 
 impl CliError {
@@ -38,6 +49,8 @@ impl CliError {
             CliError::Input(_) => 2,
             CliError::Write(_) | CliError::Stdout(_) => 1,
             CliError::Animate(e) => e.exit_code(),
+            CliError::Continue(e) => e.exit_code(),
+            CliError::File { .. } => 1,
         }
     }
 }
@@ -174,6 +187,57 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 emit(&format!("{}\n", serde_json::json!(written)))?;
             } else {
                 emit(&written.text())?;
+            }
+        }
+        Command::Continue {
+            common,
+            param,
+            from,
+            to,
+            set,
+            at,
+            period_two,
+            max_step,
+            csv,
+            plot,
+        } => {
+            let setup = run::setup(&common.scene, &common.overrides(None, None, None))?;
+            let req = continue_cmd::Request::new(
+                setup, &param, from, to, &set, &at, period_two, max_step,
+            )?;
+            let branches = continue_cmd::run(&req, &common.config()?)?;
+            let name = req.param.name();
+            if let Some(path) = &csv {
+                std::fs::write(path, continue_cmd::output::csv(&branches)).map_err(|e| {
+                    CliError::File {
+                        path: path.display().to_string(),
+                        message: e.to_string(),
+                    }
+                })?;
+            }
+            if let Some(path) = &plot {
+                let d = continue_cmd::diagram::Diagram {
+                    title: format!(
+                        "V against {name} (solid: stable, dashed: unstable, pale: not physical)"
+                    ),
+                    x_label: name.to_owned(),
+                    branches: branches
+                        .iter()
+                        .map(|b| (format!("period {}", b.period), b))
+                        .collect(),
+                    simulated: (String::new(), Vec::new()),
+                    legend: plotters::chart::SeriesLabelPosition::LowerRight,
+                };
+                continue_cmd::diagram::save(&d, path).map_err(|message| CliError::File {
+                    path: path.display().to_string(),
+                    message,
+                })?;
+            }
+            if common.json {
+                let j = continue_cmd::output::json(&common.scene, name, from, to, &branches);
+                emit(&format!("{j}\n"))?;
+            } else {
+                emit(&continue_cmd::output::text(&branches))?;
             }
         }
         Command::Reproduce { out } => {

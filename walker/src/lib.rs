@@ -8,9 +8,10 @@
 //! computer algebra.
 //!
 //! Imports run one way, from the analyses down to the integrators:
-//! [`sweep`], [`poincare`] -> [`sim`] -> [`model`] ([`setup`], [`params`], [`jacobian`],
+//! [`continuation`] -> [`poincare`]; [`sweep`], [`poincare`] -> [`sim`] -> [`model`] ([`setup`], [`params`], [`jacobian`],
 //! [`control`], [`kernels`]) -> [`ode`].
 
+pub mod continuation;
 pub mod control;
 pub mod jacobian;
 pub mod kernels;

@@ -1,11 +1,12 @@
-//! The whole `walker reproduce` job: collect the data, write the CSV files, the figures and
-//! `summary.txt` into one directory.
+//! The whole `walker reproduce` job: collect the data, write the CSV files, the figures (the
+//! bifurcation diagrams by continuation among them) and `summary.txt` into one directory.
 
 use std::fs::{self, File};
 use std::io::Write as _;
 use std::path::Path;
 
 use super::animations::write_animations;
+use super::bifurcation::write_bifurcation;
 use super::csv::write_csvs;
 use super::data::collect;
 use super::error::WriteError;
@@ -27,6 +28,7 @@ pub fn run(out: &Path) -> Result<String, WriteError> {
     write_csvs(out, &d)?;
     write_figures(out, &d)?;
     write_animations(out)?;
+    write_bifurcation(out, &d)?;
     let mut s = summary(&d);
     s.push_str(&stability(out)?);
     summary_file

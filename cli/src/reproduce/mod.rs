@@ -6,14 +6,16 @@
 //! ([`csv`]), one function per figure ([`figures`]), the animations of Figs. 5 and 14
 //! ([`animations`]), the claims text ([`mod@summary`], with the claims of Sections 4 and 5 in
 //! [`claims_active`] and [`claims_passive`] and the sweeps stated as ranges of `mu0` by
-//! [`ranges`]), the Floquet stability along `mu0` ([`stability`]) and the whole job, writing
+//! [`ranges`]), the Floquet stability along `mu0` ([`stability`]), the bifurcation diagrams by
+//! continuation ([`bifurcation`]) and the whole job, writing
 //! everything into one directory ([`job`]), or why it could not ([`error`]).
 //!
-//! Imports run one way: [`job`] -> [`stability`], [`mod@summary`], [`figures`], [`csv`] ->
+//! Imports run one way: [`job`] -> [`bifurcation`], [`stability`], [`mod@summary`], [`figures`], [`csv`] ->
 //! [`data`] -> [`passive`] -> [`models`] (and [`stability`] -> [`figures`], [`models`]; [`mod@summary`] ->
 //! [`claims_passive`] -> [`claims_active`] -> [`ranges`]); the writers -> [`error`].
 
 pub mod animations;
+pub mod bifurcation;
 pub mod claims_active;
 pub mod claims_passive;
 pub mod csv;

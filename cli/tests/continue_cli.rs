@@ -1,0 +1,179 @@
+//! `walker continue`: the JSON lists points and labelled special points, the CSV and the
+//! diagram are written, and bad input exits 2 naming the flag and its valid range.
+#![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
+
+use std::process::Command;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_walker"))
+        .arg("continue")
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn json_lists_the_points_and_the_lift_off_boundary_of_t_set_0_2() {
+    let dir = std::env::temp_dir().join(format!("continue-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (csv, svg) = (dir.join("b.csv"), dir.join("b.svg"));
+    let (code, out, err) = run(&[
+        "--scene",
+        "active-level",
+        "--param",
+        "mu0",
+        "--from",
+        "0.3",
+        "--to",
+        "0.7",
+        "--set",
+        "T_set=0.2",
+        "--at",
+        "0.5",
+        "--json",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.contains("NaN"), "{out}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["parameter"], "mu0");
+    let b = &v["branches"][0];
+    assert_eq!(b["period"], 1);
+    let points = b["points"].as_array().unwrap();
+    assert!(points.len() > 3);
+    let tags: Vec<&str> = points
+        .iter()
+        .filter_map(|p| p["label"]["tag"].as_str())
+        .collect();
+    assert_eq!(tags.first(), Some(&"EP"));
+    assert_eq!(tags.last(), Some(&"EP"));
+    assert!(tags.contains(&"LO") && tags.contains(&"UZ"), "{tags:?}");
+    let lo = points.iter().find(|p| p["label"]["tag"] == "LO").unwrap();
+    // The boundary of `continuation_walkers.rs`: mu0 = 0.4729 (located to 1e-9).
+    assert!((lo["parameter"].as_f64().unwrap() - 0.4729).abs() < 1e-3);
+    for key in [
+        "T",
+        "V",
+        "dx",
+        "multipliers",
+        "stability",
+        "physical",
+        "tests",
+        "state",
+    ] {
+        assert!(!points[1][key].is_null(), "{key}");
+    }
+    assert_eq!(b["ends"][0]["reason"], "parameter-bound");
+    let csv = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(csv.lines().count(), points.len() + 1);
+    assert!(csv.starts_with("branch,period,index,parameter,V,T,dx"));
+    let svg = std::fs::read_to_string(&svg).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("LO"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn mu0_zero_ends_the_branch_on_a_labelled_family() {
+    let (code, out, err) = run(&[
+        "--scene",
+        "active-level",
+        "--param",
+        "mu0",
+        "--from",
+        "0",
+        "--to",
+        "0.1",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("FAM1 Family at mu0 = 0.0000000000"), "{out}");
+    assert!(out.contains("a family of cycles (multiplier 1)"), "{out}");
+}
+
+#[test]
+fn bad_input_exits_2_naming_the_flag_and_its_range() {
+    for (args, flag, says) in [
+        (
+            vec!["--param", "mu0", "--from", "-0.1", "--to", "1"],
+            "from",
+            "finite and >= 0",
+        ),
+        (
+            vec!["--param", "mu0", "--from", "0.5", "--to", "0.5"],
+            "to",
+            "must differ",
+        ),
+        (
+            vec!["--param", "omega0", "--from", "0.5", "--to", "1"],
+            "param",
+            "not a parameter of the Poincare map",
+        ),
+        (
+            vec!["--param", "speed", "--from", "0.5", "--to", "1"],
+            "param",
+            "unknown parameter",
+        ),
+        (
+            vec!["--param", "phi", "--from", "0", "--to", "0.1"],
+            "param",
+            "not a parameter of this walker",
+        ),
+        (
+            vec![
+                "--param", "mu0", "--from", "0.1", "--to", "0.2", "--set", "T_set=-1",
+            ],
+            "set",
+            "T_set=-1",
+        ),
+        (
+            vec![
+                "--param", "mu0", "--from", "0.1", "--to", "0.2", "--set", "T_set",
+            ],
+            "set",
+            "NAME=VALUE",
+        ),
+        (
+            vec![
+                "--param", "mu0", "--from", "0.1", "--to", "0.2", "--at", "0.5",
+            ],
+            "at",
+            "in [0.1, 0.2]",
+        ),
+        (
+            vec![
+                "--param",
+                "mu0",
+                "--from",
+                "0.1",
+                "--to",
+                "0.2",
+                "--max-step",
+                "0",
+            ],
+            "max-step",
+            "in (0, 1]",
+        ),
+        (
+            vec![
+                "--param", "T_set", "--from", "0.25", "--to", "0.35", "--set", "mu0=0",
+            ],
+            "set",
+            "family",
+        ),
+    ] {
+        let mut all = vec!["--scene", "active-level"];
+        all.extend(args.iter());
+        let (code, out, err) = run(&all);
+        assert_eq!(code, 2, "{args:?}: {out} {err}");
+        assert!(err.contains(&format!("invalid {flag}:")), "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+}

@@ -1,0 +1,203 @@
+//! The paper's two walkers as a [`GaitProblem`]: the active walker on level ground and the
+//! passive wheel on the slope, with any of their parameters free.
+//!
+//! The section's independent coordinates are `r = (xd+, th1d+)` ([`crate::poincare::embed`]).
+//! With smooth (tanh) friction and Table 1 the map is one stance phase of `profile.rs` (no
+//! validity test stops it, so the physical tests are evaluated beyond the walking region too)
+//! and its Jacobian comes from the variational equations ([`crate::poincare::poincare_map`]).
+//! Otherwise (exact Coulomb friction, other physical parameters) the map is one step of
+//! [`crate::sim::walk`], whose failures end the branch, and the Jacobian is by central
+//! differences; the smallest normal force is then the smallest seen at the ends of the stance
+//! segments (the walk's `lambda_min`), not located between them.
+
+use nalgebra::DMatrix;
+use walker_scene::Param;
+
+use crate::jacobian::Jac;
+use crate::model::{FrictionLaw, ImpactLaw, Model};
+use crate::poincare::{embed, poincare_map, reduce, reduced_jacobian};
+use crate::setup::Setup;
+use crate::sim::{SimConfig, WalkLimits, walk};
+
+use super::problem::{Cycle, GaitProblem, MapValue, ProblemError, SlipStructure, Tests};
+use super::profile;
+
+/// Steps of the warm-up walk that gives a first guess ([`GaitProblem::guess`]).
+const WARMUP_STEPS: usize = 30;
+
+/// One of the paper's walkers with one parameter free.
+#[derive(Clone, Debug)]
+pub struct PaperWalker {
+    setup: Setup,
+    param: Param,
+    cfg: SimConfig,
+    omega0: Option<f64>,
+}
+
+impl PaperWalker {
+    /// The walker of `setup` with `param` free, simulated with `cfg`.
+    ///
+    /// # Errors
+    /// [`ProblemError::NotAParameter`] if the walker has no such parameter (`phi` on level
+    /// ground, `T_set`, `K_P`, `K_D` for the passive wheel, `c` under exact Coulomb friction).
+    pub fn new(setup: Setup, param: Param, cfg: SimConfig) -> Result<Self, ProblemError> {
+        let active = setup.model().is_active();
+        let absent = match param {
+            Param::Phi => active,
+            Param::TSet | Param::KP | Param::KD => !active,
+            Param::C => setup.friction == FrictionLaw::Coulomb,
+            _ => false,
+        };
+        if absent {
+            return Err(ProblemError::NotAParameter { name: param.name() });
+        }
+        Ok(Self {
+            setup,
+            param,
+            cfg,
+            omega0: None,
+        })
+    }
+
+    /// The same walker whose warm-up walks start with `th1d = omega0` (Eq. 33) instead of the
+    /// model's default.
+    #[must_use]
+    pub fn with_omega0(self, omega0: f64) -> Self {
+        Self {
+            omega0: Some(omega0),
+            ..self
+        }
+    }
+
+    /// The free parameter.
+    #[must_use]
+    pub fn param(&self) -> Param {
+        self.param
+    }
+
+    /// The model at parameter value `p`.
+    #[must_use]
+    pub fn model_at(&self, p: f64) -> Model {
+        let mut setup = self.setup.clone();
+        if setup.physical.set(self.param, p) {
+            // The fast kernels have Table 1 compiled in.
+            setup.fast = false;
+        } else {
+            setup.runtime.set(self.param, p);
+        }
+        setup.model()
+    }
+
+    /// The simulation settings.
+    #[must_use]
+    pub fn config(&self) -> &SimConfig {
+        &self.cfg
+    }
+
+    fn r2(r: &[f64]) -> [f64; 2] {
+        [
+            r.first().copied().unwrap_or(f64::NAN),
+            r.get(1).copied().unwrap_or(f64::NAN),
+        ]
+    }
+}
+
+/// The structure signature when stick-slip can occur, else `None`.
+fn structure(
+    model: &Model,
+    sticks: bool,
+    impact: crate::model::ImpactRegime,
+) -> Option<SlipStructure> {
+    (model.friction_law() == FrictionLaw::Coulomb || model.impact_law == ImpactLaw::Coulomb)
+        .then_some(SlipStructure { sticks, impact })
+}
+
+impl GaitProblem for PaperWalker {
+    fn dim(&self) -> usize {
+        2
+    }
+
+    fn parameter_name(&self) -> &str {
+        self.param.name()
+    }
+
+    fn map(&self, r: &[f64], p: f64) -> Result<MapValue, ProblemError> {
+        let model = self.model_at(p);
+        let s = embed(&model, Self::r2(r));
+        let cphi = model.runtime.phi.cos();
+        let strike = |t: f64| model.is_active().then_some(t - model.runtime.t_set);
+        if Jac::new(&model).is_ok() {
+            let step = profile::step(&model, &self.cfg, &s)?;
+            let dx = step.state_plus[0] / cphi;
+            return Ok(MapValue {
+                image: reduce(&step.state_plus).to_vec(),
+                cycle: Cycle {
+                    period: step.period,
+                    dx,
+                    speed: dx / step.period,
+                },
+                tests: Tests {
+                    min_normal_force: Some(step.min_normal_force),
+                    rear_release: Some(-step.rear_impulse),
+                    strike_after_t_set: strike(step.period),
+                    structure: structure(&model, false, step.impact),
+                },
+            });
+        }
+        let limits = WalkLimits {
+            max_steps: 1,
+            ..WalkLimits::default()
+        };
+        let w = walk(&model, &self.cfg, s, &limits);
+        if let Some(f) = w.failure {
+            return Err(ProblemError::Walk(Box::new(f)));
+        }
+        let last =
+            w.steps
+                .last()
+                .ok_or(ProblemError::Map(crate::poincare::MapError::NoHeelStrike {
+                    t: self.cfg.max_step_time,
+                }))?;
+        Ok(MapValue {
+            image: reduce(&last.state_plus()).to_vec(),
+            cycle: Cycle {
+                period: last.period,
+                dx: last.dx,
+                speed: last.speed,
+            },
+            tests: Tests {
+                min_normal_force: Some(last.lambda_min / cphi),
+                rear_release: Some(-last.rear_impulse),
+                strike_after_t_set: strike(last.period),
+                structure: structure(&model, last.stuck_time > 0.0, last.impact),
+            },
+        })
+    }
+
+    fn jacobian(&self, r: &[f64], p: f64) -> Result<DMatrix<f64>, ProblemError> {
+        let model = self.model_at(p);
+        let m = poincare_map(&model, &self.cfg, &embed(&model, Self::r2(r)))?;
+        let j = reduced_jacobian(&model, &m.jacobian);
+        Ok(DMatrix::from_fn(2, 2, |i, k| j[i][k]))
+    }
+
+    fn has_family_at(&self, p: f64) -> bool {
+        let mu0 = if self.param == Param::Mu0 {
+            p
+        } else {
+            self.setup.runtime.mu0
+        };
+        mu0 == 0.0
+    }
+
+    fn guess(&self, p: f64) -> Option<Vec<f64>> {
+        let model = self.model_at(p);
+        let omega0 = self.omega0.unwrap_or_else(|| model.default_omega0());
+        let limits = WalkLimits {
+            max_steps: WARMUP_STEPS,
+            ..WalkLimits::default()
+        };
+        let w = walk(&model, &self.cfg, model.initial_state(omega0), &limits);
+        w.last_state().map(|s| reduce(&s).to_vec())
+    }
+}
