@@ -9,8 +9,10 @@ Usage: python generate.py [--jobs N] [--only NAME ...]
   (writes ../tests/data/*.json, closed_forms.txt, opcount.json, report.json)
 
 --only regenerates just the named outputs: kernel names (tests/data/<kernel>.json), `step:active`
-/ `step:passive`, `impact_friction` (tests/data/impact_friction.json), `closed_forms`, `opcount`;
-report.json then keeps every other entry as it was.  For the impact with friction:
+/ `step:passive`, `impact_friction` (tests/data/impact_friction.json), `closed_forms`, `opcount`,
+`models` (tests/data/models/<name>.json for every models/*.toml, models.py; `--only models` alone
+skips the paper model's derivation); report.json then keeps every other entry as it was.
+For the impact with friction:
 `bash sympy_ref/run.sh --only impact_coulomb_level impact_coulomb_slope impact_friction`.
 """
 from __future__ import annotations
@@ -48,6 +50,10 @@ def task(spec):
         import impact_friction
         res = impact_friction.main(os.path.join(DATA, "impact_friction.json"))
         line = "impact_friction"
+    elif kind == "models":
+        import models
+        res = models.main()
+        line = "models"
     elif kind == "opcount":
         import opcount
         opcount.main(os.path.join(HERE, "opcount.json"))
@@ -64,12 +70,24 @@ def main():
                     help="regenerate only these outputs (see the module docstring)")
     args = ap.parse_args()
     t0 = time.time()
+    if args.only == ["models"]:     # the model files need nothing of the paper's derivation
+        import models
+        res = models.main()
+        with open(os.path.join(HERE, "report.json")) as fh:
+            report = json.load(fh)
+        report["models"] = res
+        with open(os.path.join(HERE, "report.json"), "w") as fh:
+            json.dump(report, fh, indent=1)
+            fh.write("\n")
+        print(f"total: {time.time() - t0:.1f} s")
+        return
     mdl = md.derive()
     print(f"derivation: {time.time() - t0:.1f} s", flush=True)
     os.makedirs(DATA, exist_ok=True)
     # longest first, for load balance
-    specs = [("step", "passive"), ("step", "active"), ("impact_friction", None),
-             ("opcount", None), ("closed_forms", None)] + [("kernel", k) for k in mdl.kernels]
+    specs = ([("step", "passive"), ("step", "active"), ("impact_friction", None),
+              ("opcount", None), ("closed_forms", None), ("models", None)]
+             + [("kernel", k) for k in mdl.kernels])
     if args.only:
         def name(spec):
             kind, arg = spec
@@ -96,6 +114,8 @@ def main():
         "impact_friction": (results[("impact_friction", None)]
                             if ("impact_friction", None) in results
                             else old.get("impact_friction")),
+        "models": (results[("models", None)] if ("models", None) in results
+                   else old.get("models")),
     }
     with open(os.path.join(HERE, "report.json"), "w") as fh:
         json.dump(report, fh, indent=1)
