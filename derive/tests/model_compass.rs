@@ -34,7 +34,10 @@ fn compass_gait_inertia_matrix_is_goswamis() {
     assert!(*mech.mass.get(sw, sw) == want_sw_sw, "M_sw,sw = m b^2");
     assert!(*mech.mass.get(sw, st) == want_cross, "M_sw,st = -m l b cos");
     assert!(*mech.mass.get(st, sw) == want_cross, "M_st,sw = -m l b cos");
-    assert!(*mech.mass.get(st, st) == want_st_st, "M_st,st = (m_H + m) l^2 + m a^2");
+    assert!(
+        *mech.mass.get(st, st) == want_st_st,
+        "M_st,st = (m_H + m) l^2 + m a^2"
+    );
     // The total mass sits in the translational block, as for any floating-base walker.
     let total = &(&m + &m) + &mh;
     assert!(*mech.mass.get(0, 0) == total && *mech.mass.get(1, 1) == total);

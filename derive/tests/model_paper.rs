@@ -40,7 +40,11 @@ fn renamer(model: &Symbols, paper: &Symbols) -> impl Fn(usize) -> usize {
 }
 
 fn same(what: &str, got: &Matrix, want: &Matrix, rename: &impl Fn(usize) -> usize) {
-    assert_eq!((got.rows(), got.cols()), (want.rows(), want.cols()), "{what}: shape");
+    assert_eq!(
+        (got.rows(), got.cols()),
+        (want.rows(), want.cols()),
+        "{what}: shape"
+    );
     for (k, (g, w)) in got.entries().iter().zip(want.entries()).enumerate() {
         let g = g.map_slots(rename).expect("renamed");
         assert!(g == *w, "{what}[{k}]: {g:?} != {w:?}");
@@ -72,13 +76,26 @@ fn the_active_model_file_derives_the_papers_level_mechanics_exactly() {
     same("qdd_s", &st.accel, &d.stick_level.accel, &r);
     let imp = strike_impacts(&m, &model).expect("impacts");
     same("impact2 qd+", &imp.single.velocity, &d.impact2.velocity, &r);
-    same("impact2 lambda_I", &imp.single.impulse, &d.impact2.impulse, &r);
+    same(
+        "impact2 lambda_I",
+        &imp.single.impulse,
+        &d.impact2.impulse,
+        &r,
+    );
     let double = imp.double.expect("double-support test");
     same("impact3 qd+", &double.velocity, &d.impact3.velocity, &r);
     same("impact3 lambda_I", &double.impulse, &d.impact3.impulse, &r);
     let energy = [m.kinetic.clone(), m.potential.clone()];
-    let want = [d.dynamics.geometry.kinetic.clone(), d.dynamics.geometry.potential.clone()];
-    same("T, V", &Matrix::column(energy.to_vec()), &Matrix::column(want.to_vec()), &r);
+    let want = [
+        d.dynamics.geometry.kinetic.clone(),
+        d.dynamics.geometry.potential.clone(),
+    ];
+    same(
+        "T, V",
+        &Matrix::column(energy.to_vec()),
+        &Matrix::column(want.to_vec()),
+        &r,
+    );
     let fore = m.point("fore_foot").expect("fore foot");
     same(
         "fore foot",
@@ -101,15 +118,40 @@ fn the_passive_model_file_derives_the_papers_slope_mechanics_exactly() {
             .expect("u = 0")
     };
     let s = sliding(&m).expect("stance");
-    same("lambda", &one(&s.lambda), &u_zero(&one(&d.slope.lambda)), &r);
+    same(
+        "lambda",
+        &one(&s.lambda),
+        &u_zero(&one(&d.slope.lambda)),
+        &r,
+    );
     same("Y", &s.projection, &d.slope.projection, &r);
     same("qdd", &s.accel, &u_zero(&d.slope.accel), &r);
     let st = stuck(&m).expect("stuck");
     same("lambda_s", &st.forces, &u_zero(&d.stick_slope.forces), &r);
     let imp = strike_impacts(&m, &model).expect("impacts");
-    same("impact qd+", &imp.single.velocity, &d.impact_slope.velocity, &r);
-    same("impact lambda_I", &imp.single.impulse, &d.impact_slope.impulse, &r);
+    same(
+        "impact qd+",
+        &imp.single.velocity,
+        &d.impact_slope.velocity,
+        &r,
+    );
+    same(
+        "impact lambda_I",
+        &imp.single.impulse,
+        &d.impact_slope.impulse,
+        &r,
+    );
     let double = imp.double.expect("double-support test");
-    same("impact2 qd+", &double.velocity, &d.impact2_slope.velocity, &r);
-    same("impact2 lambda_I", &double.impulse, &d.impact2_slope.impulse, &r);
+    same(
+        "impact2 qd+",
+        &double.velocity,
+        &d.impact2_slope.velocity,
+        &r,
+    );
+    same(
+        "impact2 lambda_I",
+        &double.impulse,
+        &d.impact2_slope.impulse,
+        &r,
+    );
 }

@@ -7,10 +7,12 @@ use crate::emit::emit_plan;
 use crate::error::Error;
 use crate::ir::Module;
 use crate::lower::{Derivation, derive, lower};
+use crate::model::{ModelScene, lower_model};
 use crate::options::{Division, EmitOptions, Float, FloatFunctions};
 use crate::plan::Plan;
 use crate::stats::{Stats, from_plan};
-use walker_scene::Scene;
+use walker_scene::model::Model;
+use walker_scene::{Friction, Scene};
 
 #[derive(Clone, Debug)]
 enum SceneSource {
@@ -26,6 +28,15 @@ pub struct Config {
     out_file: Option<PathBuf>,
     out_dir: Option<PathBuf>,
     rerun_if_changed: bool,
+    model: Option<ModelSource>,
+}
+
+/// A model file and the choices that make it a scene ([`ModelScene`]).
+#[derive(Clone, Debug, Default)]
+struct ModelSource {
+    path: PathBuf,
+    fixed: Vec<(String, f64)>,
+    friction: Option<Friction>,
 }
 
 /// What [`Config::generate`] did (and [`Config::generate_all`] for each scene).
@@ -154,6 +165,72 @@ impl Config {
         load(self.single()?)
     }
 
+    /// Generates the kernels of a model file (`docs/model-format.md`) instead of scenes: every
+    /// kernel of the model, with the parameters given to [`Config::fix`] (and the model's
+    /// generation-stage parameters) substituted, and the friction law of [`Config::friction`]
+    /// (default: the model's first law other than `none`). The default output file is
+    /// `<model name with _>.rs`.
+    pub fn model_file(&mut self, path: impl AsRef<Path>) -> &mut Config {
+        self.model.get_or_insert_with(ModelSource::default).path = path.as_ref().to_path_buf();
+        self
+    }
+
+    /// Fixes a model parameter at generation time (see [`Config::model_file`]).
+    pub fn fix(&mut self, name: &str, value: f64) -> &mut Config {
+        self.model
+            .get_or_insert_with(ModelSource::default)
+            .fixed
+            .push((name.to_owned(), value));
+        self
+    }
+
+    /// The stance friction law of a model's kernels (see [`Config::model_file`]).
+    pub fn friction(&mut self, law: Friction) -> &mut Config {
+        self.model.get_or_insert_with(ModelSource::default).friction = Some(law);
+        self
+    }
+
+    /// The model scene of [`Config::model_file`], loaded and checked.
+    ///
+    /// # Errors
+    /// The model file is invalid, or a fixed parameter or the friction law is not the model's.
+    pub fn load_model(&self) -> Result<Option<ModelScene>, Error> {
+        let Some(source) = &self.model else {
+            return Ok(None);
+        };
+        if !self.scenes.is_empty() {
+            return Err(Error::SceneAndModel);
+        }
+        let model = Model::from_file(&source.path)?;
+        let mut scene = ModelScene::new(model);
+        scene.fixed.extend(source.fixed.iter().cloned());
+        if let Some(f) = source.friction {
+            scene.friction = f;
+        }
+        scene.validate()?;
+        Ok(Some(scene))
+    }
+
+    /// The source and operation counts of a model scene.
+    fn build_model(&self, scene: &ModelScene) -> Result<(String, Stats), Error> {
+        let derivation =
+            walker_symbolic::model::ModelDerivation::new(&scene.model).map_err(|e| {
+                Error::Lower {
+                    kernel: "(derivation)".to_owned(),
+                    message: e.to_string(),
+                }
+            })?;
+        let module = lower_model(&derivation, scene)?;
+        self.build_module(&module)
+    }
+
+    /// The source and operation counts of a lowered module.
+    fn build_module(&self, module: &Module) -> Result<(String, Stats), Error> {
+        let plan = Plan::new(module, self.options.division)?;
+        let source = emit_plan(module, &plan, &self.options)?;
+        Ok((source, from_plan(module, &plan)))
+    }
+
     /// The lowered module, with the scene's summary as the first header notes.
     ///
     /// # Errors
@@ -165,14 +242,14 @@ impl Config {
 
     /// The source and operation counts of `scene`'s file, lowered from `derivation`.
     fn build(&self, derivation: &Derivation, scene: &Scene) -> Result<(String, Stats), Error> {
-        let module = module_of(derivation, scene)?;
-        let plan = Plan::new(&module, self.options.division)?;
-        let source = emit_plan(&module, &plan, &self.options)?;
-        Ok((source, from_plan(&module, &plan)))
+        self.build_module(&module_of(derivation, scene)?)
     }
 
     /// The source and operation counts of the one scene (one derivation).
     fn build_single(&self) -> Result<(String, Stats), Error> {
+        if let Some(model) = self.load_model()? {
+            return self.build_model(&model);
+        }
         let scene = self.load_scene()?;
         self.build(&derive()?, &scene)
     }
@@ -213,6 +290,17 @@ impl Config {
     /// is set for several scenes, no output directory is known, or a file cannot be written.
     /// Files of the scenes before the failing one are written.
     pub fn generate_all(&self) -> Result<Vec<GenerateReport>, Error> {
+        if let Some(model) = self.load_model()? {
+            if self.rerun_if_changed
+                && let Some(source) = &self.model
+            {
+                println!("cargo:rerun-if-changed={}", source.path.display());
+            }
+            let (source, stats) = self.build_model(&model)?;
+            let out_file =
+                self.out_file_in(&format!("{}.rs", model.model.name.replace('-', "_")))?;
+            return Ok(vec![write_if_changed(out_file, &source, stats)?]);
+        }
         if self.scenes.is_empty() {
             return Err(Error::NoScene);
         }
@@ -242,6 +330,11 @@ impl Config {
     /// Where `scene`'s file goes: the output file, else the output directory (or `$OUT_DIR`)
     /// joined with the scene's default file name.
     fn out_file_of(&self, scene: &Scene) -> Result<PathBuf, Error> {
+        self.out_file_in(&scene.default_file_name())
+    }
+
+    /// The output file, else `file_name` in the output directory (or `$OUT_DIR`).
+    fn out_file_in(&self, file_name: &str) -> Result<PathBuf, Error> {
         if let Some(path) = &self.out_file {
             return Ok(path.clone());
         }
@@ -249,7 +342,7 @@ impl Config {
             Some(dir) => dir.clone(),
             None => PathBuf::from(std::env::var_os("OUT_DIR").ok_or(Error::NoOutFile)?),
         };
-        Ok(dir.join(scene.default_file_name()))
+        Ok(dir.join(file_name))
     }
 }
 

@@ -72,6 +72,9 @@ pub enum Error {
     /// The scene is invalid.
     #[error(transparent)]
     Scene(#[from] SceneError),
+    /// The model file is invalid (the message names file, line and column).
+    #[error(transparent)]
+    Model(#[from] walker_scene::model::ModelError),
     /// The module cannot be emitted.
     #[error(transparent)]
     Emit(#[from] EmitError),
@@ -104,6 +107,9 @@ pub enum Error {
         /// How many scenes were given.
         count: usize,
     },
+    /// Both scenes and a model were given to one configuration.
+    #[error("scenes and a model given: a configuration generates either scenes or one model")]
+    SceneAndModel,
     /// No `out_file`, no `out_dir` and no `OUT_DIR` in the environment.
     #[error("no output file: call Config::out_file or Config::out_dir (OUT_DIR is not set)")]
     NoOutFile,

@@ -50,16 +50,57 @@ pub fn derive() -> Result<Derivation, Error> {
 /// not have ([`Error::Lower`]).
 pub fn lower(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
     let mut module = Module::new(&scene.name);
-    let params = ParamNodes::declare(scene, &mut module);
+    let nodes = ParamNodes::declare(scene, &mut module);
+    let symbols = &derivation.symbols;
+    let sym = |name: &str| {
+        symbols.lookup(name).map_err(|e| Error::Lower {
+            kernel: "(scene)".to_owned(),
+            message: e.to_string(),
+        })
+    };
+    let mut binding = Binding {
+        symbols,
+        params: BTreeMap::new(),
+        fixed: BTreeMap::new(),
+        zero: Vec::new(),
+        friction: None,
+    };
+    for p in scene.params() {
+        let s = sym(p.name())?;
+        if let Some(node) = nodes.get(p) {
+            binding.params.insert(s, node);
+        }
+        if let Some(v) = scene.fixed_value(p) {
+            binding.fixed.insert(s, v);
+        }
+    }
+    let slope = match scene.floor {
+        Floor::Level => None,
+        Floor::Slope => Some(BaseAngle::Phi),
+    };
+    match scene.friction {
+        Friction::None => binding.zero.push(Sym::Mu),
+        Friction::Tanh | Friction::Coulomb => {
+            binding.friction = Some(FrictionBinding {
+                mu: Sym::Mu,
+                law: scene.friction,
+                velocity: "xd".to_owned(),
+                mu0: sym(Param::Mu0.name())?,
+                c: sym(Param::C.name()).ok(),
+                slope,
+            });
+        }
+    }
+    if scene.torso == Torso::Passive {
+        binding.zero.push(Sym::U);
+    }
     for name in scene.kernels() {
         let kernel = derivation.kernel(name.name()).map_err(|e| Error::Lower {
             kernel: name.name().to_owned(),
             message: e.to_string(),
         })?;
         let lowered = Lowering {
-            scene,
-            symbols: &derivation.symbols,
-            params: &params,
+            binding: &binding,
             kernel: kernel.name,
         }
         .kernel(&mut module.graph, kernel)?;
@@ -68,11 +109,38 @@ pub fn lower(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
     Ok(module)
 }
 
-struct Lowering<'a> {
-    scene: &'a Scene,
-    symbols: &'a Symbols,
-    params: &'a ParamNodes,
-    kernel: &'static str,
+/// How a derivation's symbols become graph nodes for one scene or model: the symbol table, the
+/// parameters (runtime nodes, or constants where fixed, with the fixed values for folding
+/// `sin`/`cos`), the symbols specialised to zero, and the friction law `mu` stands for.
+pub(crate) struct Binding<'a> {
+    pub(crate) symbols: &'a Symbols,
+    pub(crate) params: BTreeMap<Sym, NodeId>,
+    pub(crate) fixed: BTreeMap<Sym, f64>,
+    /// Substituted by zero before lowering (`mu` without friction, `u` of a passive torso), and
+    /// so no kernel argument.
+    pub(crate) zero: Vec<Sym>,
+    pub(crate) friction: Option<FrictionBinding>,
+}
+
+/// The friction law `mu` stands for (Eqs. 25, 26, 37).
+pub(crate) struct FrictionBinding {
+    /// The symbol `mu`.
+    pub(crate) mu: Sym,
+    /// `Tanh` or `Coulomb`.
+    pub(crate) law: Friction,
+    /// The name of the stance foot's horizontal velocity (the tanh law's argument).
+    pub(crate) velocity: String,
+    /// `mu0`.
+    pub(crate) mu0: Sym,
+    /// `c` of the tanh law.
+    pub(crate) c: Option<Sym>,
+    /// The slope's base angle (`xd / cos phi` is the velocity along the slope).
+    pub(crate) slope: Option<BaseAngle>,
+}
+
+pub(crate) struct Lowering<'a> {
+    pub(crate) binding: &'a Binding<'a>,
+    pub(crate) kernel: &'static str,
 }
 
 impl Lowering<'_> {
@@ -83,18 +151,18 @@ impl Lowering<'_> {
         }
     }
 
-    fn kernel(&self, g: &mut Graph, k: &walker_symbolic::Kernel) -> Result<Kernel, Error> {
+    pub(crate) fn kernel(
+        &self,
+        g: &mut Graph,
+        k: &walker_symbolic::Kernel,
+    ) -> Result<Kernel, Error> {
+        let b = self.binding;
         let mut args = Vec::new();
         for &a in &k.args {
-            let name = if a == Sym::Mu {
-                match self.friction_argument() {
-                    Some(name) => name,
-                    None => continue,
-                }
-            } else if a == Sym::U && self.scene.torso == Torso::Passive {
-                continue;
-            } else {
-                self.symbols.name(a)
+            let name = match &b.friction {
+                _ if b.zero.contains(&a) => continue,
+                Some(f) if f.mu == a => self.friction_argument().unwrap_or_default(),
+                _ => b.symbols.name(a),
             };
             if !args.iter().any(|x: &String| x == name) {
                 args.push(name.to_owned());
@@ -127,9 +195,9 @@ impl Lowering<'_> {
         // outputs have the emitter's own paragraphs.
         let mut doc = format!("{}.", k.doc);
         if args.iter().any(|a| a == "sigma") {
-            let forward = match self.scene.floor {
-                Floor::Level => "forward",
-                Floor::Slope => "down the slope",
+            let forward = match b.friction.as_ref().and_then(|f| f.slope) {
+                None => "forward",
+                Some(_) => "down the slope",
             };
             doc.push_str(&format!(
                 "\n\n`sigma` is the direction the stance foot slides in, `+1` towards `+x` \
@@ -159,40 +227,37 @@ impl Lowering<'_> {
         })
     }
 
-    /// Symbolic specialisation: `mu = 0` without friction, `u = 0` for a passive torso.
+    /// Symbolic specialisation: `mu = 0` without friction, `u = 0` for a passive torso (the
+    /// binding's zeros, in order).
     fn specialise(&self, r: &RatFunc) -> Result<RatFunc, Error> {
         let mut r = r.clone();
-        if self.scene.friction == Friction::None {
+        for s in &self.binding.zero {
             r = r
-                .substitute(Atom::Sym(Sym::Mu), &RatFunc::zero())
-                .map_err(|e| self.error(e.to_string()))?;
-        }
-        if self.scene.torso == Torso::Passive {
-            r = r
-                .substitute(Atom::Sym(Sym::U), &RatFunc::zero())
+                .substitute(Atom::Sym(*s), &RatFunc::zero())
                 .map_err(|e| self.error(e.to_string()))?;
         }
         Ok(r)
     }
 
     fn param(&self, s: Sym) -> Result<NodeId, Error> {
-        let name = self.symbols.name(s);
-        let p = Param::from_name(name)
-            .ok_or_else(|| self.error(format!("`{name}` is not a scene parameter")))?;
-        self.params
-            .get(p)
+        let name = self.binding.symbols.name(s);
+        self.binding
+            .params
+            .get(&s)
+            .copied()
             .ok_or_else(|| self.error(format!("the scene's structure has no parameter `{name}`")))
     }
 
     fn fixed(&self, s: Sym) -> Option<f64> {
-        Param::from_name(self.symbols.name(s)).and_then(|p| self.scene.fixed_value(p))
+        self.binding.fixed.get(&s).copied()
     }
 
     /// Whether an atom depends on parameters only (and so belongs to `prepare`).
     fn is_parameter_atom(&self, slot: usize) -> bool {
-        self.symbols
+        let symbols = self.binding.symbols;
+        symbols
             .symbol_of_slot(slot)
-            .is_some_and(|s| self.symbols.kind(s) == SymKind::Parameter)
+            .is_some_and(|s| symbols.kind(s) == SymKind::Parameter)
     }
 
     /// The node of an atom slot.
@@ -200,11 +265,14 @@ impl Lowering<'_> {
         if let Some(&n) = atoms.0.get(&slot) {
             return Ok(n);
         }
+        let symbols = self.binding.symbols;
         let node = match Atom::of_slot(slot) {
-            Atom::Sym(s) if s == Sym::Mu => self.friction(g)?,
-            Atom::Sym(s) => match self.symbols.by_index(s.index()) {
-                Some(s) if self.symbols.kind(s) == SymKind::Parameter => self.param(s)?,
-                Some(s) => g.input(self.symbols.name(s)),
+            Atom::Sym(s) if self.binding.friction.as_ref().is_some_and(|f| f.mu == s) => {
+                self.friction(g)?
+            }
+            Atom::Sym(s) => match symbols.by_index(s.index()) {
+                Some(s) if symbols.kind(s) == SymKind::Parameter => self.param(s)?,
+                Some(s) => g.input(symbols.name(s)),
                 None => return Err(self.error(format!("unknown atom slot {slot}"))),
             },
             Atom::Sin(a) => self.trig(g, a, true)?,
@@ -216,18 +284,18 @@ impl Lowering<'_> {
 
     /// `sin` or `cos` of a base angle; folded to a constant when the angle is fixed.
     fn trig(&self, g: &mut Graph, a: BaseAngle, sin: bool) -> Result<NodeId, Error> {
-        let (s, k) = self
-            .symbols
+        let symbols = self.binding.symbols;
+        let (s, k) = symbols
             .angle(a)
             .ok_or_else(|| self.error(format!("unknown base angle {}", a.index())))?;
         let f = |x: f64| if sin { libm::sin(x) } else { libm::cos(x) };
         if let Some(v) = self.fixed(s) {
             return Ok(g.constant(f(v / k as f64)));
         }
-        let angle = if self.symbols.kind(s) == SymKind::Parameter {
+        let angle = if symbols.kind(s) == SymKind::Parameter {
             self.param(s)?
         } else {
-            g.input(self.symbols.name(s))
+            g.input(symbols.name(s))
         };
         let angle = if k == 1 {
             angle
@@ -240,28 +308,32 @@ impl Lowering<'_> {
 
     /// The kernel argument that stands for `mu`: `xd` for the tanh law, the sliding direction
     /// `sigma` for Coulomb friction, none without friction (`mu = 0` is substituted).
-    fn friction_argument(&self) -> Option<&'static str> {
-        match self.scene.friction {
+    fn friction_argument(&self) -> Option<&str> {
+        let f = self.binding.friction.as_ref()?;
+        match f.law {
             Friction::None => None,
-            Friction::Tanh => Some("xd"),
+            Friction::Tanh => Some(f.velocity.as_str()),
             Friction::Coulomb => Some("sigma"),
         }
     }
 
     /// The scene's friction law for `mu` (Eqs. 25, 26, 37).
     fn friction(&self, g: &mut Graph) -> Result<NodeId, Error> {
-        let Some(arg) = self.friction_argument() else {
+        let (Some(f), Some(arg)) = (self.binding.friction.as_ref(), self.friction_argument())
+        else {
             return Ok(g.constant(0.0));
         };
         let arg = g.input(arg);
-        let mu0 = self.param(Sym::Mu0)?;
-        let law = match self.scene.friction {
+        let mu0 = self.param(f.mu0)?;
+        let law = match f.law {
             Friction::None => g.constant(0.0),
             Friction::Tanh => {
-                let c = self.param(Sym::C)?;
+                let c =
+                    f.c.ok_or_else(|| self.error("the tanh law needs its parameter `c`"))?;
+                let c = self.param(c)?;
                 let mut x = g.mul(c, arg);
-                if self.scene.floor == Floor::Slope {
-                    let cos_phi = self.trig(g, BaseAngle::Phi, false)?;
+                if let Some(slope) = f.slope {
+                    let cos_phi = self.trig(g, slope, false)?;
                     x = g.div(x, cos_phi);
                 }
                 g.tanh(x)

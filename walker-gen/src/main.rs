@@ -4,6 +4,9 @@
 //! walker-gen emit --scene walker/scenes/active-level.toml [--f32] [--no-std] [--unchecked] [--exact-division]
 //!                 [--float-functions inline|std] [-o kernels.rs]
 //! walker-gen stats --scene walker/scenes/active-level.toml [--f32] [--exact-division] [--toml]
+//! walker-gen emit --model models/compass-gait.toml [--fix name=value ...] [--friction tanh]
+//!                 [--f32] [--no-std] [-o kernels.rs]
+//! walker-gen stats --model models/compass-gait.toml [--fix name=value ...]
 //! ```
 //!
 //! Bad input prints a message naming the field and exits with code 2.
@@ -75,10 +78,49 @@ impl From<FloatFunctionsArg> for FloatFunctions {
 }
 
 #[derive(Args)]
-struct Common {
-    /// The scene file (TOML).
+#[group(required = true, multiple = false, id = "source")]
+struct Source {
+    /// The scene file (TOML): one of the paper's walker structures with fixed parameters.
     #[arg(long)]
-    scene: PathBuf,
+    scene: Option<PathBuf>,
+    /// A model file (TOML, `docs/model-format.md`): any planar walker.
+    #[arg(long)]
+    model: Option<PathBuf>,
+}
+
+/// A `name=value` pair of `--fix`.
+fn parse_fix(s: &str) -> Result<(String, f64), String> {
+    let (name, value) = s
+        .split_once('=')
+        .ok_or_else(|| format!("`{s}`: expected name=value"))?;
+    let v: f64 = value
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}`: the value of `{name}` is not a number"))?;
+    if !v.is_finite() {
+        return Err(format!("`{s}`: the value of `{name}` must be finite"));
+    }
+    Ok((name.trim().to_owned(), v))
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum FrictionArg {
+    None,
+    Tanh,
+    Coulomb,
+}
+
+#[derive(Args)]
+struct Common {
+    #[command(flatten)]
+    source: Source,
+    /// With --model: substitute a parameter at generation time (repeatable).
+    #[arg(long, value_parser = parse_fix, requires = "model")]
+    fix: Vec<(String, f64)>,
+    /// With --model: the stance foot's friction law (default: the model's first law other
+    /// than none).
+    #[arg(long, value_enum, requires = "model")]
+    friction: Option<FrictionArg>,
     /// Generate `f32` code instead of `f64`.
     #[arg(long)]
     f32: bool,
@@ -90,8 +132,23 @@ struct Common {
 impl Common {
     fn config(&self) -> Config {
         let mut config = Config::new();
+        if let Some(scene) = &self.source.scene {
+            config.scene_file(scene);
+        }
+        if let Some(model) = &self.source.model {
+            config.model_file(model);
+            for (name, v) in &self.fix {
+                config.fix(name, *v);
+            }
+            if let Some(f) = self.friction {
+                config.friction(match f {
+                    FrictionArg::None => walker_gen::Friction::None,
+                    FrictionArg::Tanh => walker_gen::Friction::Tanh,
+                    FrictionArg::Coulomb => walker_gen::Friction::Coulomb,
+                });
+            }
+        }
         config
-            .scene_file(&self.scene)
             .float(if self.f32 { Float::F32 } else { Float::F64 })
             .division(if self.exact_division {
                 Division::Exact
@@ -161,7 +218,12 @@ fn run(cli: Cli) -> Result<(), CliError> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let scene = match &cli.command {
-        Command::Emit { common, .. } | Command::Stats { common, .. } => common.scene.clone(),
+        Command::Emit { common, .. } | Command::Stats { common, .. } => common
+            .source
+            .scene
+            .clone()
+            .or_else(|| common.source.model.clone())
+            .unwrap_or_default(),
     };
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
@@ -169,9 +231,10 @@ fn main() -> ExitCode {
             // Validation errors name the field; say which file it is in.
             let located = matches!(
                 e,
-                CliError::Gen(Error::Scene(
-                    SceneError::Read { .. } | SceneError::Syntax { .. }
-                ))
+                CliError::Gen(
+                    Error::Scene(SceneError::Read { .. } | SceneError::Syntax { .. })
+                        | Error::Model(_)
+                )
             );
             if located {
                 eprintln!("walker-gen: error: {e}");

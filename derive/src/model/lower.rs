@@ -59,9 +59,7 @@ impl ModelSymbols {
                     BinOp::Add => a + &b,
                     BinOp::Sub => a - &b,
                     BinOp::Mul => &a * &b,
-                    BinOp::Div => a
-                        .div(&b)
-                        .map_err(|_| at(top, e.span, "division by zero"))?,
+                    BinOp::Div => a.div(&b).map_err(|_| at(top, e.span, "division by zero"))?,
                 }
             }
             ExprKind::Pow(a, n) => {
@@ -83,10 +81,7 @@ impl ModelSymbols {
     /// `sin` and `cos` of an angle combination, by the addition formulas: each angle symbol's
     /// coefficient times its base-angle divisor must be an integer.
     fn sin_cos(&self, top: &ModelExpr, arg: &Expr) -> Result<(RatFunc, RatFunc)> {
-        let is_angle = |name: &str| {
-            self.get(name)
-                .is_ok_and(|s| s.base_angle().is_some())
-        };
+        let is_angle = |name: &str| self.get(name).is_ok_and(|s| s.base_angle().is_some());
         let combo = walker_scene::model::angles::angle_combination(arg, &is_angle)
             .map_err(|err| at(top, err.span(), err))?;
         let mut terms = Vec::with_capacity(combo.len());
@@ -103,9 +98,10 @@ impl ModelSymbols {
                     format!("`{name}` appears as a fraction of its base angle `{name}/{k}`"),
                 ));
             }
-            let n: i64 = n.to_integer().try_into().map_err(|_| {
-                at(top, arg.span, "an angle multiple too large")
-            })?;
+            let n: i64 = n
+                .to_integer()
+                .try_into()
+                .map_err(|_| at(top, arg.span, "an angle multiple too large"))?;
             terms.push((base, n));
         }
         let (s, c) = sin_cos_combination(&terms);

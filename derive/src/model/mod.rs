@@ -5,16 +5,19 @@
 //! `lower` (expressions into rational functions, `sin`/`cos` by the addition formulas over the
 //! model's base angles) know the model file's types; `mechanics` (energies, `M`, `h`, `S`,
 //! points, the stance contact) uses them; `phases` (sliding and stuck stance, output control,
-//! impact maps) uses `mechanics`.
+//! impact maps) uses `mechanics`; `kernels` (the named kernels the code generator reads) uses
+//! `phases`.
 
+mod kernels;
 mod lower;
 mod mechanics;
 mod phases;
 mod table;
 
+pub use kernels::ModelDerivation;
 pub use mechanics::{FloorGeometry, Mechanics, time_derivative};
 pub use phases::{
-    ImpactMap, OutputControl, Sliding, StrikeImpacts, Stuck, impact_map, output_control,
-    sliding, strike_impacts, stuck,
+    ImpactMap, OutputControl, Sliding, StrikeImpacts, Stuck, impact_map, output_control, sliding,
+    strike_impacts, stuck,
 };
 pub use table::ModelSymbols;

@@ -121,10 +121,7 @@ pub struct Stuck {
 pub fn stuck(m: &Mechanics) -> Result<Stuck> {
     let n = m.syms.q.len();
     let (x, z) = (RatFunc::sym(m.syms.q[0]), RatFunc::sym(m.syms.q[1]));
-    let jacobian = Matrix::jacobian(
-        &[m.floor.tangent(&x, &z), m.floor.gap(&x, &z)],
-        &m.syms.q,
-    );
+    let jacobian = Matrix::jacobian(&[m.floor.tangent(&x, &z), m.floor.gap(&x, &z)], &m.syms.q);
     let j_minv = jacobian.mul(&m.mass_inv)?;
     let schur_inv = j_minv
         .mul(&jacobian.transpose())?

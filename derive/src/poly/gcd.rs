@@ -163,12 +163,16 @@ fn content_in(p: &Poly, slot: usize) -> Poly {
     gcd_list(&p.coeffs_in(slot))
 }
 
-/// Pseudo-remainder of `a` by `b` as polynomials in `slot`.
-fn prem(a: &Poly, b: &Poly, slot: usize) -> Poly {
+/// Pseudo-remainder of `a` by `b` as polynomials in `slot`; `None` when the sequence outgrows
+/// its budget ([`MAX_PRS_EXPONENT`]).
+fn prem(a: &Poly, b: &Poly, slot: usize) -> Option<Poly> {
     let db = b.degree_in(slot);
     let lb = b.lc_in(slot);
     let mut r = a.clone();
     while !r.is_zero() && r.degree_in(slot) >= db {
+        if !within_budget(&r) || !within_budget(&lb) {
+            return None;
+        }
         let dr = r.degree_in(slot);
         let lr = r.lc_in(slot);
         let shift = Mono::power(slot, dr - db);
@@ -176,7 +180,22 @@ fn prem(a: &Poly, b: &Poly, slot: usize) -> Poly {
             .mul_raw(&r)
             .sub(&lr.mul_raw(&b.mul_term(&shift, &Q::one())));
     }
-    r
+    Some(r)
+}
+
+/// The largest exponent a remainder sequence may reach ([`MAX_PRS_TERMS`] terms): beyond it the
+/// sequence is abandoned and only the common content cancels (a common divisor, if not the
+/// greatest), so that a large model's gcd never overflows an exponent or runs away.
+const MAX_PRS_EXPONENT: u8 = 64;
+
+/// See [`MAX_PRS_EXPONENT`].
+const MAX_PRS_TERMS: usize = 20_000;
+
+fn within_budget(p: &Poly) -> bool {
+    p.len() <= MAX_PRS_TERMS
+        && p.terms()
+            .iter()
+            .all(|(m, _)| m.factors().all(|(_, e)| e <= MAX_PRS_EXPONENT))
 }
 
 fn gcd(a: &Poly, b: &Poly) -> Poly {
@@ -242,7 +261,10 @@ fn gcd(a: &Poly, b: &Poly) -> Poly {
         (pb, pa)
     };
     while !y.is_zero() {
-        let r = prem(&x, &y, slot);
+        let Some(r) = prem(&x, &y, slot) else {
+            // The sequence outgrew its budget: cancel the common content only.
+            return normalize(&c);
+        };
         x = y;
         y = if r.is_zero() {
             r
