@@ -25,8 +25,10 @@ fn num(v: &Value) -> f64 {
 
 fn check(model_name: &str) -> usize {
     let root = env!("CARGO_MANIFEST_DIR");
-    let model = Model::from_file(std::path::Path::new(&format!("{root}/../models/{model_name}.toml")))
-        .expect("shipped model loads");
+    let model = Model::from_file(std::path::Path::new(&format!(
+        "{root}/../models/{model_name}.toml"
+    )))
+    .expect("shipped model loads");
     let text = std::fs::read_to_string(format!("{root}/../tests/data/models/{model_name}.json"))
         .expect("reference data");
     let data: Value = serde_json::from_str(&text).expect("json");
