@@ -152,9 +152,9 @@ impl Mechanics {
         )
         .unwrap_or_else(|_| Matrix::zeros(n, 0));
         let mut input_force = Matrix::zeros(n, 1);
-        for (k, u) in syms.inputs.iter().enumerate() {
-            for i in 0..n {
-                let f = &columns[k][i] * &RatFunc::sym(*u);
+        for (column, u) in columns.iter().zip(&syms.inputs) {
+            for (i, force) in column.iter().enumerate() {
+                let f = force * &RatFunc::sym(*u);
                 input_force.set(i, 0, input_force.get(i, 0) + &f);
             }
         }
