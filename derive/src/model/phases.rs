@@ -108,38 +108,51 @@ pub struct Stuck {
     pub jacobian: Matrix,
     /// `[lambda_t, lambda_n]`, a column.
     pub forces: Matrix,
-    /// `qdd`, a column.
+    /// `qdd`, a column (`xdd = zdd = 0`).
     pub accel: Matrix,
-    /// `Y_s = I - J_s^T (J_s M^-1 J_s^T)^-1 J_s M^-1`.
-    pub projection: Matrix,
 }
 
-/// Derives the stuck stance.
+/// Derives the stuck stance by blocks: the foot coordinates `x`, `z` are held, so the other
+/// coordinates obey their own block, `M_aa qdd_a = (S u - h)_a`, and the foot's rows give the
+/// force the floor exerts, `J_f^T lambda = M_fa qdd_a - (S u - h)_f`, where `J_f` (the foot block
+/// of `J_s`, the unit tangent and normal of the floor) is orthogonal, so `lambda = J_f (...)`.
+/// The same as `M qdd + h = S u + J_s^T lambda`, `J_s qdd = 0` solved through `M^-1`, without
+/// the full inverse (whose products are what makes larger models slow).
 ///
 /// # Errors
-/// An arithmetic error.
+/// An arithmetic error, or `M_aa` singular.
 pub fn stuck(m: &Mechanics) -> Result<Stuck> {
     let n = m.syms.q.len();
     let (x, z) = (RatFunc::sym(m.syms.q[0]), RatFunc::sym(m.syms.q[1]));
     let jacobian = Matrix::jacobian(&[m.floor.tangent(&x, &z), m.floor.gap(&x, &z)], &m.syms.q);
-    let j_minv = jacobian.mul(&m.mass_inv)?;
-    let schur_inv = j_minv
-        .mul(&jacobian.transpose())?
-        .inverse("J_s M^-1 J_s^T")?;
-    let su_minus_h = m.input_force.sub(&m.bias)?;
-    let forces = schur_inv
-        .mul(&j_minv.mul(&su_minus_h)?)?
-        .scale(&RatFunc::int(-1));
-    let accel = m
-        .mass_inv
-        .mul(&su_minus_h.add(&jacobian.transpose().mul(&forces)?)?)?;
-    let projection =
-        Matrix::identity(n).sub(&jacobian.transpose().mul(&schur_inv)?.mul(&j_minv)?)?;
+    let rhs = m.input_force.sub(&m.bias)?;
+    let block = |rows: std::ops::Range<usize>, cols: std::ops::Range<usize>| {
+        Matrix::from_rows(
+            rows.map(|i| cols.clone().map(|j| m.mass.get(i, j).clone()).collect())
+                .collect(),
+        )
+    };
+    let m_aa = block(2..n, 2..n)?;
+    let m_fa = block(0..2, 2..n)?;
+    let rhs_a = Matrix::column((2..n).map(|i| rhs.get(i, 0).clone()).collect());
+    let rhs_f = Matrix::column((0..2).map(|i| rhs.get(i, 0).clone()).collect());
+    let qdd_a = m_aa.inverse("M_aa")?.mul(&rhs_a)?;
+    let j_f = Matrix::from_rows(
+        (0..2)
+            .map(|i| (0..2).map(|j| jacobian.get(i, j).clone()).collect())
+            .collect(),
+    )?;
+    let forces = j_f.mul(&m_fa.mul(&qdd_a)?.sub(&rhs_f)?)?;
+    let accel = Matrix::column(
+        [RatFunc::zero(), RatFunc::zero()]
+            .into_iter()
+            .chain(qdd_a.entries().iter().cloned())
+            .collect(),
+    );
     Ok(Stuck {
         jacobian,
         forces,
         accel,
-        projection,
     })
 }
 
