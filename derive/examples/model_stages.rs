@@ -10,7 +10,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let model = Model::from_file(std::path::Path::new(&file))?;
     let t = Instant::now();
     let m = Mechanics::new(&model)?;
-    println!("mechanics {:.3} s", t.elapsed().as_secs_f64());
+    println!(
+        "mechanics {:.3} s ({} terms in M^-1)",
+        t.elapsed().as_secs_f64(),
+        m.mass_inv
+            .entries()
+            .iter()
+            .map(|r| r.num().len() + r.den().len())
+            .sum::<usize>()
+    );
     let t = Instant::now();
     let st = stuck(&m)?;
     println!(

@@ -40,6 +40,19 @@ pub enum Error {
         /// The name asked for.
         name: String,
     },
+    /// A closed form too large to serve: the model needs a structured solve instead.
+    #[error(
+        "{what} has {terms} terms in closed form (at most {limit} are served): this model's \
+         stance and impact kernels need the structured solve, which this version does not generate"
+    )]
+    TooLarge {
+        /// The expression.
+        what: String,
+        /// Its size (terms of numerators and denominators).
+        terms: usize,
+        /// The limit.
+        limit: usize,
+    },
     /// A symbolic check of the model failed (a derivation bug, reported rather than panicking).
     #[error("check failed: {what}")]
     CheckFailed {

@@ -16,6 +16,13 @@ use crate::matrix::Matrix;
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, Sym, SymKind, Symbols};
 
+/// The largest closed-form `M^-1` (terms of its numerators and denominators) whose products the
+/// stance and impact kernels are derived from: the paper's walkers have 34 and the rimless wheel
+/// 21 (each model derived in under 0.05 s); the compass gait's 234 already take minutes in the
+/// products and gcds that follow (BENCHMARKS.md, section 5b). Larger models are refused with
+/// [`Error::TooLarge`] until the structured solve exists.
+pub const MAX_INVERSE_TERMS: usize = 100;
+
 /// A model's derivation: its mechanics and its kernels.
 #[derive(Clone, Debug)]
 pub struct ModelDerivation {
@@ -89,6 +96,19 @@ impl ModelDerivation {
     /// does not take.
     pub fn new(model: &Model) -> Result<ModelDerivation> {
         let m = Mechanics::new(model)?;
+        let size: usize = m
+            .mass_inv
+            .entries()
+            .iter()
+            .map(|r| r.num().len() + r.den().len())
+            .sum();
+        if size > MAX_INVERSE_TERMS {
+            return Err(Error::TooLarge {
+                what: format!("model `{}`: M^-1", model.name),
+                terms: size,
+                limit: MAX_INVERSE_TERMS,
+            });
+        }
         let t = &m.syms.table;
         let n = m.syms.q.len();
         let slide = sliding(&m)?;

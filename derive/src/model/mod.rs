@@ -14,7 +14,7 @@ mod mechanics;
 mod phases;
 mod table;
 
-pub use kernels::ModelDerivation;
+pub use kernels::{MAX_INVERSE_TERMS, ModelDerivation};
 pub use mechanics::{FloorGeometry, Mechanics, time_derivative};
 pub use phases::{
     ImpactMap, OutputControl, Sliding, StrikeImpacts, Stuck, impact_map, output_control, sliding,
