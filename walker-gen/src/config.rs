@@ -277,7 +277,9 @@ impl Config {
     /// # Errors
     /// As [`Config::render`], or no output file is known, or the file cannot be written.
     pub fn generate(&self) -> Result<GenerateReport, Error> {
-        self.single()?;
+        if self.model.is_none() {
+            self.single()?;
+        }
         self.generate_all()?.pop().ok_or(Error::NoScene)
     }
 
