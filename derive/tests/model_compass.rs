@@ -42,3 +42,20 @@ fn compass_gait_inertia_matrix_is_goswamis() {
     let total = &(&m + &m) + &mh;
     assert!(*mech.mass.get(0, 0) == total && *mech.mass.get(1, 1) == total);
 }
+
+#[test]
+fn a_huge_power_is_an_error_naming_its_place_not_a_panic() {
+    let path = format!(
+        "{}/../models/rimless-wheel.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).expect("shipped model");
+    let text = text.replacen("mass = \"m\"", "mass = \"m^300\"", 1);
+    assert!(text.contains("m^300"), "the mutation applies");
+    let model = Model::from_toml(&text, "huge-power.toml").expect("the loader accepts powers");
+    let err = Mechanics::new(&model).expect_err("refused").to_string();
+    assert!(
+        err.contains("huge-power.toml:") && err.contains("exponent 300"),
+        "{err}"
+    );
+}

@@ -12,6 +12,9 @@ use crate::poly::Q;
 use crate::ratfunc::RatFunc;
 use crate::trig::sin_cos_combination;
 
+/// The largest power a model expression may take (`x^8`, `(a + b)^-2`).
+const MAX_EXPONENT: i32 = 8;
+
 /// An exact number of the model as a rational.
 fn number(n: &Number) -> Result<Q> {
     let mantissa: BigInt = n.mantissa().parse().map_err(|_| Error::CheckFailed {
@@ -27,15 +30,20 @@ fn number(n: &Number) -> Result<Q> {
     })
 }
 
-/// The error of an expression at its place in the model file.
-fn at(e: &ModelExpr, span: walker_scene::model::Span, what: impl std::fmt::Display) -> Error {
-    let l = e.location_of(span);
-    Error::CheckFailed {
-        what: format!("{l}: {what}"),
-    }
-}
-
 impl ModelSymbols {
+    /// The error of an expression at its place in the model file: `file:line:col: what`.
+    fn at(
+        &self,
+        e: &ModelExpr,
+        span: walker_scene::model::Span,
+        what: impl std::fmt::Display,
+    ) -> Error {
+        let l = e.location_of(span);
+        Error::CheckFailed {
+            what: format!("{}:{l}: {what}", self.path),
+        }
+    }
+
     /// The canonical form of a model expression.
     ///
     /// # Errors
@@ -50,7 +58,7 @@ impl ModelSymbols {
             ExprKind::Number(n) => RatFunc::constant(number(n)?),
             ExprKind::Symbol(name) => RatFunc::sym(
                 self.get(name)
-                    .map_err(|_| at(top, e.span, format!("unknown symbol `{name}`")))?,
+                    .map_err(|_| self.at(top, e.span, format!("unknown symbol `{name}`")))?,
             ),
             ExprKind::Neg(a) => -self.lower_node(top, a)?,
             ExprKind::Binary(op, a, b) => {
@@ -59,14 +67,27 @@ impl ModelSymbols {
                     BinOp::Add => a + &b,
                     BinOp::Sub => a - &b,
                     BinOp::Mul => &a * &b,
-                    BinOp::Div => a.div(&b).map_err(|_| at(top, e.span, "division by zero"))?,
+                    BinOp::Div => a
+                        .div(&b)
+                        .map_err(|_| self.at(top, e.span, "division by zero"))?,
                 }
             }
             ExprKind::Pow(a, n) => {
                 let a = self.lower_node(top, a)?;
-                let k = i32::try_from(*n).map_err(|_| at(top, e.span, "exponent too large"))?;
+                // Exponents of the canonical form are bytes, and the derivation multiplies them
+                // further: a model's own powers stay small.
+                let k = i32::try_from(*n)
+                    .ok()
+                    .filter(|k| k.abs() <= MAX_EXPONENT)
+                    .ok_or_else(|| {
+                        self.at(
+                            top,
+                            e.span,
+                            format!("exponent {n} is outside -{MAX_EXPONENT}..={MAX_EXPONENT}"),
+                        )
+                    })?;
                 a.powi(k)
-                    .map_err(|_| at(top, e.span, "a negative power of zero"))?
+                    .map_err(|_| self.at(top, e.span, "a negative power of zero"))?
             }
             ExprKind::Call(f, arg) => {
                 let (s, c) = self.sin_cos(top, arg)?;
@@ -83,16 +104,16 @@ impl ModelSymbols {
     fn sin_cos(&self, top: &ModelExpr, arg: &Expr) -> Result<(RatFunc, RatFunc)> {
         let is_angle = |name: &str| self.get(name).is_ok_and(|s| s.base_angle().is_some());
         let combo = walker_scene::model::angles::angle_combination(arg, &is_angle)
-            .map_err(|err| at(top, err.span(), err))?;
+            .map_err(|err| self.at(top, err.span(), err))?;
         let mut terms = Vec::with_capacity(combo.len());
         for (name, coef) in combo {
             let s = self.get(&name)?;
             let Some((base, k)) = s.base_angle() else {
-                return Err(at(top, arg.span, format!("`{name}` is not an angle")));
+                return Err(self.at(top, arg.span, format!("`{name}` is not an angle")));
             };
             let n = Q::new(coef.numer().into(), coef.denom().into()) * Q::from_integer(k.into());
             if !n.is_integer() {
-                return Err(at(
+                return Err(self.at(
                     top,
                     arg.span,
                     format!("`{name}` appears as a fraction of its base angle `{name}/{k}`"),
@@ -101,7 +122,7 @@ impl ModelSymbols {
             let n: i64 = n
                 .to_integer()
                 .try_into()
-                .map_err(|_| at(top, arg.span, "an angle multiple too large"))?;
+                .map_err(|_| self.at(top, arg.span, "an angle multiple too large"))?;
             terms.push((base, n));
         }
         let (s, c) = sin_cos_combination(&terms);

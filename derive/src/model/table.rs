@@ -10,6 +10,8 @@ use crate::symbol::{Sym, SymKind, Symbols};
 /// The engine's table of a model, and the symbol of each of the model's symbols by index.
 #[derive(Clone, Debug)]
 pub struct ModelSymbols {
+    /// The model file's path, for errors that name file, line and column.
+    pub path: String,
     /// The table.
     pub table: Symbols,
     /// The generalized coordinates `q`.
@@ -92,6 +94,7 @@ impl ModelSymbols {
             what: format!("the model's symbols have no `{what}`"),
         };
         Ok(ModelSymbols {
+            path: model.path.clone(),
             table,
             q,
             qd,
