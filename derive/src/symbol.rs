@@ -553,7 +553,7 @@ pub struct Point<T> {
 
 impl<T: Clone + num_traits::Zero> Point<T> {
     /// Every atom of `symbols` at zero (so every cosine too: set the angles with
-    /// [`Point::set_angle`] or by slot).
+    /// [`Point::set_sym`] or by slot).
     pub fn zeros(symbols: &Symbols) -> Point<T> {
         Point {
             trig: vec![T::zero(); 2 * symbols.angles().len()],

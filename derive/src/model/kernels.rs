@@ -152,7 +152,6 @@ impl ModelDerivation {
         ];
         if !model.outputs.is_empty() {
             let c = output_control(&m, model, &slide.projection)?;
-            let k = model.outputs.len();
             let mut parts = named("A", &c.a);
             parts.extend(named("B", &c.b));
             kernels.push(kernel(
@@ -197,7 +196,6 @@ impl ModelDerivation {
                 outputs: staged_out,
             });
             kernels.push(closed_loop);
-            debug_assert_eq!(k, m.syms.inputs.len());
         }
         let st = stuck(&m)?;
         let mut stick = named("qdd", &st.accel);
