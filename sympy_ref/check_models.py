@@ -131,8 +131,8 @@ def check_goswami():
 # start postures (both feet on the floor, just after the relabelling), velocities zero
 START = {
     "three-link": lambda P: {"th_st": -P["beta"], "th_sw": P["beta"], "th_t": P["th_T"]},
-    "five-link": lambda P: {"th_t1": -P["beta"], "th_f1": -P["beta"], "th_T": P["th_ref"],
-                            "th_f2": P["beta"], "th_t2": P["beta"]},
+    "five-link": lambda P: {"th_s1": -P["beta"], "th_f1": -P["beta"], "th_torso": P["th_ref"],
+                            "th_f2": P["beta"], "th_s2": P["beta"]},
 }
 
 

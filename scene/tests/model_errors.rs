@@ -163,6 +163,18 @@ fn a_name_declared_twice_is_an_error_at_the_second() {
 }
 
 #[test]
+fn parameters_that_differ_only_in_case_are_an_error() {
+    // `M` and `m` would both be the field `m` of the generated `Params`.
+    let r = load_with(MINI, "name = \"g\"", "name = \"M\"");
+    assert_error(
+        r,
+        ModelErrorKind::Duplicate,
+        "30:8",
+        "would both be the field `m`",
+    );
+}
+
+#[test]
 fn two_points_of_one_name_are_an_error() {
     let r = load_with(
         MINI,

@@ -175,6 +175,22 @@ impl Loader<'_> {
                 format!("`{name}` is not a name: expected an ASCII letter followed by letters, digits or `_`"),
             ));
         }
+        let argument = matches!(
+            kind,
+            SymbolKind::Coordinate | SymbolKind::Input | SymbolKind::Aux
+        );
+        if argument && name.chars().any(|c| c.is_ascii_uppercase()) {
+            return Err(self.error(
+                s.span(),
+                ModelErrorKind::BadName,
+                format!(
+                    "`{name}`: {} is an argument of the generated functions, so its name is \
+                     lower case (`{}`)",
+                    kind.describe(),
+                    name.to_ascii_lowercase()
+                ),
+            ));
+        }
         if RESERVED.contains(&name.as_str()) {
             return Err(self.error(
                 s.span(),
@@ -211,6 +227,25 @@ impl Loader<'_> {
                 ),
             };
             return Err(self.error(s.span(), kind, message));
+        }
+        if kind == SymbolKind::Parameter {
+            let field = name.to_ascii_lowercase();
+            if let Some(other) =
+                self.symbols.symbols.iter().find(|o| {
+                    o.kind == SymbolKind::Parameter && o.name.to_ascii_lowercase() == field
+                })
+            {
+                return Err(self.error(
+                    s.span(),
+                    ModelErrorKind::Duplicate,
+                    format!(
+                        "parameters `{}` and `{name}` would both be the field `{field}` of the \
+                         generated `Params` (a field is its parameter's name in lowercase): \
+                         rename one",
+                        other.name
+                    ),
+                ));
+            }
         }
         self.symbols.push(name, kind, index, angle);
         Ok(())
