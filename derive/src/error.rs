@@ -40,10 +40,10 @@ pub enum Error {
         /// The name asked for.
         name: String,
     },
-    /// A closed form too large to serve: the model needs a structured solve instead.
+    /// A closed form too large to serve (the model's kernels are structured solves instead).
     #[error(
-        "{what} has {terms} terms in closed form (at most {limit} are served): this model's \
-         stance and impact kernels need the structured solve, which this version does not generate"
+        "{what} is too large in closed form ({terms}, at most {limit}): this model's stance \
+         and impact kernels are structured solves"
     )]
     TooLarge {
         /// The expression.

@@ -135,6 +135,10 @@ pub enum SymKind {
     Parameter,
     /// An input that changes along the motion but is not a state (`u`, `mu`, `t`).
     Input,
+    /// An intermediate of a structured solve: a name for one value computed inside a kernel
+    /// (an entry of `M`, a pivot of its factorisation, a component of a solution), bound by the
+    /// kernel's program before it is used.
+    Local,
 }
 
 /// What an atom slot holds.

@@ -178,6 +178,8 @@ impl Derivation {
                 outputs: named("M", &dynamics.mass),
                 shape: Shape::Matrix(4, 4),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "bias",
@@ -187,6 +189,8 @@ impl Derivation {
                 outputs: named("h", &dynamics.bias),
                 shape: Shape::Vector(4),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "lambda_level",
@@ -196,6 +200,8 @@ impl Derivation {
                 outputs: vec![("lambda".into(), level.lambda.clone())],
                 shape: Shape::Scalar,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "projection_level",
@@ -205,6 +211,8 @@ impl Derivation {
                 outputs: named("Y", &level.projection),
                 shape: Shape::Matrix(4, 4),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "control_level",
@@ -217,6 +225,8 @@ impl Derivation {
                 ],
                 shape: Shape::Vector(2),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "accel_level",
@@ -226,6 +236,8 @@ impl Derivation {
                 outputs: named("qdd", &level.accel),
                 shape: Shape::Vector(4),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "lambda_slope",
@@ -240,6 +252,8 @@ impl Derivation {
                 )],
                 shape: Shape::Scalar,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "accel_slope",
@@ -249,6 +263,8 @@ impl Derivation {
                 outputs: named("qdd", &substitute_u_zero(&slope.accel)?),
                 shape: Shape::Vector(4),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "impact3_level",
@@ -258,6 +274,8 @@ impl Derivation {
                 outputs: impact_outputs(&impact3, impact3.impulse.clone()),
                 shape: Shape::Parts,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "impact2_level",
@@ -267,6 +285,8 @@ impl Derivation {
                 outputs: impact_outputs(&impact2, impact2.impulse.clone()),
                 shape: Shape::Parts,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "impact_slope",
@@ -276,6 +296,8 @@ impl Derivation {
                 outputs: impact_outputs(&impact_slope, vertical(&impact_slope)),
                 shape: Shape::Parts,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "impact2_slope",
@@ -285,6 +307,8 @@ impl Derivation {
                 outputs: impact_outputs(&impact2_slope, vertical(&impact2_slope)),
                 shape: Shape::Parts,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "closed_loop_level",
@@ -295,6 +319,8 @@ impl Derivation {
                 shape: Shape::Parts,
                 // u once (Eq. 31), then Eq. 27 with that u: sin_cos, mu and the denominators
                 // of A, B and qdd are shared instead of multiplied together.
+                solve: None,
+                closed: true,
                 staged: Some(Staged {
                     locals: vec![(Sym::U, u_closed.clone())],
                     outputs: level
@@ -314,6 +340,8 @@ impl Derivation {
                 outputs: named("J", &closed_jac),
                 shape: Shape::Matrix(4, 4),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "accel_slope_jacobian",
@@ -323,6 +351,8 @@ impl Derivation {
                 outputs: named("J", &slope_jac),
                 shape: Shape::Matrix(4, 3),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "impact2_level_jacobian",
@@ -332,6 +362,8 @@ impl Derivation {
                 outputs: named("J", &impact2_jac),
                 shape: Shape::Matrix(4, 5),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "impact_slope_jacobian",
@@ -341,6 +373,8 @@ impl Derivation {
                 outputs: named("J", &impact_slope_jac),
                 shape: Shape::Matrix(4, 5),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "stick_level",
@@ -350,6 +384,8 @@ impl Derivation {
                 outputs: level_stick_outputs,
                 shape: Shape::Parts,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "closed_loop_stick_level",
@@ -359,6 +395,8 @@ impl Derivation {
                 outputs: closed_stick_outputs,
                 shape: Shape::Parts,
                 // u once (Eqs. 30-31 with Y_s), then stick_level with that u.
+                solve: None,
+                closed: true,
                 staged: Some(Staged {
                     locals: vec![(Sym::U, u_stick.clone())],
                     outputs: stick_level
@@ -379,6 +417,8 @@ impl Derivation {
                 outputs: slope_stick_outputs,
                 shape: Shape::Parts,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "impact_coulomb_level",
@@ -388,6 +428,8 @@ impl Derivation {
                 outputs: coulomb_outputs(&coulomb_level),
                 shape: Shape::Parts,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "impact_coulomb_slope",
@@ -397,6 +439,8 @@ impl Derivation {
                 outputs: coulomb_outputs(&coulomb_slope),
                 shape: Shape::Parts,
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "fore_foot",
@@ -411,6 +455,8 @@ impl Derivation {
                 ],
                 shape: Shape::Vector(4),
                 staged: None,
+                solve: None,
+                closed: true,
             },
             Kernel {
                 name: "energy",
@@ -423,6 +469,8 @@ impl Derivation {
                 ],
                 shape: Shape::Vector(2),
                 staged: None,
+                solve: None,
+                closed: true,
             },
         ];
         for k in &kernels {

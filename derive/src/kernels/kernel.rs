@@ -5,7 +5,7 @@ use std::collections::BTreeSet;
 
 use crate::error::{Error, Result};
 use crate::ratfunc::RatFunc;
-use crate::symbol::{Atom, Sym, SymKind, Symbols};
+use crate::symbol::{Atom, Point, Sym, SymKind, Symbols};
 
 /// The shape of a kernel's output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -31,13 +31,23 @@ pub struct Kernel {
     pub equation: &'static str,
     /// State and input arguments, in order.
     pub args: Vec<Sym>,
-    /// Output names and their canonical expressions.
+    /// Output names and their canonical expressions: closed forms in the arguments and the
+    /// parameters, or, when `closed` is false, the outputs of `solve` (expressions in its
+    /// locals).
     pub outputs: Vec<(String, RatFunc)>,
     /// Output shape.
     pub shape: Shape,
     /// An equivalent, cheaper way to evaluate the outputs, if the derivation knows one (see
     /// [`Staged`]); `outputs` stays the definition.
     pub staged: Option<Staged>,
+    /// A structured solve of the same outputs: `M`, `h` and the constraint Jacobians bound to
+    /// locals ([`SymKind::Local`]), an unrolled factorisation and its substitutions
+    /// (`crate::model::Program`). The code generator evaluates whichever of the closed form and
+    /// the solve takes fewer operations.
+    pub solve: Option<Staged>,
+    /// Whether `outputs` are closed forms; false for a kernel that only has its structured
+    /// solve (a model whose closed forms are too large to derive).
+    pub closed: bool,
 }
 
 /// A kernel's outputs evaluated in stages: first the `locals` in order, each a symbol bound to
@@ -57,11 +67,11 @@ pub struct Staged {
 }
 
 impl Kernel {
-    /// The parameters the outputs contain (`symbols`: the table of the derivation), in symbol
-    /// order.
+    /// The parameters the kernel's forms contain (`symbols`: the table of the derivation), in
+    /// symbol order.
     pub fn params(&self, symbols: &Symbols) -> Vec<Sym> {
         let mut set = BTreeSet::new();
-        for (_, r) in &self.outputs {
+        for r in self.expressions() {
             for p in [r.num(), r.den()] {
                 for slot in p.slots() {
                     if let Some(s) = symbols.symbol_of_slot(slot)
@@ -111,22 +121,62 @@ impl Kernel {
         Ok(())
     }
 
-    /// Every symbol the outputs depend on, that is not an argument or a parameter (must be
-    /// empty for a well-formed kernel; `symbols`: the table of the derivation).
+    /// Every symbol the kernel's forms depend on that is not an argument, a parameter or a
+    /// local bound by a staged form or the structured solve (must be empty for a well-formed
+    /// kernel; `symbols`: the table of the derivation).
     pub fn free_symbols(&self, symbols: &Symbols) -> Vec<Sym> {
+        let bound: BTreeSet<Sym> = [&self.staged, &self.solve]
+            .into_iter()
+            .flatten()
+            .flat_map(|st| st.locals.iter().map(|(s, _)| *s))
+            .collect();
         let mut set = BTreeSet::new();
-        for (_, r) in &self.outputs {
+        for r in self.expressions() {
             for p in [r.num(), r.den()] {
                 for slot in p.slots() {
                     let Some(s) = symbols.symbol_of_slot(slot) else {
                         continue;
                     };
-                    if symbols.kind(s) != SymKind::Parameter && !self.args.contains(&s) {
+                    if symbols.kind(s) != SymKind::Parameter
+                        && !bound.contains(&s)
+                        && !self.args.contains(&s)
+                    {
                         set.insert(s);
                     }
                 }
             }
         }
         set.into_iter().collect()
+    }
+
+    /// Every expression the kernel evaluates in some form: its outputs, and the locals and
+    /// outputs of its staged form and of its structured solve.
+    pub fn expressions(&self) -> impl Iterator<Item = &RatFunc> {
+        let forms = [&self.staged, &self.solve];
+        self.outputs.iter().map(|(_, r)| r).chain(
+            forms
+                .into_iter()
+                .flatten()
+                .flat_map(|st| st.locals.iter().map(|(_, r)| r).chain(&st.outputs)),
+        )
+    }
+
+    /// The outputs' closed forms evaluated at `point` (the arguments and parameters), or
+    /// `None` for a kernel without closed forms.
+    pub fn eval_closed(&self, point: &Point<f64>) -> Option<Vec<f64>> {
+        self.closed
+            .then(|| self.outputs.iter().map(|(_, r)| r.eval(point)).collect())
+    }
+
+    /// The outputs evaluated at `point` by the structured solve (its locals computed in order),
+    /// or `None` for a kernel without one.
+    pub fn eval_solve(&self, point: &Point<f64>) -> Option<Vec<f64>> {
+        let solve = self.solve.as_ref()?;
+        let mut p = point.clone();
+        for (s, value) in &solve.locals {
+            let v = value.eval(&p);
+            p.set(s.slot(), v);
+        }
+        Some(solve.outputs.iter().map(|r| r.eval(&p)).collect())
     }
 }

@@ -1,26 +1,29 @@
 //! A model's named kernels: what the code generator turns into Rust for any model file. The
 //! names are the model-independent ones of `docs/model-format.md` (`mass_matrix`, `bias`,
-//! `lambda`, `accel`, `control`, `closed_loop`, `stick`, `impact`, `impact_double`, `points`,
-//! `energy`); a kernel's arguments are the non-parameter symbols its outputs contain, in the
+//! `lambda`, `accel`, `control`, `closed_loop`, `stick`, `impact`, `impact_double`,
+//! `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `points`, `energy`); a kernel's
+//! arguments are the non-parameter symbols its outputs contain, in the
 //! table's order (coordinates, velocities, inputs, `mu`, auxiliary inputs, `t`), and the impact
 //! kernels take every velocity.
 
 use walker_scene::model::Model;
 
-use super::mechanics::Mechanics;
-use super::phases::{output_control, sliding, strike_impacts, stuck};
+use super::assemble::{args_of, kernel, named, names, solve_only, with_solve};
+use super::maps::map_kernels;
+use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
+use super::phases::{output_control, sliding, strike_impacts, strike_rows, stuck};
+use super::structured::structured_kernels;
 use super::table::ModelSymbols;
 use crate::error::{Error, Result};
 use crate::kernels::{Kernel, Shape, Staged};
-use crate::matrix::Matrix;
 use crate::ratfunc::RatFunc;
-use crate::symbol::{Atom, Sym, SymKind, Symbols};
+use crate::symbol::{Atom, Symbols};
 
 /// The largest closed-form `M^-1` (terms of its numerators and denominators) whose products the
 /// stance and impact kernels are derived from: the paper's walkers have 34 and the rimless wheel
 /// 21 (each model derived in under 0.05 s); the compass gait's 234 already take minutes in the
-/// products and gcds that follow (BENCHMARKS.md, section 5b). Larger models are refused with
-/// [`Error::TooLarge`] until the structured solve exists.
+/// products and gcds that follow (BENCHMARKS.md, section 5b). A model with a larger inverse gets
+/// its stance and impact kernels as structured solves only.
 pub const MAX_INVERSE_TERMS: usize = 100;
 
 /// A model's derivation: its mechanics and its kernels.
@@ -34,84 +37,34 @@ pub struct ModelDerivation {
     pub kernels: Vec<Kernel>,
 }
 
-fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
-    let c = m.cols();
-    m.entries()
-        .iter()
-        .enumerate()
-        .map(|(k, r)| {
-            let name = if m.rows() > 1 && c > 1 {
-                format!("{prefix}{}{}", k / c, k % c)
-            } else {
-                format!("{prefix}{k}")
-            };
-            (name, r.clone())
-        })
-        .collect()
-}
-
-/// The non-parameter symbols the outputs contain (plus `always`), in table order.
-fn args_of(symbols: &Symbols, outputs: &[(String, RatFunc)], always: &[Sym]) -> Vec<Sym> {
-    let mut used = std::collections::BTreeSet::new();
-    for (_, r) in outputs {
-        for p in [r.num(), r.den()] {
-            for slot in p.slots() {
-                if let Some(s) = symbols.symbol_of_slot(slot)
-                    && symbols.kind(s) != SymKind::Parameter
-                {
-                    used.insert(s);
-                }
-            }
-        }
-    }
-    used.extend(always.iter().copied());
-    used.into_iter().collect()
-}
-
-fn kernel(
-    symbols: &Symbols,
-    name: &'static str,
-    doc: &'static str,
-    equation: &'static str,
-    outputs: Vec<(String, RatFunc)>,
-    shape: Shape,
-    always: &[Sym],
-) -> Kernel {
-    Kernel {
-        name,
-        doc,
-        equation,
-        args: args_of(symbols, &outputs, always),
-        outputs,
-        shape,
-        staged: None,
-    }
+/// The size of the closed-form `M^-1` (terms of its numerators and denominators), if derived.
+fn inverse_terms(m: &Mechanics) -> Option<usize> {
+    m.mass_inv.as_ref().map(|inv| {
+        inv.entries()
+            .iter()
+            .map(|r| r.num().len() + r.den().len())
+            .sum()
+    })
 }
 
 impl ModelDerivation {
-    /// Derives every kernel of `model`.
+    /// Derives every kernel of `model`: the stance and impact kernels as closed forms where the
+    /// closed-form `M^-1` is small (at most [`MAX_INVERSE_TERMS`]), and as structured solves
+    /// always; the code generator evaluates the cheaper.
     ///
     /// # Errors
     /// As [`Mechanics::new`], the phases' derivations, or a kernel that depends on a symbol it
     /// does not take.
     pub fn new(model: &Model) -> Result<ModelDerivation> {
         let m = Mechanics::new(model)?;
-        let size: usize = m
-            .mass_inv
-            .entries()
-            .iter()
-            .map(|r| r.num().len() + r.den().len())
-            .sum();
-        if size > MAX_INVERSE_TERMS {
-            return Err(Error::TooLarge {
-                what: format!("model `{}`: M^-1", model.name),
-                terms: size,
-                limit: MAX_INVERSE_TERMS,
-            });
-        }
-        let t = &m.syms.table;
+        let closed = inverse_terms(&m).is_some_and(|terms| terms <= MAX_INVERSE_TERMS);
+        let mut table = m.syms.table.clone();
+        let solves = structured_kernels(&m, model, &mut table)?;
+        let t = &table;
         let n = m.syms.q.len();
-        let slide = sliding(&m)?;
+        let inputs = m.syms.inputs.len();
+        let outputs = model.outputs.len();
+        let finish = |k: Kernel, solve: Staged| with_solve(k, solve, closed, t);
         let mut kernels = vec![
             kernel(
                 t,
@@ -131,95 +84,207 @@ impl ModelDerivation {
                 Shape::Vector(n),
                 &[],
             ),
-            kernel(
-                t,
-                "lambda",
-                "Vertical ground reaction lambda of the sliding stance foot",
-                "Eqs. 22-23",
-                vec![("lambda".into(), slide.lambda.clone())],
-                Shape::Scalar,
-                &[],
-            ),
-            kernel(
-                t,
-                "accel",
-                "Accelerations qddot of the sliding stance",
-                "Eq. 27",
-                named("qdd", &slide.accel),
-                Shape::Vector(n),
-                &[],
-            ),
         ];
-        if !model.outputs.is_empty() {
-            let c = output_control(&m, model, &slide.projection)?;
-            let mut parts = named("A", &c.a);
-            parts.extend(named("B", &c.b));
-            kernels.push(kernel(
-                t,
-                "control",
+        let slide = if closed { Some(sliding(&m)?) } else { None };
+        let (lambda_doc, lambda_eq) = (
+            "Vertical ground reaction lambda of the sliding stance foot",
+            "Eqs. 22-23",
+        );
+        kernels.push(finish(
+            match &slide {
+                Some(s) => kernel(
+                    t,
+                    "lambda",
+                    lambda_doc,
+                    lambda_eq,
+                    vec![("lambda".into(), s.lambda.clone())],
+                    Shape::Scalar,
+                    &[],
+                ),
+                None => solve_only(
+                    "lambda",
+                    lambda_doc,
+                    lambda_eq,
+                    vec!["lambda".into()],
+                    Shape::Scalar,
+                ),
+            },
+            solves.lambda,
+        ));
+        let (accel_doc, accel_eq) = ("Accelerations qddot of the sliding stance", "Eq. 27");
+        kernels.push(finish(
+            match &slide {
+                Some(s) => kernel(
+                    t,
+                    "accel",
+                    accel_doc,
+                    accel_eq,
+                    named("qdd", &s.accel),
+                    Shape::Vector(n),
+                    &[],
+                ),
+                None => solve_only(
+                    "accel",
+                    accel_doc,
+                    accel_eq,
+                    names("qdd", n, 1),
+                    Shape::Vector(n),
+                ),
+            },
+            solves.accel,
+        ));
+        if let (Some(control_solve), Some(closed_loop_solve)) = (solves.control, solves.closed_loop)
+        {
+            let (control_doc, control_eq) = (
                 "Matrix A and vector B of the output-following control, yddot = A u - B",
                 "Eqs. 30-31",
-                parts,
-                Shape::Parts,
-                &[],
-            ));
-            // Closed loop: u = A^-1 (v + B) once, then Eq. 27 with that u.
-            let subst = |r: &RatFunc| -> Result<RatFunc> {
-                let mut r = r.clone();
-                for (u, value) in m.syms.inputs.iter().zip(c.u.entries()) {
-                    r = r.substitute(Atom::Sym(*u), value)?;
-                }
-                Ok(r)
-            };
-            let closed = slide.accel.try_map(subst)?;
-            let mut outputs = named("qdd", &closed);
-            outputs.extend(named("u", &c.u));
-            let mut staged_out: Vec<RatFunc> = slide.accel.entries().to_vec();
-            staged_out.extend(m.syms.inputs.iter().map(|u| RatFunc::sym(*u)));
-            let mut closed_loop = kernel(
-                t,
-                "closed_loop",
+            );
+            let (loop_doc, loop_eq) = (
                 "Accelerations qddot and inputs u under the output-following control, with yddot = v",
                 "Eqs. 27, 31",
-                outputs,
-                Shape::Parts,
-                &[],
             );
-            closed_loop.staged = Some(Staged {
-                locals: m
-                    .syms
-                    .inputs
-                    .iter()
-                    .copied()
-                    .zip(c.u.entries().iter().cloned())
-                    .collect(),
-                outputs: staged_out,
-            });
-            kernels.push(closed_loop);
+            match &slide {
+                Some(s) => {
+                    let c = output_control(&m, model, &s.projection)?;
+                    let mut parts = named("A", &c.a);
+                    parts.extend(named("B", &c.b));
+                    kernels.push(finish(
+                        kernel(
+                            t,
+                            "control",
+                            control_doc,
+                            control_eq,
+                            parts,
+                            Shape::Parts,
+                            &[],
+                        ),
+                        control_solve,
+                    ));
+                    // Closed loop: u = A^-1 (v + B) once, then Eq. 27 with that u.
+                    let subst = |r: &RatFunc| -> Result<RatFunc> {
+                        let mut r = r.clone();
+                        for (u, value) in m.syms.inputs.iter().zip(c.u.entries()) {
+                            r = r.substitute(Atom::Sym(*u), value)?;
+                        }
+                        Ok(r)
+                    };
+                    let closed_accel = s.accel.try_map(subst)?;
+                    let mut loop_outputs = named("qdd", &closed_accel);
+                    loop_outputs.extend(named("u", &c.u));
+                    let mut staged_out: Vec<RatFunc> = s.accel.entries().to_vec();
+                    staged_out.extend(m.syms.inputs.iter().map(|u| RatFunc::sym(*u)));
+                    let mut closed_loop = kernel(
+                        t,
+                        "closed_loop",
+                        loop_doc,
+                        loop_eq,
+                        loop_outputs,
+                        Shape::Parts,
+                        &[],
+                    );
+                    closed_loop.staged = Some(Staged {
+                        locals: m
+                            .syms
+                            .inputs
+                            .iter()
+                            .copied()
+                            .zip(c.u.entries().iter().cloned())
+                            .collect(),
+                        outputs: staged_out,
+                    });
+                    kernels.push(finish(closed_loop, closed_loop_solve));
+                }
+                None => {
+                    let mut parts = names("A", outputs, inputs);
+                    parts.extend(names("B", outputs, 1));
+                    kernels.push(finish(
+                        solve_only("control", control_doc, control_eq, parts, Shape::Parts),
+                        control_solve,
+                    ));
+                    let mut parts = names("qdd", n, 1);
+                    parts.extend(names("u", inputs, 1));
+                    kernels.push(finish(
+                        solve_only("closed_loop", loop_doc, loop_eq, parts, Shape::Parts),
+                        closed_loop_solve,
+                    ));
+                }
+            }
         }
-        let st = stuck(&m)?;
-        let mut stick = named("qdd", &st.accel);
-        stick.push(("lambda_t".into(), st.forces.get(0, 0).clone()));
-        stick.push(("lambda_n".into(), st.forces.get(1, 0).clone()));
-        kernels.push(kernel(t, "stick", "Accelerations qddot and the ground force [lambda_t, lambda_n] with the stance foot stuck", "stick phase; Eq. 19 with both foot coordinates held", stick, Shape::Parts, &[]));
-        let imp = strike_impacts(&m, model)?;
+        // The stuck foot's closed form needs no M^-1 (it is solved by blocks), only the inverse
+        // of the angles' block: derived while that block is small.
+        let (stick_doc, stick_eq) = (
+            "Accelerations qddot and the ground force `[lambda_t, lambda_n]` with the stance foot stuck",
+            "stick phase; Eq. 19 with both foot coordinates held",
+        );
+        let stick_closed = n - 2 < MAX_CLOSED_COORDINATES;
+        let stick = if stick_closed {
+            let st = stuck(&m)?;
+            let mut outputs = named("qdd", &st.accel);
+            outputs.push(("lambda_t".into(), st.forces.get(0, 0).clone()));
+            outputs.push(("lambda_n".into(), st.forces.get(1, 0).clone()));
+            kernel(t, "stick", stick_doc, stick_eq, outputs, Shape::Parts, &[])
+        } else {
+            let mut parts = names("qdd", n, 1);
+            parts.extend(["lambda_t".to_owned(), "lambda_n".to_owned()]);
+            solve_only("stick", stick_doc, stick_eq, parts, Shape::Parts)
+        };
+        kernels.push(with_solve(stick, solves.stick, stick_closed, t));
         let qd = m.syms.qd.clone();
-        let mut single = named("lambdaI", &imp.single.impulse);
-        single.extend(named("qdp", &imp.single.velocity));
-        kernels.push(kernel(
-            t,
-            "impact",
+        let imp = if closed {
+            Some(strike_impacts(&m, model)?)
+        } else {
+            None
+        };
+        let rows = strike_rows(&m, model)?;
+        let (impact_doc, impact_eq) = (
             "Normal impulses and post-impact velocities: the striking point and the locks",
             "Eqs. 6-16, 39-42",
-            single,
-            Shape::Parts,
-            &qd,
-        ));
-        if let Some(d) = &imp.double {
-            let mut double = named("lambdaI", &d.impulse);
-            double.extend(named("qdp", &d.velocity));
-            kernels.push(kernel(t, "impact_double", "Normal impulses and post-impact velocities with the old stance foot held (double-support test)", "Eqs. 6-11, 46", double, Shape::Parts, &qd));
+        );
+        let impact = match &imp {
+            Some(imp) => {
+                let mut single = named("lambdaI", &imp.single.impulse);
+                single.extend(named("qdp", &imp.single.velocity));
+                kernel(
+                    t,
+                    "impact",
+                    impact_doc,
+                    impact_eq,
+                    single,
+                    Shape::Parts,
+                    &qd,
+                )
+            }
+            None => {
+                let mut parts = names("lambdaI", rows.single.len(), 1);
+                parts.extend(names("qdp", n, 1));
+                solve_only("impact", impact_doc, impact_eq, parts, Shape::Parts)
+            }
+        };
+        let mut impact = finish(impact, solves.impact);
+        impact.args = args_of(t, impact.expressions(), &qd);
+        kernels.push(impact);
+        if let (Some(double_rows), Some(double_solve)) = (&rows.double, solves.impact_double) {
+            let (doc, eq) = (
+                "Normal impulses and post-impact velocities with the old stance foot held (double-support test)",
+                "Eqs. 6-11, 46",
+            );
+            let double = match imp.as_ref().and_then(|i| i.double.as_ref()) {
+                Some(d) => {
+                    let mut double = named("lambdaI", &d.impulse);
+                    double.extend(named("qdp", &d.velocity));
+                    kernel(t, "impact_double", doc, eq, double, Shape::Parts, &qd)
+                }
+                None => {
+                    let mut parts = names("lambdaI", double_rows.len(), 1);
+                    parts.extend(names("qdp", n, 1));
+                    solve_only("impact_double", doc, eq, parts, Shape::Parts)
+                }
+            };
+            let mut double = finish(double, double_solve);
+            double.args = args_of(t, double.expressions(), &qd);
+            kernels.push(double);
         }
+        kernels.extend(map_kernels(&m, model, &rows, t)?);
         let mut points = Vec::new();
         for (name, [x, z]) in &m.points {
             points.push((format!("x_{name}"), x.clone()));
@@ -260,7 +325,7 @@ impl ModelDerivation {
             }
         }
         Ok(ModelDerivation {
-            symbols: m.syms.table.clone(),
+            symbols: table,
             syms: m.syms,
             kernels,
         })

@@ -64,8 +64,9 @@ pub struct Mechanics {
     pub potential: RatFunc,
     /// `M(q)`.
     pub mass: Matrix,
-    /// `M^-1`.
-    pub mass_inv: Matrix,
+    /// `M^-1` in closed form, for a model with at most [`MAX_CLOSED_COORDINATES`]
+    /// coordinates (larger models are solved by structure only).
+    pub mass_inv: Option<Matrix>,
     /// `h(q, qdot)`, a column.
     pub bias: Matrix,
     /// `S`, one column per input (n x m; n x 0 for a passive walker).
@@ -79,6 +80,11 @@ pub struct Mechanics {
     /// `J_mu = mu [J_z, -J_x, 0, ...]`: the friction's direction times `mu` (Eq. 24).
     pub friction: Matrix,
 }
+
+/// The most coordinates for which `M^-1` is derived in closed form (by the adjugate): four
+/// coordinates take milliseconds; the five-link RABBIT's seven take seconds and give a
+/// 127657-term inverse that no kernel should be derived from (BENCHMARKS.md, section 5b).
+pub const MAX_CLOSED_COORDINATES: usize = 4;
 
 /// Lowers a list of expressions.
 fn lower_all(syms: &ModelSymbols, es: &[ModelExpr]) -> Result<Vec<RatFunc>> {
@@ -135,12 +141,20 @@ impl Mechanics {
             }
             bias.push(rest);
         }
-        let mass_inv = mass.inverse("M").map_err(|_| Error::CheckFailed {
+        let singular = || Error::CheckFailed {
             what: format!(
                 "{}: the mass matrix M is singular: some coordinate moves no body with mass or inertia",
                 model.path
             ),
-        })?;
+        };
+        let mass_inv = if n <= MAX_CLOSED_COORDINATES {
+            Some(mass.inverse("M").map_err(|_| singular())?)
+        } else {
+            if !regular(model, &syms, &mass) {
+                return Err(singular());
+            }
+            None
+        };
         let mut columns = Vec::with_capacity(model.inputs.len());
         for input in &model.inputs {
             columns.push(lower_all(&syms, &input.force)?);
@@ -187,6 +201,18 @@ impl Mechanics {
         })
     }
 
+    /// `M^-1` in closed form.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] for a model with more than [`MAX_CLOSED_COORDINATES`] coordinates.
+    pub fn mass_inv(&self) -> Result<&Matrix> {
+        self.mass_inv.as_ref().ok_or_else(|| Error::TooLarge {
+            what: format!("M^-1 of a model with {} coordinates", self.syms.q.len()),
+            terms: self.syms.q.len(),
+            limit: MAX_CLOSED_COORDINATES,
+        })
+    }
+
     /// The point called `name`.
     ///
     /// # Errors
@@ -215,4 +241,54 @@ impl Mechanics {
     pub fn q(&self) -> &[Sym] {
         &self.syms.q
     }
+}
+
+/// Whether `M` is regular, tested in floating point where its closed-form inverse is not
+/// derived: no row is identically zero, and `M` has an `L D L^T` factorisation with pivots
+/// above `1e-9` of its largest diagonal entry at the parameters' defaults and at one of three
+/// generic configurations (a singular `M` is singular at every configuration; a regular one
+/// is singular only on a set of measure zero, which three fixed irrational-looking points
+/// miss).
+fn regular(model: &Model, syms: &ModelSymbols, mass: &Matrix) -> bool {
+    use crate::symbol::Point;
+    let n = syms.q.len();
+    if (0..n).any(|i| (0..n).all(|j| mass.get(i, j).is_zero())) {
+        return false;
+    }
+    (1..=3).any(|c| {
+        let mut p = Point::zeros(&syms.table);
+        for param in &model.parameters {
+            if let Ok(s) = syms.get(&param.name.name) {
+                p.set_sym(s, param.default);
+            }
+        }
+        for (i, q) in syms.q.iter().enumerate() {
+            p.set_sym(*q, (1.3 * f64::from(c) + 0.7 * i as f64).sin());
+        }
+        let a: Vec<Vec<f64>> = (0..n)
+            .map(|i| (0..n).map(|j| mass.get(i, j).eval(&p)).collect())
+            .collect();
+        let scale = (0..n).map(|i| a[i][i].abs()).fold(0.0, f64::max);
+        let mut l = vec![vec![0.0; n]; n];
+        let mut d = vec![0.0; n];
+        for i in 0..n {
+            for j in 0..=i {
+                let mut v = a[i][j];
+                for k in 0..j {
+                    v -= l[i][k] * l[j][k] * d[k];
+                }
+                if i == j {
+                    d[i] = v;
+                    // (NaN fails too.)
+                    if v.partial_cmp(&(1e-9 * scale)) != Some(std::cmp::Ordering::Greater) {
+                        return false;
+                    }
+                    l[i][i] = 1.0;
+                } else {
+                    l[i][j] = v / d[j];
+                }
+            }
+        }
+        true
+    })
 }

@@ -5,19 +5,29 @@
 //! `lower` (expressions into rational functions, `sin`/`cos` by the addition formulas over the
 //! model's base angles) know the model file's types; `mechanics` (energies, `M`, `h`, `S`,
 //! points, the stance contact) uses them; `phases` (sliding and stuck stance, output control,
-//! impact maps) uses `mechanics`; `kernels` (the named kernels the code generator reads) uses
-//! `phases`.
+//! impact maps) uses `mechanics`; `program` (a structured solve as a straight-line program of
+//! locals: `L D L^T`, substitutions) knows only the engine; `structured` (the stance and impact
+//! kernels as structured solves) uses `mechanics`, `phases` and `program`; `kernels` (the named
+//! kernels the code generator reads, closed form and structured solve) uses `phases`,
+//! `structured`, `maps` (the matrices `S`, `J_I`, `H` as kernels, for users and for checks
+//! by generic linear algebra) and `assemble` (output names and arguments of a kernel).
 
+mod assemble;
 mod kernels;
 mod lower;
+mod maps;
 mod mechanics;
 mod phases;
+mod program;
+mod structured;
 mod table;
 
 pub use kernels::{MAX_INVERSE_TERMS, ModelDerivation};
-pub use mechanics::{FloorGeometry, Mechanics, time_derivative};
+pub use mechanics::{FloorGeometry, MAX_CLOSED_COORDINATES, Mechanics, time_derivative};
 pub use phases::{
-    ImpactMap, OutputControl, Sliding, StrikeImpacts, Stuck, impact_map, output_control, sliding,
-    strike_impacts, stuck,
+    ImpactMap, OutputControl, Sliding, StrikeImpacts, StrikeRows, Stuck, impact_map,
+    output_control, sliding, strike_impacts, strike_rows, stuck,
 };
+pub use program::{Ldlt, Program};
+pub use structured::{StructuredKernels, structured_kernels};
 pub use table::ModelSymbols;

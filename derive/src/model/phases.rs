@@ -33,13 +33,13 @@ pub struct Sliding {
 pub fn sliding(m: &Mechanics) -> Result<Sliding> {
     let n = m.syms.q.len();
     let jhat = m.contact.add(&m.friction)?;
-    let j_minv = m.contact.mul(&m.mass_inv)?;
+    let j_minv = m.contact.mul(m.mass_inv()?)?;
     let su_minus_h = m.input_force.sub(&m.bias)?;
     let lambda_den = j_minv.mul(&jhat.transpose())?.scalar()?;
     let normal_force = (-j_minv.mul(&su_minus_h)?.scalar()?).div(&lambda_den)?;
     let forces = su_minus_h.add(&jhat.transpose().scale(&normal_force))?;
     let lambda = &normal_force * m.contact.get(0, 1);
-    let accel = m.mass_inv.mul(&forces)?;
+    let accel = m.mass_inv()?.mul(&forces)?;
     let projection =
         Matrix::identity(n).sub(&jhat.transpose().mul(&j_minv)?.scale(&lambda_den.recip()?))?;
     Ok(Sliding {
@@ -88,7 +88,7 @@ pub fn output_control(m: &Mechanics, model: &Model, projection: &Matrix) -> Resu
         }
         drift.push(acc);
     }
-    let h_minv_y = h_jac.mul(&m.mass_inv)?.mul(projection)?;
+    let h_minv_y = h_jac.mul(m.mass_inv()?)?.mul(projection)?;
     let a = h_minv_y.mul(&m.input_map)?;
     let b = h_minv_y.mul(&m.bias)?.sub(&Matrix::column(drift))?;
     let v = Matrix::column(m.syms.aux.iter().map(|s| RatFunc::sym(*s)).collect());
@@ -174,12 +174,12 @@ pub struct ImpactMap {
 pub fn impact_map(m: &Mechanics, rows: &[RatFunc]) -> Result<ImpactMap> {
     let jacobian = Matrix::jacobian(rows, &m.syms.q);
     let x_inv = jacobian
-        .mul(&m.mass_inv)?
+        .mul(m.mass_inv()?)?
         .mul(&jacobian.transpose())?
         .inverse("X_I")?;
     let qd = m.qd_column();
     let impulse = x_inv.mul(&jacobian.mul(&qd)?)?.scale(&RatFunc::int(-1));
-    let velocity = qd.add(&m.mass_inv.mul(&jacobian.transpose())?.mul(&impulse)?)?;
+    let velocity = qd.add(&m.mass_inv()?.mul(&jacobian.transpose())?.mul(&impulse)?)?;
     Ok(ImpactMap {
         jacobian,
         impulse,
@@ -198,11 +198,21 @@ pub struct StrikeImpacts {
     pub double: Option<ImpactMap>,
 }
 
-/// Derives the strike impacts of `model`.
+/// The constraint rows of the model's strike: the striking point's gap then the locks, and
+/// (for the double-support test) the same with the old stance foot's gap second.
+#[derive(Clone, Debug)]
+pub struct StrikeRows {
+    /// `[strike, locks...]`.
+    pub single: Vec<RatFunc>,
+    /// `[strike, stance foot, locks...]`, when the model asks for the double-support test.
+    pub double: Option<Vec<RatFunc>>,
+}
+
+/// The constraint rows of `model`'s strike.
 ///
 /// # Errors
-/// An unknown strike point, a lock that does not lower, or dependent constraints.
-pub fn strike_impacts(m: &Mechanics, model: &Model) -> Result<StrikeImpacts> {
+/// An unknown strike point, or a lock that does not lower.
+pub fn strike_rows(m: &Mechanics, model: &Model) -> Result<StrikeRows> {
     let [px, pz] = m.point(&model.strike.point.name)?;
     let strike = m.floor.gap(px, pz);
     let locks = model
@@ -211,19 +221,27 @@ pub fn strike_impacts(m: &Mechanics, model: &Model) -> Result<StrikeImpacts> {
         .iter()
         .map(|e| m.syms.lower(e))
         .collect::<Result<Vec<_>>>()?;
-    let single_rows: Vec<RatFunc> = std::iter::once(strike.clone())
+    let single: Vec<RatFunc> = std::iter::once(strike.clone())
         .chain(locks.iter().cloned())
         .collect();
-    let single = impact_map(m, &single_rows)?;
-    let double = if model.impact.double_support {
+    let double = model.impact.double_support.then(|| {
         let (x, z) = (RatFunc::sym(m.syms.q[0]), RatFunc::sym(m.syms.q[1]));
-        let rows: Vec<RatFunc> = [strike, m.floor.gap(&x, &z)]
+        [strike, m.floor.gap(&x, &z)]
             .into_iter()
             .chain(locks)
-            .collect();
-        Some(impact_map(m, &rows)?)
-    } else {
-        None
-    };
-    Ok(StrikeImpacts { single, double })
+            .collect()
+    });
+    Ok(StrikeRows { single, double })
+}
+
+/// Derives the strike impacts of `model`.
+///
+/// # Errors
+/// An unknown strike point, a lock that does not lower, or dependent constraints.
+pub fn strike_impacts(m: &Mechanics, model: &Model) -> Result<StrikeImpacts> {
+    let rows = strike_rows(m, model)?;
+    Ok(StrikeImpacts {
+        single: impact_map(m, &rows.single)?,
+        double: rows.double.map(|r| impact_map(m, &r)).transpose()?,
+    })
 }

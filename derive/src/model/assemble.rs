@@ -1,0 +1,121 @@
+//! Building a model's [`Kernel`] values: output names, arguments (the symbols other than
+//! parameters and locals that a kernel's forms contain), closed forms and structured solves.
+
+use crate::kernels::{Kernel, Shape, Staged};
+use crate::matrix::Matrix;
+use crate::ratfunc::RatFunc;
+use crate::symbol::{Sym, SymKind, Symbols};
+
+/// The entries of `m` as outputs `prefix{i}{j}` (a matrix) or `prefix{k}` (a row or column).
+pub(super) fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
+    let c = m.cols();
+    m.entries()
+        .iter()
+        .enumerate()
+        .map(|(k, r)| {
+            let name = if m.rows() > 1 && c > 1 {
+                format!("{prefix}{}{}", k / c, k % c)
+            } else {
+                format!("{prefix}{k}")
+            };
+            (name, r.clone())
+        })
+        .collect()
+}
+
+/// The symbols other than parameters and locals that `exprs` contain (plus `always`), in table
+/// order.
+pub(super) fn args_of<'r>(
+    symbols: &Symbols,
+    exprs: impl Iterator<Item = &'r RatFunc>,
+    always: &[Sym],
+) -> Vec<Sym> {
+    let mut used = std::collections::BTreeSet::new();
+    for r in exprs {
+        for p in [r.num(), r.den()] {
+            for slot in p.slots() {
+                if let Some(s) = symbols.symbol_of_slot(slot)
+                    && !matches!(symbols.kind(s), SymKind::Parameter | SymKind::Local)
+                {
+                    used.insert(s);
+                }
+            }
+        }
+    }
+    used.extend(always.iter().copied());
+    used.into_iter().collect()
+}
+
+/// `k` with its structured solve: the closed form and the solve both, when the closed form
+/// exists (`closed`); else the solve alone, its outputs under the kernel's output names. The
+/// arguments are those of every form.
+pub(super) fn with_solve(mut k: Kernel, solve: Staged, closed: bool, symbols: &Symbols) -> Kernel {
+    if !closed {
+        for ((_, out), expr) in k.outputs.iter_mut().zip(&solve.outputs) {
+            *out = expr.clone();
+        }
+        k.staged = None;
+        k.closed = false;
+    }
+    k.solve = Some(solve);
+    let always = k.args.clone();
+    k.args = args_of(symbols, k.expressions(), &always);
+    k
+}
+
+/// A kernel of closed forms; its arguments are what the outputs contain, and `always`.
+pub(super) fn kernel(
+    symbols: &Symbols,
+    name: &'static str,
+    doc: &'static str,
+    equation: &'static str,
+    outputs: Vec<(String, RatFunc)>,
+    shape: Shape,
+    always: &[Sym],
+) -> Kernel {
+    Kernel {
+        name,
+        doc,
+        equation,
+        args: args_of(symbols, outputs.iter().map(|(_, r)| r), always),
+        outputs,
+        shape,
+        staged: None,
+        solve: None,
+        closed: true,
+    }
+}
+
+/// The output names [`named`] gives a `rows x cols` matrix.
+pub(super) fn names(prefix: &str, rows: usize, cols: usize) -> Vec<String> {
+    (0..rows * cols)
+        .map(|k| {
+            if rows > 1 && cols > 1 {
+                format!("{prefix}{}{}", k / cols, k % cols)
+            } else {
+                format!("{prefix}{k}")
+            }
+        })
+        .collect()
+}
+
+/// A kernel that only has its structured solve: its outputs are the solve's, named.
+pub(super) fn solve_only(
+    name: &'static str,
+    doc: &'static str,
+    equation: &'static str,
+    names: Vec<String>,
+    shape: Shape,
+) -> Kernel {
+    Kernel {
+        name,
+        doc,
+        equation,
+        args: Vec::new(),
+        outputs: names.into_iter().map(|n| (n, RatFunc::zero())).collect(),
+        shape,
+        staged: None,
+        solve: None,
+        closed: false,
+    }
+}
