@@ -143,6 +143,25 @@ pub(crate) struct Lowering<'a> {
     pub(crate) kernel: &'static str,
 }
 
+/// Which of a derived kernel's forms is lowered.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Form {
+    /// The closed forms (or their staged evaluation).
+    Closed,
+    /// The structured solve.
+    Solve,
+}
+
+impl Form {
+    /// The form's name in the generated file's notes and in `walker-gen stats`.
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Form::Closed => "closed form",
+            Form::Solve => "structured solve",
+        }
+    }
+}
+
 impl Lowering<'_> {
     fn error(&self, message: impl Into<String>) -> Error {
         Error::Lower {
@@ -151,10 +170,22 @@ impl Lowering<'_> {
         }
     }
 
+    /// Lowers `k`'s closed form, or its structured solve for a kernel without closed forms.
     pub(crate) fn kernel(
         &self,
         g: &mut Graph,
         k: &walker_symbolic::Kernel,
+    ) -> Result<Kernel, Error> {
+        let form = if k.closed { Form::Closed } else { Form::Solve };
+        self.kernel_form(g, k, form)
+    }
+
+    /// Lowers one form of `k`.
+    pub(crate) fn kernel_form(
+        &self,
+        g: &mut Graph,
+        k: &walker_symbolic::Kernel,
+        form: Form,
     ) -> Result<Kernel, Error> {
         let b = self.binding;
         let mut args = Vec::new();
@@ -171,7 +202,17 @@ impl Lowering<'_> {
         let mut atoms = AtomNodes::default();
         // The staged form, when the derivation has one: its locals become nodes first and
         // stand for their symbols in what follows (the same graph, so everything is shared).
-        let exprs: Vec<&RatFunc> = match &k.staged {
+        let program = match form {
+            Form::Closed if !k.closed => {
+                return Err(self.error("the kernel has no closed form"));
+            }
+            Form::Closed => &k.staged,
+            Form::Solve if k.solve.is_none() => {
+                return Err(self.error("the kernel has no structured solve"));
+            }
+            Form::Solve => &k.solve,
+        };
+        let exprs: Vec<&RatFunc> = match program {
             Some(staged) => {
                 for (s, value) in &staged.locals {
                     let node = self.ratfunc(g, &mut atoms, value)?;

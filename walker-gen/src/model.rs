@@ -13,7 +13,7 @@ use walker_symbolic::model::ModelDerivation;
 
 use crate::error::Error;
 use crate::ir::Module;
-use crate::lower::{Binding, FrictionBinding, Lowering};
+use crate::lower::{Binding, Form, FrictionBinding, Lowering};
 
 /// A model and the choices that make it a scene.
 #[derive(Clone, Debug)]
@@ -141,7 +141,12 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
                 module.graph.constant(v)
             }
             None => {
-                let doc = format!("{} `{}` ({}).", capitalised(&p.doc), p.name.name, p.unit);
+                let doc = format!(
+                    "{} `{}` ({}).",
+                    capitalised(&code_words(&p.doc)),
+                    p.name.name,
+                    p.unit
+                );
                 module.param(&p.name.name, &doc)
             }
         };
@@ -179,11 +184,33 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
         }
     }
     for k in &derivation.kernels {
-        let lowered = Lowering {
+        let lowering = Lowering {
             binding: &binding,
             kernel: k.name,
-        }
-        .kernel(&mut module.graph, k)?;
+        };
+        let form = if k.closed && k.solve.is_some() {
+            let closed = kernel_ops(&module, &lowering, k, Form::Closed)?;
+            let solve = kernel_ops(&module, &lowering, k, Form::Solve)?;
+            let (form, other, ops) = if solve < closed {
+                (Form::Solve, Form::Closed, closed)
+            } else {
+                (Form::Closed, Form::Solve, solve)
+            };
+            module.forms.insert(
+                k.name.to_owned(),
+                format!("{} ({}: {ops} ops)", form.name(), other.name()),
+            );
+            form
+        } else if k.closed {
+            Form::Closed
+        } else {
+            module.forms.insert(
+                k.name.to_owned(),
+                format!("{} (no closed form)", Form::Solve.name()),
+            );
+            Form::Solve
+        };
+        let lowered = lowering.kernel_form(&mut module.graph, k, form)?;
         module.kernels.push(lowered);
     }
     module.notes.insert(
@@ -211,6 +238,40 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
         },
     );
     Ok(module)
+}
+
+/// The operations per call of `k` lowered in `form` into a copy of `module` (after CSE and
+/// hoisting, as `walker-gen stats` counts them).
+fn kernel_ops(
+    module: &Module,
+    lowering: &Lowering,
+    k: &walker_symbolic::Kernel,
+    form: Form,
+) -> Result<usize, Error> {
+    let mut trial = module.clone();
+    let lowered = lowering.kernel_form(&mut trial.graph, k, form)?;
+    trial.kernels.push(lowered);
+    let stats = crate::stats::stats(&trial, &crate::options::EmitOptions::default())?;
+    Ok(stats.kernels.last().map_or(0, |s| s.ops.total()))
+}
+
+/// A model file's prose for a doc comment: each word with an underscore (a name, as `y_d`) set
+/// in backticks unless the text already quotes it, so that the generated docs render as code
+/// and pass clippy's `doc_markdown`.
+fn code_words(text: &str) -> String {
+    text.split(' ')
+        .map(|word| {
+            let start = word.find(|c: char| c.is_ascii_alphanumeric() || c == '_');
+            let end = word.rfind(|c: char| c.is_ascii_alphanumeric() || c == '_');
+            match (start, end) {
+                (Some(a), Some(b)) if !word.contains('`') && word[a..=b].contains('_') => {
+                    format!("{}`{}`{}", &word[..a], &word[a..=b], &word[b + 1..])
+                }
+                _ => word.to_owned(),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 fn capitalised(s: &str) -> String {

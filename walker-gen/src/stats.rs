@@ -108,6 +108,10 @@ pub struct KernelStats {
     pub lets: usize,
     /// Number of `Prepared` fields the kernel reads.
     pub prepared_reads: usize,
+    /// How the kernel is evaluated where the generator chose between its closed form and its
+    /// structured solve (a model's stance and impact kernels), with the other form's count.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub form: Option<String>,
 }
 
 /// The counts of one generated file.
@@ -171,6 +175,7 @@ pub(crate) fn from_plan(module: &Module, plan: &Plan) -> Stats {
                 ops: block_counts(&plan.graph, &kp.block),
                 lets: kp.block.names.len(),
                 prepared_reads: reads.len(),
+                form: module.forms.get(&k.name).cloned(),
             }
         })
         .collect();
@@ -221,7 +226,10 @@ impl Stats {
                 &mut out,
                 &k.name,
                 &k.ops,
-                &format!("{} lets, {} prepared", k.lets, k.prepared_reads),
+                &match &k.form {
+                    None => format!("{} lets, {} prepared", k.lets, k.prepared_reads),
+                    Some(form) => format!("{} lets, {} prepared; {form}", k.lets, k.prepared_reads),
+                },
             );
         }
         row(

@@ -345,6 +345,26 @@ fn generated_code_is_clippy_and_rustdoc_clean() {
             lib.push_str(&including_module(&name, scene));
         }
     }
+    // Every shipped model (the no_std f32 path of a model is built by examples/own-walker).
+    for model in [
+        "rimless-wheel",
+        "paper-active",
+        "paper-passive",
+        "compass-gait",
+        "three-link",
+        "five-link",
+    ] {
+        let name = format!("model_{}", model.replace('-', "_"));
+        let mut config = Config::new();
+        config.model_file(
+            PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+                .join("../models")
+                .join(format!("{model}.toml")),
+        );
+        let src = config.render().expect("the model renders");
+        write(&dir.join(format!("{name}.rs")), &src);
+        lib.push_str(&including_module(&name, model));
+    }
     for (name, float, no_std, checked, float_functions) in [
         ("exercise", Float::F64, false, true, FloatFunctions::Inline),
         ("exercise_std", Float::F64, false, true, FloatFunctions::Std),

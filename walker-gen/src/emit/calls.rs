@@ -1,6 +1,7 @@
 //! Which float functions a block calls: the private `sin_cos` and `tanh` of
 //! [`crate::FloatFunctions::Inline`] appended to a file, the note that names them in an operation count,
-//! and whether a block may be a `const fn`.
+//! whether a block may be a `const fn`, and whether a kernel's signature needs clippy's
+//! allowance for many arguments.
 
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -81,4 +82,18 @@ pub(super) fn const_if_possible(plan: &Plan, block: &Block) -> TokenStream {
         )
     });
     if calls { quote!() } else { quote!(const) }
+}
+
+/// `#[allow(clippy::too_many_arguments)]` for a kernel with more than clippy's seven parameters
+/// (`p` and the state components it reads: a model with many coordinates), nothing otherwise.
+pub(super) fn many_arguments(k: &crate::ir::Kernel) -> TokenStream {
+    if k.args.len() < 7 {
+        return quote!();
+    }
+    quote! {
+        #[allow(
+            clippy::too_many_arguments,
+            reason = "one argument per state component the kernel reads, as the model declares them"
+        )]
+    }
 }

@@ -75,8 +75,10 @@ pub(super) fn checked_fn(k: &Kernel, ret_ty: &TokenStream) -> TokenStream {
             code_list(&out_names)
         )),
     ]);
+    let many = super::calls::many_arguments(k);
     quote! {
         #(#docs)*
+        #many
         #[inline]
         pub fn #checked_name(p: &Prepared, #(#args: F),*) -> Result<#ret_ty, KernelError> {
             #(#arg_checks)*

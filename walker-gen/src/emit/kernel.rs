@@ -4,7 +4,7 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::calls::{const_if_possible, has_tanh, inline_note};
+use super::calls::{const_if_possible, has_tanh, inline_note, many_arguments};
 use super::checked::checked_fn;
 use super::doc::{code_list, doc_attrs, returns_doc, wrap};
 use super::writer::{Scope, Writer, ident, unsuffixed};
@@ -121,8 +121,10 @@ pub(super) fn kernel_fn(
     } else {
         quote!()
     };
+    let many = many_arguments(k);
     Some(quote! {
         #(#docs)*
+        #many
         #[inline]
         #[must_use]
         pub #constness fn #name(#p: &Prepared, #(#args),*) -> #ret_ty {
