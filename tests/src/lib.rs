@@ -45,7 +45,15 @@
 //! - `impact_friction`: the library's impact with Coulomb friction against the SymPy/mpmath
 //!   reference `tests/data/impact_friction.json`, and its properties over random states;
 //! - `specialisation`: the Table 1 scenes (`active_level`, `passive_slope`) agree with the
-//!   general kernels at those parameters, and the frictionless scene has no `tanh`.
+//!   general kernels at those parameters, and the frictionless scene has no `tanh`;
+//! - `model_derivation`: every kernel of every model file (`models/*.toml`), in both forms the
+//!   derivation gives it (closed form, structured solve), against SymPy's derivation of the
+//!   same file (`tests/data/models/`);
+//! - `models_vs_sympy`: the kernels generated from every model file (by `build.rs`, with an
+//!   adapter that calls them by name: [`models::MODELS`]) against the same reference;
+//! - `models_vs_nalgebra`: proptest over random parameters and states, every model's stance,
+//!   stick, impact and control kernels against KKT systems solved by nalgebra from the
+//!   generated matrices `M`, `h`, `S`, `J_I`, `H`.
 //!
 //! # Running
 //!
@@ -63,7 +71,8 @@
 //! `phys` (parameters and prepared kernels), `matrices` (the paper's `S`, `M`, `h`, `J`, rows),
 //! `friction` (the `tanh` law), `linear` (solves with conditioning), `stance`, `stick`,
 //! `closed_loop`, `impact` and `coulomb_impact` (the generic path of each phase), `kinematics`
-//! (positions, energies, momenta). Imports run one way:
+//! (positions, energies, momenta), `models` (the model files' generated kernels by name, their
+//! reference samples and names). Imports run one way:
 //! `phys <- matrices <- {stance, stick, impact, coulomb_impact, kinematics}`,
 //! `linear <- {stance, stick, impact, coulomb_impact}`, `impact <- coulomb_impact`,
 //! `{stance, stick} <- closed_loop`.
@@ -77,6 +86,7 @@ mod impact;
 mod kinematics;
 mod linear;
 mod matrices;
+pub mod models;
 mod phys;
 mod stance;
 mod stick;

@@ -213,14 +213,7 @@ impl Config {
 
     /// The source and operation counts of a model scene.
     fn build_model(&self, scene: &ModelScene) -> Result<(String, Stats), Error> {
-        let derivation =
-            walker_symbolic::model::ModelDerivation::new(&scene.model).map_err(|e| {
-                Error::Lower {
-                    kernel: "(derivation)".to_owned(),
-                    message: e.to_string(),
-                }
-            })?;
-        let module = lower_model(&derivation, scene)?;
+        let module = lower_model(&derive_model(scene)?, scene)?;
         self.build_module(&module)
     }
 
@@ -231,11 +224,15 @@ impl Config {
         Ok((source, from_plan(module, &plan)))
     }
 
-    /// The lowered module, with the scene's summary as the first header notes.
+    /// The lowered module, with the scene's (or model's) summary as the first header notes.
     ///
     /// # Errors
-    /// No scene or more than one was given, or it is invalid or cannot be lowered.
+    /// No scene or more than one was given, or it is invalid or cannot be lowered; or the model
+    /// file is invalid or cannot be derived.
     pub fn module(&self) -> Result<Module, Error> {
+        if let Some(model) = self.load_model()? {
+            return lower_model(&derive_model(&model)?, &model);
+        }
         let scene = self.load_scene()?;
         module_of(&derive()?, &scene)
     }
@@ -389,5 +386,13 @@ fn write_if_changed(
         bytes: source.len(),
         stats,
         out_file,
+    })
+}
+
+/// Derives a model's kernels ([`Error::Lower`] naming `(derivation)` if it fails).
+fn derive_model(scene: &ModelScene) -> Result<walker_symbolic::model::ModelDerivation, Error> {
+    walker_symbolic::model::ModelDerivation::new(&scene.model).map_err(|e| Error::Lower {
+        kernel: "(derivation)".to_owned(),
+        message: e.to_string(),
     })
 }

@@ -1,0 +1,84 @@
+//! Generates the kernels of every model file in `models/` (exact Coulomb friction, so that a
+//! test realises any `mu` as `-mu0 sigma`), and for each a small adapter that calls a kernel by
+//! name with its arguments by name: the model tests then run the same checks over every model
+//! without knowing any model's signatures.
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use walker_gen::{Config, Friction, Shape};
+
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("walker-tests build script: {e}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> Result<(), Box<dyn std::error::Error>> {
+    let out = PathBuf::from(std::env::var("OUT_DIR")?);
+    let models = Path::new(env!("CARGO_MANIFEST_DIR")).join("../models");
+    println!("cargo:rerun-if-changed={}", models.display());
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&models)?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    let mut index = String::from(
+        "/// Every model of `models/`: its name and its kernels called by name.\n\
+         pub const MODELS: &[GeneratedModel] = &[\n",
+    );
+    let mut modules = String::new();
+    for path in &files {
+        println!("cargo:rerun-if-changed={}", path.display());
+        let name = path
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .ok_or("a model file name")?
+            .to_owned();
+        let ident = name.replace('-', "_");
+        let mut config = Config::new();
+        config.model_file(path).friction(Friction::Coulomb);
+        let module = config.module()?;
+        std::fs::write(out.join(format!("model_{ident}.rs")), config.render()?)?;
+        let mut arms = String::new();
+        let mut outputs = String::new();
+        for k in &module.kernels {
+            let args: Vec<String> = k.args.iter().map(|a| format!("arg(\"{a}\")")).collect();
+            let flatten = match k.output_shape {
+                Shape::Scalar => "vec![out]",
+                Shape::Vector(_) => "out.to_vec()",
+                Shape::Matrix(..) => "out.iter().flatten().copied().collect()",
+            };
+            let _ = writeln!(
+                arms,
+                "        \"{0}\" => {{ let out = {0}(&p, {1}); {flatten} }}",
+                k.name,
+                args.join(", ")
+            );
+            let names: Vec<String> = k.outputs.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+            let _ = writeln!(outputs, "    (\"{}\", &[{}]),", k.name, names.join(", "));
+        }
+        let _ = write!(
+            modules,
+            "/// The kernels of `models/{name}.toml` (generated with Coulomb friction).\n\
+             #[allow(clippy::all, clippy::pedantic, missing_docs, reason = \"generated\")]\n\
+             pub mod {ident} {{\n\
+             include!(concat!(env!(\"OUT_DIR\"), \"/model_{ident}.rs\"));\n\
+             /// Calls kernel `kernel` with parameters and arguments by name; `None` for a \
+             kernel the model does not have.\n\
+             pub fn call(kernel: &str, param: &dyn Fn(&str) -> f64, arg: &dyn Fn(&str) -> f64) \
+             -> Option<Vec<f64>> {{\n\
+             let p = prepare(&Params::from_fn(|n| param(n)));\n\
+             Some(match kernel {{\n{arms}        _ => return None,\n    }})\n}}\n\
+             /// Every kernel and its output names.\n\
+             pub const KERNELS: &[(&str, &[&str])] = &[\n{outputs}];\n}}\n"
+        );
+        let _ = writeln!(
+            index,
+            "    GeneratedModel {{ name: \"{name}\", call: {ident}::call, kernels: {ident}::KERNELS }},"
+        );
+    }
+    index.push_str("];\n");
+    std::fs::write(out.join("models.rs"), modules + &index)?;
+    Ok(())
+}

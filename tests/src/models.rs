@@ -1,0 +1,226 @@
+//! Every model file of `models/`: its generated kernels called by name (`build.rs` generates
+//! them with exact Coulomb friction and an adapter per model), its SymPy reference samples
+//! (`tests/data/models/<name>.json`, made by `sympy_ref/models.py` from the same file), and the
+//! names under which the reference lists each kernel output.
+
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+
+use serde_json::Value;
+use walker_gen::scene::model::{Model, SymbolKind};
+
+/// Calls a kernel by name: `(kernel, parameter by name, argument by name)` to its outputs,
+/// flattened row-major, or `None` for a kernel the model does not have.
+pub type KernelCall = fn(&str, &dyn Fn(&str) -> f64, &dyn Fn(&str) -> f64) -> Option<Vec<f64>>;
+
+/// A model's generated kernels.
+#[derive(Clone, Copy, Debug)]
+pub struct GeneratedModel {
+    /// The model's name (its file stem).
+    pub name: &'static str,
+    /// Calls a kernel by name.
+    pub call: KernelCall,
+    /// Every kernel and its output names.
+    pub kernels: &'static [(&'static str, &'static [&'static str])],
+}
+
+include!(concat!(env!("OUT_DIR"), "/models.rs"));
+
+/// The model file `models/<name>.toml`.
+///
+/// # Panics
+/// The file does not load (a shipped model always does).
+#[must_use]
+pub fn load(name: &str) -> Model {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../models")
+        .join(format!("{name}.toml"));
+    Model::from_file(&path).expect("a shipped model file loads")
+}
+
+/// One reference sample: every parameter and kernel argument by name, and the reference
+/// outputs.
+#[derive(Clone, Debug)]
+pub struct Sample {
+    /// The sample's tag (`random`, `strike`, ...).
+    pub tag: String,
+    /// Parameters and arguments by name (`mu` realised as `mu0 = |mu|`, `sigma = -sign mu`).
+    pub values: BTreeMap<String, f64>,
+    /// The reference outputs by the reference's names.
+    pub out: Value,
+}
+
+impl Sample {
+    /// The value called `name` (NaN if the sample has none: a kernel reading it fails loudly).
+    #[must_use]
+    pub fn get(&self, name: &str) -> f64 {
+        self.values.get(name).copied().unwrap_or(f64::NAN)
+    }
+
+    /// The reference value called `key`, if the reference has it.
+    #[must_use]
+    pub fn reference(&self, key: &str) -> Option<f64> {
+        let v = &self.out[key];
+        v.as_str()
+            .and_then(|s| s.parse().ok())
+            .or_else(|| v.as_f64())
+    }
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_str()
+        .and_then(|s| s.parse().ok())
+        .or_else(|| v.as_f64())
+        .unwrap_or(f64::NAN)
+}
+
+/// The names of a model's symbols of one kind, in order.
+#[must_use]
+pub fn names_of(model: &Model, kind: SymbolKind) -> Vec<String> {
+    model
+        .symbols()
+        .iter()
+        .filter(|s| s.kind == kind)
+        .map(|s| s.name.clone())
+        .collect()
+}
+
+/// The reference samples of `model`.
+///
+/// # Panics
+/// The reference file is missing or malformed.
+#[must_use]
+pub fn samples(model: &Model) -> Vec<Sample> {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("data/models")
+        .join(format!("{}.json", model.name));
+    let text = std::fs::read_to_string(&path).expect("the model's reference file");
+    let data: Value = serde_json::from_str(&text).expect("reference JSON");
+    let groups = [
+        ("q", names_of(model, SymbolKind::Coordinate)),
+        ("qd", names_of(model, SymbolKind::Velocity)),
+        ("u", names_of(model, SymbolKind::Input)),
+        ("v", names_of(model, SymbolKind::Aux)),
+    ];
+    let mut out = Vec::new();
+    for sample in data["samples"].as_array().expect("samples") {
+        let mut values = BTreeMap::new();
+        for (name, v) in sample["params"].as_object().expect("params") {
+            values.insert(name.clone(), num(v));
+        }
+        for (key, names) in &groups {
+            for (name, v) in names.iter().zip(sample[*key].as_array().expect("values")) {
+                values.insert(name.clone(), num(v));
+            }
+        }
+        let mu = num(&sample["mu"]);
+        values.insert("mu0".into(), mu.abs());
+        values.insert("sigma".into(), if mu > 0.0 { -1.0 } else { 1.0 });
+        values.insert("t".into(), num(&sample["t"]));
+        out.push(Sample {
+            tag: sample["tag"].as_str().unwrap_or("").to_owned(),
+            values,
+            out: sample["out"].clone(),
+        });
+    }
+    out
+}
+
+/// The reference's name for output `name` of kernel `kernel` (`cols`: the columns of the
+/// control's `A`, the model's inputs); `None` for the matrices the reference does not list
+/// (`S`, `J_I`, `H`, the drift), which the generic linear-algebra tests check through the
+/// solves built from them. Every shipped model has fewer than ten coordinates, inputs and
+/// outputs, so a matrix entry's index pair is two digits.
+#[must_use]
+pub fn reference_name(kernel: &str, name: &str, cols: usize) -> Option<String> {
+    let index = |prefix: &str| name.strip_prefix(prefix).map(str::to_owned);
+    // `A{i}{j}` for a matrix with more than one row and column, `A{k}` otherwise.
+    let matrix = |prefix: &str, to: &str| {
+        let digits = index(prefix)?;
+        Some(if cols > 1 && digits.len() == 2 {
+            let (i, j) = digits.split_at(1);
+            format!("{to}_{i}_{j}")
+        } else {
+            format!("{to}_{digits}_0")
+        })
+    };
+    Some(match (kernel, name) {
+        ("mass_matrix", _) => {
+            let digits = index("M")?;
+            let (i, j) = digits.split_at(1);
+            format!("M_{i}_{j}")
+        }
+        ("bias", _) => format!("h_{}", index("h")?),
+        ("lambda", "lambda") => "lambda".into(),
+        ("accel", _) => format!("qdd_{}", index("qdd")?),
+        ("control", n) if n.starts_with('A') => matrix("A", "A")?,
+        ("control", _) => format!("B_{}", index("B")?),
+        ("closed_loop", n) if n.starts_with("qdd") => format!("qdd_cl_{}", index("qdd")?),
+        ("closed_loop", _) => format!("u_cl_{}", index("u")?),
+        ("stick", "lambda_t") => "stick_lambda_t".into(),
+        ("stick", "lambda_n") => "stick_lambda_n".into(),
+        ("stick", _) => format!("stick_qdd_{}", index("qdd")?),
+        ("impact", n) if n.starts_with("lambdaI") => {
+            format!("impact_lambda_{}", index("lambdaI")?)
+        }
+        ("impact", _) => format!("impact_qdp_{}", index("qdp")?),
+        ("impact_double", n) if n.starts_with("lambdaI") => {
+            format!("impact_ds_lambda_{}", index("lambdaI")?)
+        }
+        ("impact_double", _) => format!("impact_ds_qdp_{}", index("qdp")?),
+        ("points", _) => {
+            let (axis, point) = name.split_once('_')?;
+            format!("{point}_{axis}")
+        }
+        ("energy", n) => n.to_owned(),
+        ("outputs", n) if n.starts_with('y') => format!("y_{}", index("y")?),
+        _ => return None,
+    })
+}
+
+/// The factor that turns a kernel output into the reference's: impulses on a slope are
+/// reported by the reference as their vertical components (`cos phi` times the normal one).
+#[must_use]
+pub fn reference_factor(model: &Model, sample: &Sample, name: &str) -> f64 {
+    match &model.floor.slope {
+        Some(phi) if name.starts_with("lambdaI") => sample.get(&phi.name).cos(),
+        _ => 1.0,
+    }
+}
+
+/// The 2-norm condition number of a symmetric positive definite matrix given by rows (cyclic
+/// Jacobi: its eigenvalues to full precision for these small, well-scaled matrices).
+#[must_use]
+pub fn spd_condition(mut a: Vec<Vec<f64>>) -> f64 {
+    let n = a.len();
+    for _ in 0..100 {
+        let mut off = 0.0;
+        for p in 0..n {
+            for q in p + 1..n {
+                off += a[p][q] * a[p][q];
+                if a[p][q].abs() < 1e-300 {
+                    continue;
+                }
+                let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                let t = theta.signum() / (theta.abs() + theta.hypot(1.0));
+                let c = 1.0 / t.hypot(1.0);
+                let s = t * c;
+                for row in &mut a {
+                    let (akp, akq) = (row[p], row[q]);
+                    row[p] = c * akp - s * akq;
+                    row[q] = s * akp + c * akq;
+                }
+                let (rp, rq) = (a[p].clone(), a[q].clone());
+                a[p] = rp.iter().zip(&rq).map(|(x, y)| c * x - s * y).collect();
+                a[q] = rp.iter().zip(&rq).map(|(x, y)| s * x + c * y).collect();
+            }
+        }
+        if off < 1e-30 {
+            break;
+        }
+    }
+    let eig: Vec<f64> = (0..n).map(|i| a[i][i].abs()).collect();
+    let max = eig.iter().copied().fold(0.0, f64::max);
+    let min = eig.iter().copied().fold(f64::INFINITY, f64::min);
+    max / min
+}
