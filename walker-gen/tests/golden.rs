@@ -1,4 +1,6 @@
-//! Golden copies of generated files: `tests/golden/<scene>.rs` must equal `Config::render()`.
+//! Golden copies of generated files: `tests/golden/<scene>.rs` must equal `Config::render()`,
+//! for two of the paper's scenes and for one model file (`models/compass-gait.toml`, whose
+//! stance and impact kernels are structured solves).
 //!
 //! After an intended change of the generated code, rewrite them with
 //! `WALKER_GEN_BLESS=1 cargo test -p walker-gen --test golden` and review the diff.
@@ -11,9 +13,14 @@ const BLESS: &str = "WALKER_GEN_BLESS=1 cargo test -p walker-gen --test golden";
 
 fn check(scene: &str) {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let golden = root.join("tests/golden").join(format!("{scene}.rs"));
     let mut config = Config::new();
     config.scene_file(root.join("../walker/scenes").join(format!("{scene}.toml")));
+    compare(scene, &config);
+}
+
+fn compare(scene: &str, config: &Config) {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let golden = root.join("tests/golden").join(format!("{scene}.rs"));
     let rendered = config.render().expect("the scene renders");
     if std::env::var_os("WALKER_GEN_BLESS").is_some_and(|v| v == "1") {
         std::fs::create_dir_all(root.join("tests/golden")).expect("create tests/golden");
@@ -52,4 +59,12 @@ fn active_level_matches_golden() {
 #[test]
 fn passive_slope_matches_golden() {
     check("passive-slope");
+}
+
+#[test]
+fn compass_gait_model_matches_golden() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let mut config = Config::new();
+    config.model_file(root.join("../models/compass-gait.toml"));
+    compare("model-compass-gait", &config);
 }
