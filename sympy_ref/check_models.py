@@ -128,12 +128,15 @@ def check_goswami():
     return diff == sp.zeros(2, 2)
 
 
-# start postures (both feet on the floor, just after the relabelling), velocities zero
-START = {
-    "three-link": lambda P: {"th_st": -P["beta"], "th_sw": P["beta"], "th_t": P["th_T"]},
-    "five-link": lambda P: {"th_s1": -P["beta"], "th_f1": -P["beta"], "th_torso": P["th_ref"],
-                            "th_f2": P["beta"], "th_s2": P["beta"]},
-}
+def start_of(m, P):
+    """The model file's [start] values (coordinates and velocities) at the parameters P."""
+    subs = {s: P[s.name] for s, *_ in m.params}
+    return {k: float(ms.parse(v, m.sym, f"start {k}").subs(subs))
+            for k, v in m.raw.get("start", {}).items()}
+
+
+# the models whose files give a start posture (just after an impact, both feet on the floor)
+START = ["three-link", "five-link"]
 
 
 def check_start_A(name):
@@ -141,10 +144,14 @@ def check_start_A(name):
     m = ms.load(os.path.join(ms.MODELS, f"{name}.toml"))
     num = ms.Numeric(m, ms.derive(m))
     P = {s.name: dflt for s, dflt, *_ in m.params}
-    q = [0.0, 0.0] + [0.0] * (len(m.q) - 2)
-    for k, v in START[name](P).items():
-        q[[s.name for s in m.q].index(k)] = v
-    s = {"params": P, "q": q, "qd": [0.0] * len(m.q), "u": [0.0] * len(m.inputs), "mu": 0.0,
+    q, qd = [0.0] * len(m.q), [0.0] * len(m.q)
+    for k, v in start_of(m, P).items():
+        names = [s.name for s in m.q]
+        if k in names:
+            q[names.index(k)] = v
+        else:
+            qd[[s.name for s in m.qd].index(k)] = v
+    s = {"params": P, "q": q, "qd": qd, "u": [0.0] * len(m.inputs), "mu": 0.0,
          "v": [0.0] * len(m.outputs), "t": 0.0}
     with mp.workdps(30):
         out = num.evaluate(s)

@@ -175,6 +175,30 @@ fn parameters_that_differ_only_in_case_are_an_error() {
 }
 
 #[test]
+fn a_start_value_must_name_a_coordinate_or_velocity_and_use_parameters_only() {
+    let r = load_with(MINI, "[stance]", "[start]\nfoo = \"1\"\n\n[stance]");
+    assert_error(
+        r,
+        ModelErrorKind::UnknownReference,
+        "61:1",
+        "expected a coordinate or a velocity",
+    );
+    let r = load_with(MINI, "[stance]", "[start]\nthd = \"th\"\n\n[stance]");
+    assert_error(r, ModelErrorKind::SymbolNotAllowed, "61:8", "start `thd`");
+    let r = load_with(
+        MINI,
+        "[stance]",
+        "[start]\nth = \"-l\"\nthd = \"2*l\"\n\n[stance]",
+    );
+    let model = r.expect("a start in parameters loads");
+    assert_eq!(model.start.len(), 2);
+    assert!(
+        !model.start[0].velocity && model.start[1].velocity,
+        "coordinates first"
+    );
+}
+
+#[test]
 fn two_points_of_one_name_are_an_error() {
     let r = load_with(
         MINI,

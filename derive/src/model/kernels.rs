@@ -9,6 +9,7 @@
 use walker_scene::model::Model;
 
 use super::assemble::{args_of, kernel, named, names, solve_only, with_solve};
+use super::control_check::check_control;
 use super::maps::map_kernels;
 use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
 use super::phases::{output_control, sliding, strike_impacts, strike_rows, stuck};
@@ -311,6 +312,9 @@ impl ModelDerivation {
             Shape::Vector(2),
             &[],
         ));
+        if let Some(control) = kernels.iter().find(|k| k.name == "control") {
+            check_control(model, &m.syms, t, control)?;
+        }
         for k in &kernels {
             k.check_staged()?;
             let free = k.free_symbols(t);

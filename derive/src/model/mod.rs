@@ -10,9 +10,11 @@
 //! kernels as structured solves) uses `mechanics`, `phases` and `program`; `kernels` (the named
 //! kernels the code generator reads, closed form and structured solve) uses `phases`,
 //! `structured`, `maps` (the matrices `S`, `J_I`, `H` as kernels, for users and for checks
-//! by generic linear algebra) and `assemble` (output names and arguments of a kernel).
+//! by generic linear algebra), `assemble` (output names and arguments of a kernel) and
+//! `control_check` (`A` regular at the start posture and somewhere at all).
 
 mod assemble;
+mod control_check;
 mod kernels;
 mod lower;
 mod maps;

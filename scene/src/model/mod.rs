@@ -38,5 +38,5 @@ pub use symbols::{Symbol, SymbolKind};
 pub use types::{
     Body, Control, Coordinate, CoordinateUnit, Descriptor, Desired, Fall, FallCondition, Floor,
     Impact, Input, Model, ModelExpr, Name, Output, Parameter, Point, Relabel, Stage, Stance,
-    Strike,
+    StartValue, Strike,
 };

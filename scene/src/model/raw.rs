@@ -34,6 +34,8 @@ pub(crate) struct RawModel {
     #[serde(default)]
     pub(crate) relabel: Option<Spanned<BTreeMap<Str, Str>>>,
     #[serde(default)]
+    pub(crate) start: Option<Spanned<BTreeMap<Str, Str>>>,
+    #[serde(default)]
     pub(crate) impact: Option<Spanned<RawImpact>>,
     #[serde(default)]
     pub(crate) input: Vec<Spanned<RawInput>>,

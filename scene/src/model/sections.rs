@@ -1,5 +1,5 @@
 //! The sections after the declarations: floor, bodies, points, stance, strike, falls,
-//! relabelling and impact, each checked against the symbol table (the actuated sections are in
+//! relabelling, start and impact, each checked against the symbol table (the actuated sections are in
 //! [`control`](super::control)); then each angle's base-angle divisor.
 
 use std::collections::HashSet;
@@ -13,7 +13,7 @@ use crate::model::raw::{RawModel, Str};
 use crate::model::symbols::SymbolKind;
 use crate::model::types::{
     Body, Coordinate, Fall, FallCondition, Floor, Impact, Model, ModelExpr, Name, Parameter, Point,
-    Relabel, Stance, Strike,
+    Relabel, Stance, StartValue, Strike,
 };
 use crate::structure::{Friction, ImpactLaw};
 
@@ -333,6 +333,35 @@ impl Loader<'_> {
             relabel.sort_by_key(|r| r.coordinate);
         }
 
+        let mut start = Vec::new();
+        if let Some(r) = &raw.start {
+            for (key, value) in r.get_ref() {
+                let name = key.get_ref();
+                let found = coordinates
+                    .iter()
+                    .position(|c| &c.name.name == name)
+                    .map(|i| (i, false))
+                    .or_else(|| match self.symbols.get(name) {
+                        Some(sym) if sym.kind == SymbolKind::Velocity => Some((sym.index, true)),
+                        _ => None,
+                    });
+                let Some((coordinate, velocity)) = found else {
+                    return Err(self.error(
+                        key.span(),
+                        ModelErrorKind::UnknownReference,
+                        format!("start `{name}`: expected a coordinate or a velocity"),
+                    ));
+                };
+                let value = self.expr(value, &format!("start `{name}`"), Use::Constant)?;
+                start.push(StartValue {
+                    coordinate,
+                    velocity,
+                    value,
+                });
+            }
+            start.sort_by_key(|v| (v.velocity, v.coordinate));
+        }
+
         let impact = Impact {
             law,
             locks: impact_raw
@@ -369,6 +398,7 @@ impl Loader<'_> {
             strike,
             falls,
             relabel,
+            start,
             impact,
             inputs,
             control,

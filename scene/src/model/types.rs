@@ -195,6 +195,18 @@ pub struct Relabel {
     pub value: ModelExpr,
 }
 
+/// One line of `[start]`: a coordinate's or a velocity's value at the start of a walk (just
+/// after an impact), in the parameters.
+#[derive(Clone, Debug)]
+pub struct StartValue {
+    /// The coordinate, by index into the coordinates.
+    pub coordinate: usize,
+    /// Whether the value is the coordinate's velocity rather than the coordinate.
+    pub velocity: bool,
+    /// The value, in the parameters.
+    pub value: ModelExpr,
+}
+
 /// The impact (`[impact]`).
 #[derive(Clone, Debug)]
 pub struct Impact {
@@ -333,6 +345,9 @@ pub struct Model {
     pub falls: Vec<Fall>,
     /// The relabelling, in coordinate order.
     pub relabel: Vec<Relabel>,
+    /// The default start of a walk (`[start]`), coordinates then velocities, each in coordinate
+    /// order; what it does not name starts at zero. The outputs' `A` must be regular there.
+    pub start: Vec<StartValue>,
     /// The impact.
     pub impact: Impact,
     /// The inputs.
