@@ -8,6 +8,7 @@ use crate::error::Error;
 use crate::ir::Module;
 use crate::lower::{Derivation, derive, lower};
 use crate::model::{ModelScene, lower_model};
+use crate::model_scene::{is_model_scene, load_model_scene};
 use crate::options::{Division, EmitOptions, Float, FloatFunctions};
 use crate::plan::Plan;
 use crate::stats::{Stats, from_plan};
@@ -196,6 +197,14 @@ impl Config {
     /// The model file is invalid, or a fixed parameter or the friction law is not the model's.
     pub fn load_model(&self) -> Result<Option<ModelScene>, Error> {
         let Some(source) = &self.model else {
+            // A scene file that names a model (`model = "..."`) is a model scene.
+            if let [SceneSource::File(path)] = self.scenes.as_slice()
+                && is_model_scene(path)
+            {
+                let scene = load_model_scene(path)?;
+                scene.validate()?;
+                return Ok(Some(scene));
+            }
             return Ok(None);
         };
         if !self.scenes.is_empty() {
@@ -290,14 +299,23 @@ impl Config {
     /// Files of the scenes before the failing one are written.
     pub fn generate_all(&self) -> Result<Vec<GenerateReport>, Error> {
         if let Some(model) = self.load_model()? {
-            if self.rerun_if_changed
-                && let Some(source) = &self.model
-            {
-                println!("cargo:rerun-if-changed={}", source.path.display());
+            if self.rerun_if_changed {
+                println!("cargo:rerun-if-changed={}", model.model.path);
+                for source in &self.scenes {
+                    if let SceneSource::File(path) = source {
+                        println!("cargo:rerun-if-changed={}", path.display());
+                    }
+                }
             }
             let (source, stats) = self.build_model(&model)?;
-            let out_file =
-                self.out_file_in(&format!("{}.rs", model.model.name.replace('-', "_")))?;
+            let out_file = self.out_file_in(&format!(
+                "{}.rs",
+                model
+                    .name
+                    .as_deref()
+                    .unwrap_or(&model.model.name)
+                    .replace('-', "_")
+            ))?;
             return Ok(vec![write_if_changed(out_file, &source, stats)?]);
         }
         if self.scenes.is_empty() {
@@ -348,6 +366,14 @@ impl Config {
 /// Loads (or clones) and validates one scene.
 fn load(source: &SceneSource) -> Result<Scene, Error> {
     let scene = match source {
+        SceneSource::File(path) if is_model_scene(path) => {
+            return Err(Error::ModelScene {
+                path: path.clone(),
+                message: "a model scene (a scene naming a model file) is generated on its own: \
+                          give it as the only scene"
+                    .to_owned(),
+            });
+        }
         SceneSource::File(path) => Scene::from_file(path)?,
         SceneSource::Value(scene) => (**scene).clone(),
     };

@@ -107,6 +107,14 @@ pub enum Error {
         /// How many scenes were given.
         count: usize,
     },
+    /// A model scene file (a scene naming a model file) is invalid.
+    #[error("{}: {message}", path.display())]
+    ModelScene {
+        /// The scene file.
+        path: PathBuf,
+        /// What is wrong, naming the field.
+        message: String,
+    },
     /// Both scenes and a model were given to one configuration.
     #[error("scenes and a model given: a configuration generates either scenes or one model")]
     SceneAndModel,

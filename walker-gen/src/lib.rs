@@ -7,6 +7,7 @@ pub mod error;
 pub mod ir;
 pub mod lower;
 pub mod model;
+mod model_scene;
 mod options;
 mod plan;
 pub mod stats;

@@ -80,7 +80,8 @@ impl From<FloatFunctionsArg> for FloatFunctions {
 #[derive(Args)]
 #[group(required = true, multiple = false, id = "source")]
 struct Source {
-    /// The scene file (TOML): one of the paper's walker structures with fixed parameters.
+    /// The scene file (TOML): one of the paper's walker structures with fixed parameters, or a
+    /// model scene (`model = "FILE"` with its friction law, fixed parameters and kernels).
     #[arg(long)]
     scene: Option<PathBuf>,
     /// A model file (TOML, `docs/model-format.md`): any planar walker.
@@ -234,6 +235,7 @@ fn main() -> ExitCode {
                 CliError::Gen(
                     Error::Scene(SceneError::Read { .. } | SceneError::Syntax { .. })
                         | Error::Model(_)
+                        | Error::ModelScene { .. }
                 )
             );
             if located {

@@ -24,6 +24,10 @@ pub struct ModelScene {
     pub fixed: BTreeMap<String, f64>,
     /// The friction law of the stance foot (one the model lists).
     pub friction: Friction,
+    /// The kernels to generate, by name (`None`: every kernel of the model).
+    pub kernels: Option<Vec<String>>,
+    /// The generated module's name (`None`: the model's name).
+    pub name: Option<String>,
 }
 
 fn invalid(field: &str, message: String) -> Error {
@@ -48,6 +52,8 @@ impl ModelScene {
             model,
             fixed: BTreeMap::new(),
             friction,
+            kernels: None,
+            name: None,
         }
     }
 
@@ -119,7 +125,21 @@ impl ModelScene {
 pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<Module, Error> {
     scene.validate()?;
     let model = &scene.model;
-    let mut module = Module::new(&model.name);
+    let mut module = Module::new(scene.name.as_deref().unwrap_or(&model.name));
+    if let Some(wanted) = &scene.kernels {
+        for name in wanted {
+            if derivation.kernels.iter().all(|k| k.name != name) {
+                let known: Vec<&str> = derivation.kernels.iter().map(|k| k.name).collect();
+                return Err(invalid(
+                    "kernels",
+                    format!(
+                        "`{name}` is not a kernel of the model; its kernels: {}",
+                        known.join(", ")
+                    ),
+                ));
+            }
+        }
+    }
     let symbols = &derivation.symbols;
     let sym = |name: &str| {
         symbols
@@ -183,7 +203,13 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
             });
         }
     }
-    for k in &derivation.kernels {
+    let selected = derivation.kernels.iter().filter(|k| {
+        scene
+            .kernels
+            .as_ref()
+            .is_none_or(|wanted| wanted.iter().any(|w| w == k.name))
+    });
+    for k in selected {
         let lowering = Lowering {
             binding: &binding,
             kernel: k.name,

@@ -201,3 +201,67 @@ fn bad_model_choices_exit_2_naming_what_is_wrong() {
         "no/such/model.toml",
     );
 }
+
+/// A model scene (a scene file naming a model) generates only its kernels, with its parameters
+/// fixed and its friction law.
+#[test]
+fn a_model_scene_file_selects_kernels_fixes_parameters_and_friction() {
+    let scene = file("models/scenes", "compass-gait-3deg.toml");
+    let kernels = totals(&["stats", "--scene", &scene]);
+    let names: Vec<&str> = kernels.keys().map(String::as_str).collect();
+    assert_eq!(
+        names,
+        [
+            "accel",
+            "energy",
+            "impact",
+            "impact_double",
+            "lambda",
+            "mass_matrix",
+            "points",
+            "stick"
+        ],
+        "exactly the listed kernels"
+    );
+    let text = emitted_twice(&["emit", "--scene", &scene]);
+    assert!(!text.contains("pub phi: F"), "phi is fixed");
+    assert!(
+        text.contains("pub fn accel(") && text.contains("sigma: F"),
+        "Coulomb friction"
+    );
+    assert!(!text.contains("pub fn bias("), "bias is not listed");
+}
+
+/// Writes a model scene into a fresh directory beside a copy of the rimless wheel's model.
+fn model_scene(body: &str) -> String {
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let dir = std::env::temp_dir().join(format!(
+        "walker-gen-model-scene-{}-{}",
+        std::process::id(),
+        NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+    ));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    std::fs::copy(file("models", "rimless-wheel.toml"), dir.join("wheel.toml")).expect("copy");
+    let path = dir.join("scene.toml");
+    std::fs::write(&path, body).expect("write the scene");
+    path.display().to_string()
+}
+
+#[test]
+fn bad_model_scenes_exit_2_naming_the_field() {
+    let s = model_scene("model = \"wheel.toml\"\nkernels = [\"accel\", \"nope\"]\n");
+    fails_naming(
+        &["stats", "--scene", &s],
+        "`nope` is not a kernel of the model",
+    );
+    let s = model_scene("model = \"wheel.toml\"\nfriction = \"sticky\"\n");
+    fails_naming(&["stats", "--scene", &s], "friction = \"sticky\"");
+    let s = model_scene("model = \"wheel.toml\"\ncolour = \"red\"\n");
+    fails_naming(&["stats", "--scene", &s], "colour");
+    let s = model_scene("model = \"no-such-model.toml\"\n");
+    fails_naming(&["stats", "--scene", &s], "no-such-model.toml");
+    let s = model_scene("model = \"wheel.toml\"\n[fix]\nalpha = 9.0\n");
+    fails_naming(&["stats", "--scene", &s], "alpha");
+    let s = model_scene("model = \"wheel.toml\"\nkernels = []\n");
+    fails_naming(&["stats", "--scene", &s], "kernels = []");
+}
