@@ -141,11 +141,22 @@ impl Mechanics {
             }
             bias.push(rest);
         }
+        // A coordinate that moves no body leaves its row of M zero: name it where it is declared.
+        let idle = (0..n).find(|&i| (0..n).all(|j| mass.get(i, j).is_zero()));
         let singular = || Error::CheckFailed {
-            what: format!(
-                "{}: the mass matrix M is singular: some coordinate moves no body with mass or inertia",
-                model.path
-            ),
+            what: match idle.and_then(|i| model.coordinates.get(i)) {
+                Some(c) => format!(
+                    "{}:{}: the mass matrix M is singular: coordinate `{}` moves no body with mass \
+                     or inertia",
+                    model.path, c.name.location, c.name.name
+                ),
+                None => format!(
+                    "{}: the mass matrix M is singular: the bodies do not move independently in \
+                     the coordinates (some combination of coordinates moves no body with mass or \
+                     inertia)",
+                    model.path
+                ),
+            },
         };
         let mass_inv = if n <= MAX_CLOSED_COORDINATES {
             Some(mass.inverse("M").map_err(|_| singular())?)
