@@ -130,7 +130,6 @@ fn seed_at<G: GaitProblem + ?Sized>(
     for _ in 0..6 {
         let r: Vec<f64> = z.rows(0, n).iter().copied().collect();
         let p = frame.p(q);
-        let value = problem.map(&r, p)?;
         let jac = problem.jacobian(&r, p)?;
         let fq = DVector::zeros(n);
         match correct(problem, frame, z.clone(), &normal, &z, &jac, &fq, tol) {
@@ -140,7 +139,8 @@ fn seed_at<G: GaitProblem + ?Sized>(
             Err(CorrectError::Map(e)) => return Err(e),
             Err(CorrectError::NoConvergence) => {
                 // One plain Newton step with this Jacobian, then a fresh chord.
-                let f = DVector::from_fn(n, |i, _| value.image[i] - r[i]);
+                let image = problem.image(&r, p)?;
+                let f = DVector::from_fn(n, |i, _| image[i] - r[i]);
                 let a = &jac - nalgebra::DMatrix::identity(n, n);
                 let Some(d) = a.lu().solve(&(-f)) else {
                     return Ok(None);
