@@ -12,11 +12,23 @@
 //! relative difference of `V` and `T` between the continuation (points placed at every 0.05 of
 //! `mu0`) and the 100 s sweep where the sweep's walk is periodic and the branch stable and
 //! physical.
+//!
+//! `-- fig8 [REPEATS]` times only Fig. 8's continuation (every run, then the median);
+//! `-- profile` runs each branch of both figures alone and prints where its time goes: the
+//! points, and the calls and wall time of the map, of its image alone, its Jacobian, its parameter derivative and the
+//! warm-up walk. `-- dump DIR` writes the branches that `walker reproduce` draws (largest
+//! step 0.05), Fig. 8's branches at the default settings and both figures' branches with points
+//! placed at every 0.01 of `mu0` as CSV files into `DIR`, one line
+//! a point, with every digit, to compare two versions of the library numerically.
 
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
+use nalgebra::DMatrix;
+
 use walker::continuation::{
-    Branch, ContinuationOptions, LabelKind, PaperWalker, Stability, continuation,
+    Branch, ContinuationOptions, GaitProblem, LabelKind, MapValue, PaperWalker, ProblemError,
+    Stability, continuation,
 };
 use walker::setup::Setup;
 use walker::sim::{SimConfig, WalkLimits};
@@ -131,12 +143,247 @@ fn median_time(repeats: usize, mut job: impl FnMut()) -> f64 {
     t[t.len() / 2]
 }
 
+/// Calls and nanoseconds of one kind of evaluation.
+#[derive(Default)]
+struct Tally {
+    calls: AtomicU64,
+    nanos: AtomicU64,
+}
+
+/// The CPU time this thread has run (ns), from Linux's `/proc/thread-self/schedstat` (0
+/// elsewhere; updated at the scheduler's ticks, a few ms): unlike wall time it does not count
+/// the time other jobs on a loaded machine hold the core.
+fn thread_cpu_ns() -> u64 {
+    std::fs::read_to_string("/proc/thread-self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse().ok())
+        .unwrap_or(0)
+}
+
+impl Tally {
+    fn time<T>(&self, f: impl FnOnce() -> T) -> T {
+        let start = Instant::now();
+        let out = f();
+        let ns = u64::try_from(start.elapsed().as_nanos()).unwrap_or(u64::MAX);
+        self.calls.fetch_add(1, Ordering::Relaxed);
+        self.nanos.fetch_add(ns, Ordering::Relaxed);
+        out
+    }
+
+    fn show(&self, name: &str) -> String {
+        let calls = self.calls.load(Ordering::Relaxed);
+        let ms = self.nanos.load(Ordering::Relaxed) as f64 * 1e-6;
+        format!("{name} {calls} ({ms:.1} ms)")
+    }
+}
+
+/// A walker that counts and times what continuation asks of it.
+struct Counted {
+    inner: PaperWalker,
+    map: Tally,
+    image: Tally,
+    jacobian: Tally,
+    derivative: Tally,
+    guess: Tally,
+}
+
+impl GaitProblem for Counted {
+    fn dim(&self) -> usize {
+        self.inner.dim()
+    }
+    fn parameter_name(&self) -> &str {
+        self.inner.parameter_name()
+    }
+    fn map(&self, r: &[f64], p: f64) -> Result<MapValue, ProblemError> {
+        self.map.time(|| self.inner.map(r, p))
+    }
+    fn image(&self, r: &[f64], p: f64) -> Result<Vec<f64>, ProblemError> {
+        self.image.time(|| self.inner.image(r, p))
+    }
+    fn jacobian(&self, r: &[f64], p: f64) -> Result<DMatrix<f64>, ProblemError> {
+        self.jacobian.time(|| self.inner.jacobian(r, p))
+    }
+    fn parameter_derivative(
+        &self,
+        r: &[f64],
+        p: f64,
+        image: &[f64],
+        direction: f64,
+    ) -> Result<Vec<f64>, ProblemError> {
+        self.derivative
+            .time(|| self.inner.parameter_derivative(r, p, image, direction))
+    }
+    fn has_family_at(&self, p: f64) -> bool {
+        self.inner.has_family_at(p)
+    }
+    fn guess(&self, p: f64) -> Option<Vec<f64>> {
+        self.guess.time(|| self.inner.guess(p))
+    }
+}
+
+/// Each branch of both figures alone (one thread), with where its time goes.
+fn profile() {
+    for fig in [Fig::Fig8, Fig::Fig10] {
+        for c in fig.chains() {
+            let Ok(inner) = PaperWalker::new(fig.setup(c), Param::Mu0, SimConfig::default()) else {
+                continue;
+            };
+            let w = Counted {
+                inner,
+                map: Tally::default(),
+                image: Tally::default(),
+                jacobian: Tally::default(),
+                derivative: Tally::default(),
+                guess: Tally::default(),
+            };
+            let (start, cpu) = (Instant::now(), thread_cpu_ns());
+            let b = continuation(&w, 0.0, fig.mu0_max(), &ContinuationOptions::default());
+            let wall = start.elapsed().as_secs_f64() * 1e3;
+            let cpu = thread_cpu_ns().saturating_sub(cpu) as f64 * 1e-6;
+            let (points, labels) = b.as_ref().map_or((0, 0), |b| {
+                (
+                    b.points.len(),
+                    b.points.iter().filter(|p| p.label.is_some()).count(),
+                )
+            });
+            println!(
+                "{} {c}: {wall:.1} ms wall, {cpu:.1} ms CPU, {points} points ({labels} labelled); {}, {}, {}, {}, {}",
+                if matches!(fig, Fig::Fig8) {
+                    "Fig. 8 T_set"
+                } else {
+                    "Fig. 10 phi"
+                },
+                w.map.show("map"),
+                w.image.show("image"),
+                w.jacobian.show("jacobian"),
+                w.derivative.show("dP/dp"),
+                w.guess.show("warm-up"),
+            );
+        }
+    }
+}
+
+/// Fig. 8's continuation alone, `repeats` times.
+fn fig8_only(repeats: usize) {
+    let mut times = Vec::new();
+    let mut points = 0;
+    for _ in 0..repeats {
+        let start = Instant::now();
+        points = branches(Fig::Fig8, &[])
+            .iter()
+            .flatten()
+            .map(|b| b.points.len())
+            .sum();
+        times.push(start.elapsed().as_secs_f64());
+    }
+    let shown: Vec<String> = times.iter().map(|t| format!("{t:.3}")).collect();
+    times.sort_by(f64::total_cmp);
+    println!(
+        "Fig. 8 continuation: median {:.3} s over {repeats} runs ({points} points); runs {}",
+        times[times.len() / 2],
+        shown.join(" ")
+    );
+}
+
+/// One branch as CSV lines: parameter, state, `T`, `dx`, `V`, multipliers (real, imaginary),
+/// smallest normal force, stability, physical, label.
+fn dump_branch(b: &Branch) -> String {
+    let mut out =
+        String::from("p,r0,r1,T,dx,V,m0re,m0im,m1re,m1im,lambda_min,stability,physical,label\n");
+    for pt in &b.points {
+        let m = |i: usize, im: bool| {
+            pt.multipliers
+                .get(i)
+                .map_or(f64::NAN, |m| if im { m.im } else { m.re })
+        };
+        out += &format!(
+            "{:.17e},{:.17e},{:.17e},{:.17e},{:.17e},{:.17e},{:.17e},{:.17e},{:.17e},{:.17e},{:.17e},{:?},{},{}\n",
+            pt.parameter,
+            pt.state[0],
+            pt.state[1],
+            pt.cycle.period,
+            pt.cycle.dx,
+            pt.cycle.speed,
+            m(0, false),
+            m(0, true),
+            m(1, false),
+            m(1, true),
+            pt.tests.min_normal_force.unwrap_or(f64::NAN),
+            pt.stability,
+            pt.physical,
+            pt.label.map_or("", |l| l.tag),
+        );
+    }
+    out
+}
+
+/// The branches of `walker reproduce`'s diagrams and Fig. 8's at the default settings, as CSV
+/// files in `dir`.
+fn dump(dir: &str) {
+    let reproduce = ContinuationOptions {
+        max_step: 0.05,
+        ..ContinuationOptions::default()
+    };
+    let mut jobs: Vec<(String, Setup, Param, f64, f64, ContinuationOptions)> = Vec::new();
+    // Points placed at every 0.01 of mu0 compare two versions at the same parameters.
+    let placed = |fig: Fig| ContinuationOptions {
+        user_points: mu0_grid(0.0, fig.mu0_max(), 0.01),
+        ..ContinuationOptions::default()
+    };
+    for (fig, name, opts) in [
+        (Fig::Fig8, "fig8_t", &reproduce),
+        (Fig::Fig10, "fig10_phi", &reproduce),
+        (Fig::Fig8, "fig8_default_t", &ContinuationOptions::default()),
+        (Fig::Fig8, "fig8_placed_t", &placed(Fig::Fig8)),
+        (Fig::Fig10, "fig10_placed_phi", &placed(Fig::Fig10)),
+    ] {
+        for c in fig.chains() {
+            let mut s = fig.setup(c);
+            s.runtime.mu0 = 0.0;
+            jobs.push((
+                format!("{name}{c}"),
+                s,
+                Param::Mu0,
+                0.0,
+                fig.mu0_max(),
+                opts.clone(),
+            ));
+        }
+    }
+    let mut s = Setup::passive_slope();
+    s.runtime.phi = 0.2;
+    s.runtime.mu0 = 0.5;
+    jobs.push((
+        "fig10_over_phi".into(),
+        s,
+        Param::Phi,
+        0.05,
+        0.3,
+        reproduce.clone(),
+    ));
+    for (name, setup, param, from, to, opts) in jobs {
+        let text = PaperWalker::new(setup, param, SimConfig::default())
+            .map_err(|e| e.to_string())
+            .and_then(|w| continuation(&w, from, to, &opts).map_err(|e| e.to_string()))
+            .map_or_else(|e| format!("error: {e}\n"), |b| dump_branch(&b));
+        let path = format!("{dir}/{name}.csv");
+        if let Err(e) = std::fs::write(&path, text) {
+            eprintln!("{path}: {e}");
+        }
+    }
+}
+
 fn main() {
-    let repeats: usize = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(5)
-        .max(1);
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let count =
+        |i: usize| -> usize { args.get(i).and_then(|a| a.parse().ok()).unwrap_or(5).max(1) };
+    match args.first().map(String::as_str) {
+        Some("profile") => return profile(),
+        Some("fig8") => return fig8_only(count(1)),
+        Some("dump") => return dump(args.get(1).map_or(".", String::as_str)),
+        _ => {}
+    }
+    let repeats = count(0);
     for fig in [Fig::Fig8, Fig::Fig10] {
         let name = if matches!(fig, Fig::Fig8) {
             "Fig. 8"

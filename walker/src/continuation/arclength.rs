@@ -3,9 +3,11 @@
 //! consecutive points (`detect.rs`), and the ends of the range placed exactly.
 //!
 //! Step control, in the scaled arclength of [`super::corrector`]: a step is accepted when the
-//! corrector converges and the tangent turns by less than `acos(0.9)` (26 degrees); it grows by
-//! 1.5 after a correction of at most three iterations, shrinks by 2 after more than eight, and is
-//! halved and retried after a failed correction or a sharp turn, down to the minimum step.
+//! corrector converges, the tangent turns by less than `acos(0.9)` (26 degrees) and the
+//! corrected point lies within [`MAX_PREDICTOR_DISTANCE`] of the predicted one; it grows after a
+//! correction of at most three iterations (by 1.5, by up to 4 where the predictor was far more
+//! accurate than [`PREDICTOR_TARGET`]), shrinks by 2 after more than eight, and is halved and
+//! retried after a failed correction, a sharp turn or a far miss, down to the minimum step.
 
 use nalgebra::DVector;
 use serde::Serialize;
@@ -102,6 +104,22 @@ const FAMILY_APPROACH: f64 = 1e-4;
 /// one `mu0`, where every speed is a cycle) it is rounding noise, not a fold.
 const FOLD_NOISE: f64 = 1e-8;
 
+/// The predictor's distance from the branch (scaled arclength) that the growth of a quickly
+/// converged step aims at ([`growth`]): a polyline through the points stays within a quarter
+/// of it (the sagitta of a chord is a quarter of the predictor's distance for the same step),
+/// 2.5e-4 of the range, well inside a plotted line's width.
+const PREDICTOR_TARGET: f64 = 1e-3;
+
+/// The largest distance (scaled arclength) between the predictor and the corrected point of an
+/// accepted step: the polyline through the points then stays within a quarter of it, about
+/// 9e-3 of the range, of the curve. The largest distance the step control accepted on Figs. 8
+/// and 10 before this bound existed was 3.2e-2; without it, faster growth let one step of 0.2
+/// cut across the turn of `T_set = 0.4` near `mu0 = 0.14` (a distance of 6e-2).
+const MAX_PREDICTOR_DISTANCE: f64 = 3.5e-2;
+
+/// The largest growth of the step after one accepted step.
+const MAX_GROWTH: f64 = 4.0;
+
 /// The scaled parameter values tried as seeds, in order.
 const SEEDS: [f64; 7] = [0.0, 1.0, 0.5, 0.25, 0.75, 0.125, 0.875];
 
@@ -130,7 +148,6 @@ fn seed_at<G: GaitProblem + ?Sized>(
     for _ in 0..6 {
         let r: Vec<f64> = z.rows(0, n).iter().copied().collect();
         let p = frame.p(q);
-        let value = problem.map(&r, p)?;
         let jac = problem.jacobian(&r, p)?;
         let fq = DVector::zeros(n);
         match correct(problem, frame, z.clone(), &normal, &z, &jac, &fq, tol) {
@@ -140,7 +157,8 @@ fn seed_at<G: GaitProblem + ?Sized>(
             Err(CorrectError::Map(e)) => return Err(e),
             Err(CorrectError::NoConvergence) => {
                 // One plain Newton step with this Jacobian, then a fresh chord.
-                let f = DVector::from_fn(n, |i, _| value.image[i] - r[i]);
+                let image = problem.image(&r, p)?;
+                let f = DVector::from_fn(n, |i, _| image[i] - r[i]);
                 let a = &jac - nalgebra::DMatrix::identity(n, n);
                 let Some(d) = a.lu().solve(&(-f)) else {
                     return Ok(None);
@@ -329,8 +347,20 @@ pub(super) fn run<G: GaitProblem + ?Sized>(
         .map_err(|e| match e {
             CorrectError::Map(e) => Some(e),
             CorrectError::NoConvergence => None,
-        })
-        .and_then(|(z, value, res, it)| {
+        });
+        // Too far a miss of the predictor: the polyline through the points would cut the curve.
+        // Checked before the point's Jacobian is computed. Also for the steps onto the end of
+        // the range or onto the point before a family end, which are as long as the distance
+        // left.
+        let shortcut = step > 2.0 * opts.min_step && !family_end;
+        if shortcut
+            && let Ok((z, ..)) = &corrected
+            && (z - &pred).norm() > MAX_PREDICTOR_DISTANCE
+        {
+            h = step / 2.0;
+            continue;
+        }
+        let corrected = corrected.and_then(|(z, value, res, it)| {
             complete(problem, frame, z, value, res, &a.tangent)
                 .map(|b| (b, it))
                 .map_err(Some)
@@ -348,8 +378,9 @@ pub(super) fn run<G: GaitProblem + ?Sized>(
                 continue;
             }
         };
-        if !(at_bound || approach) && b.tangent.dot(&a.tangent) < 0.9 && step > 2.0 * opts.min_step
-        {
+        // Too sharp a turn, also onto the end of the range.
+        let distance = (&b.z - &pred).norm();
+        if shortcut && b.tangent.dot(&a.tangent) < 0.9 {
             h = step / 2.0;
             continue;
         }
@@ -388,7 +419,7 @@ pub(super) fn run<G: GaitProblem + ?Sized>(
         }
         nodes.push(Node { s: b, label: None });
         h = if iterations <= 3 {
-            step * 1.5
+            step * growth(distance)
         } else if iterations > 8 {
             step / 2.0
         } else {
@@ -397,6 +428,19 @@ pub(super) fn run<G: GaitProblem + ?Sized>(
         .clamp(opts.min_step, opts.max_step);
     }
     (nodes, EndReason::MaxPoints)
+}
+
+/// The factor by which a step that converged in at most three iterations grows: 1.5, or more
+/// where the predictor landed well within [`PREDICTOR_TARGET`] of the branch. The predictor's
+/// distance from the corrected point grows as the square of the step (the branch's curvature
+/// times `step^2 / 2`), so `sqrt(PREDICTOR_TARGET / distance)` is the factor that would bring it
+/// to the target; at most [`MAX_GROWTH`]. On the flat ends of Fig. 8's branches (where the foot
+/// sticks and each map costs five to seven times more than at small `mu0`) the step reaches the
+/// largest step after one point instead of four.
+fn growth(distance: f64) -> f64 {
+    (PREDICTOR_TARGET / distance.max(f64::MIN_POSITIVE))
+        .sqrt()
+        .clamp(1.5, MAX_GROWTH)
 }
 
 /// Whether a multiplier of `s` is within [`UNIT_MULTIPLIER_TOL`] of 1.

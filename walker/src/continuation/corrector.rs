@@ -86,17 +86,27 @@ pub(super) enum CorrectError {
 /// Largest number of chord iterations.
 const MAX_ITER: usize = 12;
 
-/// `P(r, p(q)) - r` at `z`, with the map value.
+/// `P(r, p(q)) - r` at `z`, from the image alone ([`GaitProblem::image`]).
 fn residual<G: GaitProblem + ?Sized>(
     problem: &G,
     frame: &Frame,
     z: &DVector<f64>,
-) -> Result<(DVector<f64>, MapValue), ProblemError> {
+) -> Result<DVector<f64>, ProblemError> {
     let n = z.len() - 1;
     let r: Vec<f64> = z.rows(0, n).iter().copied().collect();
-    let value = problem.map(&r, frame.p(z[n]))?;
-    let f = DVector::from_fn(n, |i, _| value.image[i] - r[i]);
-    Ok((f, value))
+    let image = problem.image(&r, frame.p(z[n]))?;
+    Ok(DVector::from_fn(n, |i, _| image[i] - r[i]))
+}
+
+/// The map's full value (descriptors and tests) at the accepted iterate `z`.
+fn value_at<G: GaitProblem + ?Sized>(
+    problem: &G,
+    frame: &Frame,
+    z: &DVector<f64>,
+) -> Result<MapValue, ProblemError> {
+    let n = z.len() - 1;
+    let r: Vec<f64> = z.rows(0, n).iter().copied().collect();
+    problem.map(&r, frame.p(z[n]))
 }
 
 /// The bordered matrix `[D_r P - I | dP/dq; n^T]`.
@@ -149,12 +159,19 @@ pub(super) fn correct<G: GaitProblem + ?Sized>(
     let mut m = bordered(jac, fq, normal);
     let fixes_q = normal[n] == 1.0 && normal.rows(0, n).iter().all(|v| *v == 0.0);
     let mut z = z0;
-    let (mut f, mut value) = residual(problem, frame, &z).map_err(CorrectError::Map)?;
+    let mut f = residual(problem, frame, &z).map_err(CorrectError::Map)?;
+    // The full map value at `z` where it was evaluated instead of the image alone.
+    let mut value: Option<MapValue> = None;
     let first = f.amax();
+    let mut previous = f64::INFINITY;
     for it in 0..=MAX_ITER {
         let res = f.amax();
 
         if res <= tol {
+            let value = match value {
+                Some(v) => v,
+                None => value_at(problem, frame, &z).map_err(CorrectError::Map)?,
+            };
             return Ok((z, value, res, it));
         }
         if it == MAX_ITER || !res.is_finite() || res > 1e3 * first.max(tol) {
@@ -173,7 +190,22 @@ pub(super) fn correct<G: GaitProblem + ?Sized>(
             z[n] = anchor[n];
         }
         let f_old = f;
-        (f, value) = residual(problem, frame, &z).map_err(CorrectError::Map)?;
+        // The iterate that is expected to be accepted gets the full map at once: the residual
+        // falls superlinearly near the end, so the next one is about `res^2 / previous`.
+        let expected = if previous.is_finite() {
+            res * (res / previous)
+        } else {
+            f64::INFINITY
+        };
+        previous = res;
+        if expected <= tol {
+            let v = value_at(problem, frame, &z).map_err(CorrectError::Map)?;
+            f = DVector::from_fn(n, |i, _| v.image[i] - z[i]);
+            value = Some(v);
+        } else {
+            f = residual(problem, frame, &z).map_err(CorrectError::Map)?;
+            value = None;
+        }
         // Broyden's update of the rows of `F`: `M += (dF - M dz) dz^T / |dz|^2`. The bordering
         // row is linear and exact, so its update would be zero.
         let dd = dz.norm_squared();

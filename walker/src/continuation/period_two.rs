@@ -65,6 +65,10 @@ impl<G: GaitProblem + ?Sized> GaitProblem for SecondIterate<'_, G> {
         })
     }
 
+    fn image(&self, r: &[f64], p: f64) -> Result<Vec<f64>, ProblemError> {
+        self.inner.image(&self.inner.image(r, p)?, p)
+    }
+
     fn jacobian(&self, r: &[f64], p: f64) -> Result<DMatrix<f64>, ProblemError> {
         let first = self.inner.map(r, p)?;
         Ok(self.inner.jacobian(&first.image, p)? * self.inner.jacobian(r, p)?)

@@ -129,6 +129,18 @@ pub trait GaitProblem: Sync {
     /// The step could not be taken (named in [`ProblemError`]).
     fn map(&self, r: &[f64], p: f64) -> Result<MapValue, ProblemError>;
 
+    /// `P(r, p)` alone, without the descriptors and the physical tests: what the corrector's
+    /// iterates and the parameter derivative need. It must equal [`GaitProblem::map`]'s image
+    /// exactly (the corrector returns the map's value at the iterate it accepts on this
+    /// image). The default takes it from [`GaitProblem::map`]; a problem whose tests cost
+    /// extra work skips it.
+    ///
+    /// # Errors
+    /// As [`GaitProblem::map`].
+    fn image(&self, r: &[f64], p: f64) -> Result<Vec<f64>, ProblemError> {
+        Ok(self.map(r, p)?.image)
+    }
+
     /// `D_r P (r, p)`, row `i` holding `d P_i / d r_j`.
     ///
     /// # Errors
@@ -153,9 +165,8 @@ pub trait GaitProblem: Sync {
         direction: f64,
     ) -> Result<Vec<f64>, ProblemError> {
         let h = direction.signum() * 1e-6 * p.abs().max(1.0);
-        let shifted = self.map(r, p + h)?;
+        let shifted = self.image(r, p + h)?;
         Ok(shifted
-            .image
             .iter()
             .zip(image)
             .map(|(a, b)| (a - b) / h)

@@ -3,8 +3,9 @@
 //!
 //! The section's independent coordinates are `r = (xd+, th1d+)` ([`crate::poincare::embed`]).
 //! With smooth (tanh) friction and Table 1 the map is one stance phase of `profile.rs` (no
-//! validity test stops it, so the physical tests are evaluated beyond the walking region too)
-//! and its Jacobian comes from the variational equations ([`crate::poincare::poincare_map`]).
+//! validity test stops it, so the physical tests are evaluated beyond the walking region too;
+//! its image alone, for the corrector's iterates, skips following the normal force) and its
+//! Jacobian comes from the variational equations ([`crate::poincare::poincare_map`]).
 //! Otherwise (exact Coulomb friction, other physical parameters) the map is one step of
 //! [`crate::sim::walk`], whose failures end the branch, and the Jacobian is by central
 //! differences; the smallest normal force is then the smallest seen at the ends of the stance
@@ -22,8 +23,25 @@ use crate::sim::{SimConfig, WalkLimits, walk};
 use super::problem::{Cycle, GaitProblem, MapValue, ProblemError, SlipStructure, Tests};
 use super::profile;
 
+/// The relative tolerance of the variational equations behind [`GaitProblem::jacobian`] (the
+/// absolute one is a hundredth of it, as the simulator's defaults). The Jacobian only gives the
+/// multipliers, the tangent and the corrector's starting matrix; no fixed point depends on it.
+/// Against the variational equations at `rtol = 1e-13` its entries differ by at most 6.5e-10 at
+/// `1e-9` (by 1.4e-7 at `1e-8`) on points of Figs. 8 and 10, far below the `1e-6` that tells a
+/// multiplier on the unit circle ([`crate::poincare::UNIT_MULTIPLIER_TOL`]), for a quarter to
+/// two fifths less time than at the simulator's `1e-10` (docs/continuation.md).
+const JACOBIAN_RTOL: f64 = 1e-9;
+
 /// Steps of the warm-up walk that gives a first guess ([`GaitProblem::guess`]).
 const WARMUP_STEPS: usize = 30;
+
+/// The warm-up walk stops earlier once its gait is periodic to this ([`WalkLimits::periodic`]):
+/// close enough for Newton's method, which the seed then runs with the exact Jacobian.
+const WARMUP_PERIODIC: f64 = 1e-3;
+
+/// The relative tolerance of the warm-up walk: it only gives Newton's method a start within
+/// about [`WARMUP_PERIODIC`] of the cycle, where the walk's own error is a thousandth of that.
+const WARMUP_RTOL: f64 = 1e-6;
 
 /// One of the paper's walkers with one parameter free.
 #[derive(Clone, Debug)]
@@ -127,7 +145,7 @@ impl GaitProblem for PaperWalker {
         let cphi = model.runtime.phi.cos();
         let strike = |t: f64| model.is_active().then_some(t - model.runtime.t_set);
         if Jac::new(&model).is_ok() {
-            let step = profile::step(&model, &self.cfg, &s)?;
+            let step = profile::step(&model, &self.cfg, &s, true)?;
             let dx = step.state_plus[0] / cphi;
             return Ok(MapValue {
                 image: reduce(&step.state_plus).to_vec(),
@@ -174,9 +192,31 @@ impl GaitProblem for PaperWalker {
         })
     }
 
+    fn image(&self, r: &[f64], p: f64) -> Result<Vec<f64>, ProblemError> {
+        let model = self.model_at(p);
+        if Jac::new(&model).is_ok() {
+            // The same integration as `map`'s without following the normal force (a third of
+            // the cheap map's work).
+            let step = profile::step(&model, &self.cfg, &embed(&model, Self::r2(r)), false)?;
+            return Ok(reduce(&step.state_plus).to_vec());
+        }
+        Ok(self.map(r, p)?.image)
+    }
+
     fn jacobian(&self, r: &[f64], p: f64) -> Result<DMatrix<f64>, ProblemError> {
         let model = self.model_at(p);
-        let m = poincare_map(&model, &self.cfg, &embed(&model, Self::r2(r)))?;
+        // Only the variational equations; the central differences of the other walkers keep
+        // their own tolerances.
+        let cfg = if Jac::new(&model).is_ok() {
+            SimConfig {
+                rtol: self.cfg.rtol.max(JACOBIAN_RTOL),
+                atol: self.cfg.atol.max(JACOBIAN_RTOL / 100.0),
+                ..self.cfg
+            }
+        } else {
+            self.cfg
+        };
+        let m = poincare_map(&model, &cfg, &embed(&model, Self::r2(r)))?;
         let j = reduced_jacobian(&model, &m.jacobian);
         Ok(DMatrix::from_fn(2, 2, |i, k| j[i][k]))
     }
@@ -195,9 +235,15 @@ impl GaitProblem for PaperWalker {
         let omega0 = self.omega0.unwrap_or_else(|| model.default_omega0());
         let limits = WalkLimits {
             max_steps: WARMUP_STEPS,
+            periodic: Some(WARMUP_PERIODIC),
             ..WalkLimits::default()
         };
-        let w = walk(&model, &self.cfg, model.initial_state(omega0), &limits);
+        let cfg = SimConfig {
+            rtol: self.cfg.rtol.max(WARMUP_RTOL),
+            atol: self.cfg.atol.max(WARMUP_RTOL / 100.0),
+            ..self.cfg
+        };
+        let w = walk(&model, &cfg, model.initial_state(omega0), &limits);
         w.last_state().map(|s| reduce(&s).to_vec())
     }
 }
