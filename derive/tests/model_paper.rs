@@ -155,3 +155,31 @@ fn the_passive_model_file_derives_the_papers_slope_mechanics_exactly() {
         &r,
     );
 }
+
+/// The model file's kernels take the arguments of the hand-derived scene kernels they stand
+/// for (by name, in order): in particular the closed loop computes `u` and does not take it.
+#[test]
+fn the_active_model_kernels_take_the_hand_derived_arguments() {
+    let model = load("paper-active");
+    let d = walker_symbolic::model::ModelDerivation::new(&model).expect("derives");
+    let paper = Derivation::new().expect("paper derivation");
+    for (mine, theirs) in [
+        ("lambda", "lambda_level"),
+        ("accel", "accel_level"),
+        ("control", "control_level"),
+        ("closed_loop", "closed_loop_level"),
+        ("impact", "impact2_level"),
+        ("impact_double", "impact3_level"),
+    ] {
+        let names = |args: &[Sym], table: &Symbols| -> Vec<String> {
+            args.iter().map(|s| table.name(*s).to_owned()).collect()
+        };
+        let k = d.kernel(mine).expect("model kernel");
+        let h = paper.kernel(theirs).expect("paper kernel");
+        assert_eq!(
+            names(&k.args, &d.symbols),
+            names(&h.args, &paper.symbols),
+            "{mine} against {theirs}"
+        );
+    }
+}

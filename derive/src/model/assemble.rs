@@ -59,8 +59,21 @@ pub(super) fn with_solve(mut k: Kernel, solve: Staged, closed: bool, symbols: &S
     }
     k.solve = Some(solve);
     let always = k.args.clone();
-    k.args = args_of(symbols, k.expressions(), &always);
+    k.args = kernel_args(symbols, &k, &always);
     k
+}
+
+/// The arguments of `k` over all its forms: the symbols other than parameters, locals and the
+/// symbols its staged form binds (the closed loop's `u`, computed inside), plus `always`.
+pub(super) fn kernel_args(symbols: &Symbols, k: &Kernel, always: &[Sym]) -> Vec<Sym> {
+    let bound: Vec<Sym> = [&k.staged, &k.solve]
+        .into_iter()
+        .flatten()
+        .flat_map(|st| st.locals.iter().map(|(s, _)| *s))
+        .collect();
+    let mut args = args_of(symbols, k.expressions(), always);
+    args.retain(|s| !bound.contains(s) || always.contains(s));
+    args
 }
 
 /// A kernel of closed forms; its arguments are what the outputs contain, and `always`.

@@ -8,7 +8,7 @@
 
 use walker_scene::model::Model;
 
-use super::assemble::{args_of, kernel, named, names, solve_only, with_solve};
+use super::assemble::{kernel, kernel_args, named, names, solve_only, with_solve};
 use super::control_check::check_control;
 use super::maps::map_kernels;
 use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
@@ -262,7 +262,7 @@ impl ModelDerivation {
             }
         };
         let mut impact = finish(impact, solves.impact);
-        impact.args = args_of(t, impact.expressions(), &qd);
+        impact.args = kernel_args(t, &impact, &qd);
         kernels.push(impact);
         if let (Some(double_rows), Some(double_solve)) = (&rows.double, solves.impact_double) {
             let (doc, eq) = (
@@ -282,7 +282,7 @@ impl ModelDerivation {
                 }
             };
             let mut double = finish(double, double_solve);
-            double.args = args_of(t, double.expressions(), &qd);
+            double.args = kernel_args(t, &double, &qd);
             kernels.push(double);
         }
         kernels.extend(map_kernels(&m, model, &rows, t)?);
