@@ -1,11 +1,23 @@
 """Long runs release the GIL and stop on Ctrl-C between chunks (``KeyboardInterrupt``)."""
 
 import _thread
+import signal
 import threading
 import time
 
 import pytest
 import slippery_walker as sw
+
+
+@pytest.fixture(autouse=True)
+def python_handles_ctrl_c():
+    """Python's own SIGINT handler, as in an interactive session. A process started in the
+    background by a non-interactive shell inherits SIGINT ignored, and then
+    ``_thread.interrupt_main`` does nothing (its documentation): the tests would fail for a
+    reason that is not the module's."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
 
 # 2000 points of 20 s walks: about 23 s of work on this machine (a 20 s walk of the active
 # walker takes about 12 ms, measured in docs/python.md), far longer than the 0.2 s after
