@@ -67,6 +67,22 @@ impl Sample {
     }
 }
 
+impl Sample {
+    /// The sample with its velocities replaced by the reference's post-impact velocities
+    /// (`impact_qdp_i`): the arguments of the `relabel` kernel, whose reference
+    /// (`relabel_qd_i`) relabels those.
+    #[must_use]
+    pub fn after_impact(&self, model: &Model) -> Sample {
+        let mut s = self.clone();
+        for (i, name) in names_of(model, SymbolKind::Velocity).iter().enumerate() {
+            if let Some(v) = self.reference(&format!("impact_qdp_{i}")) {
+                s.values.insert(name.clone(), v);
+            }
+        }
+        s
+    }
+}
+
 fn num(v: &Value) -> f64 {
     v.as_str()
         .and_then(|s| s.parse().ok())
@@ -174,6 +190,9 @@ pub fn reference_name(kernel: &str, name: &str, cols: usize) -> Option<String> {
         }
         ("energy", n) => n.to_owned(),
         ("outputs", n) if n.starts_with('y') => format!("y_{}", index("y")?),
+        ("events", n) => n.to_owned(),
+        ("relabel", n) if n.starts_with("qd") => format!("relabel_qd_{}", index("qd")?),
+        ("relabel", _) => format!("relabel_q_{}", index("q")?),
         _ => return None,
     })
 }

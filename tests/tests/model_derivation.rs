@@ -40,15 +40,23 @@ fn check(model_name: &str) -> (usize, usize) {
         p.set_sym(d.syms.mu, -sample.get("mu0") * sample.get("sigma"));
         let mass = d.kernel("mass_matrix").unwrap().eval_closed(&p).unwrap();
         let kappa = spd_condition((0..n).map(|i| mass[i * n..(i + 1) * n].to_vec()).collect());
+        // The relabelling's arguments are the post-impact velocities.
+        let mut p_after = p.clone();
+        for (i, qd) in d.syms.qd.iter().enumerate() {
+            if let Some(v) = sample.reference(&format!("impact_qdp_{i}")) {
+                p_after.set_sym(*qd, v);
+            }
+        }
         for k in &d.kernels {
+            let p = if k.name == "relabel" { &p_after } else { &p };
             let cols = if k.name == "control" {
                 model.inputs.len()
             } else {
                 1
             };
             let forms = [
-                ("closed form", k.eval_closed(&p), 1e-10),
-                ("structured solve", k.eval_solve(&p), 1e-12 * kappa),
+                ("closed form", k.eval_closed(p), 1e-10),
+                ("structured solve", k.eval_solve(p), 1e-12 * kappa),
             ];
             for (form, values, tol) in forms {
                 let Some(values) = values else { continue };

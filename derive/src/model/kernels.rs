@@ -1,7 +1,8 @@
 //! A model's named kernels: what the code generator turns into Rust for any model file. The
 //! names are the model-independent ones of `docs/model-format.md` (`mass_matrix`, `bias`,
 //! `lambda`, `accel`, `control`, `closed_loop`, `stick`, `impact`, `impact_double`,
-//! `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `points`, `energy`); a kernel's
+//! `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `events`, `relabel`, `points`,
+//! `energy`); a kernel's
 //! arguments are the non-parameter symbols its outputs contain, in the
 //! table's order (coordinates, velocities, inputs, `mu`, auxiliary inputs, `t`), and the impact
 //! kernels take every velocity.
@@ -10,6 +11,7 @@ use walker_scene::model::Model;
 
 use super::assemble::{kernel, kernel_args, named, names, solve_only, with_solve};
 use super::control_check::check_control;
+use super::events::event_kernels;
 use super::maps::map_kernels;
 use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
 use super::phases::{output_control, sliding, strike_impacts, strike_rows, stuck};
@@ -286,6 +288,7 @@ impl ModelDerivation {
             kernels.push(double);
         }
         kernels.extend(map_kernels(&m, model, &rows, t)?);
+        kernels.extend(event_kernels(&m, model, t)?);
         let mut points = Vec::new();
         for (name, [x, z]) in &m.points {
             points.push((format!("x_{name}"), x.clone()));

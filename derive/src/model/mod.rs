@@ -11,10 +11,12 @@
 //! kernels the code generator reads, closed form and structured solve) uses `phases`,
 //! `structured`, `maps` (the matrices `S`, `J_I`, `H` as kernels, for users and for checks
 //! by generic linear algebra), `assemble` (output names and arguments of a kernel) and
-//! `control_check` (`A` regular at the start posture and somewhere at all).
+//! `control_check` (`A` regular at the start posture and somewhere at all); `events` (the
+//! strike guard, the falls and the relabelling as kernels) uses `mechanics`.
 
 mod assemble;
 mod control_check;
+mod events;
 mod kernels;
 mod lower;
 mod maps;

@@ -76,13 +76,14 @@ pub struct Prepared {
     k17: F,
     k18: F,
     k19: F,
+    k20: F,
 }
 
 /// Computes everything the kernels need that depends on the parameters only.
 ///
 /// Call once per parameter set, then pass the result to every kernel.
 ///
-/// Operations: 23 add/sub, 34 mul, 3 div, 1 transcendental.
+/// Operations: 23 add/sub, 35 mul, 3 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 #[must_use]
 pub fn prepare(p: &Params) -> Prepared {
@@ -100,20 +101,21 @@ pub fn prepare(p: &Params) -> Prepared {
     let (k6, k7) = sin_cos(p.phi);
     let k8 = p.a * k7 + p.b * k7;
     let k9 = p.a * k6 + p.b * k6;
-    let k10 = p.a + p.b;
+    let k10 = 2.0_f64 * p.phi;
+    let k11 = p.a + p.b;
     let t5 = 0.5_f64 * p.m_h;
-    let k11 = p.m + t5;
+    let k12 = p.m + t5;
     let t6 = p.a * p.a;
     let t7 = p.b * p.b;
-    let k12 = p.m * t7;
-    let k13 = p.b * t1 + t0 * t6 + k12 + p.m_h * t6 + 2.0_f64 * p.m_h * p.a * p.b
+    let k13 = p.m * t7;
+    let k14 = p.b * t1 + t0 * t6 + k13 + p.m_h * t6 + 2.0_f64 * p.m_h * p.a * p.b
         + p.m_h * t7;
-    let k14 = t4 + k12;
-    let k15 = 0.5_f64 * p.m * t7;
-    let k16 = t4 + p.m * t6 + k15 + t5 * t6 + p.b * t2 + t5 * t7;
-    let k17 = 1.0_f64 / k0;
-    let k18 = 1.0_f64 / k7;
-    let k19 = 1.0_f64 / k13;
+    let k15 = t4 + k13;
+    let k16 = 0.5_f64 * p.m * t7;
+    let k17 = t4 + p.m * t6 + k16 + t5 * t6 + p.b * t2 + t5 * t7;
+    let k18 = 1.0_f64 / k0;
+    let k19 = 1.0_f64 / k7;
+    let k20 = 1.0_f64 / k14;
     Prepared {
         mu0: p.mu0,
         c: p.c,
@@ -137,6 +139,7 @@ pub fn prepare(p: &Params) -> Prepared {
         k17,
         k18,
         k19,
+        k20,
     }
 }
 
@@ -211,12 +214,12 @@ pub fn mass_matrix(p: &Prepared, th_st: F, th_sw: F) -> [[F; 4]; 4] {
     let t5 = -(p.k1 * t4);
     let t6 = -(p.k2 * t0);
     let t7 = p.k1 * t3;
-    let t8 = -(t3 * p.k14 * t0 + t4 * p.k14 * t1);
+    let t8 = -(t3 * p.k15 * t0 + t4 * p.k15 * t1);
     [
         [p.k0, 0.0_f64, t2, t5],
         [0.0_f64, p.k0, t6, t7],
-        [t2, t6, p.k13, t8],
-        [t5, t7, t8, p.k12],
+        [t2, t6, p.k14, t8],
+        [t5, t7, t8, p.k13],
     ]
 }
 
@@ -280,8 +283,8 @@ pub fn bias(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F) -> [F; 4] {
     let (t2, t3) = sin_cos(th_sw);
     let t4 = p.k2 * th_std * th_std;
     let t5 = p.k1 * th_swd * th_swd;
-    let t6 = th_swd * p.k14 * th_swd;
-    let t7 = th_std * p.k14 * th_std;
+    let t6 = th_swd * p.k15 * th_swd;
+    let t7 = th_std * p.k15 * th_std;
     [
         t2 * t5 - t0 * t4,
         p.k3 + t3 * t5 - t1 * t4,
@@ -352,33 +355,33 @@ pub fn lambda(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F, xd: F) -> 
     let t13 = t1 * t8;
     let t14 = p.k3 + t4 * t10;
     let t15 = t14 - t13;
-    let t16 = th_swd * p.k14 * th_swd;
-    let t17 = th_std * p.k14 * th_std;
-    let t18 = t2 * p.k17;
-    let t19 = t6 * p.k17;
-    let t20 = t5 * p.k17;
-    let t21 = t7 * p.k17;
-    let t22 = tanh(p.c * xd * p.k18);
+    let t16 = th_swd * p.k15 * th_swd;
+    let t17 = th_std * p.k15 * th_std;
+    let t18 = t2 * p.k18;
+    let t19 = t6 * p.k18;
+    let t20 = t5 * p.k18;
+    let t21 = t7 * p.k18;
+    let t22 = tanh(p.c * xd * p.k19);
     let t23 = p.mu0 * t22;
     let t24 = p.k7 * t23;
     let t25 = p.k7 + p.k6 * t23;
     let t26 = t24 - p.k6;
     let t27 = t18 * t26 + t19 * t25;
-    let t28 = p.k13 - (t2 * t18 + t6 * t19);
-    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k14 * t0 + t4 * p.k14 * t1);
+    let t28 = p.k14 - (t2 * t18 + t6 * t19);
+    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
     let t30 = 1.0_f64 / t28;
     let t31 = t29 * t30;
-    let t32 = 1.0_f64 / (p.k12 - (t7 * t21 + t29 * t31 + t5 * t20));
+    let t32 = 1.0_f64 / (p.k13 - (t7 * t21 + t29 * t31 + t5 * t20));
     let t33 = (t21 * t25 + t27 * t31 + t20 * t26) * t32;
     let t34 = t30 * (t27 + t31 * t33 * t28);
     let t35 = t0 * (p.k5 + t4 * t16) - t3 * t16 * t1 - t15 * t19 + t12 * t18;
     let t36 = t32
         * (t3 * (t1 * t17 - p.k4) - t4 * t17 * t0 - t31 * t35 + t15 * t21 - t12 * t20);
     let t37 = t30 * (t35 - t31 * t36 * t28);
-    -((p.k17 * (t9 - t11 + p.k0 * (t20 * t36 - t18 * t37)) * p.k6
-        + p.k17 * (t13 - t14 + p.k0 * (t19 * t37 - t21 * t36)) * p.k7)
-        / (p.k17 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33)) * p.k6
-            + p.k17 * (t25 + p.k0 * (t19 * t34 + t21 * t33)) * p.k7) * p.k7)
+    -((p.k18 * (t9 - t11 + p.k0 * (t20 * t36 - t18 * t37)) * p.k6
+        + p.k18 * (t13 - t14 + p.k0 * (t19 * t37 - t21 * t36)) * p.k7)
+        / (p.k18 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33)) * p.k6
+            + p.k18 * (t25 + p.k0 * (t19 * t34 + t21 * t33)) * p.k7) * p.k7)
 }
 
 /// Checked variant of [`lambda`]: the same value, or why it would not be finite.
@@ -442,33 +445,33 @@ pub fn accel(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F, xd: F) -> [
     let t13 = t1 * t8;
     let t14 = p.k3 + t4 * t10;
     let t15 = t14 - t13;
-    let t16 = th_swd * p.k14 * th_swd;
-    let t17 = th_std * p.k14 * th_std;
-    let t18 = t2 * p.k17;
-    let t19 = t6 * p.k17;
-    let t20 = t5 * p.k17;
-    let t21 = t7 * p.k17;
-    let t22 = tanh(p.c * xd * p.k18);
+    let t16 = th_swd * p.k15 * th_swd;
+    let t17 = th_std * p.k15 * th_std;
+    let t18 = t2 * p.k18;
+    let t19 = t6 * p.k18;
+    let t20 = t5 * p.k18;
+    let t21 = t7 * p.k18;
+    let t22 = tanh(p.c * xd * p.k19);
     let t23 = p.mu0 * t22;
     let t24 = p.k7 * t23;
     let t25 = p.k7 + p.k6 * t23;
     let t26 = t24 - p.k6;
     let t27 = t18 * t26 + t19 * t25;
-    let t28 = p.k13 - (t2 * t18 + t6 * t19);
-    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k14 * t0 + t4 * p.k14 * t1);
+    let t28 = p.k14 - (t2 * t18 + t6 * t19);
+    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
     let t30 = 1.0_f64 / t28;
     let t31 = t29 * t30;
-    let t32 = 1.0_f64 / (p.k12 - (t7 * t21 + t29 * t31 + t5 * t20));
+    let t32 = 1.0_f64 / (p.k13 - (t7 * t21 + t29 * t31 + t5 * t20));
     let t33 = (t21 * t25 + t27 * t31 + t20 * t26) * t32;
     let t34 = t30 * (t27 + t31 * t33 * t28);
-    let t35 = p.k17 * (t25 + p.k0 * (t19 * t34 + t21 * t33));
-    let t36 = p.k17 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33));
+    let t35 = p.k18 * (t25 + p.k0 * (t19 * t34 + t21 * t33));
+    let t36 = p.k18 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33));
     let t37 = t0 * (p.k5 + t4 * t16) - t3 * t16 * t1 - t15 * t19 + t12 * t18;
     let t38 = t32
         * (t3 * (t1 * t17 - p.k4) - t4 * t17 * t0 - t31 * t37 + t15 * t21 - t12 * t20);
     let t39 = t30 * (t37 - t31 * t38 * t28);
-    let t40 = p.k17 * (t13 - t14 + p.k0 * (t19 * t39 - t21 * t38));
-    let t41 = p.k17 * (t9 - t11 + p.k0 * (t20 * t38 - t18 * t39));
+    let t40 = p.k18 * (t13 - t14 + p.k0 * (t19 * t39 - t21 * t38));
+    let t41 = p.k18 * (t9 - t11 + p.k0 * (t20 * t38 - t18 * t39));
     let t42 = (p.k6 * t41 + p.k7 * t40) / (p.k6 * t36 + p.k7 * t35);
     [t41 - t36 * t42, t40 - t35 * t42, t39 - t34 * t42, t38 + t33 * t42]
 }
@@ -526,15 +529,15 @@ pub fn stick(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F) -> [F; 6] {
     let (t2, t3) = sin_cos(th_sw);
     let t4 = p.k2 * th_std * th_std;
     let t5 = p.k1 * th_swd * th_swd;
-    let t6 = t2 * p.k14 * t0 + t3 * p.k14 * t1;
-    let t7 = th_swd * p.k14 * th_swd;
+    let t6 = t2 * p.k15 * t0 + t3 * p.k15 * t1;
+    let t7 = th_swd * p.k15 * th_swd;
     let t8 = t0 * (p.k5 + t3 * t7);
     let t9 = t2 * t7 * t1;
-    let t10 = th_std * p.k14 * th_std;
-    let t11 = t6 * p.k19;
+    let t10 = th_std * p.k15 * th_std;
+    let t11 = t6 * p.k20;
     let t12 = (t2 * (t1 * t10 - p.k4) - t3 * t10 * t0 - (t9 - t8) * t11)
-        / (p.k12 - t6 * t11);
-    let t13 = p.k19 * (t8 - t9 + t11 * t12 * p.k13);
+        / (p.k13 - t6 * t11);
+    let t13 = p.k20 * (t8 - t9 + t11 * t12 * p.k14);
     let t14 = t2 * t5 - t0 * t4 + (p.k2 * t1 * t13 - p.k1 * t3 * t12);
     let t15 = p.k3 + t3 * t5 - t1 * t4 + (p.k1 * t2 * t12 - p.k2 * t0 * t13);
     [0.0_f64, 0.0_f64, t13, t12, p.k7 * t14 - p.k6 * t15, p.k6 * t14 + p.k7 * t15]
@@ -610,21 +613,21 @@ pub fn impact(
     let t11 = t3 * p.k8;
     let t12 = t4 * p.k9;
     let t13 = t11 - t12;
-    let t14 = t2 * p.k17;
-    let t15 = t6 * p.k17;
-    let t16 = t5 * p.k17;
-    let t17 = t7 * p.k17;
-    let t18 = p.k13 - (t2 * t14 + t6 * t15);
-    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k14 * t0 + t4 * p.k14 * t1);
+    let t14 = t2 * p.k18;
+    let t15 = t6 * p.k18;
+    let t16 = t5 * p.k18;
+    let t17 = t7 * p.k18;
+    let t18 = p.k14 - (t2 * t14 + t6 * t15);
+    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
     let t20 = 1.0_f64 / t18;
     let t21 = t19 * t20;
     let t22 = p.k6 * t14;
     let t23 = t10 + p.k7 * t15;
     let t24 = (t13 + t21 * (t22 - t23) - p.k7 * t17 + p.k6 * t16)
-        / (p.k12 - (t7 * t17 + t19 * t21 + t5 * t16));
+        / (p.k13 - (t7 * t17 + t19 * t21 + t5 * t16));
     let t25 = t20 * (t23 - t22 - t21 * t24 * t18);
-    let t26 = p.k17 * (p.k7 + p.k0 * (t15 * t25 - t17 * t24));
-    let t27 = p.k17 * (p.k6 + p.k0 * (t16 * t24 - t14 * t25));
+    let t26 = p.k18 * (p.k7 + p.k0 * (t15 * t25 - t17 * t24));
+    let t27 = p.k18 * (p.k6 + p.k0 * (t16 * t24 - t14 * t25));
     let t28 = (th_std * (t8 - t9) + th_swd * (t12 - t11) - p.k7 * zd - p.k6 * xd)
         / (t10 * t25 + t13 * t24 + p.k7 * t26 + p.k6 * t27);
     [t28, xd + t27 * t28, zd + t26 * t28, th_std + t25 * t28, th_swd + t24 * t28]
@@ -706,15 +709,15 @@ pub fn impact_double(
     let t14 = p.k6 * xd;
     let t15 = p.k7 * zd;
     let t16 = th_std * (t8 - t9) + th_swd * (t12 - t11) - t15;
-    let t17 = t2 * p.k17;
-    let t18 = t6 * p.k17;
-    let t19 = t5 * p.k17;
-    let t20 = t7 * p.k17;
-    let t21 = p.k13 - (t2 * t17 + t6 * t18);
-    let t22 = t5 * t17 + t7 * t18 - (t3 * p.k14 * t0 + t4 * p.k14 * t1);
+    let t17 = t2 * p.k18;
+    let t18 = t6 * p.k18;
+    let t19 = t5 * p.k18;
+    let t20 = t7 * p.k18;
+    let t21 = p.k14 - (t2 * t17 + t6 * t18);
+    let t22 = t5 * t17 + t7 * t18 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
     let t23 = 1.0_f64 / t21;
     let t24 = t22 * t23;
-    let t25 = 1.0_f64 / (p.k12 - (t7 * t20 + t22 * t24 + t5 * t19));
+    let t25 = 1.0_f64 / (p.k13 - (t7 * t20 + t22 * t24 + t5 * t19));
     let t26 = p.k6 * t17;
     let t27 = p.k7 * t18;
     let t28 = t10 + t27;
@@ -722,15 +725,15 @@ pub fn impact_double(
     let t30 = p.k7 * t20;
     let t31 = t25 * (t13 + t24 * (t26 - t28) - t30 + t29);
     let t32 = t23 * (t28 - t26 - t24 * t31 * t21);
-    let t33 = p.k17 * (p.k7 + p.k0 * (t18 * t32 - t20 * t31));
-    let t34 = p.k17 * (p.k6 + p.k0 * (t19 * t31 - t17 * t32));
+    let t33 = p.k18 * (p.k7 + p.k0 * (t18 * t32 - t20 * t31));
+    let t34 = p.k18 * (p.k6 + p.k0 * (t19 * t31 - t17 * t32));
     let t35 = p.k6 * t34;
     let t36 = p.k7 * t33;
     let t37 = t10 * t32 + t13 * t31 + t36 + t35;
     let t38 = t25 * (t24 * (t26 - t27) - t30 + t29);
     let t39 = t23 * (t27 - t26 - t24 * t38 * t21);
-    let t40 = p.k17 * (p.k7 + p.k0 * (t18 * t39 - t20 * t38));
-    let t41 = p.k17 * (p.k6 + p.k0 * (t19 * t38 - t17 * t39));
+    let t40 = p.k18 * (p.k7 + p.k0 * (t18 * t39 - t20 * t38));
+    let t41 = p.k18 * (p.k6 + p.k0 * (t19 * t38 - t17 * t39));
     let t42 = t35 + t36;
     let t43 = 1.0_f64 / t37;
     let t44 = t42 * t43;
@@ -889,6 +892,151 @@ pub fn impact_double_rows_checked(
     Ok(out)
 }
 
+/// The strike guard (positive during the stance, through zero at the strike) and each fall's value
+/// (the walk fails where one reaches zero).
+///
+/// Paper: model file.
+///
+/// Arguments: `x`, `z`, `th_st`, `th_sw`; parameters through `p` from [`prepare`].
+/// Returns `[guard, fall_hip-down]`.
+///
+/// Operations per call: 5 add/sub, 4 mul, 1 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`events_checked`] rejects
+/// non-finite arguments and outputs.
+#[inline]
+#[must_use]
+pub fn events(p: &Prepared, x: F, z: F, th_st: F, th_sw: F) -> [F; 2] {
+    let (t0, t1) = sin_cos(th_st);
+    [th_sw - p.k10 + th_st, p.k6 * x + p.k7 * z + t1 * p.k8 + t0 * p.k9]
+}
+
+/// Checked variant of [`events`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 6
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `x`, `z`, `th_st`,
+/// `th_sw`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming the first
+/// output (in the order `guard`, `fall_hip-down`) that is NaN or infinite, for example where a
+/// denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn events_checked(
+    p: &Prepared,
+    x: F,
+    z: F,
+    th_st: F,
+    th_sw: F,
+) -> Result<[F; 2], KernelError> {
+    KernelError::argument("x", x)?;
+    KernelError::argument("z", z)?;
+    KernelError::argument("th_st", th_st)?;
+    KernelError::argument("th_sw", th_sw)?;
+    let out = events(p, x, z, th_st, th_sw);
+    KernelError::output("guard", out[0])?;
+    KernelError::output("fall_hip-down", out[1])?;
+    Ok(out)
+}
+
+/// Coordinates and velocities after the impact: the striking point becomes the stance foot, the
+/// other coordinates by the relabelling, from the post-impact velocities.
+///
+/// Paper: Eqs. 12-16, model file.
+///
+/// Arguments: `x`, `z`, `th_st`, `th_sw`, `xd`, `zd`, `th_std`, `th_swd`; parameters through `p` from [`prepare`].
+/// Returns `[q0, q1, q2, q3, qd0, qd1, qd2, qd3]`.
+///
+/// Operations per call: 8 add/sub, 10 mul, 2 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`relabel_checked`] rejects
+/// non-finite arguments and outputs.
+#[allow(
+    clippy::too_many_arguments,
+    reason = "one argument per state component the kernel reads, as the model declares them"
+)]
+#[inline]
+#[must_use]
+pub fn relabel(
+    p: &Prepared,
+    x: F,
+    z: F,
+    th_st: F,
+    th_sw: F,
+    xd: F,
+    zd: F,
+    th_std: F,
+    th_swd: F,
+) -> [F; 8] {
+    let (t0, t1) = sin_cos(th_st);
+    let (t2, t3) = sin_cos(th_sw);
+    let t4 = th_std * p.k11;
+    let t5 = th_swd * p.k11;
+    [
+        x - t2 * p.k11 + t0 * p.k11,
+        z - t3 * p.k11 + t1 * p.k11,
+        th_sw,
+        th_st,
+        xd - t3 * t5 + t1 * t4,
+        zd + t2 * t5 - t0 * t4,
+        th_swd,
+        th_std,
+    ]
+}
+
+/// Checked variant of [`relabel`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 16
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `x`, `z`, `th_st`,
+/// `th_sw`, `xd`, `zd`, `th_std`, `th_swd`) that is NaN or infinite; otherwise
+/// [`KernelError::NonFiniteOutput`] naming the first output (in the order `q0`, `q1`, `q2`, `q3`,
+/// `qd0`, `qd1`, `qd2`, `qd3`) that is NaN or infinite, for example where a denominator vanishes or
+/// a parameter given to [`prepare`] is not finite.
+#[allow(
+    clippy::too_many_arguments,
+    reason = "one argument per state component the kernel reads, as the model declares them"
+)]
+#[inline]
+pub fn relabel_checked(
+    p: &Prepared,
+    x: F,
+    z: F,
+    th_st: F,
+    th_sw: F,
+    xd: F,
+    zd: F,
+    th_std: F,
+    th_swd: F,
+) -> Result<[F; 8], KernelError> {
+    KernelError::argument("x", x)?;
+    KernelError::argument("z", z)?;
+    KernelError::argument("th_st", th_st)?;
+    KernelError::argument("th_sw", th_sw)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th_std", th_std)?;
+    KernelError::argument("th_swd", th_swd)?;
+    let out = relabel(p, x, z, th_st, th_sw, xd, zd, th_std, th_swd);
+    KernelError::output("q0", out[0])?;
+    KernelError::output("q1", out[1])?;
+    KernelError::output("q2", out[2])?;
+    KernelError::output("q3", out[3])?;
+    KernelError::output("qd0", out[4])?;
+    KernelError::output("qd1", out[5])?;
+    KernelError::output("qd2", out[6])?;
+    KernelError::output("qd3", out[7])?;
+    Ok(out)
+}
+
 /// Positions of the model's named points.
 ///
 /// Paper: model file.
@@ -907,9 +1055,9 @@ pub fn impact_double_rows_checked(
 pub fn points(p: &Prepared, x: F, z: F, th_st: F, th_sw: F) -> [F; 4] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = t0 * p.k10;
-    let t5 = t1 * p.k10;
-    [t4 + x, t5 + z, x - t2 * p.k10 + t4, z - t3 * p.k10 + t5]
+    let t4 = t0 * p.k11;
+    let t5 = t1 * p.k11;
+    [x + t4, z + t5, x - t2 * p.k11 + t4, z - t3 * p.k11 + t5]
 }
 
 /// Checked variant of [`points`]: the same value, or why it would not be finite.
@@ -974,12 +1122,12 @@ pub fn energy(
 ) -> [F; 2] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = th_swd * p.k14;
+    let t4 = th_swd * p.k15;
     [
-        xd * p.k11 * xd + zd * p.k11 * zd
-            + th_swd * (th_swd * p.k15 - p.k1 * xd * t3 + p.k1 * zd * t2)
+        xd * p.k12 * xd + zd * p.k12 * zd
+            + th_swd * (th_swd * p.k16 - p.k1 * xd * t3 + p.k1 * zd * t2)
             + th_std
-                * (t1 * (p.k2 * xd - t3 * t4) + th_std * p.k16
+                * (t1 * (p.k2 * xd - t3 * t4) + th_std * p.k17
                     - t0 * (p.k2 * zd + t2 * t4)),
         p.k3 * z - t3 * p.k4 + t1 * p.k5,
     ]
