@@ -10,7 +10,7 @@ use walker_scene::model::Model;
 
 use super::assemble::{kernel, named};
 use super::mechanics::Mechanics;
-use super::phases::StrikeRows;
+use super::phases::{OutputMaps, StrikeRows, output_maps};
 use crate::error::Result;
 use crate::kernels::{Kernel, Shape};
 use crate::matrix::Matrix;
@@ -63,26 +63,9 @@ pub fn map_kernels(
         ));
     }
     if !model.outputs.is_empty() {
-        let y = model
-            .outputs
-            .iter()
-            .map(|o| m.syms.lower(&o.h))
-            .collect::<Result<Vec<_>>>()?;
-        let h = jacobian(&y);
-        let hq = h.mul(&m.qd_column())?;
-        let mut outputs = named("y", &Matrix::column(y.clone()));
-        outputs.extend(named("H", &h));
-        let drift: Vec<RatFunc> = (0..y.len())
-            .map(|i| {
-                m.syms
-                    .q
-                    .iter()
-                    .zip(&m.syms.qd)
-                    .fold(RatFunc::zero(), |acc, (q, qd)| {
-                        acc + &(hq.get(i, 0).diff(*q) * RatFunc::sym(*qd))
-                    })
-            })
-            .collect();
+        let OutputMaps { y, jacobian, drift } = output_maps(m, model)?;
+        let mut outputs = named("y", &Matrix::column(y));
+        outputs.extend(named("H", &jacobian));
         outputs.extend(named("Hdqd", &Matrix::column(drift)));
         kernels.push(kernel(
             table,

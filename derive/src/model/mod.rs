@@ -29,8 +29,8 @@ mod table;
 pub use kernels::{MAX_INVERSE_TERMS, ModelDerivation};
 pub use mechanics::{FloorGeometry, MAX_CLOSED_COORDINATES, Mechanics, time_derivative};
 pub use phases::{
-    ImpactMap, OutputControl, Sliding, StrikeImpacts, StrikeRows, Stuck, impact_map,
-    output_control, sliding, strike_impacts, strike_rows, stuck,
+    ImpactMap, OutputControl, OutputMaps, Sliding, StrikeImpacts, StrikeRows, Stuck, impact_map,
+    output_control, output_maps, sliding, strike_impacts, strike_rows, stuck,
 };
 pub use program::{Ldlt, Program};
 pub use structured::{StructuredKernels, structured_kernels};

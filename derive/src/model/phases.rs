@@ -51,6 +51,44 @@ pub fn sliding(m: &Mechanics) -> Result<Sliding> {
     })
 }
 
+/// A model's controlled outputs `y = h(q)`, their Jacobian `H = dh/dq` and the drift
+/// `Hdot qdot` (`yddot = H qdd + Hdot qdot`).
+#[derive(Clone, Debug)]
+pub struct OutputMaps {
+    /// `y`, one per output.
+    pub y: Vec<RatFunc>,
+    /// `H`, outputs x coordinates.
+    pub jacobian: Matrix,
+    /// `Hdot qdot = sum_j d(H qdot)/dq_j qdot_j`, one per output.
+    pub drift: Vec<RatFunc>,
+}
+
+/// The outputs of `model` with their Jacobian and drift.
+///
+/// # Errors
+/// An output expression that does not lower.
+pub fn output_maps(m: &Mechanics, model: &Model) -> Result<OutputMaps> {
+    let y = model
+        .outputs
+        .iter()
+        .map(|o| m.syms.lower(&o.h))
+        .collect::<Result<Vec<_>>>()?;
+    let jacobian = Matrix::jacobian(&y, &m.syms.q);
+    let hq = jacobian.mul(&m.qd_column())?;
+    let drift = (0..y.len())
+        .map(|i| {
+            m.syms
+                .q
+                .iter()
+                .zip(&m.syms.qd)
+                .fold(RatFunc::zero(), |acc, (q, qd)| {
+                    acc + &(hq.get(i, 0).diff(*q) * RatFunc::sym(*qd))
+                })
+        })
+        .collect();
+    Ok(OutputMaps { y, jacobian, drift })
+}
+
 /// The output-following control (Section 3.2) with `m` outputs and `m` inputs:
 /// `yddot = A u - B`, `u = A^-1 (v + B)`.
 #[derive(Clone, Debug)]
@@ -72,22 +110,11 @@ pub struct OutputControl {
 /// A model without outputs, or `A` singular identically (the outputs are not independent
 /// through the inputs).
 pub fn output_control(m: &Mechanics, model: &Model, projection: &Matrix) -> Result<OutputControl> {
-    let outputs = model
-        .outputs
-        .iter()
-        .map(|o| m.syms.lower(&o.h))
-        .collect::<Result<Vec<_>>>()?;
-    let h_jac = Matrix::jacobian(&outputs, &m.syms.q);
-    // ydot = H qdot; yddot = H qdd + sum_j d(H qdot)/dq_j qd_j.
-    let hq = h_jac.mul(&m.qd_column())?;
-    let mut drift = Vec::with_capacity(outputs.len());
-    for i in 0..outputs.len() {
-        let mut acc = RatFunc::zero();
-        for (q, qd) in m.syms.q.iter().zip(&m.syms.qd) {
-            acc = acc + &(hq.get(i, 0).diff(*q) * RatFunc::sym(*qd));
-        }
-        drift.push(acc);
-    }
+    let OutputMaps {
+        jacobian: h_jac,
+        drift,
+        ..
+    } = output_maps(m, model)?;
     let h_minv_y = h_jac.mul(m.mass_inv()?)?.mul(projection)?;
     let a = h_minv_y.mul(&m.input_map)?;
     let b = h_minv_y.mul(&m.bias)?.sub(&Matrix::column(drift))?;

@@ -15,6 +15,7 @@
 use walker_scene::model::Model;
 
 use super::mechanics::Mechanics;
+use super::phases::output_maps;
 use super::program::{Ldlt, Program};
 use crate::error::Result;
 use crate::kernels::Staged;
@@ -115,7 +116,8 @@ fn sliding(m: &Mechanics, table: &mut Symbols, name: &str) -> Result<(Staged, St
     Ok((with(vec![lambda]), with(accel)))
 }
 
-/// `A`, `B` (Eqs. 30-31) by the structured solve, and the program so far.
+/// `A`, `B` (Eqs. 30-31) by the structured solve, with the projected solutions they are built
+/// from: `w[j] = M^-1 Y S_j` and `c = M^-1 Y h`.
 struct Control {
     a: Matrix,
     b: Vec<RatFunc>,
@@ -126,22 +128,10 @@ struct Control {
 fn control(p: &mut Program, m: &Mechanics, model: &Model) -> Result<Control> {
     let s = slide(p, m)?;
     let n = m.syms.q.len();
-    let outputs = model
-        .outputs
-        .iter()
-        .map(|o| m.syms.lower(&o.h))
-        .collect::<Result<Vec<_>>>()?;
-    let h_jac = Matrix::jacobian(&outputs, &m.syms.q);
-    let hq = h_jac.mul(&m.qd_column())?;
-    let mut drift = Vec::with_capacity(outputs.len());
-    for i in 0..outputs.len() {
-        let mut acc = RatFunc::zero();
-        for (q, qd) in m.syms.q.iter().zip(&m.syms.qd) {
-            acc = acc + &(hq.get(i, 0).diff(*q) * RatFunc::sym(*qd));
-        }
-        drift.push(p.bind(acc)?);
-    }
-    let h = p.bind_matrix(&h_jac)?;
+    let maps = output_maps(m, model)?;
+    let rows = maps.y.len();
+    let drift = p.bind_all(&maps.drift)?;
+    let h = p.bind_matrix(&maps.jacobian)?;
     let bias = p.bind_all(m.bias.entries())?;
     let c = p.solve(&s.factor, &bias)?;
     let c = project(p, &s, &c)?;
@@ -152,7 +142,6 @@ fn control(p: &mut Program, m: &Mechanics, model: &Model) -> Result<Control> {
         let x = p.solve(&s.factor, &sj)?;
         w.push(project(p, &s, &x)?);
     }
-    let rows = outputs.len();
     let mut a = Matrix::zeros(rows, w.len());
     let mut b = Vec::with_capacity(rows);
     for (i, drift_i) in drift.iter().enumerate().take(rows) {
