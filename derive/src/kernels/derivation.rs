@@ -1,8 +1,8 @@
 //! The [`Derivation`]: every symbolic object derived from the physics, and the named kernels
 //! built from them in the order fixed by `docs/kernels.md`.
 
-use super::kernel::{Kernel, Shape, Staged};
-use crate::error::{Error, Result};
+use super::kernel::{Kernel, Shape, Staged, find_kernel};
+use crate::error::Result;
 use crate::matrix::Matrix;
 use crate::mechanics::{self, Floor, ImpactConstraint, sym};
 use crate::ratfunc::RatFunc;
@@ -474,16 +474,7 @@ impl Derivation {
             },
         ];
         for k in &kernels {
-            k.check_staged()?;
-            let free = k.free_symbols(&symbols);
-            if !free.is_empty() {
-                return Err(Error::CheckFailed {
-                    what: format!(
-                        "kernel {} depends on {:?} which is not an argument",
-                        k.name, free
-                    ),
-                });
-            }
+            k.check(&symbols)?;
         }
         Ok(Derivation {
             symbols,
@@ -506,11 +497,6 @@ impl Derivation {
 
     /// A kernel by name.
     pub fn kernel(&self, name: &str) -> Result<&Kernel> {
-        self.kernels
-            .iter()
-            .find(|k| k.name == name)
-            .ok_or_else(|| Error::UnknownKernel {
-                name: name.to_owned(),
-            })
+        find_kernel(&self.kernels, name)
     }
 }

@@ -121,6 +121,27 @@ impl Kernel {
         Ok(())
     }
 
+    /// Checks that the kernel is well formed: its staged form composes to its outputs
+    /// ([`Kernel::check_staged`]) and it depends on no symbol it does not take
+    /// ([`Kernel::free_symbols`]).
+    ///
+    /// # Errors
+    /// [`Error::CheckFailed`] naming the kernel and the symbols, or the staged form's error.
+    pub fn check(&self, symbols: &Symbols) -> Result<()> {
+        self.check_staged()?;
+        let free = self.free_symbols(symbols);
+        if free.is_empty() {
+            return Ok(());
+        }
+        let names: Vec<&str> = free.iter().map(|s| symbols.name(*s)).collect();
+        Err(Error::CheckFailed {
+            what: format!(
+                "kernel {} depends on {names:?} which are not arguments",
+                self.name
+            ),
+        })
+    }
+
     /// Every symbol the kernel's forms depend on that is not an argument, a parameter or a
     /// local bound by a staged form or the structured solve (must be empty for a well-formed
     /// kernel; `symbols`: the table of the derivation).
@@ -179,4 +200,17 @@ impl Kernel {
         }
         Some(solve.outputs.iter().map(|r| r.eval(&p)).collect())
     }
+}
+
+/// The kernel called `name` among `kernels`.
+///
+/// # Errors
+/// [`Error::UnknownKernel`].
+pub fn find_kernel<'k>(kernels: &'k [Kernel], name: &str) -> Result<&'k Kernel> {
+    kernels
+        .iter()
+        .find(|k| k.name == name)
+        .ok_or_else(|| Error::UnknownKernel {
+            name: name.to_owned(),
+        })
 }

@@ -8,4 +8,4 @@ mod derivation;
 mod kernel;
 
 pub use derivation::Derivation;
-pub use kernel::{Kernel, Shape, Staged};
+pub use kernel::{Kernel, Shape, Staged, find_kernel};

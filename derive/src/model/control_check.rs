@@ -10,6 +10,7 @@
 
 use walker_scene::model::Model;
 
+use super::mechanics::{default_point, generic_point};
 use super::table::ModelSymbols;
 use crate::error::{Error, Result};
 use crate::kernels::Kernel;
@@ -62,17 +63,6 @@ fn a_at(control: &Kernel, p: &Point<f64>, m: usize) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// The point of the parameters' defaults, every state and input at zero.
-fn defaults(model: &Model, syms: &ModelSymbols, table: &crate::symbol::Symbols) -> Point<f64> {
-    let mut p = Point::zeros(table);
-    for param in &model.parameters {
-        if let Ok(s) = syms.get(&param.name.name) {
-            p.set_sym(s, param.default);
-        }
-    }
-    p
-}
-
 /// Below this relative determinant `A` counts as singular: `1e-10`, far above the rounding of
 /// an `A` of order one evaluated through a few solves (about `1e-14`), far below the value of a
 /// regular `A` at a generic posture.
@@ -93,16 +83,8 @@ pub fn check_control(
     let Some(first) = model.outputs.first() else {
         return Ok(());
     };
-    let regular_somewhere = (1..=3).any(|c| {
-        let mut p = defaults(model, syms, table);
-        for (i, q) in syms.q.iter().enumerate().skip(2) {
-            p.set_sym(*q, (1.3 * f64::from(c) + 0.7 * i as f64).sin());
-        }
-        for (i, qd) in syms.qd.iter().enumerate() {
-            p.set_sym(*qd, (0.9 * f64::from(c) + 1.1 * i as f64).cos());
-        }
-        relative_det(a_at(control, &p, m)) > SINGULAR
-    });
+    let regular_somewhere = (1..=3)
+        .any(|c| relative_det(a_at(control, &generic_point(model, syms, table, c), m)) > SINGULAR);
     if !regular_somewhere {
         return Err(Error::CheckFailed {
             what: format!(
@@ -115,7 +97,7 @@ pub fn check_control(
     let Some(at) = model.start.first() else {
         return Ok(());
     };
-    let mut p = defaults(model, syms, table);
+    let mut p = default_point(model, syms, table);
     let params = p.clone();
     for v in &model.start {
         let value = syms.lower(&v.value)?.eval(&params);

@@ -17,8 +17,8 @@ use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
 use super::phases::{output_control, sliding, strike_impacts, strike_rows, stuck};
 use super::structured::structured_kernels;
 use super::table::ModelSymbols;
-use crate::error::{Error, Result};
-use crate::kernels::{Kernel, Shape, Staged};
+use crate::error::Result;
+use crate::kernels::{Kernel, Shape, Staged, find_kernel};
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, Symbols};
 
@@ -319,17 +319,7 @@ impl ModelDerivation {
             check_control(model, &m.syms, t, control)?;
         }
         for k in &kernels {
-            k.check_staged()?;
-            let free = k.free_symbols(t);
-            if !free.is_empty() {
-                let names: Vec<&str> = free.iter().map(|s| t.name(*s)).collect();
-                return Err(Error::CheckFailed {
-                    what: format!(
-                        "kernel {} depends on {names:?} which are not arguments",
-                        k.name
-                    ),
-                });
-            }
+            k.check(t)?;
         }
         Ok(ModelDerivation {
             symbols: table,
@@ -341,13 +331,8 @@ impl ModelDerivation {
     /// A kernel by name.
     ///
     /// # Errors
-    /// [`Error::UnknownKernel`].
+    /// [`crate::Error::UnknownKernel`].
     pub fn kernel(&self, name: &str) -> Result<&Kernel> {
-        self.kernels
-            .iter()
-            .find(|k| k.name == name)
-            .ok_or_else(|| Error::UnknownKernel {
-                name: name.to_owned(),
-            })
+        find_kernel(&self.kernels, name)
     }
 }

@@ -10,7 +10,7 @@ use super::table::ModelSymbols;
 use crate::error::{Error, Result};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFunc;
-use crate::symbol::Sym;
+use crate::symbol::{Point, Sym, Symbols};
 
 /// Total time derivative along the motion: `sum dF/dq qdot + dF/dqdot qddot`.
 pub fn time_derivative(s: &ModelSymbols, f: &RatFunc) -> RatFunc {
@@ -261,21 +261,12 @@ impl Mechanics {
 /// is singular only on a set of measure zero, which three fixed irrational-looking points
 /// miss).
 fn regular(model: &Model, syms: &ModelSymbols, mass: &Matrix) -> bool {
-    use crate::symbol::Point;
     let n = syms.q.len();
     if (0..n).any(|i| (0..n).all(|j| mass.get(i, j).is_zero())) {
         return false;
     }
     (1..=3).any(|c| {
-        let mut p = Point::zeros(&syms.table);
-        for param in &model.parameters {
-            if let Ok(s) = syms.get(&param.name.name) {
-                p.set_sym(s, param.default);
-            }
-        }
-        for (i, q) in syms.q.iter().enumerate() {
-            p.set_sym(*q, (1.3 * f64::from(c) + 0.7 * i as f64).sin());
-        }
+        let p = generic_point(model, syms, &syms.table, c);
         let a: Vec<Vec<f64>> = (0..n)
             .map(|i| (0..n).map(|j| mass.get(i, j).eval(&p)).collect())
             .collect();
@@ -302,4 +293,37 @@ fn regular(model: &Model, syms: &ModelSymbols, mass: &Matrix) -> bool {
         }
         true
     })
+}
+
+/// The point of `table` (the model's symbols, and any locals added after them) with every
+/// parameter at its default and everything else at zero.
+pub(crate) fn default_point(model: &Model, syms: &ModelSymbols, table: &Symbols) -> Point<f64> {
+    let mut p = Point::zeros(table);
+    for param in &model.parameters {
+        if let Ok(s) = syms.get(&param.name.name) {
+            p.set_sym(s, param.default);
+        }
+    }
+    p
+}
+
+/// Generic state number `c` for the floating-point checks of a model (a singular `M` or `A` is
+/// singular at every state; a regular one only on a set of measure zero, which these fixed,
+/// irrational-looking values miss): the parameters' defaults, coordinate `i` at
+/// `sin(1.3 c + 0.7 i)`, velocity `i` at `cos(0.9 c + 1.1 i)`.
+pub(crate) fn generic_point(
+    model: &Model,
+    syms: &ModelSymbols,
+    table: &Symbols,
+    c: u8,
+) -> Point<f64> {
+    let mut p = default_point(model, syms, table);
+    let c = f64::from(c);
+    for (i, q) in syms.q.iter().enumerate() {
+        p.set_sym(*q, (1.3 * c + 0.7 * i as f64).sin());
+    }
+    for (i, qd) in syms.qd.iter().enumerate() {
+        p.set_sym(*qd, (0.9 * c + 1.1 * i as f64).cos());
+    }
+    p
 }

@@ -168,21 +168,6 @@ impl<'a> Program<'a> {
         Ok(x)
     }
 
-    /// Solves `L D L^T X = B` column by column.
-    ///
-    /// # Errors
-    /// As [`Program::solve`].
-    pub fn solve_matrix(&mut self, f: &Ldlt, b: &Matrix) -> Result<Matrix> {
-        let mut out = Matrix::zeros(b.rows(), b.cols());
-        for j in 0..b.cols() {
-            let column: Vec<RatFunc> = (0..b.rows()).map(|i| b.get(i, j).clone()).collect();
-            for (i, x) in self.solve(f, &column)?.into_iter().enumerate() {
-                out.set(i, j, x);
-            }
-        }
-        Ok(out)
-    }
-
     /// `a^-1 b` for a small square matrix of locals that need not be symmetric (the control's
     /// `A`): the adjugate over the determinant. Only for order at most [`MAX_SMALL_SOLVE`], where
     /// a cofactor has at most six products; the determinant vanishes exactly where `a` is

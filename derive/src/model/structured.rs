@@ -56,10 +56,6 @@ fn factored_mass(p: &mut Program, m: &Mechanics) -> Result<Ldlt> {
     p.ldlt(&mm, "M")
 }
 
-fn column(m: &Matrix) -> Vec<RatFunc> {
-    m.entries().to_vec()
-}
-
 fn dot(a: &[RatFunc], b: &[RatFunc]) -> RatFunc {
     a.iter()
         .zip(b)
@@ -181,7 +177,7 @@ pub fn structured_kernels(
         let v: Vec<RatFunc> = m.syms.aux.iter().map(|s| RatFunc::sym(*s)).collect();
         let rhs: Vec<RatFunc> = v.iter().zip(&c.b).map(|(vi, bi)| vi + bi).collect();
         let u = p.small_solve(&c.a, &Matrix::column(rhs), "A")?;
-        let u = column(&u);
+        let u = u.entries().to_vec();
         let mut qdd = Vec::with_capacity(n);
         for i in 0..n {
             let mut acc = -c.c[i].clone();
