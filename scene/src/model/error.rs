@@ -84,6 +84,18 @@ pub enum ModelError {
 }
 
 impl ModelError {
+    /// An [`ModelError::Invalid`] at `at` in the file `path`.
+    #[must_use]
+    pub fn invalid(path: &str, at: Location, kind: ModelErrorKind, message: String) -> ModelError {
+        ModelError::Invalid {
+            path: path.to_owned(),
+            line: at.line,
+            column: at.column,
+            kind,
+            message,
+        }
+    }
+
     /// The file the error is in.
     #[must_use]
     pub fn path(&self) -> &str {

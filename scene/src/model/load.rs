@@ -131,14 +131,7 @@ impl Loader<'_> {
         kind: ModelErrorKind,
         message: String,
     ) -> ModelError {
-        let at = self.map.location(offset);
-        ModelError::Invalid {
-            path: self.path.to_owned(),
-            line: at.line,
-            column: at.column,
-            kind,
-            message,
-        }
+        ModelError::invalid(self.path, self.map.location(offset), kind, message)
     }
 
     /// An error at the start of a spanned value.
@@ -256,24 +249,15 @@ impl Loader<'_> {
         let (location, verbatim) = self.map.string_start(s.span(), s.get_ref());
         let text = s.get_ref().clone();
         let fail = |e: &ModelExpr, span, kind, message: String| {
-            let at = e.location_of(span);
-            ModelError::Invalid {
-                path: self.path.to_owned(),
-                line: at.line,
-                column: at.column,
-                kind,
-                message,
-            }
+            ModelError::invalid(self.path, e.location_of(span), kind, message)
         };
         let expr = parse_expr(&text).map_err(|e| {
-            let at = locate(&text, location, verbatim, e.span);
-            ModelError::Invalid {
-                path: self.path.to_owned(),
-                line: at.line,
-                column: at.column,
-                kind: ModelErrorKind::Syntax,
-                message: format!("{what}: {e}"),
-            }
+            ModelError::invalid(
+                self.path,
+                locate(&text, location, verbatim, e.span),
+                ModelErrorKind::Syntax,
+                format!("{what}: {e}"),
+            )
         })?;
         let me = ModelExpr {
             text,

@@ -139,14 +139,12 @@ impl Loader<'_> {
                     let angle = self.expr(a, &format!("{what} angle"), Use::Configuration)?;
                     let is_angle = |n: &str| self.symbols.get(n).is_some_and(|s| s.angle);
                     angle_combination(&angle.expr, &is_angle).map_err(|e| {
-                        let at = angle.location_of(e.span());
-                        ModelError::Invalid {
-                            path: self.path.to_owned(),
-                            line: at.line,
-                            column: at.column,
-                            kind: ModelErrorKind::NotAnAngleCombination,
-                            message: format!("{what} angle is not an angle combination: {e}; expected angles with rational coefficients, as `th1 - th2`"),
-                        }
+                        ModelError::invalid(
+                            self.path,
+                            angle.location_of(e.span()),
+                            ModelErrorKind::NotAnAngleCombination,
+                            format!("{what} angle is not an angle combination: {e}; expected angles with rational coefficients, as `th1 - th2`"),
+                        )
                     })?;
                     Some((inertia, angle))
                 }
@@ -407,14 +405,12 @@ impl Loader<'_> {
             symbols: self.symbols,
         };
         let divisors = base_divisors(&model).map_err(|(e, at)| {
-            let at = at.location_of(e.span());
-            ModelError::Invalid {
-                path: model.path.clone(),
-                line: at.line,
-                column: at.column,
-                kind: ModelErrorKind::NotAnAngleCombination,
-                message: format!("an angle's coefficients: {e}"),
-            }
+            ModelError::invalid(
+                &model.path,
+                at.location_of(e.span()),
+                ModelErrorKind::NotAnAngleCombination,
+                format!("an angle's coefficients: {e}"),
+            )
         })?;
         for sym in &mut model.symbols.symbols {
             if let Some(d) = divisors.get(&sym.name) {
