@@ -58,13 +58,7 @@ pub fn lower(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
             message: e.to_string(),
         })
     };
-    let mut binding = Binding {
-        symbols,
-        params: BTreeMap::new(),
-        fixed: BTreeMap::new(),
-        zero: Vec::new(),
-        friction: None,
-    };
+    let mut binding = Binding::new(symbols);
     for p in scene.params() {
         let s = sym(p.name())?;
         if let Some(node) = nodes.get(p) {
@@ -120,6 +114,20 @@ pub(crate) struct Binding<'a> {
     /// so no kernel argument.
     pub(crate) zero: Vec<Sym>,
     pub(crate) friction: Option<FrictionBinding>,
+}
+
+impl<'a> Binding<'a> {
+    /// A binding of `symbols` with no parameter, nothing fixed, nothing zero and no friction
+    /// law yet.
+    pub(crate) fn new(symbols: &'a Symbols) -> Binding<'a> {
+        Binding {
+            symbols,
+            params: BTreeMap::new(),
+            fixed: BTreeMap::new(),
+            zero: Vec::new(),
+            friction: None,
+        }
+    }
 }
 
 /// The friction law `mu` stands for (Eqs. 25, 26, 37).

@@ -146,13 +146,7 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
             .lookup(name)
             .map_err(|e| invalid(name, e.to_string()))
     };
-    let mut binding = Binding {
-        symbols,
-        params: BTreeMap::new(),
-        fixed: BTreeMap::new(),
-        zero: Vec::new(),
-        friction: None,
-    };
+    let mut binding = Binding::new(symbols);
     for p in &model.parameters {
         let s = sym(&p.name.name)?;
         let node = match scene.fixed_value(&p.name.name) {

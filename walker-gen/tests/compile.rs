@@ -345,25 +345,28 @@ fn generated_code_is_clippy_and_rustdoc_clean() {
             lib.push_str(&including_module(&name, scene));
         }
     }
-    // Every shipped model (the no_std f32 path of a model is built by examples/own-walker).
-    for model in [
-        "rimless-wheel",
-        "paper-active",
-        "paper-passive",
-        "compass-gait",
-        "three-link",
-        "five-link",
-    ] {
+    // Every model file of models/ (the no_std f32 path of a model is built by
+    // examples/own-walker).
+    let models = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../models");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&models)
+        .expect("models/")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 6, "the shipped models");
+    for path in files {
+        let model = path
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .expect("a model file name")
+            .to_owned();
         let name = format!("model_{}", model.replace('-', "_"));
         let mut config = Config::new();
-        config.model_file(
-            PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-                .join("../models")
-                .join(format!("{model}.toml")),
-        );
+        config.model_file(&path);
         let src = config.render().expect("the model renders");
         write(&dir.join(format!("{name}.rs")), &src);
-        lib.push_str(&including_module(&name, model));
+        lib.push_str(&including_module(&name, &model));
     }
     for (name, float, no_std, checked, float_functions) in [
         ("exercise", Float::F64, false, true, FloatFunctions::Inline),
