@@ -176,6 +176,8 @@ def load(path) -> Model:
     units = {c["name"]: c["unit"] for c in coords}
     params = []
     for p in raw.get("parameter", []):
+        if p.get("stage") == "start":
+            continue        # a value of [start] only: in no kernel
         s = sp.Symbol(p["name"], real=True)
         sym[p["name"]] = s
         params.append((s, float(p["default"]), parse_range(p["range"]), p["unit"]))

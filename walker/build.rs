@@ -1,31 +1,284 @@
-//! Generates the walker's kernels into `OUT_DIR` with `walker-gen`.
+//! Generates the kernels of the shipped model files into `OUT_DIR` with `walker-gen`, one module
+//! per compiled variant (a friction law, some parameters fixed at generation), each with an
+//! adapter that implements the library's kernel interface (`walker::model::Kernels`).
 //!
-//! Reads: the scene files below (`walker/scenes/*.toml`). Writes: one Rust file per scene (named
-//! by the scene, `<name with _>.rs`), all from one derivation, each rewritten only when its bytes
-//! change, so cargo recompiles only when the derivation or a scene changes.
+//! Reads: `models/*.toml` named in [`MODELS`]. Writes: `<variant>.rs` per variant and
+//! `compiled.rs` (the modules, their adapters and the registry `MODELS`), each rewritten only
+//! when its bytes change, so cargo recompiles only when a model or the generator changes.
+//! Every model is derived once; its variants are lowered from that derivation.
 
-use std::path::PathBuf;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
 
-/// The scenes the simulator is built with: the paper's two setups with Table 1 fixed (the
-/// fast path), the same structures with every parameter at run time (scene files), and both
-/// under exact Coulomb friction with stick-slip (every parameter at run time).
-const SCENES: [&str; 6] = [
-    "active-level",
-    "passive-slope",
-    "general-level",
-    "general-slope",
-    "general-level-coulomb",
-    "general-slope-coulomb",
+use walker_gen::scene::model::{Model, SymbolKind};
+use walker_gen::{EmitOptions, Friction, ModelScene, Shape, derive_model, emit, lower_model};
+
+/// Table 1 of the paper (with `g`): what the fast variants of its walkers fix.
+const TABLE1: &[(&str, f64)] = &[
+    ("m1", 2.0),
+    ("m2", 1.0),
+    ("l", 1.0),
+    ("I1", 0.5),
+    ("I2", 1.0),
+    ("g", 9.81),
+    ("alpha", 0.523_598_775_598_298_8),
 ];
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let scenes = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR")?).join("scenes");
-    let out_dir = PathBuf::from(std::env::var("OUT_DIR")?);
-    // One derivation for all six scenes; each file is named by its scene (`<name with _>.rs`).
-    walker_gen::Config::new()
-        .scene_files(SCENES.map(|scene| scenes.join(format!("{scene}.toml"))))
-        .out_dir(out_dir)
-        .emit_rerun_if_changed(true)
-        .generate_all()?;
+/// The kernels the simulator calls (the model's others, such as `mass_matrix`, are left out).
+const SIMULATED: &[&str] = &[
+    "accel",
+    "closed_loop",
+    "lambda",
+    "stick",
+    "closed_loop_stick",
+    "impact",
+    "impact_double",
+    "impact_coulomb",
+    "events",
+    "relabel",
+    "points",
+    "energy",
+    "output_rates",
+    "input_rates",
+];
+
+/// The Jacobian kernels: compiled only where parameters are fixed (with every parameter
+/// symbolic they are large), and there they feed the stiff integrator and the Poincare map.
+const JACOBIANS: &[&str] = &[
+    "accel_jacobian",
+    "closed_loop_jacobian",
+    "impact_jacobian",
+    "output_rates_jacobian",
+    "input_rates_jacobian",
+    "relabel_jacobian",
+];
+
+/// A compiled variant: a friction law and the parameters fixed at generation.
+struct Variant {
+    friction: Friction,
+    fixed: &'static [(&'static str, f64)],
+}
+
+const fn variant(friction: Friction, fixed: &'static [(&'static str, f64)]) -> Variant {
+    Variant { friction, fixed }
+}
+
+/// The shipped models compiled into the library, each with its variants (those fixing more
+/// parameters first: the registry takes the first that fits).
+const MODELS: &[(&str, &[Variant])] = &[
+    (
+        "paper-active",
+        &[
+            variant(Friction::Tanh, TABLE1),
+            variant(Friction::Tanh, &[]),
+            variant(Friction::Coulomb, &[]),
+        ],
+    ),
+    (
+        "paper-passive",
+        &[
+            variant(Friction::Tanh, TABLE1),
+            variant(Friction::Tanh, &[]),
+            variant(Friction::Coulomb, &[]),
+        ],
+    ),
+    (
+        "rimless-wheel",
+        &[variant(Friction::Tanh, &[]), variant(Friction::Coulomb, &[])],
+    ),
+    (
+        "compass-gait",
+        &[variant(Friction::Tanh, &[]), variant(Friction::Coulomb, &[])],
+    ),
+    (
+        "three-link",
+        &[variant(Friction::Tanh, &[]), variant(Friction::Coulomb, &[])],
+    ),
+];
+
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("walker build script: {e}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> Result<(), Box<dyn std::error::Error>> {
+    let out = PathBuf::from(std::env::var("OUT_DIR")?);
+    let models = Path::new(env!("CARGO_MANIFEST_DIR")).join("../models");
+    let mut index = String::from(
+        "/// The shipped models compiled into the library, with their variants.\n\
+         pub const MODELS: &[Compiled] = &[\n",
+    );
+    let mut modules = String::new();
+    for (name, variants) in MODELS {
+        let path = models.join(format!("{name}.toml"));
+        println!("cargo:rerun-if-changed={}", path.display());
+        let model = Model::from_file(&path)?;
+        let derivation = derive_model(&model)?;
+        let mut entries = String::new();
+        for (k, v) in variants.iter().enumerate() {
+            let ident = format!("{}_{k}", name.replace('-', "_"));
+            let mut scene = ModelScene::new(model.clone());
+            scene.friction = v.friction;
+            scene.fixed = v.fixed.iter().map(|(n, x)| ((*n).to_owned(), *x)).collect();
+            let wanted = SIMULATED
+                .iter()
+                .chain(if v.fixed.is_empty() { &[][..] } else { JACOBIANS });
+            let has = |name: &str| derivation.kernels.iter().any(|k| k.name == name);
+            // Until the derivation gives `output_rates` and `input_rates`, the adapter computes
+            // them from `outputs` (`y`, `H`) and `input_map` (`S`).
+            let fallback = [("output_rates", "outputs"), ("input_rates", "input_map")]
+                .into_iter()
+                .filter(|(rates, map)| !has(rates) && has(map))
+                .map(|(_, map)| map);
+            scene.kernels = Some(
+                wanted
+                    .copied()
+                    .chain(fallback)
+                    .filter(|w| has(w))
+                    .map(str::to_owned)
+                    .collect(),
+            );
+            scene.name = Some(ident.replace('_', "-"));
+            let module = lower_model(&derivation, &scene)?;
+            let options = EmitOptions {
+                checked: false,
+                ..EmitOptions::default()
+            };
+            write_if_changed(&out.join(format!("{ident}.rs")), &emit(&module, &options)?)?;
+            let _ = write!(
+                modules,
+                "{}",
+                adapter(&model, &ident, v, &module)?
+            );
+            let fixed: Vec<String> = v
+                .fixed
+                .iter()
+                .map(|(n, x)| format!("(\"{n}\", {x:?})"))
+                .collect();
+            let _ = writeln!(
+                entries,
+                "        Variant {{ friction: Friction::{:?}, fixed: &[{}], prepare: {ident}::prepare_kernels }},",
+                v.friction,
+                fixed.join(", ")
+            );
+        }
+        let _ = write!(
+            index,
+            "    Compiled {{\n        name: \"{name}\",\n        source: include_str!(\"{}\"),\n        variants: &[\n{entries}        ],\n    }},\n",
+            path.display()
+        );
+    }
+    index.push_str("];\n");
+    write_if_changed(&out.join("compiled.rs"), &(modules + &index))?;
     Ok(())
+}
+
+/// The argument expression of the kernel argument `arg` of `model` (an [`Args`] field).
+fn arg_expr(model: &Model, arg: &str) -> Result<String, String> {
+    if arg == "sigma" {
+        return Ok("a.sigma".to_owned());
+    }
+    let sym = model
+        .symbols()
+        .iter()
+        .find(|s| s.name == arg)
+        .ok_or_else(|| format!("kernel argument `{arg}` is no symbol of `{}`", model.name))?;
+    let field = match sym.kind {
+        SymbolKind::Coordinate => "q",
+        SymbolKind::Velocity => "qd",
+        SymbolKind::Input => "u",
+        SymbolKind::Aux => "v",
+        other => return Err(format!("kernel argument `{arg}`: a {other:?} is not an argument")),
+    };
+    Ok(format!("a.{field}[{}]", sym.index))
+}
+
+/// The module of one variant and its adapter: `K` implements `Kernels` by calling the
+/// generated functions with their arguments taken from `Args`.
+fn adapter(
+    model: &Model,
+    ident: &str,
+    v: &Variant,
+    module: &walker_gen::Module,
+) -> Result<String, String> {
+    let mut arms = String::new();
+    let mut has = Vec::new();
+    let (n, m) = (model.coordinates.len(), model.inputs.len());
+    for k in &module.kernels {
+        let args: Vec<String> = k
+            .args
+            .iter()
+            .map(|a| arg_expr(model, a))
+            .collect::<Result<_, _>>()?;
+        let call = format!("{}(p, {})", k.name, args.join(", "));
+        if k.name == "outputs" {
+            has.push("KernelId::OutputRates".to_owned());
+            let _ = writeln!(
+                arms,
+                "            KernelId::OutputRates => {{ let o = {call}; for i in 0..{m} {{ out[i] = o[i]; let mut s = 0.0; for j in 0..{n} {{ s += o[{m} + i * {n} + j] * a.qd[j]; }} out[{m} + i] = s; }} }}"
+            );
+            continue;
+        }
+        if k.name == "input_map" {
+            has.push("KernelId::InputRates".to_owned());
+            let _ = writeln!(
+                arms,
+                "            KernelId::InputRates => {{ let s = {call}; for i in 0..{m} {{ let mut w = 0.0; for j in 0..{n} {{ w += s[j][i] * a.qd[j]; }} out[i] = w; }} }}"
+            );
+            continue;
+        }
+        let id = camel(&k.name);
+        has.push(format!("KernelId::{id}"));
+        let store = match k.output_shape {
+            Shape::Scalar => format!("out[0] = {call};"),
+            Shape::Vector(n) => format!("out[..{n}].copy_from_slice(&{call});"),
+            Shape::Matrix(r, c) => format!("out[..{}].copy_from_slice({call}.as_flattened());", r * c),
+        };
+        let _ = writeln!(arms, "            KernelId::{id} => {{ {store} }}");
+    }
+    let fixed: Vec<String> = v.fixed.iter().map(|(n, x)| format!("{n} = {x}")).collect();
+    Ok(format!(
+        "/// `models/{model}.toml`, friction `{friction:?}`, fixed: {fixed}.\n\
+         #[allow(clippy::all, clippy::pedantic, clippy::suboptimal_flops, missing_docs, reason = \"generated by walker-gen: plain multiply-add keeps the same rounding on every target\")]\n\
+         pub mod {ident} {{\n\
+         include!(concat!(env!(\"OUT_DIR\"), \"/{ident}.rs\"));\n\
+         use crate::model::{{Args, KernelId, Kernels}};\n\
+         struct K(Prepared);\n\
+         impl Kernels for K {{\n\
+         fn has(&self, k: KernelId) -> bool {{ matches!(k, {has}) }}\n\
+         #[allow(unreachable_patterns, reason = \"a kernel the variant does not have\")]\n\
+         fn eval(&self, k: KernelId, a: &Args<'_>, out: &mut [f64]) {{\n\
+         let p = &self.0;\n\
+         match k {{\n{arms}            _ => out.fill(f64::NAN),\n        }}\n    }}\n}}\n\
+         /// The kernels prepared for the run-time parameters by name.\n\
+         pub fn prepare_kernels(value: &dyn Fn(&str) -> f64) -> std::sync::Arc<dyn Kernels> {{\n\
+         std::sync::Arc::new(K(prepare(&Params::from_fn(|name| value(name)))))\n\
+         }}\n}}\n",
+        model = model.name,
+        friction = v.friction,
+        fixed = if fixed.is_empty() { "none".to_owned() } else { fixed.join(", ") },
+        has = has.join(" | "),
+    ))
+}
+
+/// `closed_loop_stick` as `ClosedLoopStick`.
+fn camel(name: &str) -> String {
+    name.split('_')
+        .map(|w| {
+            let mut c = w.chars();
+            c.next()
+                .map(|f| f.to_ascii_uppercase().to_string() + c.as_str())
+                .unwrap_or_default()
+        })
+        .collect()
+}
+
+/// Writes `text` to `path` unless it already holds these bytes.
+fn write_if_changed(path: &Path, text: &str) -> std::io::Result<()> {
+    if std::fs::read(path).is_ok_and(|old| old == text.as_bytes()) {
+        return Ok(());
+    }
+    std::fs::write(path, text)
 }

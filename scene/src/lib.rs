@@ -16,12 +16,14 @@
 pub mod catalog;
 pub mod error;
 pub mod model;
+pub mod model_scene;
 pub mod param;
 pub mod scene;
 pub mod structure;
 
 pub use catalog::KernelName;
 pub use error::SceneError;
+pub use model_scene::{ModelSceneError, ModelSceneFile, is_model_scene};
 pub use param::Param;
 pub use scene::Scene;
 pub use structure::{Floor, Friction, ImpactLaw, Torso};

@@ -7,7 +7,7 @@ use crate::emit::emit_plan;
 use crate::error::Error;
 use crate::ir::Module;
 use crate::lower::{Derivation, derive, lower};
-use crate::model::{ModelScene, lower_model};
+use crate::model::{ModelScene, derive_model, lower_model};
 use crate::model_scene::{is_model_scene, load_model_scene};
 use crate::options::{Division, EmitOptions, Float, FloatFunctions};
 use crate::plan::Plan;
@@ -222,7 +222,7 @@ impl Config {
 
     /// The source and operation counts of a model scene.
     fn build_model(&self, scene: &ModelScene) -> Result<(String, Stats), Error> {
-        let module = lower_model(&derive_model(scene)?, scene)?;
+        let module = lower_model(&derive_model(&scene.model)?, scene)?;
         self.build_module(&module)
     }
 
@@ -240,7 +240,7 @@ impl Config {
     /// file is invalid or cannot be derived.
     pub fn module(&self) -> Result<Module, Error> {
         if let Some(model) = self.load_model()? {
-            return lower_model(&derive_model(&model)?, &model);
+            return lower_model(&derive_model(&model.model)?, &model);
         }
         let scene = self.load_scene()?;
         module_of(&derive()?, &scene)
@@ -415,10 +415,3 @@ fn write_if_changed(
     })
 }
 
-/// Derives a model's kernels ([`Error::Lower`] naming `(derivation)` if it fails).
-fn derive_model(scene: &ModelScene) -> Result<walker_symbolic::model::ModelDerivation, Error> {
-    walker_symbolic::model::ModelDerivation::new(&scene.model).map_err(|e| Error::Lower {
-        kernel: "(derivation)".to_owned(),
-        message: e.to_string(),
-    })
-}

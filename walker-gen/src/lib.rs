@@ -22,7 +22,7 @@ pub use config::{Config, GenerateReport};
 pub use emit::{EmitOptions, Float, FloatFunctions, emit};
 pub use error::{EmitError, Error};
 pub use ir::{Graph, Kernel, Module, Node, NodeId, ParamDecl, ParamId, Shape};
-pub use model::{ModelScene, lower_model};
+pub use model::{ModelScene, derive_model, lower_model};
 pub use options::Division;
 pub use scene::{Floor, Friction, Param, Scene, SceneError, Torso};
 pub use stats::{OpCounts, Stats, stats};

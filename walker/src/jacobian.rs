@@ -1,110 +1,182 @@
-//! The state Jacobians of the stance dynamics and of the impact map, from the generated
-//! Jacobian kernels: what the stiff integrator and the Poincare map's variational equations
-//! need.
+//! The state Jacobians of the stance dynamics and of the impact map, from the model's Jacobian
+//! kernels (`accel_jacobian` or `closed_loop_jacobian`, `output_rates_jacobian`,
+//! `input_rates_jacobian`, `impact_jacobian`; generated where the model has closed forms and
+//! its parameters are fixed): what the stiff integrator and the Poincare map's variational
+//! equations need.
+//!
+//! The kernels differentiate with respect to the friction coefficient `mu` and the auxiliary
+//! inputs `v` as symbols of their own; the chain rule through `mu(xd) = -mu0 tanh(c xd / cos
+//! phi)` (Eqs. 26, 37) and through `v = ydd_d + K_D (yd_d - ydot) + K_P (y_d - y)` (Eq. 32) is
+//! applied here.
 
-use crate::control;
-use crate::kernels::{active_level, passive_slope};
-use crate::model::{FrictionLaw, Kind, Model, Physical};
-use crate::params;
+use crate::model::{Args, Contact, FrictionLaw, KernelId, Model};
+use crate::vector::MAX_COORDINATES;
 
-/// Why a model has no generated Jacobian kernels.
+/// The largest output of a Jacobian kernel the chain rule reads: `closed_loop_jacobian` of a
+/// model with [`MAX_COORDINATES`] coordinates and as many inputs.
+const MAX_JAC: usize = 2 * MAX_COORDINATES * (3 * MAX_COORDINATES + 1);
+
+/// Why a model's stance has no analytic Jacobian.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum NoJacobian {
-    /// The physical parameters are not Table 1's.
-    #[error("the Jacobian kernels are generated for the Table 1 parameters only")]
-    NotTable1,
-    /// The friction law is not the tanh law.
-    #[error("the Jacobian kernels are generated for the tanh friction law only")]
+    /// The kernels have no Jacobian kernels (every parameter at run time, or no closed form).
+    #[error("the model's kernels have no Jacobian kernels (they are generated with the parameters fixed, for models with closed forms)")]
+    NoKernels,
+    /// The friction law is not the smooth one.
+    #[error("the Jacobian kernels are used for the tanh friction law only")]
     NotTanh,
 }
 
-/// The Jacobian kernels matching a model. They are generated for the Table 1 scenes only
-/// (`active_level`, `passive_slope`), so models with other physical parameters are refused; a
-/// general-kernel model with Table 1 values uses them (they agree with the general kernels to
-/// rounding).
-#[allow(
-    clippy::large_enum_variant,
-    reason = "built once per map evaluation and read on every right-hand side"
-)]
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Jac {
-    ActiveLevel(active_level::Prepared),
-    PassiveSlope(passive_slope::Prepared),
+/// The analytic state Jacobian of a model's stance phase.
+pub struct StanceJacobian<'a> {
+    model: &'a Model,
 }
 
-impl Jac {
-    pub(crate) fn new(m: &Model) -> Result<Self, NoJacobian> {
-        let r = m.runtime;
-        if m.physical != Physical::TABLE1 {
-            return Err(NoJacobian::NotTable1);
-        }
-        if m.friction_law() != FrictionLaw::Tanh {
+impl<'a> StanceJacobian<'a> {
+    /// The Jacobian of `model`'s stance, if its kernels give one.
+    ///
+    /// # Errors
+    /// [`NoJacobian`]: no Jacobian kernels, or exact Coulomb friction.
+    pub fn new(model: &'a Model) -> Result<Self, NoJacobian> {
+        if model.friction_law() != FrictionLaw::Tanh {
             return Err(NoJacobian::NotTanh);
         }
-        Ok(match m.kind() {
-            Kind::ActiveLevel => Jac::ActiveLevel(active_level::prepare(
-                &active_level::Params::from_fn(|name| params::by_name(&Physical::TABLE1, &r, name)),
-            )),
-            Kind::PassiveSlope => {
-                Jac::PassiveSlope(passive_slope::prepare(&passive_slope::Params::from_fn(
-                    |name| params::by_name(&Physical::TABLE1, &r, name),
-                )))
-            }
-        })
+        let k = model.kernels();
+        let needed: &[KernelId] = if model.is_active() {
+            &[
+                KernelId::ClosedLoopJacobian,
+                KernelId::OutputRatesJacobian,
+                KernelId::InputRatesJacobian,
+                KernelId::ImpactJacobian,
+            ]
+        } else {
+            &[KernelId::AccelJacobian, KernelId::ImpactJacobian]
+        };
+        if !needed.iter().all(|id| k.has(*id)) {
+            return Err(NoJacobian::NoKernels);
+        }
+        Ok(Self { model })
     }
 
-    /// `d qdd_i / d y_j` (`y` the mechanical state) at `(t, y)`, chain rule through `mu(xd)` and
-    /// `v(t, y, ydot)` included.
-    pub(crate) fn accel(&self, model: &Model, t: f64, y: &[f64]) -> [[f64; 8]; 4] {
-        let (th1, th2, xd, th1d, th2d) = (y[2], y[3], y[4], y[6], y[7]);
-        let r = model.runtime;
-        let mut out = [[0.0; 8]; 4];
-        let level = |j: [[f64; 4]; 4], out: &mut [[f64; 8]; 4]| {
-            let th = (r.c * xd).tanh();
-            let dmu = -r.mu0 * r.c * (1.0 - th * th);
-            for (row, ji) in out.iter_mut().zip(j) {
-                row[2] = ji[0] - ji[3] * r.k_p;
-                row[3] = ji[3] * r.k_p;
-                row[4] = ji[2] * dmu;
-                row[6] = ji[1] - ji[3] * r.k_d;
-                row[7] = ji[3] * r.k_d;
-            }
-        };
-        let slope = |j: [[f64; 3]; 4], out: &mut [[f64; 8]; 4]| {
-            let cphi = r.phi.cos();
-            let th = (r.c * xd / cphi).tanh();
-            let dmu = -r.mu0 * r.c / cphi * (1.0 - th * th);
-            for (row, ji) in out.iter_mut().zip(j) {
-                row[2] = ji[0];
-                row[4] = ji[2] * dmu;
-                row[6] = ji[1];
-            }
-        };
-        let v = || {
-            let d = model.desired(t);
-            control::aux_input(d, th1 - th2, th1d - th2d, r.k_p, r.k_d)
-        };
-        match self {
-            Jac::ActiveLevel(p) => level(
-                active_level::closed_loop_level_jacobian(p, th1, th1d, xd, v()),
-                &mut out,
-            ),
-            Jac::PassiveSlope(p) => slope(
-                passive_slope::accel_slope_jacobian(p, th1, th1d, xd),
-                &mut out,
-            ),
-        }
-        out
+    /// `d mu / d xd` of the tanh law at the foot's velocity `xd`.
+    fn dmu(&self, xd: f64) -> f64 {
+        let m = self.model;
+        let cphi = m.phi().cos();
+        let c = m.sharpness();
+        let th = (c * xd / cphi).tanh();
+        -m.mu0() * c / cphi * (1.0 - th * th)
     }
 
-    /// `d qd+_i / d (th1, xd, zd, th1d, th2d)` of the applied impact map.
-    pub(crate) fn impact(&self, s: &[f64; 8]) -> [[f64; 5]; 4] {
-        let (th1, xd, zd, th1d, th2d) = (s[2], s[4], s[5], s[6], s[7]);
-        match self {
-            Jac::ActiveLevel(p) => active_level::impact2_level_jacobian(p, th1, xd, zd, th1d, th2d),
-            Jac::PassiveSlope(p) => {
-                passive_slope::impact_slope_jacobian(p, th1, xd, zd, th1d, th2d)
+    /// `d [qdd, u]_i / d y_j` (`y = [q, qd]`, `2n` columns; `n + m` rows, the inputs' rows
+    /// after the accelerations) at `(t, y)`, the chain rule through `mu(xd)` and `v(t, y)`
+    /// applied, written row-major into `out` with row stride `2n`.
+    pub fn accel(&self, t: f64, y: &[f64], out: &mut [f64]) {
+        let m = self.model;
+        let (n, inputs) = (m.n(), m.inputs());
+        let (q, qd) = (&y[..n], &y[n..2 * n]);
+        let cols = 2 * n + 1 + inputs;
+        let mut k = [0.0; MAX_JAC];
+        let dmu = self.dmu(qd[0]);
+        if inputs == 0 {
+            m.kernels()
+                .eval(KernelId::AccelJacobian, &Args::state(q, qd), &mut k[..n * cols]);
+            for i in 0..n {
+                let row = &k[i * cols..(i + 1) * cols];
+                for j in 0..2 * n {
+                    out[i * 2 * n + j] = row[j];
+                }
+                out[i * 2 * n + n] = row[n] + row[2 * n] * dmu;
+            }
+            return;
+        }
+        let mut v = [0.0; MAX_COORDINATES];
+        m.aux_inputs_at(t, y, &mut v[..inputs]);
+        let args = Args {
+            v: &v[..inputs],
+            ..Args::state(q, qd)
+        };
+        m.kernels()
+            .eval(KernelId::ClosedLoopJacobian, &args, &mut k[..(n + inputs) * cols]);
+        // d v_k / d y_j = -(K_P d y_k / d y_j) - K_D d yd_k / d y_j.
+        let mut rates = [0.0; 4 * MAX_COORDINATES * MAX_COORDINATES];
+        m.kernels().eval(
+            KernelId::OutputRatesJacobian,
+            &Args::state(q, qd),
+            &mut rates[..2 * inputs * 2 * n],
+        );
+        let (k_p, k_d) = m.gains();
+        for i in 0..n + inputs {
+            let row = &k[i * cols..(i + 1) * cols];
+            for j in 0..2 * n {
+                let mut d = row[j];
+                if j == n {
+                    d += row[2 * n] * dmu;
+                } else {
+                    d += row[2 * n] * 0.0;
+                }
+                for kk in 0..inputs {
+                    let dy = rates[kk * 2 * n + j];
+                    let dyd = rates[(inputs + kk) * 2 * n + j];
+                    d += row[2 * n + 1 + kk] * (-(k_p * dy) - k_d * dyd);
+                }
+                out[i * 2 * n + j] = d;
             }
         }
+    }
+
+    /// Fills the stance system's Jacobian `jac` (`S = 2n + 1` components: the state and the
+    /// power quadrature) at `(t, y)`: `d qd / d y` is the identity block, `d qdd / d y` comes
+    /// from [`StanceJacobian::accel`], and the power row is `sum_i sign(u_i w_i) (w_i du_i/dy +
+    /// u_i dw_i/dy)` while the power counts (zero after). Returns `true`.
+    pub fn fill<const S: usize>(
+        &self,
+        t: f64,
+        y: &[f64; S],
+        contact: Contact,
+        jac: &mut [[f64; S]; S],
+    ) -> bool {
+        let m = self.model;
+        let (n, inputs) = (m.n(), m.inputs());
+        let mut a = [0.0; 2 * MAX_COORDINATES * 2 * MAX_COORDINATES];
+        self.accel(t, y, &mut a[..(n + inputs) * 2 * n]);
+        for row in jac.iter_mut() {
+            *row = [0.0; S];
+        }
+        for i in 0..n {
+            jac[i][n + i] = 1.0;
+            jac[n + i][..2 * n].copy_from_slice(&a[i * 2 * n..(i + 1) * 2 * n]);
+        }
+        if inputs > 0 && m.power_counts(t) {
+            let u = m.control_input(t, y, contact);
+            let mut w = [0.0; MAX_COORDINATES];
+            let (q, qd) = (&y[..n], &y[n..2 * n]);
+            m.kernels()
+                .eval(KernelId::InputRates, &Args::state(q, qd), &mut w[..inputs]);
+            let mut dw = [0.0; 2 * MAX_COORDINATES * MAX_COORDINATES];
+            m.kernels().eval(
+                KernelId::InputRatesJacobian,
+                &Args::state(q, qd),
+                &mut dw[..inputs * 2 * n],
+            );
+            for i in 0..inputs {
+                let sign = (u[i] * w[i]).signum();
+                for j in 0..2 * n {
+                    let du = a[(n + i) * 2 * n + j];
+                    jac[2 * n][j] += sign * (w[i] * du + u[i] * dw[i * 2 * n + j]);
+                }
+            }
+        }
+        true
+    }
+
+    /// `d qd+ / d [q, qd]` of the frictionless impact map at the pre-impact state `s`, row-major
+    /// with row stride `2n`.
+    pub fn impact(&self, s: &[f64], out: &mut [f64]) {
+        let n = self.model.n();
+        self.model.kernels().eval(
+            KernelId::ImpactJacobian,
+            &Args::state(&s[..n], &s[n..2 * n]),
+            &mut out[..n * 2 * n],
+        );
     }
 }

@@ -1,22 +1,67 @@
-//! From a scene to a model: the built-in scenes (`active-level`, `passive-slope`), scene
-//! files, parameter overrides, and their validation against the parameter table of
-//! `walker-scene` (each parameter's valid range is written there once).
+//! From a scene or a model file to a [`Setup`] (a walker, its friction and impact laws and its
+//! parameters), and from a setup to a [`Model`] to simulate.
+//!
+//! A scene is a model plus the choices that make it a scene (`walker_scene::model_scene`): the
+//! friction law, the parameters it fixes, run-time values, the impact law. The built-in scenes
+//! `active-level` and `passive-slope` are the files `models/scenes/active-level.toml` and
+//! `models/scenes/passive-slope.toml`, compiled in; a scene may also be a file, in the model-scene
+//! format or in the paper's scene format (`walker/scenes/*.toml`: floor, friction, torso), which
+//! names the paper's walkers. Every parameter is checked against the range its model file gives.
+//!
+//! A model's kernels come from the variants compiled into this library ([`crate::compiled`])
+//! when the model file is one of the shipped ones, byte for byte; otherwise from a
+//! [`RuntimeSource`] the caller gives (the `walker-load` crate derives the file at run time).
 
-use walker_scene::{Floor, Friction, ImpactLaw, Param, Scene, SceneError, Torso};
+use std::path::Path;
+use std::sync::Arc;
 
-use crate::model::{FrictionLaw, Kind, Model};
-use crate::params::{Physical, Runtime};
+use walker_scene::model::Model as ModelFile;
+use walker_scene::model::ModelError;
+use walker_scene::{
+    Floor, Friction, ImpactLaw, ModelSceneError, ModelSceneFile, Scene, SceneError, Torso,
+    is_model_scene,
+};
 
-/// Why a scene or a parameter set cannot be simulated.
+use crate::compiled::MODELS;
+use crate::model::{
+    Compiled, KernelSource, Model, NoKernels, ParamError, Parameters, Spec, SpecError, Walker,
+};
+
+/// The built-in scenes: their names and their files (`models/scenes/`).
+const BUILT_IN: [(&str, &str); 2] = [
+    (
+        "active-level",
+        include_str!("../../models/scenes/active-level.toml"),
+    ),
+    (
+        "passive-slope",
+        include_str!("../../models/scenes/passive-slope.toml"),
+    ),
+];
+
+/// Derives a model file that is not compiled in and gives its kernels (the `walker-load`
+/// crate's), or says why it cannot.
+pub type RuntimeSource = dyn Fn(&ModelFile) -> Result<Arc<dyn KernelSource>, String> + Sync;
+
+/// Why a scene, a model file or a parameter set cannot be simulated.
 #[derive(Debug, thiserror::Error)]
 pub enum SetupError {
     /// The scene is neither a built-in name nor a `.toml` file.
     #[error("unknown scene {0:?}; use active-level, passive-slope or a FILE.toml")]
     UnknownScene(String),
-    /// The scene file could not be read or is invalid.
+    /// A scene file in the paper's format could not be read or is invalid.
     #[error(transparent)]
     Scene(#[from] SceneError),
-    /// The scene's structure has no simulator (only level/actuated and slope/passive do).
+    /// A model scene could not be read or is invalid.
+    #[error(transparent)]
+    ModelScene(#[from] ModelSceneError),
+    /// A model file is invalid.
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    /// A model file cannot be simulated.
+    #[error(transparent)]
+    Spec(#[from] SpecError),
+    /// The paper's scene format names a structure the paper has no walker for.
     #[error(
         "floor = {floor} with torso = {torso} is not simulated (level/actuated or slope/passive)"
     )]
@@ -26,220 +71,394 @@ pub enum SetupError {
         /// The scene's torso.
         torso: Torso,
     },
-    /// A parameter outside its valid range (from the parameter table).
-    #[error("{value} is outside the valid range of {param}: {}", param.valid_range())]
-    OutOfRange {
-        /// The parameter.
-        param: Param,
-        /// The rejected value.
-        value: f64,
+    /// A parameter is unknown or out of its range.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// A flag that names a role the model does not have (`--phi` on a level floor).
+    #[error("{flag}: model `{model}` has no {role}")]
+    NoRole {
+        /// The flag or field.
+        flag: &'static str,
+        /// The model.
+        model: String,
+        /// The role, in words.
+        role: &'static str,
     },
-    /// A slope angle for the active walker, which walks on level ground.
-    #[error("the active walker walks on level ground: phi must be 0")]
-    SlopeForLevelWalker,
+    /// The model's kernels cannot be prepared.
+    #[error(transparent)]
+    NoKernels(#[from] NoKernels),
+    /// The model file is not compiled in and no run-time source was given or it failed.
+    #[error("model `{model}`: {message}")]
+    NotCompiled {
+        /// The model.
+        model: String,
+        /// Why.
+        message: String,
+    },
 }
 
 impl SetupError {
-    /// The parameter the error is about, if it is about one.
+    /// The parameter or field the error is about, if it is about one.
     #[must_use]
-    pub fn param(&self) -> Option<Param> {
+    pub fn param(&self) -> Option<&str> {
         match self {
-            SetupError::OutOfRange { param, .. } => Some(*param),
-            SetupError::SlopeForLevelWalker => Some(Param::Phi),
+            SetupError::Param(e) => Some(e.name()),
+            SetupError::NoRole { flag, .. } => Some(flag),
             _ => None,
         }
     }
 }
 
-/// Optional overrides of the runtime parameters (from flags or a caller).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// Changes to a scene from flags or a caller: parameters by name, and the laws.
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Overrides {
-    /// `mu0`.
+    /// The friction coefficient (the model's `[stance] mu0` parameter).
     pub mu0: Option<f64>,
-    /// `c`.
+    /// The tanh law's sharpness (the model's `[stance] c` parameter).
     pub c: Option<f64>,
-    /// `T_set`.
+    /// The paper's ramp duration, the parameter `T_set`.
     pub t_set: Option<f64>,
-    /// `phi`.
+    /// The slope angle (the model's `[floor] slope` parameter).
     pub phi: Option<f64>,
+    /// Any parameter by name (`--set name=value`), applied after the named ones.
+    pub set: Vec<(String, f64)>,
     /// The friction law.
-    pub friction: Option<FrictionLaw>,
+    pub friction: Option<Friction>,
     /// The impact law.
     pub impact: Option<ImpactLaw>,
 }
 
-/// A resolved scene: how to build the model for given runtime parameters.
-#[derive(Clone, Debug, PartialEq)]
+/// A resolved scene: a walker, the laws of its contacts, and its parameters.
+#[derive(Clone, Debug)]
 pub struct Setup {
-    /// Level/active or slope/passive.
-    pub kind: Kind,
-    /// Whether the fast kernels with Table 1 compiled in are used (tanh friction only).
-    pub fast: bool,
-    /// The friction law.
-    pub friction: FrictionLaw,
-    /// The impact law at heel strike.
+    /// The walker (its model file and where its kernels come from).
+    pub walker: Walker,
+    /// The scene's name (a built-in name, a scene's `name`, or the model's name).
+    pub name: String,
+    /// The friction law of the stance foot.
+    pub friction: Friction,
+    /// The impact law at the strike.
     pub impact: ImpactLaw,
-    /// Physical parameters.
-    pub physical: Physical,
-    /// Runtime parameters (defaults, scene values, then overrides).
-    pub runtime: Runtime,
+    /// The parameters: the model's defaults, the scene's values, then the overrides.
+    pub params: Parameters,
+    /// The parameters the scene fixes at generation: while they keep these values the
+    /// compiled variant with them substituted runs (the fast path); another value runs a
+    /// variant that takes them at run time.
+    pub fixed: Vec<(String, f64)>,
+}
+
+/// The walker of a model file: its compiled variants when the file is a shipped model byte for
+/// byte, else the run-time source.
+///
+/// # Errors
+/// The model cannot be simulated, or is not compiled in and the run-time source fails.
+pub fn walker_of(
+    model: ModelFile,
+    text: &str,
+    runtime: Option<&RuntimeSource>,
+) -> Result<Walker, SetupError> {
+    if let Some(c) = MODELS.iter().find(|c| c.source == text) {
+        let source: Arc<dyn KernelSource> = Arc::new(*c);
+        return Ok(Walker::new(Spec::new(model)?, source));
+    }
+    let name = model.name.clone();
+    let Some(runtime) = runtime else {
+        return Err(SetupError::NotCompiled {
+            model: name,
+            message: "it is not one of the shipped models compiled into this library, and no \
+                      run-time source was given (the `walker` command line derives model files \
+                      at run time)"
+                .to_owned(),
+        });
+    };
+    let source = runtime(&model).map_err(|message| SetupError::NotCompiled {
+        model: name,
+        message,
+    })?;
+    Ok(Walker::new(Spec::new(model)?, source))
+}
+
+/// The compiled model whose file is `models/<file name>` (for the built-in scenes, which name
+/// their model by a relative path).
+fn compiled_by_file(path: &str) -> Option<&'static Compiled> {
+    let stem = Path::new(path).file_stem()?.to_str()?;
+    MODELS.iter().find(|c| c.name == stem)
+}
+
+/// A model file's text, read with a limit of `max_bytes`.
+fn read_model(path: &Path) -> Result<String, SetupError> {
+    std::fs::read_to_string(path).map_err(|source| {
+        SetupError::ModelScene(ModelSceneError::Read {
+            path: path.to_path_buf(),
+            source,
+        })
+    })
 }
 
 impl Setup {
-    /// The paper's active walker on level ground (Table 1, `mu0 = 0.4`, `T_set = 0.3`).
-    #[must_use]
-    pub fn active_level() -> Setup {
-        Setup {
-            kind: Kind::ActiveLevel,
-            fast: true,
-            friction: FrictionLaw::Tanh,
-            impact: ImpactLaw::Frictionless,
-            physical: Physical::TABLE1,
-            runtime: Runtime::default(),
-        }
-    }
-
-    /// The paper's passive wheel on a slope (Table 1, `phi = 0.2`, `mu0 = 0.2`).
-    #[must_use]
-    pub fn passive_slope() -> Setup {
-        Setup {
-            kind: Kind::PassiveSlope,
-            fast: true,
-            friction: FrictionLaw::Tanh,
-            impact: ImpactLaw::Frictionless,
-            physical: Physical::TABLE1,
-            runtime: Runtime {
-                phi: 0.2,
-                mu0: 0.2,
-                ..Runtime::default()
-            },
-        }
-    }
-
-    /// Resolve `scene` (`active-level`, `passive-slope` or the path of a scene file) with the
-    /// overrides, and validate every parameter against its range.
+    /// The built-in scene `active-level`: the paper's active walker (Table 1, `mu0 = 0.4`,
+    /// `T_set = 0.3`).
     ///
     /// # Errors
-    /// An unknown scene, an invalid scene file, an unsupported structure, or a parameter out
-    /// of its range.
-    pub fn resolve(scene: &str, ov: &Overrides) -> Result<Setup, SetupError> {
-        let mut setup = match scene {
-            "active-level" => Setup::active_level(),
-            "passive-slope" => Setup::passive_slope(),
-            path if path.ends_with(".toml") => Setup::from_scene(&Scene::from_file(path)?)?,
-            other => return Err(SetupError::UnknownScene(other.to_owned())),
+    /// Never for the shipped files (a test loads every built-in scene).
+    pub fn active_level() -> Result<Setup, SetupError> {
+        Setup::built_in("active-level")
+    }
+
+    /// The built-in scene `passive-slope`: the paper's passive wheel (Table 1, `phi = 0.2`,
+    /// `mu0 = 0.2`).
+    ///
+    /// # Errors
+    /// Never for the shipped files (a test loads every built-in scene).
+    pub fn passive_slope() -> Result<Setup, SetupError> {
+        Setup::built_in("passive-slope")
+    }
+
+    /// The built-in scene called `name`.
+    ///
+    /// # Errors
+    /// An unknown name.
+    pub fn built_in(name: &str) -> Result<Setup, SetupError> {
+        let (_, text) = BUILT_IN
+            .iter()
+            .find(|(n, _)| *n == name)
+            .ok_or_else(|| SetupError::UnknownScene(name.to_owned()))?;
+        let path = Path::new("models/scenes").join(format!("{name}.toml"));
+        let file = ModelSceneFile::from_toml(text, &path, |model| {
+            let c = compiled_by_file(model).ok_or_else(|| ModelSceneError::Invalid {
+                path: path.clone(),
+                message: format!("model = \"{model}\" is not a compiled model"),
+            })?;
+            Ok((format!("models/{}.toml", c.name), c.source.to_owned()))
+        })?;
+        Setup::from_model_scene(file, None)
+    }
+
+    /// Resolves `scene` (a built-in name or the path of a scene file of either format) with
+    /// the overrides, every parameter checked against its range. A model scene whose model is
+    /// not compiled in takes its kernels from `runtime`.
+    ///
+    /// # Errors
+    /// An unknown scene, an invalid scene or model file, an unknown parameter, a value out of
+    /// its range or fixed by the scene, or kernels that cannot be had.
+    pub fn resolve(
+        scene: &str,
+        ov: &Overrides,
+        runtime: Option<&RuntimeSource>,
+    ) -> Result<Setup, SetupError> {
+        let mut setup = if BUILT_IN.iter().any(|(n, _)| *n == scene) {
+            Setup::built_in(scene)?
+        } else if scene.ends_with(".toml") {
+            let path = Path::new(scene);
+            if is_model_scene(path) {
+                Setup::from_model_scene(ModelSceneFile::from_file(path)?, runtime)?
+            } else {
+                Setup::from_paper_scene(&Scene::from_file(path)?)?
+            }
+        } else {
+            return Err(SetupError::UnknownScene(scene.to_owned()));
         };
-        if let Some(f) = ov.friction {
-            setup.friction = f;
-        }
-        if let Some(law) = ov.impact {
-            setup.impact = law;
-        }
-        let r = &mut setup.runtime;
-        for (param, v) in [
-            (Param::Mu0, ov.mu0),
-            (Param::C, ov.c),
-            (Param::TSet, ov.t_set),
-        ] {
-            if let Some(v) = v {
-                r.set(param, v);
-            }
-        }
-        if let Some(v) = ov.phi {
-            if setup.kind == Kind::ActiveLevel && v != 0.0 {
-                return Err(SetupError::SlopeForLevelWalker);
-            }
-            r.phi = v;
-        }
-        setup.validate()?;
+        setup.apply(ov)?;
         Ok(setup)
     }
 
-    /// The setup of a scene (not validated: see [`Setup::validate`]): its structure, its fixed
-    /// values, and the paper's values for the rest (`phi = 0.2` on a slope).
+    /// The model file at `path` as a scene of its own (its defaults, its first friction law
+    /// other than `none`, its impact law), with the overrides.
     ///
     /// # Errors
-    /// The structure has no simulator.
-    pub fn from_scene(scene: &Scene) -> Result<Setup, SetupError> {
-        let kind = match (scene.floor, scene.torso) {
-            (Floor::Level, Torso::Actuated) => Kind::ActiveLevel,
-            (Floor::Slope, Torso::Passive) => Kind::PassiveSlope,
-            (floor, torso) => return Err(SetupError::Unsupported { floor, torso }),
-        };
-        let mut physical = Physical::TABLE1;
-        let mut runtime = Runtime {
-            phi: if kind == Kind::PassiveSlope { 0.2 } else { 0.0 },
-            ..Runtime::default()
-        };
-        for (&param, &v) in &scene.fixed {
-            let _ = physical.set(param, v) || runtime.set(param, v);
-        }
-        let friction = match scene.friction {
-            Friction::Tanh => FrictionLaw::Tanh,
-            Friction::None => {
-                runtime.mu0 = 0.0;
-                FrictionLaw::Tanh
-            }
-            Friction::Coulomb => FrictionLaw::Coulomb,
-        };
-        Ok(Setup {
-            kind,
-            fast: false,
+    /// As [`Setup::resolve`].
+    pub fn from_model_file(
+        path: &Path,
+        ov: &Overrides,
+        runtime: Option<&RuntimeSource>,
+    ) -> Result<Setup, SetupError> {
+        let text = read_model(path)?;
+        let model = ModelFile::from_toml(&text, &path.display().to_string())?;
+        let friction = model
+            .stance
+            .friction
+            .iter()
+            .copied()
+            .find(|f| *f != Friction::None)
+            .unwrap_or(Friction::None);
+        let impact = model.impact.law;
+        let name = model.name.clone();
+        let walker = walker_of(model, &text, runtime)?;
+        let mut setup = Setup {
+            params: walker.defaults(),
+            walker,
+            name,
             friction,
-            impact: scene.impact,
-            physical,
-            runtime,
+            impact,
+            fixed: Vec::new(),
+        };
+        setup.apply(ov)?;
+        Ok(setup)
+    }
+
+    /// The setup of a model scene (not yet overridden).
+    fn from_model_scene(
+        file: ModelSceneFile,
+        runtime: Option<&RuntimeSource>,
+    ) -> Result<Setup, SetupError> {
+        let friction = file.friction.unwrap_or_else(|| {
+            file.model
+                .stance
+                .friction
+                .iter()
+                .copied()
+                .find(|f| *f != Friction::None)
+                .unwrap_or(Friction::None)
+        });
+        let impact = file.impact.unwrap_or(file.model.impact.law);
+        let name = file.name.clone().unwrap_or_else(|| file.model.name.clone());
+        let walker = walker_of(file.model, &file.model_text, runtime)?;
+        let mut params = walker.defaults();
+        for (n, v) in file.fix.iter().chain(&file.set) {
+            params.set(n, *v)?;
+        }
+        Ok(Setup {
+            walker,
+            name,
+            friction,
+            impact,
+            params,
+            fixed: file.fix.into_iter().collect(),
         })
     }
 
-    /// Check every parameter against its valid range ([`Param::accepts`]).
+    /// The setup of a scene in the paper's format: the paper's active walker (level floor,
+    /// actuated torso) or passive wheel (slope, passive), its fixed values as run-time values
+    /// (`phi = 0.2` on a slope unless given, as the paper's Section 5).
+    fn from_paper_scene(scene: &Scene) -> Result<Setup, SetupError> {
+        let name = match (scene.floor, scene.torso) {
+            (Floor::Level, Torso::Actuated) => "active-level",
+            (Floor::Slope, Torso::Passive) => "passive-slope",
+            (floor, torso) => return Err(SetupError::Unsupported { floor, torso }),
+        };
+        let built = Setup::built_in(name)?;
+        let mut params = built.walker.defaults();
+        if scene.floor == Floor::Slope {
+            params.set("phi", 0.2)?;
+        }
+        for (param, v) in &scene.fixed {
+            params.set(param.name(), *v)?;
+        }
+        Ok(Setup {
+            walker: built.walker,
+            name: scene.name.clone(),
+            friction: scene.friction,
+            impact: scene.impact,
+            params,
+            fixed: Vec::new(),
+        })
+    }
+
+    /// Applies the overrides: the laws, then the parameters by role, then by name.
     ///
     /// # Errors
-    /// The first parameter out of range, in the table's order.
-    pub fn validate(&self) -> Result<(), SetupError> {
-        validate(&self.physical, &self.runtime)
-    }
-
-    /// Build the model with the runtime parameters `runtime`.
-    #[must_use]
-    pub fn model_with(&self, runtime: Runtime) -> Model {
-        let model = match (self.kind, self.friction, self.fast) {
-            (Kind::ActiveLevel, FrictionLaw::Coulomb, _) => {
-                Model::coulomb_level(self.physical, runtime)
-            }
-            (Kind::PassiveSlope, FrictionLaw::Coulomb, _) => {
-                Model::coulomb_slope(self.physical, runtime)
-            }
-            (Kind::ActiveLevel, FrictionLaw::Tanh, true) => Model::active_level(runtime),
-            (Kind::PassiveSlope, FrictionLaw::Tanh, true) => Model::passive_slope(runtime),
-            (Kind::ActiveLevel, FrictionLaw::Tanh, false) => {
-                Model::general_level(self.physical, runtime)
-            }
-            (Kind::PassiveSlope, FrictionLaw::Tanh, false) => {
-                Model::general_slope(self.physical, runtime)
-            }
+    /// A role the model does not have, an unknown parameter, a value out of range or fixed.
+    pub fn apply(&mut self, ov: &Overrides) -> Result<(), SetupError> {
+        if let Some(f) = ov.friction {
+            self.friction = f;
+        }
+        if let Some(law) = ov.impact {
+            self.impact = law;
+        }
+        let spec = Arc::clone(self.walker.spec());
+        let role = |index: Option<usize>, flag: &'static str, role: &'static str| {
+            index
+                .map(|i| spec.model.parameters[i].name.name.clone())
+                .ok_or_else(|| SetupError::NoRole {
+                    flag,
+                    model: spec.name().to_owned(),
+                    role,
+                })
         };
-        model.with_impact_law(self.impact)
+        let mut named = Vec::new();
+        if let Some(v) = ov.mu0 {
+            named.push((role(spec.mu0, "mu0", "friction coefficient")?, v));
+        }
+        if let Some(v) = ov.c {
+            named.push((role(spec.c, "c", "tanh friction law")?, v));
+        }
+        if let Some(v) = ov.t_set {
+            named.push((
+                role(spec.parameter("T_set"), "t-set", "parameter T_set")?,
+                v,
+            ));
+        }
+        if let Some(v) = ov.phi {
+            named.push((role(spec.slope, "phi", "slope (its floor is level)")?, v));
+        }
+        named.extend(ov.set.iter().cloned());
+        for (name, v) in named {
+            self.set(&name, v)?;
+        }
+        Ok(())
     }
 
-    /// Build the model with the resolved runtime parameters.
-    #[must_use]
-    pub fn model(&self) -> Model {
-        self.model_with(self.runtime)
+    /// Sets the parameter called `name` to `value`.
+    ///
+    /// # Errors
+    /// An unknown parameter, or a value out of its range.
+    pub fn set(&mut self, name: &str, value: f64) -> Result<(), SetupError> {
+        self.params.set(name, value)?;
+        Ok(())
+    }
+
+    /// The model to simulate, with the setup's parameters.
+    ///
+    /// # Errors
+    /// The model does not list the friction law, or its kernels cannot be prepared.
+    pub fn model(&self) -> Result<Model, NoKernels> {
+        self.model_with(&self.params)
+    }
+
+    /// The model with the parameters `params` (of the same walker).
+    ///
+    /// # Errors
+    /// As [`Setup::model`].
+    pub fn model_with(&self, params: &Parameters) -> Result<Model, NoKernels> {
+        self.walker.model(params, self.friction, self.impact)
+    }
+
+    /// The setup's parameters with `name` set to `value` (checked).
+    ///
+    /// # Errors
+    /// As [`Setup::set`].
+    pub fn with(&self, name: &str, value: f64) -> Result<Setup, SetupError> {
+        let mut s = self.clone();
+        s.set(name, value)?;
+        Ok(s)
     }
 }
 
-/// Check every parameter of `physical` and `runtime` against its valid range, in the order of
-/// the parameter table.
-///
-/// # Errors
-/// The first parameter out of range.
-pub fn validate(physical: &Physical, runtime: &Runtime) -> Result<(), SetupError> {
-    for param in Param::ALL {
-        let value = crate::params::value(physical, runtime, param);
-        if !param.accepts(value) {
-            return Err(SetupError::OutOfRange { param, value });
-        }
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_built_in_scenes_load_with_their_values() {
+        let a = Setup::active_level().expect("active-level");
+        assert_eq!(a.params.get("mu0"), Some(0.4));
+        assert_eq!(a.params.get("T_set"), Some(0.3));
+        assert_eq!(a.friction, Friction::Tanh);
+        let p = Setup::passive_slope().expect("passive-slope");
+        assert_eq!((p.params.get("phi"), p.params.get("mu0")), (Some(0.2), Some(0.2)));
+        assert!(matches!(
+            p.with("m1", -3.0),
+            Err(SetupError::Param(ParamError::OutOfRange { ref name, .. })) if name == "m1"
+        ));
     }
-    Ok(())
+
+    #[test]
+    fn a_level_walker_has_no_slope_to_set() {
+        let ov = Overrides {
+            phi: Some(0.1),
+            ..Overrides::default()
+        };
+        let e = Setup::resolve("active-level", &ov, None).expect_err("no slope");
+        assert_eq!(e.param(), Some("phi"));
+    }
 }

@@ -1,9 +1,9 @@
-//! Parameter sweeps over `mu0`: procedures (P1a)-(P5a) (active walker, Section 4.2) and
-//! (P1b)-(P5b) (passive wheel, Section 5.2).
+//! Parameter sweeps: procedures (P1a)-(P5a) (the active walker over `mu0`, Section 4.2) and
+//! (P1b)-(P5b) (the passive wheel, Section 5.2), for any run-time parameter of any model.
 //!
-//! Each `mu0` is walked for a given duration; its steady post-impact state (with the stance foot
+//! Each value is walked for a given duration; its steady post-impact state (with the stance foot
 //! moved back to the origin: the dynamics do not depend on `x`, `z`) is the initial condition of
-//! the next `mu0`, unless the sweep restarts every `mu0` from the initial condition or the
+//! the next value, unless the sweep restarts every value from the initial condition or the
 //! previous run failed. Independent chains (several `T_set` or `phi`) and restarted points run in
 //! parallel with rayon.
 
@@ -12,12 +12,13 @@ use serde::Serialize;
 
 use crate::model::Model;
 use crate::sim::{Failure, SimConfig, StepResult, WalkLimits, walk};
+use crate::vector::Vector;
 
-/// The outcome of one `mu0` of a sweep.
+/// The outcome of one value of a sweep.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct SweepPoint {
-    /// The friction coefficient.
-    pub mu0: f64,
+    /// The swept parameter's value (`mu0` in the paper's sweeps).
+    pub value: f64,
     /// Number of completed (simulated) steps.
     pub steps: usize,
     /// The last completed step (the steady descriptors if the walk converged).
@@ -31,7 +32,7 @@ pub struct SweepPoint {
     pub periodic: bool,
 }
 
-/// The `mu0` values `from, from + step, ...` up to `to` (inclusive within rounding).
+/// The values `from, from + step, ...` up to `to` (inclusive within rounding).
 ///
 /// Returns an empty list when `step` is not a positive finite number or `to < from`.
 pub fn mu0_grid(from: f64, to: f64, step: f64) -> Vec<f64> {
@@ -42,16 +43,16 @@ pub fn mu0_grid(from: f64, to: f64, step: f64) -> Vec<f64> {
     (0..=n).map(|k| from + step * k as f64).collect()
 }
 
-fn moved_to_origin(mut s: [f64; 8]) -> [f64; 8] {
+fn moved_to_origin(mut s: Vector) -> Vector {
     s[0] = 0.0;
     s[1] = 0.0;
     s
 }
 
-fn point(mu0: f64, walk: crate::sim::Walk) -> SweepPoint {
+fn point(value: f64, walk: crate::sim::Walk) -> SweepPoint {
     let n = walk.steps.len();
     SweepPoint {
-        mu0,
+        value,
         steps: n,
         last: walk.steps.last().copied(),
         previous: n.checked_sub(2).map(|k| walk.steps[k]),
@@ -60,20 +61,20 @@ fn point(mu0: f64, walk: crate::sim::Walk) -> SweepPoint {
     }
 }
 
-/// Procedure (P4a): each `mu0` continues from the previous steady post-impact state (from
+/// Procedure (P4a): each value continues from the previous steady post-impact state (from
 /// `initial` after a failure).
 fn continuation(
     make: impl Fn(f64) -> Model,
     cfg: &SimConfig,
     grid: &[f64],
-    initial: [f64; 8],
+    initial: Vector,
     limits: &WalkLimits,
     progress: &(dyn Fn() + Sync),
 ) -> Vec<SweepPoint> {
     let mut out = Vec::with_capacity(grid.len());
     let mut state = initial;
     for &mu0 in grid {
-        let w = walk(&make(mu0), cfg, state, limits);
+        let w = walk(&make(mu0), cfg, &state, limits);
         state = match (&w.failure, w.last_state()) {
             (None, Some(s)) => moved_to_origin(s),
             _ => initial,
@@ -85,7 +86,9 @@ fn continuation(
 }
 
 /// Several independent sweeps (one per entry of `chains`, for example one per `T_set`), run in
-/// parallel; `progress` is called once per finished point (from any thread).
+/// parallel; `make(chain, value)` is the model of a point (the caller checks beforehand that
+/// every point's model can be built: see [`crate::setup::Setup::model_with`]); `progress` is
+/// called once per finished point (from any thread).
 ///
 /// With `restart`, every `(chain, mu0)` point is independent and all of them share the rayon
 /// pool. Without, each chain is sequential (every `mu0` starts from the previous steady state),
@@ -98,7 +101,7 @@ pub fn sweep_chains<F>(
     make: F,
     cfg: &SimConfig,
     grid: &[f64],
-    initial: impl Fn(f64) -> [f64; 8] + Sync,
+    initial: impl Fn(f64) -> Vector + Sync,
     limits: &WalkLimits,
     restart: bool,
     progress: &(dyn Fn() + Sync),
@@ -117,7 +120,7 @@ where
         let flat: Vec<SweepPoint> = pairs
             .par_iter()
             .map(|&(c, mu0)| {
-                let p = point(mu0, walk(&make(c, mu0), cfg, initial(c), limits));
+                let p = point(mu0, walk(&make(c, mu0), cfg, &initial(c), limits));
                 progress();
                 p
             })

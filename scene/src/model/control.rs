@@ -15,6 +15,7 @@ pub(crate) struct Actuation {
     pub(crate) control: Option<Control>,
     pub(crate) outputs: Vec<Output>,
     pub(crate) descriptors: Vec<Descriptor>,
+    pub(crate) power_until: Option<ModelExpr>,
 }
 
 impl Loader<'_> {
@@ -161,14 +162,15 @@ impl Loader<'_> {
             });
         }
 
-        let descriptors = match &raw.descriptors {
+        let report = raw.descriptors.as_ref().and_then(|d| d.get_ref().report.as_ref());
+        let descriptors = match report {
             None => Descriptor::ALL
                 .into_iter()
                 .filter(|d| !d.needs_inputs() || !inputs.is_empty())
                 .collect(),
-            Some(d) => {
+            Some(report) => {
                 let mut out = Vec::new();
-                for s in d.get_ref().report.get_ref() {
+                for s in report.get_ref() {
                     let Some(desc) = Descriptor::ALL
                         .into_iter()
                         .find(|d| d.name() == s.get_ref())
@@ -198,11 +200,25 @@ impl Loader<'_> {
             }
         };
 
+        let power_until = match raw.descriptors.as_ref().and_then(|d| d.get_ref().power_until.as_ref()) {
+            None => None,
+            Some(s) if inputs.is_empty() => {
+                return Err(self.error(
+                    s.span(),
+                    ModelErrorKind::Inconsistent,
+                    "descriptors power_until: the input power needs inputs; this model has none"
+                        .to_owned(),
+                ));
+            }
+            Some(s) => Some(self.expr(s, "descriptors power_until", Use::Constant)?),
+        };
+
         Ok(Actuation {
             inputs,
             control,
             outputs,
             descriptors,
+            power_until,
         })
     }
 }

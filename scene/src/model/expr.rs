@@ -241,6 +241,92 @@ impl Expr {
         }
     }
 
+    /// The value of the expression in floating point, with each symbol's value from `value`;
+    /// `None` if a symbol has none. Evaluated as written, left to right (`-alpha/2` is
+    /// `(-alpha) / 2`), with `sin`, `cos` and `powi` of the standard library: what the simulator
+    /// uses for the expressions it evaluates at run time (desired trajectories, the start, the
+    /// section, masses), never for a kernel.
+    #[must_use]
+    pub fn eval(&self, value: &dyn Fn(&str) -> Option<f64>) -> Option<f64> {
+        Some(match &self.kind {
+            ExprKind::Number(n) => n.to_f64(),
+            ExprKind::Symbol(s) => value(s)?,
+            ExprKind::Neg(a) => -a.eval(value)?,
+            ExprKind::Binary(op, a, b) => {
+                let (a, b) = (a.eval(value)?, b.eval(value)?);
+                match op {
+                    BinOp::Add => a + b,
+                    BinOp::Sub => a - b,
+                    BinOp::Mul => a * b,
+                    BinOp::Div => a / b,
+                }
+            }
+            ExprKind::Pow(a, n) => a.eval(value)?.powi(i32::try_from(*n).ok()?),
+            ExprKind::Call(Func::Sin, a) => a.eval(value)?.sin(),
+            ExprKind::Call(Func::Cos, a) => a.eval(value)?.cos(),
+        })
+    }
+
+    /// The derivative of the expression with respect to the symbol `name`, unsimplified (for
+    /// evaluation): `d sin(a) = cos(a) da`, `d x^k = k x^(k-1) dx`, and so on.
+    #[must_use]
+    pub fn derivative(&self, name: &str) -> Expr {
+        let span = self.span;
+        let num = |k: u64| Expr::new(ExprKind::Number(Number::integer(k)), span);
+        let bin = |op, a: Expr, b: Expr| Expr::new(ExprKind::Binary(op, Box::new(a), Box::new(b)), span);
+        match &self.kind {
+            ExprKind::Number(_) => num(0),
+            ExprKind::Symbol(s) => num(u64::from(s == name)),
+            ExprKind::Neg(a) => Expr::new(ExprKind::Neg(Box::new(a.derivative(name))), span),
+            ExprKind::Binary(op, a, b) => {
+                let (da, db) = (a.derivative(name), b.derivative(name));
+                match op {
+                    BinOp::Add | BinOp::Sub => bin(*op, da, db),
+                    BinOp::Mul => bin(
+                        BinOp::Add,
+                        bin(BinOp::Mul, da, (**b).clone()),
+                        bin(BinOp::Mul, (**a).clone(), db),
+                    ),
+                    BinOp::Div => bin(
+                        BinOp::Div,
+                        bin(
+                            BinOp::Sub,
+                            bin(BinOp::Mul, da, (**b).clone()),
+                            bin(BinOp::Mul, (**a).clone(), db),
+                        ),
+                        Expr::new(ExprKind::Pow(b.clone(), 2), span),
+                    ),
+                }
+            }
+            ExprKind::Pow(a, k) => {
+                let coefficient = Expr::new(ExprKind::Number(Number::integer(k.unsigned_abs())), span);
+                let coefficient = if *k < 0 {
+                    Expr::new(ExprKind::Neg(Box::new(coefficient)), span)
+                } else {
+                    coefficient
+                };
+                bin(
+                    BinOp::Mul,
+                    bin(BinOp::Mul, coefficient, Expr::new(ExprKind::Pow(a.clone(), k - 1), span)),
+                    a.derivative(name),
+                )
+            }
+            ExprKind::Call(Func::Sin, a) => bin(
+                BinOp::Mul,
+                Expr::new(ExprKind::Call(Func::Cos, a.clone()), span),
+                a.derivative(name),
+            ),
+            ExprKind::Call(Func::Cos, a) => Expr::new(
+                ExprKind::Neg(Box::new(bin(
+                    BinOp::Mul,
+                    Expr::new(ExprKind::Call(Func::Sin, a.clone()), span),
+                    a.derivative(name),
+                ))),
+                span,
+            ),
+        }
+    }
+
     /// Binding strength for printing: sums 1, products 2, unary minus 3, powers 4, atoms 5.
     fn precedence(&self) -> u8 {
         match &self.kind {

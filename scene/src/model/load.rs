@@ -461,12 +461,15 @@ impl Loader<'_> {
             let stage = match p.stage.as_ref().map(|s| s.get_ref().as_str()) {
                 None | Some("run") => Stage::Run,
                 Some("generation") => Stage::Generation,
+                Some("start") => Stage::Start,
                 Some(other) => {
                     let span = p.stage.as_ref().map_or(0..0, Str::span);
                     return Err(self.error(
                         span,
                         ModelErrorKind::Toml,
-                        format!("stage `{other}`: expected \"run\" or \"generation\""),
+                        format!(
+                            "stage `{other}`: expected \"run\", \"generation\" or \"start\""
+                        ),
                     ));
                 }
             };

@@ -36,6 +36,8 @@ pub(crate) struct RawModel {
     #[serde(default)]
     pub(crate) start: Option<Spanned<BTreeMap<Str, Str>>>,
     #[serde(default)]
+    pub(crate) section: Option<Spanned<RawSection>>,
+    #[serde(default)]
     pub(crate) impact: Option<Spanned<RawImpact>>,
     #[serde(default)]
     pub(crate) input: Vec<Spanned<RawInput>>,
@@ -131,6 +133,14 @@ pub(crate) struct RawFall {
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
+pub(crate) struct RawSection {
+    pub(crate) free: Spanned<Vec<Str>>,
+    #[serde(default)]
+    pub(crate) given: BTreeMap<Str, Str>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 pub(crate) struct RawImpact {
     #[serde(default)]
     pub(crate) law: Option<Str>,
@@ -182,5 +192,8 @@ pub(crate) struct RawDesired {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawDescriptors {
-    pub(crate) report: Spanned<Vec<Str>>,
+    #[serde(default)]
+    pub(crate) report: Option<Spanned<Vec<Str>>>,
+    #[serde(default)]
+    pub(crate) power_until: Option<Str>,
 }

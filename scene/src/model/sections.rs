@@ -13,8 +13,9 @@ use crate::model::raw::{RawModel, Str};
 use crate::model::symbols::SymbolKind;
 use crate::model::types::{
     Body, Coordinate, Fall, FallCondition, Floor, Impact, Model, ModelExpr, Name, Parameter, Point,
-    Relabel, Stance, StartValue, Strike,
+    Relabel, Section, Stage, Stance, StartValue, Strike,
 };
+use crate::model::raw::RawSection;
 use crate::structure::{Friction, ImpactLaw};
 
 impl Loader<'_> {
@@ -99,6 +100,104 @@ impl Loader<'_> {
             ));
         }
         Ok(self.name(s))
+    }
+
+    /// The index in `[q, qd]` of the state component `name` (a coordinate or a velocity).
+    fn state_component(&self, name: &str, n: usize) -> Option<usize> {
+        match self.symbols.get(name) {
+            Some(sym) if sym.kind == SymbolKind::Coordinate => Some(sym.index),
+            Some(sym) if sym.kind == SymbolKind::Velocity => Some(n + sym.index),
+            _ => None,
+        }
+    }
+
+    /// `[section]`: the free components and the others' values; every component but `x`,
+    /// `z` and `zd` is exactly one of the two, and the values use parameters and free
+    /// components only.
+    fn section(
+        &self,
+        sec: &toml::Spanned<RawSection>,
+        coordinates: &[Coordinate],
+    ) -> Result<Section, ModelError> {
+        let n = coordinates.len();
+        let raw = sec.get_ref();
+        let implied = |i: usize| i == 0 || i == 1 || i == n + 1;
+        let component = |s: &Str, what: &str| -> Result<usize, ModelError> {
+            let name = s.get_ref();
+            let i = self.state_component(name, n).ok_or_else(|| {
+                self.error(
+                    s.span(),
+                    ModelErrorKind::UnknownReference,
+                    format!("section {what} `{name}`: expected a coordinate or a velocity"),
+                )
+            })?;
+            if implied(i) {
+                return Err(self.error(
+                    s.span(),
+                    ModelErrorKind::Inconsistent,
+                    format!(
+                        "section {what} `{name}`: on the section the stance foot is at the origin \
+                         (x = z = 0) and moves along the floor (zd = -xd tan phi); list the other \
+                         components"
+                    ),
+                ));
+            }
+            Ok(i)
+        };
+        let mut seen = vec![false; 2 * n];
+        let mut free = Vec::new();
+        for s in raw.free.get_ref() {
+            let i = component(s, "free")?;
+            if std::mem::replace(&mut seen[i], true) {
+                return Err(self.error(
+                    s.span(),
+                    ModelErrorKind::Duplicate,
+                    format!("section: `{}` is listed twice", s.get_ref()),
+                ));
+            }
+            free.push(i);
+        }
+        let mut given = Vec::new();
+        for (key, value) in &raw.given {
+            let i = component(key, "given")?;
+            if std::mem::replace(&mut seen[i], true) {
+                return Err(self.error(
+                    key.span(),
+                    ModelErrorKind::Duplicate,
+                    format!("section: `{}` is both free and given, or given twice", key.get_ref()),
+                ));
+            }
+            let what = format!("section given `{}`", key.get_ref());
+            let e = self.expr(value, &what, Use::Guard)?;
+            for (name, span) in e.expr.symbols() {
+                let ok = self.symbols.get(name).is_some_and(|s| s.kind == SymbolKind::Parameter)
+                    || self.state_component(name, n).is_some_and(|j| free.contains(&j));
+                if !ok {
+                    return Err(ModelError::invalid(
+                        self.path,
+                        e.location_of(span),
+                        ModelErrorKind::SymbolNotAllowed,
+                        format!("{what}: `{name}`: expected a parameter or a free component ({})",
+                            raw.free.get_ref().iter().map(|s| s.get_ref().as_str()).collect::<Vec<_>>().join(", ")),
+                    ));
+                }
+            }
+            given.push((i, e));
+        }
+        given.sort_by_key(|(i, _)| *i);
+        if let Some(i) = (0..2 * n).find(|&i| !implied(i) && !seen[i]) {
+            let name = if i < n {
+                coordinates[i].name.name.clone()
+            } else {
+                format!("{}d", coordinates[i - n].name.name)
+            };
+            return Err(self.error(
+                sec.span(),
+                ModelErrorKind::Inconsistent,
+                format!("section: `{name}` is neither free nor given; every component of the state but x, z and zd is one of the two"),
+            ));
+        }
+        Ok(Section { free, given })
     }
 
     pub(crate) fn sections(
@@ -360,6 +459,12 @@ impl Loader<'_> {
             start.sort_by_key(|v| (v.velocity, v.coordinate));
         }
 
+        let section = raw
+            .section
+            .as_ref()
+            .map(|sec| self.section(sec, &coordinates))
+            .transpose()?;
+
         let impact = Impact {
             law,
             locks: impact_raw
@@ -379,6 +484,7 @@ impl Loader<'_> {
             control,
             outputs,
             descriptors,
+            power_until,
         } = self.actuation(&raw, coordinates.len())?;
 
         let mut model = Model {
@@ -397,13 +503,16 @@ impl Loader<'_> {
             falls,
             relabel,
             start,
+            section,
             impact,
             inputs,
             control,
             outputs,
             descriptors,
+            power_until,
             symbols: self.symbols,
         };
+        start_parameters_only_at_the_start(&model)?;
         let divisors = base_divisors(&model).map_err(|(e, at)| {
             ModelError::invalid(
                 &model.path,
@@ -419,4 +528,54 @@ impl Loader<'_> {
         }
         Ok(model)
     }
+}
+
+/// Checks that a parameter of stage `start` appears only in `[start]`: it is no field of the
+/// generated `Params`, so no kernel, guard, desired trajectory or named role may read it.
+fn start_parameters_only_at_the_start(model: &Model) -> Result<(), ModelError> {
+    let is_start = |name: &str| {
+        model
+            .parameters
+            .iter()
+            .any(|p| p.name.name == name && p.stage == Stage::Start)
+    };
+    let named = [
+        Some(&model.floor.gravity),
+        model.floor.slope.as_ref(),
+        model.stance.mu0.as_ref(),
+        model.stance.c.as_ref(),
+        model.control.as_ref().map(|c| &c.kp),
+        model.control.as_ref().map(|c| &c.kd),
+    ];
+    if let Some(name) = named.into_iter().flatten().find(|n| is_start(&n.name)) {
+        return Err(ModelError::invalid(
+            &model.path,
+            name.location,
+            ModelErrorKind::SymbolNotAllowed,
+            format!(
+                "`{}` is a parameter of the start (stage \"start\"); expected a parameter of \
+                 the dynamics",
+                name.name
+            ),
+        ));
+    }
+    let mut exprs: Vec<&ModelExpr> = model.expressions().into_iter().map(|(_, e)| e).collect();
+    exprs.extend(model.power_until.as_ref());
+    if let Some(section) = &model.section {
+        exprs.extend(section.given.iter().map(|(_, e)| e));
+    }
+    for e in exprs {
+        if let Some((name, span)) = e.expr.symbols().into_iter().find(|(n, _)| is_start(n)) {
+            return Err(ModelError::invalid(
+                &model.path,
+                e.location_of(span),
+                ModelErrorKind::SymbolNotAllowed,
+                format!(
+                    "`{name}` is a parameter of the start (stage \"start\"): it may appear in \
+                     [start] only"
+                ),
+            ));
+        }
+    }
+    Ok(())
 }

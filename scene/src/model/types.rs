@@ -83,6 +83,10 @@ pub enum Stage {
     Run,
     /// Substituted into the kernels when they are generated.
     Generation,
+    /// A value of the start of a walk only (`[start]`): in no kernel and no other expression,
+    /// so not a field of the generated `Params` (the paper's initial angular velocity
+    /// `omega0`, Eq. 33).
+    Start,
 }
 
 /// A parameter (`[[parameter]]`).
@@ -205,6 +209,19 @@ pub struct StartValue {
     pub velocity: bool,
     /// The value, in the parameters.
     pub value: ModelExpr,
+}
+
+/// The Poincare section just after an impact (`[section]`): the components of the post-impact
+/// state that Newton's method and continuation work in, and the others as functions of them.
+/// `x` and `z` are zero on the section (the map measures from the new stance foot) and the
+/// foot's velocity normal to the floor is zero (`zd = -xd tan phi`).
+#[derive(Clone, Debug)]
+pub struct Section {
+    /// The free components, as indices into the mechanical state `[q, qd]` (coordinate `i` is
+    /// `i`, its velocity `n + i`), in the file's order.
+    pub free: Vec<usize>,
+    /// The other components with their values, in the parameters and the free components.
+    pub given: Vec<(usize, ModelExpr)>,
 }
 
 /// The impact (`[impact]`).
@@ -348,6 +365,8 @@ pub struct Model {
     /// The default start of a walk (`[start]`), coordinates then velocities, each in coordinate
     /// order; what it does not name starts at zero. The outputs' `A` must be regular there.
     pub start: Vec<StartValue>,
+    /// The Poincare section (`None`: every component free but `x`, `z` and `zd`).
+    pub section: Option<Section>,
     /// The impact.
     pub impact: Impact,
     /// The inputs.
@@ -358,5 +377,9 @@ pub struct Model {
     pub outputs: Vec<Output>,
     /// The descriptors to report.
     pub descriptors: Vec<Descriptor>,
+    /// The time since the impact up to which the input power of a step is integrated
+    /// (`[descriptors] power_until`, in the parameters); `None`: the whole step. The paper
+    /// integrates to `T_set` (Section 4.2), where its output stops moving.
+    pub power_until: Option<ModelExpr>,
     pub(crate) symbols: SymbolTable,
 }

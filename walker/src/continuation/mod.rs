@@ -2,7 +2,7 @@
 //! moves, stable or not, with the points where they turn, split or stop being physical.
 //!
 //! A [`GaitProblem`] is a one-parameter family of Poincare maps on the section's independent
-//! coordinates (`problem.rs`); the paper's walkers fill it ([`PaperWalker`],
+//! coordinates (`problem.rs`); any model's walker fills it ([`WalkerProblem`],
 //! `walker_problem.rs`, with the cheap map of `profile.rs`). [`continuation()`] follows the
 //! fixed points by pseudo-arclength continuation (`arclength.rs`): tangent predictor, a chord
 //! corrector on the fixed-point equations bordered by the arclength condition
@@ -29,4 +29,4 @@ pub use arclength::{ContinuationError, ContinuationOptions, continuation};
 pub use branch::{Branch, EndReason, Label, LabelKind, Point, Stability};
 pub use period_two::{SecondIterate, period_two};
 pub use problem::{Cycle, GaitProblem, MapValue, ProblemError, SlipStructure, Tests};
-pub use walker_problem::PaperWalker;
+pub use walker_problem::WalkerProblem;

@@ -87,9 +87,12 @@ pub enum ProblemError {
     /// friction, or physical parameters other than Table 1's).
     #[error("the step failed at t = {}: {}", .0.t, .0.name())]
     Walk(Box<Failure>),
-    /// The wheel rolled back until its rear spoke reached the floor.
-    #[error("the wheel fell backward at t = {t}")]
-    FellBackward {
+    /// One of the model's falls (`[[fall]]`; the paper's wheel rolling back onto its rear
+    /// spoke is `fell-backward`).
+    #[error("{name} at t = {t}")]
+    Fall {
+        /// The fall's name in the model file.
+        name: String,
         /// Time since the impact (s).
         t: f64,
     },
@@ -99,13 +102,26 @@ pub enum ProblemError {
         /// Time of the heel strike (s).
         t: f64,
     },
-    /// The walker has no such parameter.
-    #[error(
-        "{name} is not a parameter of this walker (phi: the passive wheel; T_set, K_P, K_D: the active walker; c: tanh friction)"
-    )]
+    /// The walker has no such run-time parameter.
+    #[error("{name} is not a run-time parameter of model `{model}`; its parameters: {known}")]
     NotAParameter {
         /// The parameter's name.
-        name: &'static str,
+        name: String,
+        /// The model.
+        model: String,
+        /// The parameters that may be free, comma-separated.
+        known: String,
+    },
+    /// The model at a parameter value cannot be built (its kernels cannot be prepared, or the
+    /// value is out of the parameter's range).
+    #[error("the model at {name} = {value} cannot be built: {message}")]
+    Setup {
+        /// The free parameter.
+        name: String,
+        /// Its value.
+        value: f64,
+        /// Why.
+        message: String,
     },
 }
 

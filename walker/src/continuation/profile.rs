@@ -9,24 +9,28 @@
 use crate::model::{Contact, Model};
 use crate::ode::{Direction, Event, GaveUp, Integrator, OdeSystem, Outcome, Step, Tolerances};
 use crate::poincare::MapError;
-use crate::sim::SimConfig;
+use crate::sim::{MAX_FALLS, SimConfig};
+use crate::vector::{MAX_COORDINATES, Vector};
 
 use super::problem::ProblemError;
 
-/// The stance dynamics of a smooth-friction model (8 mechanical components).
+/// The stance dynamics of a smooth-friction model (`M = 2n` mechanical components).
 struct Stance<'a> {
     model: &'a Model,
 }
 
-impl OdeSystem<8> for Stance<'_> {
-    fn rhs(&mut self, t: f64, y: &[f64; 8], dy: &mut [f64; 8]) {
-        let (qdd, _) = self.model.stance(t, y, Contact::Smooth);
-        *dy = [y[4], y[5], y[6], y[7], qdd[0], qdd[1], qdd[2], qdd[3]];
+impl<const M: usize> OdeSystem<M> for Stance<'_> {
+    fn rhs(&mut self, t: f64, y: &[f64; M], dy: &mut [f64; M]) {
+        let n = M / 2;
+        let mut qdd = [0.0; MAX_COORDINATES];
+        let mut u = [0.0; MAX_COORDINATES];
+        self.model.stance(t, y, Contact::Smooth, &mut qdd, &mut u);
+        dy[..n].copy_from_slice(&y[n..]);
+        dy[n..].copy_from_slice(&qdd[..n]);
     }
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
-        let ts = self.model.runtime.t_set;
-        (self.model.is_active() && ts > t).then_some(ts)
+        self.model.next_breakpoint(t)
     }
 }
 
@@ -35,9 +39,9 @@ impl OdeSystem<8> for Stance<'_> {
 pub(super) struct Profile {
     /// The heel strike's time since the impact that began the step (s).
     pub(super) period: f64,
-    /// The post-impact state `[x, z, th1, th2, xd, zd, th1d, th2d]` with `x` of the new foot
-    /// (the step's horizontal advance) before it is reduced to zero.
-    pub(super) state_plus: [f64; 8],
+    /// The post-impact state `[q, qd]` with `x` of the new foot (the step's horizontal
+    /// advance) before it is reduced to zero.
+    pub(super) state_plus: Vector,
     /// The smallest normal force over the stance phase.
     pub(super) min_normal_force: f64,
     /// The rear foot's impulse of the double-support test.
@@ -62,13 +66,13 @@ struct MinForce<'a> {
 }
 
 impl MinForce<'_> {
-    fn normal(&self, t: f64, y: &[f64; 8]) -> f64 {
+    fn normal(&self, t: f64, y: &[f64]) -> f64 {
         self.model.reaction(t, y, Contact::Smooth).normal
     }
 
-    fn on_step(&mut self, step: &Step<'_, 8>) {
+    fn on_step<const M: usize>(&mut self, step: &Step<'_, M>) {
         let (t0, t1) = (step.t_start(), step.t_end());
-        let mut y = [0.0; 8];
+        let mut y = [0.0; M];
         let at = |k: usize| t0 + (t1 - t0) * k as f64 / SAMPLES as f64;
         let mut best = (f64::INFINITY, 0);
         for k in 0..=SAMPLES {
@@ -114,36 +118,58 @@ impl MinForce<'_> {
 /// at the start): the integration, and so the post-impact state, is the same either way.
 ///
 /// # Errors
-/// No heel strike within [`SimConfig::max_step_time`], the wheel falling back onto its rear
-/// spoke, an integrator failure or a non-finite value.
+/// No strike within [`SimConfig::max_step_time`], one of the model's falls (the paper's wheel
+/// falling back onto its rear spoke), an integrator failure or a non-finite value.
 pub(super) fn step(
     model: &Model,
     cfg: &SimConfig,
-    s: &[f64; 8],
+    s: &[f64],
     tests: bool,
 ) -> Result<Profile, ProblemError> {
-    if !s.iter().all(|v| v.is_finite()) {
+    if s.len() != 2 * model.n() || !s.iter().all(|v| v.is_finite()) {
         return Err(MapError::NonFiniteStart.into());
     }
-    let heel = model.heel_strike_angle();
-    let rear = model.rear_contact_angle();
-    let mut events = [
-        Event::terminal(Direction::Rising, move |_, y: &[f64; 8]| y[2] - heel),
-        Event::terminal(Direction::Falling, move |_, y: &[f64; 8]| y[2] - rear),
-    ];
+    match model.n() {
+        3 => step_sized::<6>(model, cfg, s, tests),
+        4 => step_sized::<8>(model, cfg, s, tests),
+        5 => step_sized::<10>(model, cfg, s, tests),
+        6 => step_sized::<12>(model, cfg, s, tests),
+        7 => step_sized::<14>(model, cfg, s, tests),
+        _ => step_sized::<16>(model, cfg, s, tests),
+    }
+}
+
+/// [`step`] with the state's size `M = 2n`.
+fn step_sized<const M: usize>(
+    model: &Model,
+    cfg: &SimConfig,
+    s: &[f64],
+    tests: bool,
+) -> Result<Profile, ProblemError> {
+    let n = model.n();
+    let events_of = move |y: &[f64; M], i: usize| {
+        let mut e = [0.0; 1 + MAX_FALLS];
+        let k = model.event_count().min(e.len());
+        model.events(&y[..n], &mut e[..k]);
+        e[i]
+    };
+    let mut events: Vec<Event<'_, M>> = (0..model.event_count().min(1 + MAX_FALLS))
+        .map(|i| Event::terminal(Direction::Falling, move |_, y: &[f64; M]| events_of(y, i)))
+        .collect();
     let mut sys = Stance { model };
-    let mut integ = Integrator::<8>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
+    let mut integ = Integrator::<M>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut force = MinForce {
         model,
         min: model.reaction(0.0, s, Contact::Smooth).normal,
     };
-    let mut observer = |st: &Step<'_, 8>| {
+    let mut observer = |st: &Step<'_, M>| {
         if tests {
             force.on_step(st);
         }
     };
     let mut t = 0.0;
-    let mut y = *s;
+    let mut y = [0.0; M];
+    y.copy_from_slice(&s[..M]);
     let budget = integ.config().max_steps;
     let (te, pre) = loop {
         let spent = integ.stats().accepted_steps + integ.stats().rejected_steps;
@@ -158,8 +184,17 @@ pub(super) fn step(
             &mut observer,
         ) {
             Outcome::Breakpoint { t: tb, y: yb } => (t, y) = (tb, yb),
+            // A zero of the strike guard with the striking point behind the stance foot.
+            Outcome::Event {
+                index: 0,
+                t: te,
+                y: ye,
+            } if !model.strike_ahead(&ye[..n]) => (t, y) = (te, ye),
             Outcome::Event { index: 0, t, y } => break (t, y),
-            Outcome::Event { t, .. } => return Err(ProblemError::FellBackward { t }),
+            Outcome::Event { index, t, .. } => {
+                let name = model.spec().falls().nth(index - 1).unwrap_or("fall").to_owned();
+                return Err(ProblemError::Fall { name, t });
+            }
             Outcome::Reached { t, .. } => return Err(MapError::NoHeelStrike { t }.into()),
             Outcome::NonFinite { t, .. } => return Err(MapError::NonFinite { t }.into()),
             Outcome::StepSizeTooSmall { t, h, .. } => {
@@ -181,9 +216,7 @@ pub(super) fn step(
         .impact(&pre)
         .map_err(|_| ProblemError::ImpactJam { t: te })?;
     let post = model.reset(&pre, &imp);
-    let mut state_plus = [0.0; 8];
-    state_plus[..4].copy_from_slice(&post.q_plus);
-    state_plus[4..].copy_from_slice(&post.qd_plus);
+    let state_plus = Vector::concat(&post.q_plus, &post.qd_plus);
     if !state_plus.iter().all(|v| v.is_finite()) || !min_normal_force.is_finite() {
         return Err(MapError::NonFiniteImpact { t: te }.into());
     }

@@ -1,22 +1,25 @@
-//! The paper's two walkers as a [`GaitProblem`]: the active walker on level ground and the
-//! passive wheel on the slope, with any of their parameters free.
+//! Any model's walker as a [`GaitProblem`] ([`WalkerProblem`]): a [`Setup`] with one of its
+//! run-time parameters free (the paper's active walker over `mu0` or `T_set`, the passive
+//! wheel over `mu0` or `phi`, the compass gait over the slope).
 //!
-//! The section's independent coordinates are `r = (xd+, th1d+)` ([`crate::poincare::embed`]).
-//! With smooth (tanh) friction and Table 1 the map is one stance phase of `profile.rs` (no
-//! validity test stops it, so the physical tests are evaluated beyond the walking region too;
-//! its image alone, for the corrector's iterates, skips following the normal force) and its
-//! Jacobian comes from the variational equations ([`crate::poincare::poincare_map`]).
-//! Otherwise (exact Coulomb friction, other physical parameters) the map is one step of
-//! [`crate::sim::walk`], whose failures end the branch, and the Jacobian is by central
-//! differences; the smallest normal force is then the smallest seen at the ends of the stance
-//! segments (the walk's `lambda_min`), not located between them.
+//! The section's independent coordinates are the model's (`[section]`, [`Section`]; the
+//! paper's `r = (xd+, th1d+)`). Where the model's kernels give the stance Jacobian (smooth
+//! friction, a closed form, the parameters of a compiled fast variant) the map is one stance
+//! phase of `profile.rs` (no validity test stops it, so the physical tests are evaluated beyond
+//! the walking region too; its image alone, for the corrector's iterates, skips following the
+//! normal force) and its Jacobian comes from the variational equations
+//! ([`crate::poincare::poincare_map`]). Otherwise (exact Coulomb friction, parameters at run
+//! time, models without closed forms) the map is one step of [`crate::sim::walk`], whose
+//! failures end the branch, and the Jacobian is by central differences; the smallest normal
+//! force is then the smallest seen at the ends of the stance segments (the walk's
+//! `lambda_min`), not located between them.
 
 use nalgebra::DMatrix;
-use walker_scene::Param;
+use walker_scene::Friction;
 
-use crate::jacobian::Jac;
+use crate::jacobian::StanceJacobian;
 use crate::model::{FrictionLaw, ImpactLaw, Model};
-use crate::poincare::{embed, poincare_map, reduce, reduced_jacobian};
+use crate::poincare::{Section, poincare_map};
 use crate::setup::Setup;
 use crate::sim::{SimConfig, WalkLimits, walk};
 
@@ -43,80 +46,91 @@ const WARMUP_PERIODIC: f64 = 1e-3;
 /// about [`WARMUP_PERIODIC`] of the cycle, where the walk's own error is a thousandth of that.
 const WARMUP_RTOL: f64 = 1e-6;
 
-/// One of the paper's walkers with one parameter free.
+/// A model's walker with one run-time parameter free.
 #[derive(Clone, Debug)]
-pub struct PaperWalker {
+pub struct WalkerProblem {
     setup: Setup,
-    param: Param,
+    param: String,
     cfg: SimConfig,
-    omega0: Option<f64>,
+    dim: usize,
 }
 
-impl PaperWalker {
-    /// The walker of `setup` with `param` free, simulated with `cfg`.
+impl WalkerProblem {
+    /// The walker of `setup` with the parameter `param` free, simulated with `cfg`.
     ///
     /// # Errors
-    /// [`ProblemError::NotAParameter`] if the walker has no such parameter (`phi` on level
-    /// ground, `T_set`, `K_P`, `K_D` for the passive wheel, `c` under exact Coulomb friction).
-    pub fn new(setup: Setup, param: Param, cfg: SimConfig) -> Result<Self, ProblemError> {
-        let active = setup.model().is_active();
-        let absent = match param {
-            Param::Phi => active,
-            Param::TSet | Param::KP | Param::KD => !active,
-            Param::C => setup.friction == FrictionLaw::Coulomb,
-            _ => false,
+    /// [`ProblemError::NotAParameter`] if the model has no such parameter, or it is a
+    /// parameter of the start, or of a friction law the setup does not use (`c` under exact
+    /// Coulomb friction, `mu0` on a frictionless floor); [`ProblemError::Setup`] if the model
+    /// cannot be built.
+    pub fn new(setup: Setup, param: &str, cfg: SimConfig) -> Result<Self, ProblemError> {
+        let spec = setup.walker.spec();
+        let index = spec.parameter(param);
+        let unused = match index {
+            None => true,
+            Some(i) => {
+                spec.model.parameters[i].stage == walker_scene::model::Stage::Start
+                    || (spec.c == Some(i) && setup.friction != Friction::Tanh)
+                    || (spec.mu0 == Some(i) && setup.friction == Friction::None)
+            }
         };
-        if absent {
-            return Err(ProblemError::NotAParameter { name: param.name() });
+        if unused {
+            let known: Vec<&str> = spec.dynamic_parameters().collect();
+            return Err(ProblemError::NotAParameter {
+                name: param.to_owned(),
+                model: spec.name().to_owned(),
+                known: known.join(", "),
+            });
         }
+        let model = setup.model().map_err(|e| ProblemError::Setup {
+            name: param.to_owned(),
+            value: setup.params.get(param).unwrap_or(f64::NAN),
+            message: e.to_string(),
+        })?;
+        let dim = Section::of(&model).dim();
         Ok(Self {
+            param: param.to_owned(),
             setup,
-            param,
             cfg,
-            omega0: None,
+            dim,
         })
-    }
-
-    /// The same walker whose warm-up walks start with `th1d = omega0` (Eq. 33) instead of the
-    /// model's default.
-    #[must_use]
-    pub fn with_omega0(self, omega0: f64) -> Self {
-        Self {
-            omega0: Some(omega0),
-            ..self
-        }
     }
 
     /// The free parameter.
     #[must_use]
-    pub fn param(&self) -> Param {
-        self.param
+    pub fn param(&self) -> &str {
+        &self.param
+    }
+
+    /// The setup (the free parameter at its value in it).
+    #[must_use]
+    pub fn setup(&self) -> &Setup {
+        &self.setup
     }
 
     /// The model at parameter value `p`.
-    #[must_use]
-    pub fn model_at(&self, p: f64) -> Model {
-        let mut setup = self.setup.clone();
-        if setup.physical.set(self.param, p) {
-            // The fast kernels have Table 1 compiled in.
-            setup.fast = false;
-        } else {
-            setup.runtime.set(self.param, p);
-        }
-        setup.model()
+    ///
+    /// # Errors
+    /// [`ProblemError::Setup`]: `p` is out of the parameter's range, or the kernels cannot be
+    /// prepared.
+    pub fn model_at(&self, p: f64) -> Result<Model, ProblemError> {
+        let err = |message: String| ProblemError::Setup {
+            name: self.param.clone(),
+            value: p,
+            message,
+        };
+        let params = self
+            .setup
+            .params
+            .with(&self.param, p)
+            .map_err(|e| err(e.to_string()))?;
+        self.setup.model_with(&params).map_err(|e| err(e.to_string()))
     }
 
     /// The simulation settings.
     #[must_use]
     pub fn config(&self) -> &SimConfig {
         &self.cfg
-    }
-
-    fn r2(r: &[f64]) -> [f64; 2] {
-        [
-            r.first().copied().unwrap_or(f64::NAN),
-            r.get(1).copied().unwrap_or(f64::NAN),
-        ]
     }
 }
 
@@ -130,25 +144,26 @@ fn structure(
         .then_some(SlipStructure { sticks, impact })
 }
 
-impl GaitProblem for PaperWalker {
+impl GaitProblem for WalkerProblem {
     fn dim(&self) -> usize {
-        2
+        self.dim
     }
 
     fn parameter_name(&self) -> &str {
-        self.param.name()
+        &self.param
     }
 
     fn map(&self, r: &[f64], p: f64) -> Result<MapValue, ProblemError> {
-        let model = self.model_at(p);
-        let s = embed(&model, Self::r2(r));
-        let cphi = model.runtime.phi.cos();
-        let strike = |t: f64| model.is_active().then_some(t - model.runtime.t_set);
-        if Jac::new(&model).is_ok() {
+        let model = self.model_at(p)?;
+        let section = Section::of(&model);
+        let s = section.embed(r);
+        let cphi = model.phi().cos();
+        let strike = |t: f64| model.ramps_end().map(|t_set| t - t_set);
+        if StanceJacobian::new(&model).is_ok() {
             let step = profile::step(&model, &self.cfg, &s, true)?;
             let dx = step.state_plus[0] / cphi;
             return Ok(MapValue {
-                image: reduce(&step.state_plus).to_vec(),
+                image: section.reduce(&step.state_plus),
                 cycle: Cycle {
                     period: step.period,
                     dx,
@@ -156,7 +171,10 @@ impl GaitProblem for PaperWalker {
                 },
                 tests: Tests {
                     min_normal_force: Some(step.min_normal_force),
-                    rear_release: Some(-step.rear_impulse),
+                    rear_release: model
+                        .spec()
+                        .double_support()
+                        .then_some(-step.rear_impulse),
                     strike_after_t_set: strike(step.period),
                     structure: structure(&model, false, step.impact),
                 },
@@ -166,7 +184,7 @@ impl GaitProblem for PaperWalker {
             max_steps: 1,
             ..WalkLimits::default()
         };
-        let w = walk(&model, &self.cfg, s, &limits);
+        let w = walk(&model, &self.cfg, &s, &limits);
         if let Some(f) = w.failure {
             return Err(ProblemError::Walk(Box::new(f)));
         }
@@ -177,7 +195,7 @@ impl GaitProblem for PaperWalker {
                     t: self.cfg.max_step_time,
                 }))?;
         Ok(MapValue {
-            image: reduce(&last.state_plus()).to_vec(),
+            image: section.reduce(&last.state_plus()),
             cycle: Cycle {
                 period: last.period,
                 dx: last.dx,
@@ -185,7 +203,10 @@ impl GaitProblem for PaperWalker {
             },
             tests: Tests {
                 min_normal_force: Some(last.lambda_min / cphi),
-                rear_release: Some(-last.rear_impulse),
+                rear_release: model
+                    .spec()
+                    .double_support()
+                    .then_some(-last.rear_impulse),
                 strike_after_t_set: strike(last.period),
                 structure: structure(&model, last.stuck_time > 0.0, last.impact),
             },
@@ -193,21 +214,22 @@ impl GaitProblem for PaperWalker {
     }
 
     fn image(&self, r: &[f64], p: f64) -> Result<Vec<f64>, ProblemError> {
-        let model = self.model_at(p);
-        if Jac::new(&model).is_ok() {
+        let model = self.model_at(p)?;
+        if StanceJacobian::new(&model).is_ok() {
             // The same integration as `map`'s without following the normal force (a third of
             // the cheap map's work).
-            let step = profile::step(&model, &self.cfg, &embed(&model, Self::r2(r)), false)?;
-            return Ok(reduce(&step.state_plus).to_vec());
+            let section = Section::of(&model);
+            let step = profile::step(&model, &self.cfg, &section.embed(r), false)?;
+            return Ok(section.reduce(&step.state_plus));
         }
         Ok(self.map(r, p)?.image)
     }
 
     fn jacobian(&self, r: &[f64], p: f64) -> Result<DMatrix<f64>, ProblemError> {
-        let model = self.model_at(p);
+        let model = self.model_at(p)?;
         // Only the variational equations; the central differences of the other walkers keep
         // their own tolerances.
-        let cfg = if Jac::new(&model).is_ok() {
+        let cfg = if StanceJacobian::new(&model).is_ok() {
             SimConfig {
                 rtol: self.cfg.rtol.max(JACOBIAN_RTOL),
                 atol: self.cfg.atol.max(JACOBIAN_RTOL / 100.0),
@@ -216,23 +238,25 @@ impl GaitProblem for PaperWalker {
         } else {
             self.cfg
         };
-        let m = poincare_map(&model, &cfg, &embed(&model, Self::r2(r)))?;
-        let j = reduced_jacobian(&model, &m.jacobian);
-        Ok(DMatrix::from_fn(2, 2, |i, k| j[i][k]))
+        let section = Section::of(&model);
+        let m = poincare_map(&model, &cfg, &section.embed(r))?;
+        let j = section.reduced_jacobian(&m.jacobian, r);
+        let k = self.dim;
+        Ok(DMatrix::from_fn(k, k, |i, c| j[i][c]))
     }
 
     fn has_family_at(&self, p: f64) -> bool {
-        let mu0 = if self.param == Param::Mu0 {
-            p
-        } else {
-            self.setup.runtime.mu0
+        let spec = self.setup.walker.spec();
+        let mu0 = match spec.mu0 {
+            Some(i) if spec.model.parameters[i].name.name == self.param => p,
+            Some(i) => self.setup.params.at(i),
+            None => 0.0,
         };
-        mu0 == 0.0
+        mu0 == 0.0 || self.setup.friction == Friction::None
     }
 
     fn guess(&self, p: f64) -> Option<Vec<f64>> {
-        let model = self.model_at(p);
-        let omega0 = self.omega0.unwrap_or_else(|| model.default_omega0());
+        let model = self.model_at(p).ok()?;
         let limits = WalkLimits {
             max_steps: WARMUP_STEPS,
             periodic: Some(WARMUP_PERIODIC),
@@ -243,7 +267,7 @@ impl GaitProblem for PaperWalker {
             atol: self.cfg.atol.max(WARMUP_RTOL / 100.0),
             ..self.cfg
         };
-        let w = walk(&model, &cfg, model.initial_state(omega0), &limits);
-        w.last_state().map(|s| reduce(&s).to_vec())
+        let w = walk(&model, &cfg, &model.start_state(), &limits);
+        w.last_state().map(|s| Section::of(&model).reduce(&s))
     }
 }

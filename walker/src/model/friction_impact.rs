@@ -1,9 +1,10 @@
 //! The plastic impact with Coulomb friction at the striking foot (`docs/impacts.md`).
 //!
-//! The generated kernels `impact_coulomb_level` / `impact_coulomb_slope` give the rigid-body
-//! part ([`Ingredients`]): the velocities `qdl` after the torso lock, the contact velocities
-//! `v = [v_t, v_n, v_r]` (the fore foot along and normal to the floor, the rear foot normal to
-//! it), the Delassus matrix `W` over `(t, n, r)` and the response `R`, so that an impulse
+//! The model's generated kernel `impact_coulomb` gives the rigid-body part ([`Ingredients`]):
+//! the velocities `qdl` after the impact's locks (the paper's torso lock), the contact
+//! velocities `v = [v_t, v_n, v_r]` (the striking foot along and normal to the floor, the old
+//! stance foot normal to it), the Delassus matrix `W` over `(t, n, r)` and the response `R`,
+//! so that an impulse
 //! `Lambda = [Lambda_t, Lambda_n]` at the fore foot gives `qdot+ = qdl + R Lambda` and changes
 //! the contact velocities by `W Lambda`. What `Lambda` is follows from the friction law, here:
 //!
@@ -47,44 +48,52 @@
 use serde::Serialize;
 
 use super::contact::Slide;
+use crate::vector::{MAX_COORDINATES, Vector};
 
-/// The rigid-body part of the impact with friction, from `impact_coulomb_level` /
-/// `impact_coulomb_slope` (see the module documentation).
+/// The rigid-body part of the impact with friction, from the model's `impact_coulomb` kernel
+/// (see the module documentation).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ingredients {
-    /// `qdl`: velocities `[xd, zd, th1d, th2d]` after the torso lock (`qdot-` on the slope).
-    pub qdl: [f64; 4],
+    /// `qdl`: the velocities after the impact's locks alone (`qdot-` without locks).
+    pub qdl: Vector,
     /// `[v_t, v_n, v_r]` at `qdl`.
     pub v: [f64; 3],
     /// The Delassus matrix over `(t, n, r)` (symmetric).
     pub w: [[f64; 3]; 3],
-    /// `R` (4x2): `qdot+ = qdl + R [Lambda_t, Lambda_n]`.
-    pub r: [[f64; 2]; 4],
+    /// `R` (n x 2): `qdot+ = qdl + R [Lambda_t, Lambda_n]`, row `i` at `2 i`.
+    pub r: [f64; 2 * MAX_COORDINATES],
 }
 
 impl Ingredients {
-    /// From the kernel's 21 outputs (`qdl0..3, v_t, v_n, v_r, W_tt, W_tn, W_tr, W_nn, W_nr,
-    /// W_rr, R00, R01, .., R31`).
-    pub fn from_kernel(o: [f64; 21]) -> Ingredients {
-        let [tt, tn, tr, nn, nr, rr] = [o[7], o[8], o[9], o[10], o[11], o[12]];
+    /// The number of outputs of the `impact_coulomb` kernel of a model with `n` coordinates:
+    /// `qdl` (n), `v_t, v_n, v_r`, the six entries of `W`'s upper triangle, `R` (2n).
+    #[must_use]
+    pub fn kernel_len(n: usize) -> usize {
+        3 * n + 9
+    }
+
+    /// From the kernel's outputs for `n` coordinates (`qdl0.., v_t, v_n, v_r, W_tt, W_tn, W_tr,
+    /// W_nn, W_nr, W_rr, R00, R01, ..`).
+    #[must_use]
+    pub fn from_kernel(n: usize, o: &[f64]) -> Ingredients {
+        let h = n + 3;
+        let [tt, tn, tr, nn, nr, rr] = [o[h], o[h + 1], o[h + 2], o[h + 3], o[h + 4], o[h + 5]];
+        let mut r = [0.0; 2 * MAX_COORDINATES];
+        r[..2 * n].copy_from_slice(&o[h + 6..h + 6 + 2 * n]);
         Ingredients {
-            qdl: [o[0], o[1], o[2], o[3]],
-            v: [o[4], o[5], o[6]],
+            qdl: Vector::from_slice(&o[..n]),
+            v: [o[n], o[n + 1], o[n + 2]],
             w: [[tt, tn, tr], [tn, nn, nr], [tr, nr, rr]],
-            r: [
-                [o[13], o[14]],
-                [o[15], o[16]],
-                [o[17], o[18]],
-                [o[19], o[20]],
-            ],
+            r,
         }
     }
 
     /// `qdl + R lambda`.
-    pub fn velocity(&self, lambda: [f64; 2]) -> [f64; 4] {
+    #[must_use]
+    pub fn velocity(&self, lambda: [f64; 2]) -> Vector {
         let mut qd = self.qdl;
-        for (q, r) in qd.iter_mut().zip(self.r) {
-            *q += r[0] * lambda[0] + r[1] * lambda[1];
+        for (i, q) in qd.iter_mut().enumerate() {
+            *q += self.r[2 * i] * lambda[0] + self.r[2 * i + 1] * lambda[1];
         }
         qd
     }

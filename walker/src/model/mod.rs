@@ -1,35 +1,37 @@
-//! The walker models: which generated kernels describe the stance phase and the impact, and the
-//! parameters that go with them.
+//! Walker models: a model file's [`Spec`], its kernels behind one interface ([`Kernels`]), a
+//! [`Walker`] (the file and where its kernels come from) and a [`Model`] (its kernels prepared
+//! for one set of [`Parameters`]), with the contact and impact laws the simulator applies.
 //!
-//! Two setups of the paper are modelled: the active walker on level ground (Sections 2-4) and the
-//! passive wheel on a slope (Section 5). Each exists in a fast variant with Table 1 compiled into
-//! the kernels ([`crate::kernels::active_level`], [`crate::kernels::passive_slope`]) and a general
-//! variant that takes every parameter at run time ([`crate::kernels::general_level`],
-//! [`crate::kernels::general_slope`]) for scene files; both with the smooth friction law of
-//! Eqs. 26 and 37. With exact Coulomb friction (Eq. 25, [`FrictionLaw::Coulomb`]) the foot
-//! slides or sticks ([`Contact`]); those models use [`crate::kernels::general_level_coulomb`]
-//! and [`crate::kernels::general_slope_coulomb`].
+//! Every physical quantity comes from a kernel or from the model file; nothing here knows a
+//! particular walker. The paper's two walkers are the model files `models/paper-active.toml`
+//! and `models/paper-passive.toml`.
 //!
-//! Every physical quantity comes from a kernel; this module only dispatches.
-//!
-//! Files: [`Model`] and its dispatch (`dispatch.rs`), the contact vocabulary (`contact.rs`), the
-//! impact map's result (`impact.rs`), the plastic impact with Coulomb friction at the striking
-//! foot (`friction_impact.rs`), the change of stance leg after an impact (`reset.rs`).
+//! Files, imports one way: `spec.rs` (what the simulator reads from a model file),
+//! `parameters.rs` (values by name, checked against their ranges), `kernels.rs` (the kernel
+//! interface), `desired.rs` (the outputs' desired trajectories and Eq. 32), `contact.rs` (the
+//! contact vocabulary), `friction_impact.rs` (the plastic impact with Coulomb friction at the
+//! striking foot), `impact.rs` (the impact's results), `prepared.rs` ([`Model`]), `walker.rs`
+//! ([`Walker`], [`KernelSource`], compiled variants).
 
 mod contact;
-mod dispatch;
+mod desired;
 mod friction_impact;
 mod impact;
-mod kind;
-mod reset;
+mod kernels;
+mod parameters;
+mod prepared;
+mod spec;
+mod walker;
 
-pub use crate::params::{Physical, Runtime};
 pub use contact::{Contact, FrictionLaw, Reaction, Slide};
-pub use dispatch::Model;
+pub use desired::{Desired, Ramp, aux_input};
 pub use friction_impact::{
     ImpactJam, ImpactRegime, Ingredients, in_regime, plastic_coulomb, rear_test,
 };
-pub use impact::ImpactResult;
-pub use kind::Kind;
-pub use reset::PostImpact;
-pub use walker_scene::ImpactLaw;
+pub use impact::{ImpactResult, PostImpact};
+pub use kernels::{Args, KernelId, Kernels};
+pub use parameters::{ParamError, Parameters};
+pub use prepared::Model;
+pub use spec::{Spec, SpecError};
+pub use walker::{Compiled, KernelSource, NoKernels, Variant, Walker};
+pub use walker_scene::{Friction, ImpactLaw};

@@ -7,7 +7,7 @@ use crate::model::Model;
 use crate::sim::SimConfig;
 
 use super::fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
-use super::section::reduce;
+use super::section::Section;
 
 /// One point of a continuation in `mu0`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -30,11 +30,11 @@ impl ContinuationPoint {
 }
 
 /// Continuation in `mu0` along `mu0s` for every chain value (`T_set` for the active walker,
-/// `phi` for the passive wheel; `model_for(chain, mu0)` builds the model): each cycle starts
-/// Newton's method from the previous one on the chain, and falls back to the warm-up walk of
-/// [`fixed_point`] when that does not give a converged cycle.
+/// `phi` for the passive wheel; `model_for(chain, mu0)` builds the model, `None` where it
+/// cannot): each cycle starts Newton's method from the previous one on the chain, and falls
+/// back to the warm-up walk of [`fixed_point`] when that does not give a converged cycle.
 pub fn continuation(
-    model_for: impl Fn(f64, f64) -> Model,
+    model_for: impl Fn(f64, f64) -> Option<Model>,
     chains: &[f64],
     mu0s: &[f64],
     cfg: &SimConfig,
@@ -42,18 +42,27 @@ pub fn continuation(
     let ok = |c: &FixedPoint| matches!(c.status, Status::Converged | Status::Family);
     let mut out = Vec::new();
     for &chain in chains {
-        let mut prev: Option<[f64; 2]> = None;
+        let mut prev: Option<Vec<f64>> = None;
         for &mu0 in mu0s {
-            let model = model_for(chain, mu0);
+            let Some(model) = model_for(chain, mu0) else {
+                prev = None;
+                out.push(ContinuationPoint {
+                    chain,
+                    mu0,
+                    cycle: None,
+                });
+                continue;
+            };
             let opts = FixedPointOptions::for_model(&model);
             let from_prev = prev
+                .as_ref()
                 .and_then(|r| newton(&model, cfg, r, &opts).ok())
                 .filter(ok);
             let cycle = from_prev.or_else(|| fixed_point(&model, cfg, &opts).ok());
             prev = cycle
                 .as_ref()
                 .filter(|c| ok(c))
-                .map(|c| reduce(&c.state_plus));
+                .map(|c| Section::of(&model).reduce(&c.state_plus));
             out.push(ContinuationPoint { chain, mu0, cycle });
         }
     }

@@ -17,6 +17,7 @@
 
 use crate::model::{FrictionLaw, ImpactRegime, Model};
 use crate::sim::{SimConfig, WalkLimits, walk};
+use crate::vector::Vector;
 
 use super::error::MapError;
 use super::map::{JacobianMethod, MapResult};
@@ -24,7 +25,7 @@ use super::map::{JacobianMethod, MapResult};
 /// A foot-relative post-impact state and the regime of the impact that led to it.
 #[derive(Clone, Copy)]
 struct State {
-    s: [f64; 8],
+    s: Vector,
     impact: ImpactRegime,
 }
 
@@ -39,22 +40,22 @@ fn tight(cfg: &SimConfig) -> SimConfig {
 
 /// One step from `s` (time 0 of a step): the foot-relative post-impact state, the period and
 /// the step length.
-fn one_step(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<(State, f64, f64), MapError> {
+fn one_step(model: &Model, cfg: &SimConfig, s: &[f64]) -> Result<(State, f64, f64), MapError> {
     let limits = WalkLimits {
         max_steps: 1,
         ..WalkLimits::default()
     };
-    let w = walk(model, cfg, *s, &limits);
+    let w = walk(model, cfg, s, &limits);
     if let Some(failure) = w.failure {
         return Err(MapError::Walk(Box::new(failure)));
     }
     let step = w.steps.first().ok_or(MapError::NoHeelStrike {
         t: cfg.max_step_time,
     })?;
-    let [_, _, th1, th2] = step.q_plus;
-    let [xd, zd, th1d, th2d] = step.qd_plus;
+    let mut plus = step.state_plus();
+    (plus[0], plus[1]) = (0.0, 0.0);
     let state = State {
-        s: [0.0, 0.0, th1, th2, xd, zd, th1d, th2d],
+        s: plus,
         impact: step.impact,
     };
     Ok((state, step.period, step.dx))
@@ -65,15 +66,17 @@ fn one_step(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<(State, f64,
 pub(crate) fn finite_difference_map(
     model: &Model,
     cfg: &SimConfig,
-    s: &[f64; 8],
+    s: &[f64],
 ) -> Result<MapResult, MapError> {
     let cfg = tight(cfg);
+    let n = model.n();
+    let m = 2 * n;
     let (plus, period, dx) = one_step(model, &cfg, s)?;
-    let mut jacobian = [[0.0; 8]; 8];
-    let foot_at_rest = model.friction_law() == FrictionLaw::Coulomb && s[4] == 0.0;
-    for j in 2..8 {
+    let mut jacobian = vec![vec![0.0; m]; m];
+    let foot_at_rest = model.friction_law() == FrictionLaw::Coulomb && s[n] == 0.0;
+    for j in 2..m {
         let h = 1e-4 * s[j].abs().max(1.0);
-        let (mut up, mut down) = (*s, *s);
+        let (mut up, mut down) = (Vector::from_slice(s), Vector::from_slice(s));
         up[j] += h;
         down[j] -= h;
         let (pu, pd) = (one_step(model, &cfg, &up), one_step(model, &cfg, &down));
@@ -85,7 +88,7 @@ pub(crate) fn finite_difference_map(
             (Err(_), Ok((pd, ..))) => (&plus, pd, s[j], down[j]),
             // A foot at rest that can slide neither way: the map exists only with the foot at
             // rest, and there is no derivative along its velocity to take.
-            (Err(_), Err(_)) if foot_at_rest && (j == 4 || j == 5) => continue,
+            (Err(_), Err(_)) if foot_at_rest && (j == n || j == n + 1) => continue,
             (Err(e), Err(_)) => return Err(e.clone()),
         };
         for (i, row) in jacobian.iter_mut().enumerate() {

@@ -1,16 +1,17 @@
 //! Fixed points of the reduced Poincare map (limit cycles) by Newton's method, with least-norm
 //! steps where `D P_r - I` is singular, and their multipliers and validity.
 
-use nalgebra::{Matrix2, Vector2};
+use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 use serde::Serialize;
 
 use crate::model::Model;
 use crate::sim::{Failure, SimConfig, WalkLimits, walk};
+use crate::vector::Vector;
 
 use super::error::FixedPointError;
 use super::map::{JacobianMethod, MapResult, poincare_map};
 use super::multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
-use super::section::{embed, reduce, reduced_jacobian};
+use super::section::Section;
 use crate::model::ImpactRegime;
 
 /// Outcome of the fixed-point search.
@@ -32,8 +33,8 @@ pub enum Status {
 pub struct FixedPoint {
     /// Outcome.
     pub status: Status,
-    /// The fixed point `[x, z, th1, th2, xd, zd, th1d, th2d]` of the map (foot-relative).
-    pub state_plus: [f64; 8],
+    /// The fixed point `[q, qd]` of the map (foot-relative: `x = z = 0`).
+    pub state_plus: Vector,
     /// Step period (s).
     #[serde(rename = "T")]
     pub period: f64,
@@ -42,14 +43,16 @@ pub struct FixedPoint {
     pub speed: f64,
     /// Step length (m).
     pub dx: f64,
-    /// The gait's Floquet multipliers: eigenvalues of the reduced map in `(xd, th1d)`, by
-    /// decreasing modulus.
+    /// The gait's Floquet multipliers: eigenvalues of the map reduced to the section's
+    /// independent coordinates (the paper's `(xd, th1d)`), by decreasing modulus.
     pub multipliers: Vec<Multiplier>,
-    /// All eight eigenvalues of the full foot-relative map (the trivial ones explained in the
+    /// All `2n` eigenvalues of the full foot-relative map (the trivial ones explained in the
     /// module documentation).
     pub full_multipliers: Vec<Multiplier>,
+    /// The section's independent coordinates, by name.
+    pub section: Vec<String>,
     /// The reduced Jacobian `D P_r` at the fixed point.
-    pub reduced_jacobian: [[f64; 2]; 2],
+    pub reduced_jacobian: Vec<Vec<f64>>,
     /// How the map's Jacobian was computed.
     pub jacobian_method: JacobianMethod,
     /// How the striking foot ends the cycle's impact (left out of the JSON for the paper's
@@ -83,8 +86,8 @@ impl FixedPoint {
 /// Settings of [`fixed_point`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FixedPointOptions {
-    /// Initial angular velocity of the warm-up walk (Eq. 33 / (P2b)).
-    pub omega0: f64,
+    /// The start of the warm-up walk (the model's `[start]`: Eq. 33 / (P2b) for the paper's).
+    pub start: Vector,
     /// Steps simulated from the initial condition to obtain Newton's initial guess.
     pub warmup_steps: usize,
     /// Largest number of Newton iterations.
@@ -94,10 +97,10 @@ pub struct FixedPointOptions {
 }
 
 impl FixedPointOptions {
-    /// Defaults for a model: its default `omega0`, 30 warm-up steps, 30 iterations, `1e-11`.
+    /// Defaults for a model: its start, 30 warm-up steps, 30 iterations, `1e-11`.
     pub fn for_model(model: &Model) -> Self {
         Self {
-            omega0: model.default_omega0(),
+            start: model.start_state(),
             warmup_steps: 30,
             max_iter: 30,
             tol: 1e-11,
@@ -106,25 +109,36 @@ impl FixedPointOptions {
 }
 
 /// Least-norm solution of `a d = b` by the SVD with singular values below
-/// `UNIT_MULTIPLIER_TOL * max(1, sigma_max)` dropped; also whether any was dropped.
-fn least_norm(a: [[f64; 2]; 2], b: [f64; 2]) -> ([f64; 2], bool) {
-    let m = Matrix2::new(a[0][0], a[0][1], a[1][0], a[1][1]);
-    let svd = m.svd(true, true);
-    let smax = svd.singular_values.max();
-    let eps = UNIT_MULTIPLIER_TOL * smax.max(1.0);
+/// `UNIT_MULTIPLIER_TOL * max(1, sigma_max)` dropped; also whether any was dropped. A 2 x 2
+/// system (the paper's walkers) takes nalgebra's closed-form 2 x 2 SVD, any other size its
+/// general one.
+fn least_norm(a: &[Vec<f64>], b: &[f64]) -> (Vec<f64>, bool) {
+    let k = b.len();
+    if k == 2 {
+        let svd = Matrix2::new(a[0][0], a[0][1], a[1][0], a[1][1]).svd(true, true);
+        let eps = UNIT_MULTIPLIER_TOL * svd.singular_values.max().max(1.0);
+        let singular = svd.singular_values.iter().any(|&s| s <= eps);
+        let d = svd
+            .solve(&Vector2::new(b[0], b[1]), eps)
+            .map_or_else(|_| vec![0.0; 2], |v| vec![v[0], v[1]]);
+        return (d, singular);
+    }
+    let svd = DMatrix::from_fn(k, k, |i, j| a[i][j]).svd(true, true);
+    let eps = UNIT_MULTIPLIER_TOL * svd.singular_values.max().max(1.0);
     let singular = svd.singular_values.iter().any(|&s| s <= eps);
     let d = svd
-        .solve(&Vector2::new(b[0], b[1]), eps)
-        .map(|v| [v[0], v[1]])
-        .unwrap_or([0.0, 0.0]);
+        .solve(&DVector::from_column_slice(b), eps)
+        .map_or_else(|_| vec![0.0; k], |v| v.iter().copied().collect());
     (d, singular)
 }
 
-/// Find the limit cycle reached from the model's initial condition with `opts.omega0`:
-/// simulate `opts.warmup_steps` steps, then Newton's method on `P_r(r) - r` in the reduced
-/// coordinates (least-norm steps when `D P_r - I` is singular, damped when the map fails),
-/// then the multipliers at the result and a validity check of one step of
-/// [`crate::sim::walk`] from it.
+/// Find the limit cycle reached from `opts.start`: simulate `opts.warmup_steps` steps, then
+/// Newton's method on `P_r(r) - r` in the section's coordinates (least-norm steps when
+/// `D P_r - I` is singular, damped when the map fails), then the multipliers at the result and
+/// a validity check of one step of [`crate::sim::walk`] from it.
+///
+/// # Errors
+/// The warm-up walk fails before its first step, or the map fails at the guess.
 pub fn fixed_point(
     model: &Model,
     cfg: &SimConfig,
@@ -134,48 +148,63 @@ pub fn fixed_point(
         max_steps: opts.warmup_steps.max(1),
         ..WalkLimits::default()
     };
-    let w = walk(model, cfg, model.initial_state(opts.omega0), &limits);
+    let w = walk(model, cfg, &opts.start, &limits);
     let s0 = w.last_state().ok_or_else(|| {
         w.failure
             .clone()
             .map_or(FixedPointError::NoWarmupStep, FixedPointError::Warmup)
     })?;
-    newton(model, cfg, reduce(&s0), opts)
+    newton(model, cfg, &Section::of(model).reduce(&s0), opts)
 }
 
-/// Newton's method of [`fixed_point`] from the reduced guess `r0 = (xd+, th1d+)` (no warm-up
-/// walk): for continuation from a neighbouring cycle.
+/// Newton's method of [`fixed_point`] from the guess `r0` in the section's coordinates (no
+/// warm-up walk): for continuation from a neighbouring cycle.
+///
+/// # Errors
+/// The map fails at the guess.
 pub fn newton(
     model: &Model,
     cfg: &SimConfig,
-    r0: [f64; 2],
+    r0: &[f64],
     opts: &FixedPointOptions,
 ) -> Result<FixedPoint, FixedPointError> {
-    let mut r = r0;
-    let mut m = poincare_map(model, cfg, &embed(model, r))?;
+    let section = Section::of(model);
+    let dim = section.dim();
+    let n = model.n();
+    // The foot's velocity along the floor among the section's coordinates, if it is one.
+    let xd = section.free().iter().position(|&i| i == n);
+    let mut r = r0.to_vec();
+    let mut m = poincare_map(model, cfg, &section.embed(&r))?;
     let mut iterations = 0;
     let mut singular = false;
-    let (mut res, mut jr) = residual(model, &m, r);
+    let (mut res, mut jr) = residual(&section, &m, &r);
     while res > opts.tol && iterations < opts.max_iter {
         iterations += 1;
-        let fr = [
-            reduce(&m.state_plus)[0] - r[0],
-            reduce(&m.state_plus)[1] - r[1],
-        ];
-        let a = [[jr[0][0] - 1.0, jr[0][1]], [jr[1][0], jr[1][1] - 1.0]];
-        let (mut d, sing) = least_norm(a, [-fr[0], -fr[1]]);
-        if m.state_plus[4] == 0.0 && r[0] == 0.0 {
+        let image = section.reduce(&m.state_plus);
+        let minus_f: Vec<f64> = image.iter().zip(&r).map(|(p, x)| -(p - x)).collect();
+        let a: Vec<Vec<f64>> = (0..dim)
+            .map(|i| {
+                (0..dim)
+                    .map(|j| jr[i][j] - if i == j { 1.0 } else { 0.0 })
+                    .collect()
+            })
+            .collect();
+        let (mut d, sing) = least_norm(&a, &minus_f);
+        if let Some(k) = xd
+            && m.state_plus[n] == 0.0
+            && r[k] == 0.0
+        {
             // A sticking impact leaves the new foot exactly at rest (`Model::reset`): the
             // cycle lies on `xd = 0`, and a step off it by rounding would start a slide.
-            d[0] = 0.0;
+            d[k] = 0.0;
         }
         singular |= sing;
         let mut step = 1.0;
         let mut next = None;
         for _ in 0..8 {
-            let rn = [r[0] + step * d[0], r[1] + step * d[1]];
-            if let Ok(mn) = poincare_map(model, cfg, &embed(model, rn)) {
-                let (rs, jn) = residual(model, &mn, rn);
+            let rn: Vec<f64> = r.iter().zip(&d).map(|(x, dx)| x + step * dx).collect();
+            if let Ok(mn) = poincare_map(model, cfg, &section.embed(&rn)) {
+                let (rs, jn) = residual(&section, &mn, &rn);
                 if rs < res || step < 0.01 {
                     next = Some((rn, mn, rs, jn));
                     break;
@@ -191,17 +220,17 @@ pub fn newton(
         res = rs;
         jr = jn;
     }
-    let multipliers = eigenvalues(&jr.map(|row| row.to_vec()));
-    let full_multipliers = eigenvalues(&m.jacobian.map(|row| row.to_vec()));
+    let multipliers = eigenvalues(&jr);
+    let full_multipliers = eigenvalues(&m.jacobian);
     let structural = singular
         || multipliers
             .iter()
             .any(|l| (l.re - 1.0).hypot(l.im) < UNIT_MULTIPLIER_TOL);
-    let state_plus = embed(model, r);
+    let state_plus = section.embed(&r);
     let check = walk(
         model,
         cfg,
-        state_plus,
+        &state_plus,
         &WalkLimits {
             max_steps: 1,
             ..WalkLimits::default()
@@ -225,6 +254,7 @@ pub fn newton(
         dx: m.dx,
         multipliers,
         full_multipliers,
+        section: section.names(),
         reduced_jacobian: jr,
         jacobian_method: m.method,
         impact: m.impact,
@@ -235,11 +265,12 @@ pub fn newton(
     })
 }
 
-fn residual(model: &Model, m: &MapResult, r: [f64; 2]) -> (f64, [[f64; 2]; 2]) {
-    let p = reduce(&m.state_plus);
+/// `|P_r(r) - r|` and the reduced Jacobian at `r`.
+fn residual(section: &Section<'_>, m: &MapResult, r: &[f64]) -> (f64, Vec<Vec<f64>>) {
+    let p = section.reduce(&m.state_plus);
     (
-        (p[0] - r[0]).hypot(p[1] - r[1]),
-        reduced_jacobian(model, &m.jacobian),
+        p.iter().zip(r).fold(0.0, |acc, (a, b)| acc.hypot(a - b)),
+        section.reduced_jacobian(&m.jacobian, r),
     )
 }
 

@@ -1,74 +1,98 @@
 //! The Poincare map on the post-impact section with its Jacobian: the stance phase with the
-//! variational equations appended ([`Variational`]), the saltation correction at the heel
-//! strike, and the Jacobians of the impact and of the reset.
+//! variational equations appended ([`Variational`]), the saltation correction at the strike,
+//! and the Jacobians of the impact and of the relabelling.
 
-use nalgebra::SMatrix;
 use serde::Serialize;
 
-use crate::jacobian::Jac;
-use crate::model::{Contact, ImpactRegime, Model};
+use crate::jacobian::StanceJacobian;
+use crate::model::{Contact, ImpactRegime, KernelId, Model};
 use crate::ode::{
     Direction, Event, GaveUp, Integrator, NoObserver, OdeSystem, Outcome, Tolerances,
 };
 use crate::sim::SimConfig;
+use crate::vector::{MAX_COORDINATES, MAX_LEN, Vector};
 
 use super::error::MapError;
 use super::finite_difference::finite_difference_map;
 use super::impact_jacobian::coulomb_impact_jacobian;
 
-/// Size of the integrated state: 8 mechanical components and the 8x8 sensitivity matrix.
-const NA: usize = 8 + 64;
+/// Evaluates `$body` with `$na` set to the size `2n + (2n)^2` of the state with the
+/// variational equations, for the sizes of the models with Jacobian kernels (`n` from 3 to 5);
+/// `$other` for any other `n`.
+macro_rules! with_variational_size {
+    ($n:expr, $na:ident => $body:expr, _ => $other:expr) => {
+        match $n {
+            3 => {
+                const $na: usize = 6 + 36;
+                $body
+            }
+            4 => {
+                const $na: usize = 8 + 64;
+                $body
+            }
+            5 => {
+                const $na: usize = 10 + 100;
+                $body
+            }
+            _ => $other,
+        }
+    };
+}
 
-/// An 8x8 matrix (nalgebra, on the stack).
-type M8 = SMatrix<f64, 8, 8>;
-
-/// The stance phase with the variational equations appended.
+/// The stance phase with the variational equations appended: `[s, Phi]`, `s = [q, qd]` (`2n`
+/// numbers) and the `2n x 2n` sensitivity `Phi` row-major.
 struct Variational<'a> {
     model: &'a Model,
-    jac: Jac,
+    jac: StanceJacobian<'a>,
 }
 
 impl Variational<'_> {
-    fn mech_rhs(&self, t: f64, y: &[f64]) -> [f64; 8] {
-        let (qdd, _) = self.model.stance(t, y, Contact::Smooth);
-        [y[4], y[5], y[6], y[7], qdd[0], qdd[1], qdd[2], qdd[3]]
+    /// `[qd, qdd]` at `(t, y)`.
+    fn mech_rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
+        let n = self.model.n();
+        let mut qdd = [0.0; MAX_COORDINATES];
+        let mut u = [0.0; MAX_COORDINATES];
+        self.model.stance(t, y, Contact::Smooth, &mut qdd, &mut u);
+        out[..n].copy_from_slice(&y[n..2 * n]);
+        out[n..2 * n].copy_from_slice(&qdd[..n]);
     }
 }
 
-impl OdeSystem<NA> for Variational<'_> {
+impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
     fn rhs(&mut self, t: f64, y: &[f64; NA], dy: &mut [f64; NA]) {
-        dy[..8].copy_from_slice(&self.mech_rhs(t, y));
-        let a = self.jac.accel(self.model, t, y);
-        for j in 0..8 {
-            for i in 0..4 {
-                dy[8 + 8 * i + j] = y[8 + 8 * (i + 4) + j];
+        let n = self.model.n();
+        let m = 2 * n;
+        self.mech_rhs(t, y, &mut dy[..m]);
+        let mut a = [0.0; MAX_LEN * MAX_LEN];
+        self.jac.accel(t, y, &mut a[..(n + self.model.inputs()) * m]);
+        for j in 0..m {
+            for i in 0..n {
+                dy[m + m * i + j] = y[m + m * (i + n) + j];
                 let mut s = 0.0;
-                for (k, aik) in a[i].iter().enumerate() {
-                    s += aik * y[8 + 8 * k + j];
+                for k in 0..m {
+                    s += a[i * m + k] * y[m + m * k + j];
                 }
-                dy[8 + 8 * (i + 4) + j] = s;
+                dy[m + m * (i + n) + j] = s;
             }
         }
     }
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
-        let ts = self.model.runtime.t_set;
-        (self.model.is_active() && ts > t).then_some(ts)
+        self.model.next_breakpoint(t)
     }
 }
 
 /// One evaluation of the Poincare map.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct MapResult {
-    /// The next post-impact state `[x, z, th1, th2, xd, zd, th1d, th2d]`, measured from the new
-    /// stance foot (`x = z = 0`).
-    pub state_plus: [f64; 8],
+    /// The next post-impact state `[q, qd]`, measured from the new stance foot (`x = z = 0`).
+    pub state_plus: Vector,
     /// The step period `T` (s).
     pub period: f64,
     /// The step length (Eq. 34; along the slope, Eq. 47) (m).
     pub dx: f64,
     /// `d state_plus_i / d state_j` (row `i`, column `j`).
-    pub jacobian: [[f64; 8]; 8],
+    pub jacobian: Vec<Vec<f64>>,
     /// How the Jacobian was computed.
     pub method: JacobianMethod,
     /// How the striking foot ended the impact.
@@ -85,30 +109,79 @@ pub enum JacobianMethod {
     FiniteDifferences,
 }
 
+/// The strike guard's gradient `d g / d [q, qd]` at the coordinates `q` (the model file's
+/// guard, or the striking point's distance from the floor, differentiated symbolically and
+/// evaluated).
+fn guard_gradient(model: &Model, q: &[f64]) -> Vector {
+    let spec = model.spec();
+    let file = &spec.model;
+    let n = model.n();
+    let names: Vec<String> = spec.coordinates().map(str::to_owned).collect();
+    let params = model.params();
+    let value = |name: &str| {
+        params.get(name).or_else(|| {
+            let i = names.iter().position(|c| c == name)?;
+            q.get(i).copied()
+        })
+    };
+    let d = |e: &walker_scene::model::ModelExpr, c: &str| {
+        e.expr.derivative(c).eval(&value).unwrap_or(f64::NAN)
+    };
+    let mut g = Vector::zeros(2 * n);
+    let (sphi, cphi) = model.phi().sin_cos();
+    for (j, c) in names.iter().enumerate() {
+        g[j] = match &file.strike.guard {
+            Some(e) => d(e, c),
+            None => {
+                let p = &file.points[spec.strike_point];
+                d(&p.at[1], c) * cphi + d(&p.at[0], c) * sphi
+            }
+        };
+    }
+    g
+}
+
 /// One step of the hybrid walker from the post-impact state `s` (time 0), with its Jacobian
-/// (see the module documentation). Failures of the stance phase (no heel strike within
+/// (see the module documentation). Failures of the stance phase (no strike within
 /// [`SimConfig::max_step_time`], integrator failures, non-finite values) are errors; the
 /// physical validity tests of [`crate::sim`] (lift-off, double support) are not applied here.
-/// Models without generated Jacobian kernels (exact Coulomb friction in stance, physical
-/// parameters other than Table 1's) take one step of the simulator instead and their Jacobian by
+/// Models without Jacobian kernels (exact Coulomb friction in stance, parameters at run time,
+/// models without closed forms) take one step of the simulator instead and their Jacobian by
 /// central differences ([`super::finite_difference`]).
-pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapResult, MapError> {
-    if !s.iter().all(|v| v.is_finite()) {
+///
+/// # Errors
+/// [`MapError`]: the step could not be taken.
+pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64]) -> Result<MapResult, MapError> {
+    if s.len() != 2 * model.n() || !s.iter().all(|v| v.is_finite()) {
         return Err(MapError::NonFiniteStart);
     }
-    let Ok(jac) = Jac::new(model) else {
+    let Ok(jac) = StanceJacobian::new(model) else {
         return finite_difference_map(model, cfg, s);
     };
+    with_variational_size!(model.n(), NA => variational_map::<NA>(model, cfg, s, jac),
+        _ => finite_difference_map(model, cfg, s))
+}
+
+/// [`poincare_map`] by the variational equations.
+fn variational_map<const NA: usize>(
+    model: &Model,
+    cfg: &SimConfig,
+    s: &[f64],
+    jac: StanceJacobian<'_>,
+) -> Result<MapResult, MapError> {
+    let n = model.n();
+    let m = 2 * n;
     let mut y = [0.0; NA];
-    y[..8].copy_from_slice(s);
-    for i in 0..8 {
-        y[8 + 9 * i] = 1.0;
+    y[..m].copy_from_slice(s);
+    for i in 0..m {
+        y[m + (m + 1) * i] = 1.0;
     }
-    let heel = model.heel_strike_angle();
-    let mut events = [Event::terminal(
-        Direction::Rising,
-        move |_, y: &[f64; NA]| y[2] - heel,
-    )];
+    let mut guard_values = [0.0; 1 + crate::sim::MAX_FALLS];
+    let k = model.event_count().min(guard_values.len());
+    let mut events = [Event::terminal(Direction::Falling, move |_, y: &[f64; NA]| {
+        model.events(&y[..n], &mut guard_values[..k]);
+        guard_values[0]
+    })];
     let mut sys = Variational { model, jac };
     let mut integ = Integrator::<NA>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut t = 0.0;
@@ -132,6 +205,11 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
                 t = tb;
                 y = yb;
             }
+            // A zero of the guard with the striking point behind the stance foot is no strike.
+            Outcome::Event { t: te, y: ye, .. } if !model.strike_ahead(&ye[..n]) => {
+                t = te;
+                y = ye;
+            }
             Outcome::Event { t, y, .. } => break (t, y),
             Outcome::Reached { t, .. } => return Err(MapError::NoHeelStrike { t }),
             Outcome::NonFinite { t, .. } => return Err(MapError::NonFinite { t }),
@@ -149,70 +227,56 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
             }
         }
     };
-    let mut pre = [0.0; 8];
-    pre.copy_from_slice(&ye[..8]);
-    let mut phi = M8::from_fn(|i, j| ye[8 + 8 * i + j]);
-    // Saltation: g = th1 - heel, g_y = e_2, g_y . f = th1d.
-    let f = sys.mech_rhs(te, &ye);
-    if f[2].abs() < 1e-12 {
+    let pre = Vector::from_slice(&ye[..m]);
+    let mut phi: Vec<Vec<f64>> = (0..m)
+        .map(|i| ye[m + m * i..m + m * (i + 1)].to_vec())
+        .collect();
+    // Saltation: Phi+ = (I - f g_y^T / (g_y . f)) Phi for the guard g.
+    let mut f = [0.0; MAX_LEN];
+    sys.mech_rhs(te, &ye, &mut f[..m]);
+    let g = guard_gradient(model, &pre[..n]);
+    let gf: f64 = (0..m).map(|k| g[k] * f[k]).sum();
+    if gf.abs() < 1e-12 {
         return Err(MapError::GrazingHeelStrike { t: te });
     }
-    let g_row = phi.row(2).into_owned();
-    for i in 0..8 {
-        for j in 0..8 {
-            phi[(i, j)] -= f[i] * g_row[j] / f[2];
+    let g_row: Vec<f64> = (0..m)
+        .map(|j| (0..m).map(|k| g[k] * phi[k][j]).sum())
+        .collect();
+    for i in 0..m {
+        for j in 0..m {
+            phi[i][j] -= f[i] * g_row[j] / gf;
         }
     }
-    // Impact: positions unchanged, velocities from the impact kernel.
+    // Impact: positions unchanged, velocities from the impact.
     let imp = model
         .impact(&pre)
         .map_err(|_| MapError::NonFiniteImpact { t: te })?;
-    let k = match imp.regime {
-        ImpactRegime::Frictionless => sys.jac.impact(&pre),
-        regime => coulomb_impact_jacobian(model, &pre, regime)
-            .ok_or(MapError::NonFiniteImpact { t: te })?,
-    };
-    let mut dimp = M8::zeros();
-    for i in 0..4 {
-        dimp[(i, i)] = 1.0;
-    }
-    const COLS: [usize; 5] = [2, 4, 5, 6, 7];
-    for i in 0..4 {
-        for (c, &col) in COLS.iter().enumerate() {
-            dimp[(4 + i, col)] = k[i][c];
+    let mut k = vec![0.0; n * m];
+    match imp.regime {
+        ImpactRegime::Frictionless => sys.jac.impact(&pre, &mut k),
+        regime => {
+            k = coulomb_impact_jacobian(model, &pre, regime)
+                .ok_or(MapError::NonFiniteImpact { t: te })?;
         }
     }
-    // Reset to the new stance leg (the simulator's own, `Model::reset`), then measured from the
-    // new foot: `x` and `z` are cyclic and reduced to zero.
+    let mut dimp = vec![vec![0.0; m]; m];
+    for (i, row) in dimp.iter_mut().enumerate().take(n) {
+        row[i] = 1.0;
+    }
+    for i in 0..n {
+        dimp[n + i].copy_from_slice(&k[i * m..(i + 1) * m]);
+    }
+    // Relabelling to the new stance leg (the simulator's own, `Model::reset`), then measured
+    // from the new foot: `x` and `z` are cyclic and reduced to zero.
     let post = model.reset(&pre, &imp);
-    let (th1, th1d) = (pre[2], imp.qd[2]);
-    let (l, alpha) = (model.physical.l, model.physical.alpha);
-    let cs = th1.cos() - (th1 - alpha).cos();
-    let sn = th1.sin() - (th1 - alpha).sin();
-    let mut dres = M8::zeros();
-    dres[(2, 2)] = 1.0;
-    dres[(3, 3)] = 1.0;
-    dres[(4, 2)] = -l * th1d * sn;
-    dres[(4, 4)] = 1.0;
-    dres[(4, 6)] = l * cs;
-    dres[(5, 2)] = -l * th1d * cs;
-    dres[(5, 5)] = 1.0;
-    dres[(5, 6)] = -l * sn;
-    dres[(6, 6)] = 1.0;
-    dres[(7, 7)] = 1.0;
-    // nalgebra's product sums each entry over `k` in ascending order, as the hand-written loop
-    // it replaced did (`walker/benches/linalg.rs`: as fast, 120 ns against 127 ns).
-    let product = dres * (dimp * phi);
-    let jacobian: [[f64; 8]; 8] = product.transpose().into();
-    let [_, _, th1_plus, th2_plus] = post.q_plus;
-    let [xd_plus, zd_plus, th1d_plus, th2d_plus] = post.qd_plus;
-    let state_plus = [
-        0.0, 0.0, th1_plus, th2_plus, xd_plus, zd_plus, th1d_plus, th2d_plus,
-    ];
-    let dx = (post.q_plus[0] - s[0]) / model.runtime.phi.cos();
+    let dres = relabel_jacobian(model, &pre, &imp.qd);
+    let product = matmul(&dres, &matmul(&dimp, &phi));
+    let mut state_plus = Vector::concat(&post.q_plus, &post.qd_plus);
+    (state_plus[0], state_plus[1]) = (0.0, 0.0);
+    let dx = (post.q_plus[0] - s[0]) / model.phi().cos();
     let ok = state_plus
         .iter()
-        .chain(jacobian.iter().flatten())
+        .chain(product.iter().flatten())
         .all(|v| v.is_finite());
     if !ok || !dx.is_finite() {
         return Err(MapError::NonFiniteImpact { t: te });
@@ -221,8 +285,72 @@ pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64; 8]) -> Result<MapR
         state_plus,
         period: te,
         dx,
-        jacobian,
+        jacobian: product,
         method: JacobianMethod::Variational,
         impact: imp.regime,
     })
+}
+
+/// `a b`, each entry summed over `k` in ascending order (as the fixed-size product it
+/// replaced).
+fn matmul(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    let cols = b.first().map_or(0, Vec::len);
+    a.iter()
+        .map(|row| {
+            (0..cols)
+                .map(|j| {
+                    let mut s = 0.0;
+                    for (k, bk) in b.iter().enumerate() {
+                        s += row[k] * bk[j];
+                    }
+                    s
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The Jacobian of the relabelling `[q+, qd+] = R(q-, qd)` at the pre-impact coordinates and
+/// the post-impact velocities of the old coordinates, with the rows of `x` and `z` zero (the
+/// map measures from the new foot): the `relabel_jacobian` kernel where the model has it, else
+/// central differences of `relabel`.
+fn relabel_jacobian(model: &Model, pre: &[f64], qd: &[f64]) -> Vec<Vec<f64>> {
+    let n = model.n();
+    let m = 2 * n;
+    let mut out = vec![vec![0.0; m]; m];
+    let kernels = model.kernels();
+    let q = &pre[..n];
+    if kernels.has(KernelId::RelabelJacobian) {
+        let mut flat = vec![0.0; m * m];
+        kernels.eval(
+            KernelId::RelabelJacobian,
+            &crate::model::Args::state(q, qd),
+            &mut flat,
+        );
+        for i in 2..m {
+            out[i].copy_from_slice(&flat[i * m..(i + 1) * m]);
+        }
+        return out;
+    }
+    let relabel = |s: &[f64]| {
+        let mut o = vec![0.0; m];
+        kernels.eval(
+            KernelId::Relabel,
+            &crate::model::Args::state(&s[..n], &s[n..]),
+            &mut o,
+        );
+        o
+    };
+    let base: Vec<f64> = q.iter().chain(qd).copied().collect();
+    for j in 0..m {
+        let h = 6e-6 * base[j].abs().max(1.0);
+        let (mut up, mut down) = (base.clone(), base.clone());
+        up[j] += h;
+        down[j] -= h;
+        let (a, b) = (relabel(&up), relabel(&down));
+        for i in 2..m {
+            out[i][j] = (a[i] - b[i]) / (up[j] - down[j]);
+        }
+    }
+    out
 }

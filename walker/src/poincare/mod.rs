@@ -63,4 +63,4 @@ pub use error::{FixedPointError, MapError};
 pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
 pub use map::{JacobianMethod, MapResult, poincare_map};
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
-pub use section::{embed, embed_tangent, reduce, reduced_jacobian};
+pub use section::Section;

@@ -1,53 +1,136 @@
-//! The section's reduced coordinates `r = (xd+, th1d+)`: the embedding of `r` into the full
-//! post-impact state, its tangent, the reduction, and the reduced Jacobian `Pi DP E`.
+//! The Poincare section's independent coordinates `r` ([`Section`], the model file's
+//! `[section]`): the embedding of `r` into the full post-impact state, its tangent, the
+//! reduction, and the reduced Jacobian `Pi DP E`.
+//!
+//! On the section the stance foot is at the origin (`x = z = 0`: the map measures from the new
+//! foot) and moves along the floor (`zd = -xd tan phi`); the model file names the free
+//! components and gives the others as functions of them and of the parameters (the paper's
+//! active walker: `r = (xd, th1d)` with `th1 = -alpha/2`, `th2 = 0`, `th2d = th1d`, the
+//! controller's invariant manifold `y = -alpha/2`, `ydot = 0`). Without a `[section]` every
+//! other component is free.
 
-use crate::model::{Kind, Model};
+use walker_scene::model::{Expr, ModelExpr};
 
-/// The state on the section with the reduced coordinates `r = (xd, th1d)` (see the module
-/// documentation): the active walker's `[0, 0, -alpha/2, 0, xd, 0, th1d, th1d]`, the passive
-/// wheel's `[0, 0, phi - alpha/2, 0, xd, -xd tan phi, th1d, 0]`.
-pub fn embed(model: &Model, r: [f64; 2]) -> [f64; 8] {
-    let th1 = model.rear_contact_angle();
-    match model.kind() {
-        Kind::ActiveLevel => [0.0, 0.0, th1, 0.0, r[0], 0.0, r[1], r[1]],
-        Kind::PassiveSlope => [
-            0.0,
-            0.0,
-            th1,
-            0.0,
-            r[0],
-            -r[0] * model.runtime.phi.tan(),
-            r[1],
-            0.0,
-        ],
-    }
+use crate::model::Model;
+use crate::vector::Vector;
+
+/// The section of a model: which components of the post-impact state are free, and the values
+/// of the others.
+#[derive(Clone, Debug)]
+pub struct Section<'a> {
+    model: &'a Model,
+    /// The free components (indices into `[q, qd]`).
+    free: Vec<usize>,
+    /// The other components with their values.
+    given: Vec<(usize, &'a ModelExpr)>,
 }
 
-/// `d embed(r)_i / d r_j`.
-pub fn embed_tangent(model: &Model) -> [[f64; 2]; 8] {
-    let mut e = [[0.0; 2]; 8];
-    e[4][0] = 1.0;
-    e[6][1] = 1.0;
-    match model.kind() {
-        Kind::ActiveLevel => e[7][1] = 1.0,
-        Kind::PassiveSlope => e[5][0] = -model.runtime.phi.tan(),
-    }
-    e
-}
-
-/// The reduced coordinates `(xd, th1d)` of a post-impact state.
-pub fn reduce(s: &[f64; 8]) -> [f64; 2] {
-    [s[4], s[6]]
-}
-
-/// The reduced map's Jacobian `Pi DP E` from the full one.
-pub fn reduced_jacobian(model: &Model, full: &[[f64; 8]; 8]) -> [[f64; 2]; 2] {
-    let e = embed_tangent(model);
-    let mut out = [[0.0; 2]; 2];
-    for (a, &row) in [4usize, 6].iter().enumerate() {
-        for (b, o) in out[a].iter_mut().enumerate() {
-            *o = (0..8).map(|k| full[row][k] * e[k][b]).sum();
+impl<'a> Section<'a> {
+    /// The section of `model` (its `[section]`, else every component but `x`, `z`, `zd`
+    /// free).
+    #[must_use]
+    pub fn of(model: &'a Model) -> Section<'a> {
+        let n = model.n();
+        match &model.spec().model.section {
+            Some(s) => Section {
+                model,
+                free: s.free.clone(),
+                given: s.given.iter().map(|(i, e)| (*i, e)).collect(),
+            },
+            None => Section {
+                model,
+                free: (2..2 * n).filter(|&i| i != n + 1).collect(),
+                given: Vec::new(),
+            },
         }
     }
-    out
+
+    /// The number of independent coordinates.
+    #[must_use]
+    pub fn dim(&self) -> usize {
+        self.free.len()
+    }
+
+    /// The free components, as indices into the state `[q, qd]`.
+    #[must_use]
+    pub fn free(&self) -> &[usize] {
+        &self.free
+    }
+
+    /// The names of the free components (`xd`, `th1d`).
+    #[must_use]
+    pub fn names(&self) -> Vec<String> {
+        let names = self.model.spec().state_names();
+        self.free.iter().map(|&i| names[i].clone()).collect()
+    }
+
+    /// The value of `e` at the parameters and the free components `r`.
+    fn eval(&self, e: &Expr, r: &[f64]) -> f64 {
+        let names = self.model.spec().state_names();
+        let params = self.model.params();
+        e.eval(&|name| {
+                params.get(name).or_else(|| {
+                    let i = names.iter().position(|s| s == name)?;
+                    let k = self.free.iter().position(|&f| f == i)?;
+                    r.get(k).copied()
+                })
+        })
+        .unwrap_or(f64::NAN)
+    }
+
+    /// The state on the section with the independent coordinates `r`.
+    #[must_use]
+    pub fn embed(&self, r: &[f64]) -> Vector {
+        let n = self.model.n();
+        let mut s = Vector::zeros(2 * n);
+        for (k, &i) in self.free.iter().enumerate() {
+            s[i] = r[k];
+        }
+        for &(i, e) in &self.given {
+            s[i] = self.eval(&e.expr, r);
+        }
+        s[n + 1] = -s[n] * self.model.phi().tan();
+        s
+    }
+
+    /// `d embed(r)_i / d r_j` at `r` (`2n` rows of `dim` columns).
+    #[must_use]
+    pub fn tangent(&self, r: &[f64]) -> Vec<Vec<f64>> {
+        let n = self.model.n();
+        let names = self.model.spec().state_names();
+        let mut e = vec![vec![0.0; self.dim()]; 2 * n];
+        for (k, &i) in self.free.iter().enumerate() {
+            e[i][k] = 1.0;
+        }
+        for &(i, expr) in &self.given {
+            for (k, &f) in self.free.iter().enumerate() {
+                e[i][k] = self.eval(&expr.expr.derivative(&names[f]), r);
+            }
+        }
+        let tphi = self.model.phi().tan();
+        for k in 0..self.dim() {
+            e[n + 1][k] = -e[n][k] * tphi;
+        }
+        e
+    }
+
+    /// The independent coordinates of a post-impact state.
+    #[must_use]
+    pub fn reduce(&self, s: &[f64]) -> Vec<f64> {
+        self.free.iter().map(|&i| s[i]).collect()
+    }
+
+    /// The reduced map's Jacobian `Pi DP E` from the full one (`2n x 2n`, row-major) at `r`.
+    #[must_use]
+    pub fn reduced_jacobian(&self, full: &[Vec<f64>], r: &[f64]) -> Vec<Vec<f64>> {
+        let e = self.tangent(r);
+        self.free
+            .iter()
+            .map(|&row| {
+                (0..self.dim())
+                    .map(|b| e.iter().enumerate().map(|(k, ek)| full[row][k] * ek[b]).sum())
+                    .collect()
+            })
+            .collect()
+    }
 }

@@ -25,7 +25,6 @@
 
 use super::failure::FailureKind;
 use super::foot::{Foot, control_input};
-use super::state::N;
 
 /// Whether `lambda = lam` counts as blown up at the end of an integration segment or as the
 /// measure of a pole: not finite, or above a thousandth of the blow-up threshold `lambda_max`.
@@ -37,10 +36,10 @@ pub(super) fn blown_up(lam: f64, lambda_max: f64) -> bool {
 /// `(t, y)` on `foot`: [`FailureKind::LambdaDenominatorZero`] at a pole of Eq. 23,
 /// [`FailureKind::LambdaNumeratorHuge`] where the denominator is regular and `lambda` and `u`
 /// are finite, [`FailureKind::NonFinite`] otherwise (see the module documentation).
-pub(super) fn blow_up(
+pub(super) fn blow_up<const S: usize>(
     foot: &Foot<'_>,
     t: f64,
-    y: &[f64; N],
+    y: &[f64; S],
     lam: f64,
     lambda_max: f64,
 ) -> FailureKind {
@@ -53,7 +52,11 @@ pub(super) fn blow_up(
     if pole {
         return FailureKind::LambdaDenominatorZero { lambda: lam };
     }
-    let u = control_input(model, t, y, contact);
+    // The input largest in magnitude (0 for a passive walker).
+    let u = control_input(model, t, y, contact)
+        .iter()
+        .copied()
+        .fold(0.0, |a: f64, b: f64| if b.abs() > a.abs() || b.is_nan() { b } else { a });
     if lam.is_finite() && u.is_finite() {
         FailureKind::LambdaNumeratorHuge { lambda: lam, u }
     } else {

@@ -7,26 +7,28 @@
 use serde::Serialize;
 
 use crate::ode::GaveUp;
+use crate::vector::Vector;
 
 /// Why a walk ended early, and where: the step number (0 for the step that starts at the initial
-/// condition), the time since the last impact and the mechanical state
-/// `[x, z, th1, th2, xd, zd, th1d, th2d]` where it happened.
+/// condition), the time since the last impact and the mechanical state `[q, qd]` where it
+/// happened.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Failure {
     /// Step number.
     pub step: usize,
     /// Time since the last impact (see each [`FailureKind`] for which time).
     pub t: f64,
-    /// State (see each [`FailureKind`] for which state).
-    pub state: [f64; 8],
+    /// State `[q, qd]` (see each [`FailureKind`] for which state).
+    pub state: Vector,
     /// The cause.
     #[serde(flatten)]
     pub kind: FailureKind,
 }
 
 impl Failure {
-    /// The failure's name as printed by the CLI (`"lift-off"`, ...).
-    pub fn name(&self) -> &'static str {
+    /// The failure's name as printed by the CLI (`"lift-off"`, a fall's name in its model
+    /// file, ...).
+    pub fn name(&self) -> &str {
         self.kind.name()
     }
 }
@@ -50,10 +52,11 @@ pub enum FailureKind {
         /// The tangential force with the foot held.
         tangential: f64,
     },
-    /// The heel struck before the output-following control finished (`t < T_set`); `t` is the
-    /// time of the heel strike and the state the pre-impact state.
+    /// The strike came before the output-following control finished its ramps (`t < T_set`
+    /// in the paper, which assumes the control complete by the next impact, Section 3.2); `t`
+    /// is the time of the strike and the state the pre-impact state.
     ImpactBeforeTSet {
-        /// The ramp duration `T_set`.
+        /// The end of the last ramp (`T_set`).
         t_set: f64,
     },
     /// The rear foot's impulse with the rear foot kept on the floor is non-negative: the
@@ -90,13 +93,17 @@ pub enum FailureKind {
     LambdaNumeratorHuge {
         /// `lambda` there (finite).
         lambda: f64,
-        /// The control input `u` of Eq. 31 there (finite; 0 for the passive wheel).
+        /// The control input `u` of Eq. 31 there, the largest in magnitude of several (finite;
+        /// 0 for a passive walker).
         u: f64,
     },
-    /// The wheel rolled back until the rear spoke reached the floor.
-    FellBackward {
-        /// Stance-leg angle (the rear-contact angle).
-        th1: f64,
+    /// One of the model's falls (`[[fall]]`): a point touched the floor or a guard reached zero
+    /// (the paper's wheel rolling back onto its rear spoke is the fall `fell-backward`).
+    Fall {
+        /// The fall's name in the model file.
+        name: String,
+        /// What happened, from the model file.
+        doc: String,
     },
     /// The heel strike happened at the very start of the step (a step of zero duration, so no
     /// step period, speed or power exists): the state began on the impact guard moving into
@@ -116,8 +123,9 @@ pub enum FailureKind {
 }
 
 impl FailureKind {
-    /// The failure's name as printed by the CLI (`"lift-off"`, ...).
-    pub fn name(&self) -> &'static str {
+    /// The failure's name as printed by the CLI (`"lift-off"`, a fall's name in its model
+    /// file, ...).
+    pub fn name(&self) -> &str {
         match self {
             FailureKind::LiftOff { .. } => "lift-off",
             FailureKind::ContactInconsistent { .. } => "contact-inconsistent",
@@ -126,7 +134,7 @@ impl FailureKind {
             FailureKind::ImpactJam { .. } => "impact-jam",
             FailureKind::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
             FailureKind::LambdaNumeratorHuge { .. } => "lambda-numerator-huge",
-            FailureKind::FellBackward { .. } => "fell-backward",
+            FailureKind::Fall { name, .. } => name,
             FailureKind::ImpactAtStart => "impact-at-start",
             FailureKind::NoImpact => "no-impact",
             FailureKind::NonFinite => "non-finite",
@@ -135,7 +143,7 @@ impl FailureKind {
     }
 
     /// This cause at step `step`, time `t` and state `state`.
-    pub fn at(self, step: usize, t: f64, state: [f64; 8]) -> Failure {
+    pub fn at(self, step: usize, t: f64, state: Vector) -> Failure {
         Failure {
             step,
             t,

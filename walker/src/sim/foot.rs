@@ -1,18 +1,19 @@
-//! The stance foot: its contact with the floor, the ground reaction and the control input
-//! (remembered where several users ask about the same point), and the choice of contact where a
-//! foot starts a stance phase or comes to rest under Coulomb friction.
+//! The stance foot: its contact with the floor, the ground reaction and the input power's sign
+//! function (remembered where several users ask about the same point), and the choice of
+//! contact where a foot starts a stance phase or comes to rest under Coulomb friction.
 
 use std::cell::Cell;
 
 use crate::model::{Contact, FrictionLaw, Model, Reaction, Slide};
+use crate::vector::{MAX_COORDINATES, Vector};
 
 use super::failure::{Failure, FailureKind};
-use super::state::{N, mech};
+use super::state::mech;
 
-/// The control input `u` of Eq. 31 (`u = (v + B) / A`, `v` from Eq. 32) in the contact
-/// `contact`; 0 for the passive wheel.
-pub fn control_input(model: &Model, t: f64, y: &[f64], contact: Contact) -> f64 {
-    model.stance(t, y, contact).1
+/// The control inputs `u` of Eq. 31 (`u = A^-1 (v + B)`, `v` from Eq. 32) at `(t, y)` in the
+/// contact `contact`; empty for a passive walker.
+pub fn control_input(model: &Model, t: f64, y: &[f64], contact: Contact) -> Vector {
+    model.control_input(t, y, contact)
 }
 
 /// The ground's force on the stance foot at `(t, y)` in the contact `contact`, with the control
@@ -21,13 +22,8 @@ pub fn ground_reaction(model: &Model, t: f64, y: &[f64], contact: Contact) -> Re
     model.reaction(t, y, contact)
 }
 
-/// The integrand `ydot u` of the input power (Section 4.2), `ydot = th1d - th2d`.
-fn power_integrand(model: &Model, t: f64, y: &[f64], contact: Contact) -> f64 {
-    (y[6] - y[7]) * control_input(model, t, y, contact)
-}
-
 /// A remembered value of a function of `(t, mechanical state, contact)`.
-type Memo<T> = Option<(f64, [f64; 8], Contact, T)>;
+type Memo<T> = Option<(f64, Vector, Contact, T)>;
 
 /// The stance foot during one stance phase: the model, the current contact (it changes only
 /// between integration segments, at stick-slip transitions), and remembered values of what
@@ -38,8 +34,8 @@ pub(super) struct Foot<'a> {
     contact: Cell<Contact>,
     /// The last ground reaction: the lift-off, blow-up and slip guards share it.
     reaction: Cell<Memo<Reaction>>,
-    /// The last two values of `ydot u` (a step's start is the previous step's end, and the
-    /// error test and the power observer ask about the same ends).
+    /// The last two values of the power's sign function (a step's start is the previous
+    /// step's end, and the error test and the kink guard ask about the same ends).
     power: Cell<[Memo<f64>; 2]>,
 }
 
@@ -65,7 +61,7 @@ impl<'a> Foot<'a> {
     }
 
     /// The ground reaction at `(t, y)` in the current contact (remembered for one point).
-    pub(super) fn reaction(&self, t: f64, y: &[f64; N]) -> Reaction {
+    pub(super) fn reaction<const S: usize>(&self, t: f64, y: &[f64; S]) -> Reaction {
         let (s, c) = (mech(y), self.contact());
         if let Some((tm, sm, cm, r)) = self.reaction.get()
             && (tm, sm, cm) == (t, s, c)
@@ -77,9 +73,9 @@ impl<'a> Foot<'a> {
         r
     }
 
-    /// The input-power integrand `ydot u` at `(t, y)` in the current contact (remembered for
-    /// two points).
-    pub(super) fn power(&self, t: f64, y: &[f64; N]) -> f64 {
+    /// The power's sign function `prod u_i w_i` at `(t, y)` in the current contact (remembered
+    /// for two points).
+    pub(super) fn power<const S: usize>(&self, t: f64, y: &[f64; S]) -> f64 {
         let (s, c) = (mech(y), self.contact());
         let mut memo = self.power.get();
         if let Some(&Some((_, _, _, g))) = memo
@@ -88,19 +84,23 @@ impl<'a> Foot<'a> {
         {
             return g;
         }
-        let g = power_integrand(self.model, t, y, c);
+        let g = self.model.power_sign_function(t, y, c);
         memo[1] = memo[0];
         memo[0] = Some((t, s, c, g));
         self.power.set(memo);
         g
     }
 
-    /// Whether `ydot u` changes sign from `(t0, y0)` to `(t1, y1)` before `T_set` (the kink of
-    /// `|ydot u|` is then inside the step).
-    pub(super) fn crossed(&self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> bool {
-        self.model.is_active()
-            && t0 < self.model.runtime.t_set
-            && self.power(t0, y0) * self.power(t1, y1) < 0.0
+    /// Whether an input's power `u_i w_i` changes sign from `(t0, y0)` to `(t1, y1)` while the
+    /// power counts (the kink of `|u_i w_i|` is then inside the step).
+    pub(super) fn crossed<const S: usize>(
+        &self,
+        t0: f64,
+        y0: &[f64; S],
+        t1: f64,
+        y1: &[f64; S],
+    ) -> bool {
+        self.model.power_counts(t0) && self.power(t0, y0) * self.power(t1, y1) < 0.0
     }
 }
 
@@ -110,21 +110,23 @@ impl<'a> Foot<'a> {
 /// foot accelerates in its own direction; Painleve's paradox otherwise). Forces or an
 /// acceleration that are not finite (a spin whose square overflows) decide nothing: the
 /// failure is [`FailureKind::NonFinite`], not an inconsistent contact.
-pub(super) fn contact_at_rest(
+pub(super) fn contact_at_rest<const S: usize>(
     model: &Model,
     t: f64,
-    y: &[f64; N],
+    y: &[f64; S],
     step: usize,
 ) -> Result<Contact, Failure> {
     let held = ground_reaction(model, t, y, Contact::Stuck);
     if !(held.normal.is_finite() && held.tangential.is_finite()) {
         return Err(FailureKind::NonFinite.at(step, t, mech(y)));
     }
-    if held.tangential.abs() <= model.runtime.mu0 * held.normal {
+    if held.tangential.abs() <= model.mu0() * held.normal {
         return Ok(Contact::Stuck);
     }
     let slide = Slide::of(-held.tangential);
-    let (qdd, _) = model.stance(t, y, Contact::Sliding(slide));
+    let mut qdd = [0.0; MAX_COORDINATES];
+    let mut u = [0.0; MAX_COORDINATES];
+    model.stance(t, y, Contact::Sliding(slide), &mut qdd, &mut u);
     if !qdd[0].is_finite() {
         return Err(FailureKind::NonFinite.at(step, t, mech(y)));
     }
@@ -144,18 +146,17 @@ pub(super) fn contact_at_rest(
 /// friction makes it negative, an inconsistent contact (Painleve's paradox: the foot could
 /// neither slide nor leave the floor without a tangential impact, which the paper's impact model
 /// does not have).
-pub(super) fn reaction_at_start(
+pub(super) fn reaction_at_start<const S: usize>(
     foot: &Foot<'_>,
     t: f64,
-    y: &[f64; N],
+    y: &[f64; S],
     step: usize,
 ) -> Result<Reaction, Failure> {
     let r = foot.reaction(t, y);
     if r.normal >= 0.0 || r.normal.is_nan() {
         return Ok(r);
     }
-    let model = foot.model;
-    let kind = match model.frictionless_normal(t, y) {
+    let kind = match foot.model.frictionless_normal(t, y) {
         Some(n) if n >= 0.0 => FailureKind::ContactInconsistent {
             normal: r.normal,
             tangential: r.tangential,
@@ -167,22 +168,23 @@ pub(super) fn reaction_at_start(
 
 /// The contact at the start of a stance phase: the smooth law, or under Coulomb friction
 /// sliding with the post-impact foot velocity, or at rest.
-pub(super) fn initial_contact(
+pub(super) fn initial_contact<const S: usize>(
     model: &Model,
-    y: &[f64; N],
+    y: &[f64; S],
     step: usize,
 ) -> Result<Contact, Failure> {
+    let xd = y[model.n()];
     match model.friction_law() {
         FrictionLaw::Tanh => Ok(Contact::Smooth),
-        FrictionLaw::Coulomb if y[4] != 0.0 => Ok(Contact::Sliding(Slide::of(y[4]))),
+        FrictionLaw::Coulomb if xd != 0.0 => Ok(Contact::Sliding(Slide::of(xd))),
         FrictionLaw::Coulomb => contact_at_rest(model, 0.0, y, step),
     }
 }
 
 /// A foot brought to rest: exactly zero velocity along the floor (`xd = 0`, and `zd = 0` with
 /// it on the slope, where `zd = -xd tan phi`).
-pub(super) fn at_rest(mut y: [f64; N]) -> [f64; N] {
-    y[4] = 0.0;
-    y[5] = 0.0;
+pub(super) fn at_rest<const S: usize>(mut y: [f64; S], n: usize) -> [f64; S] {
+    y[n] = 0.0;
+    y[n + 1] = 0.0;
     y
 }

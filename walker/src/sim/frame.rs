@@ -7,10 +7,11 @@ use serde::Serialize;
 
 use crate::model::{Contact, Model, Reaction};
 use crate::ode::Step;
+use crate::vector::Vector;
 
 use super::failure::Failure;
 use super::foot::{Foot, control_input, ground_reaction, initial_contact};
-use super::state::{N, finite, mech};
+use super::state::{finite, integrated, mech, with_state_size};
 
 /// The walk's motion at one time.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -21,13 +22,12 @@ pub struct Frame {
     pub t: f64,
     /// Step number (0 for the step that starts at the initial condition).
     pub step: usize,
-    /// State `[x, z, th1, th2, xd, zd, th1d, th2d]` in the stance leg's coordinates: `(x, z)`
-    /// is the stance foot.
-    pub state: [f64; 8],
+    /// State `[q, qd]` in the stance leg's coordinates: `(x, z)` is the stance foot.
+    pub state: Vector,
     /// The ground's force on the stance foot (`lambda`, its normal and friction parts).
     pub reaction: Reaction,
-    /// Control input `u` (0 for the passive wheel).
-    pub u: f64,
+    /// Control inputs `u` (none for a passive walker).
+    pub u: Vector,
     /// How the stance foot touches the floor.
     pub contact: Contact,
 }
@@ -62,15 +62,15 @@ impl Frames {
     /// Called for every accepted step `st` of the stance phase `step` (its clock starts at
     /// `t_offset` since the start of the walk) with the stance foot `foot`: evaluates the dense
     /// output at every `k dt` inside the step.
-    pub(super) fn on_step(
+    pub(super) fn on_step<const S: usize>(
         &mut self,
         foot: &Foot<'_>,
         t_offset: f64,
         step: usize,
-        st: &Step<'_, N>,
+        st: &Step<'_, S>,
     ) {
         let end = t_offset + st.t_end();
-        let mut y = [0.0; N];
+        let mut y = [0.0; S];
         loop {
             let time = self.next as f64 * self.dt;
             if time > end {
@@ -114,19 +114,21 @@ pub(super) fn at_failure(
     time: f64,
     last: Option<&Frame>,
 ) -> Frame {
-    let mut y = [0.0; N];
-    y[..8].copy_from_slice(&failure.state);
     let contact = match last {
         Some(f) if f.step == failure.step => f.contact,
-        _ => initial_contact(model, &y, failure.step).unwrap_or(Contact::Stuck),
+        _ => with_state_size!(model.n(), S => {
+            let y: [f64; S] = integrated(&failure.state);
+            initial_contact(model, &y, failure.step).unwrap_or(Contact::Stuck)
+        }, _ => Contact::Stuck),
     };
+    let y = &failure.state;
     Frame {
         time,
         t: failure.t,
         step: failure.step,
         state: failure.state,
-        reaction: ground_reaction(model, failure.t, &y, contact),
-        u: control_input(model, failure.t, &y, contact),
+        reaction: ground_reaction(model, failure.t, y, contact),
+        u: control_input(model, failure.t, y, contact),
         contact,
     }
 }

@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::failure::Failure;
 use crate::model::ImpactRegime;
+use crate::vector::Vector;
 
 /// Gait descriptors of one step (Section 4.2) and the state right after the impact that ends it.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -17,15 +18,16 @@ pub struct StepResult {
     /// Average walking speed `V = dx / T` (m/s).
     #[serde(rename = "V")]
     pub speed: f64,
-    /// Average input power `p = (1/T) int_0^T_set |ydot u| dt` (W); `None` for the passive wheel.
+    /// Average input power `p = (1/T) int |ydot u| dt` (W), to the model's `power_until`
+    /// (`T_set` in the paper) or over the step; `None` for a passive walker.
     pub p: Option<f64>,
-    /// Specific resistance `SR = p / (m_t g V)`; `None` for the passive wheel.
+    /// Specific resistance `SR = p / (m_t g V)`; `None` for a passive walker.
     #[serde(rename = "SR")]
     pub sr: Option<f64>,
-    /// Post-impact position `[x, z, th1, th2]` in the new stance leg's coordinates.
-    pub q_plus: [f64; 4],
-    /// Post-impact velocity `[xd, zd, th1d, th2d]` in the new stance leg's coordinates.
-    pub qd_plus: [f64; 4],
+    /// Post-impact coordinates `q+` in the new stance leg's coordinates.
+    pub q_plus: Vector,
+    /// Post-impact velocities `qd+` in the new stance leg's coordinates.
+    pub qd_plus: Vector,
     /// The new stance foot's velocity normal to the floor right after the impact (should be 0).
     pub foot_normal_velocity: f64,
     /// The rear-foot impulse of the double-support test (negative: the rear leg leaves).
@@ -42,11 +44,8 @@ pub struct StepResult {
 
 impl StepResult {
     /// The post-impact state `[q_plus, qd_plus]` (the next step's initial state).
-    pub fn state_plus(&self) -> [f64; 8] {
-        let mut s = [0.0; 8];
-        s[..4].copy_from_slice(&self.q_plus);
-        s[4..].copy_from_slice(&self.qd_plus);
-        s
+    pub fn state_plus(&self) -> Vector {
+        Vector::concat(&self.q_plus, &self.qd_plus)
     }
 }
 
@@ -57,12 +56,12 @@ pub struct Sample {
     pub time: f64,
     /// Step number.
     pub step: usize,
-    /// State `[x, z, th1, th2, xd, zd, th1d, th2d]`.
-    pub state: [f64; 8],
+    /// State `[q, qd]`.
+    pub state: Vector,
     /// Vertical ground reaction `lambda`.
     pub lambda: f64,
-    /// Control input `u`.
-    pub u: f64,
+    /// Control inputs `u` (none for a passive walker).
+    pub u: Vector,
 }
 
 /// The result of a walk.
@@ -81,8 +80,18 @@ pub struct Walk {
 }
 
 impl Walk {
+    /// A walk that failed before its first step.
+    pub(super) fn failed(failure: Failure) -> Walk {
+        Walk {
+            steps: Vec::new(),
+            failure: Some(failure),
+            samples: Vec::new(),
+            periodic: false,
+        }
+    }
+
     /// The post-impact state after the last completed step, if any.
-    pub fn last_state(&self) -> Option<[f64; 8]> {
+    pub fn last_state(&self) -> Option<Vector> {
         self.steps.last().map(StepResult::state_plus)
     }
 }

@@ -1,32 +1,38 @@
 //! The stance events, named: every zero crossing that ends an integration segment of a stance
 //! phase is a [`Guard`], and the event list handed to the integrator is built from
-//! [`Guard::ALL`], so that an event's index and its meaning cannot drift apart.
+//! [`Guard::list`], so that an event's index and its meaning cannot drift apart.
 
 use std::cell::Cell;
 
-use crate::model::{Contact, FrictionLaw};
+use crate::model::{Contact, FrictionLaw, Model};
 use crate::ode::{Direction, Event};
+use crate::vector::MAX_COORDINATES;
 
 use super::foot::Foot;
-use super::state::N;
+
+/// The most falls a model's stance watches (its `[[fall]]` entries).
+pub const MAX_FALLS: usize = 2 * MAX_COORDINATES;
 
 /// A stance event (a terminal event of the stance integration).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Guard {
-    /// Heel strike: the stance-leg angle `th1` rises through the heel-strike angle (`alpha/2`,
-    /// `alpha/2 + phi` on the slope). Ends the stance phase.
+    /// The strike: the model's strike guard (`events`' first output) falls through zero
+    /// (`alpha/2 - th1` on the paper's level floor). Ends the stance phase where the striking
+    /// point is ahead of the stance foot (or the model does not ask); elsewhere (the compass
+    /// gait's swing foot passing the stance foot) the integration goes on.
     Strike,
     /// The normal ground reaction falls through zero (Eq. 23): lift-off.
     LiftOff,
-    /// `th1` falls through the rear-contact angle: the wheel rolled back onto its rear spoke.
-    FellBackward,
+    /// The model's fall `i` (`[[fall]]`, in file order): its value falls through zero (the
+    /// paper's wheel rolling back onto its rear spoke, a hip touching the floor).
+    Fall(usize),
     /// `|lambda|` rises through [`super::SimConfig::lambda_blowup`] `m_t g`: the denominator of
     /// Eq. 23 vanishes, or its numerator is huge (`sim/blowup.rs` tells which).
     LambdaBlowUp,
-    /// The power kink: `ydot u` changes sign before `T_set` (where `|ydot u|`, the power
-    /// quadrature's integrand, has a kink; see the stance system's error test,
-    /// `Stance::controlled_components`). Off from the breakpoint at `T_set` on (a switch by
-    /// time would be a jump at the breakpoint). The integration goes on from it.
+    /// The power kink: an input's power `u_i w_i` changes sign while the power counts (where
+    /// `|u_i w_i|`, the power quadrature's integrand, has a kink; see the stance system's error
+    /// test, `Stance::controlled_components`). Off from the end of the power's count on (a
+    /// switch by time would be a jump at the breakpoint). The integration goes on from it.
     PowerKink,
     /// Coulomb friction: a sliding foot comes to rest (`sigma xd` falls through zero; zero while
     /// stuck).
@@ -37,36 +43,26 @@ pub enum Guard {
 }
 
 impl Guard {
-    /// Every guard, in the order of the event list.
-    pub const ALL: [Guard; 7] = [
-        Guard::Strike,
-        Guard::LiftOff,
-        Guard::FellBackward,
-        Guard::LambdaBlowUp,
-        Guard::PowerKink,
-        Guard::FootStops,
-        Guard::FootSlips,
-    ];
-
-    /// The guards watched under the friction law `law` (a prefix of [`Guard::ALL`]): the
-    /// stick-slip guards only under Coulomb friction.
-    pub fn active(law: FrictionLaw) -> &'static [Guard] {
-        match law {
-            FrictionLaw::Tanh => &Self::ALL[..5],
-            FrictionLaw::Coulomb => &Self::ALL,
+    /// The guards watched for a model with `falls` falls under the friction law `law`, in the
+    /// order of the event list: the strike, lift-off, the falls, the blow-up, the power kink,
+    /// and under Coulomb friction the stick-slip pair.
+    pub fn list(falls: usize, law: FrictionLaw) -> Vec<Guard> {
+        let mut out = vec![Guard::Strike, Guard::LiftOff];
+        out.extend((0..falls.min(MAX_FALLS)).map(Guard::Fall));
+        out.extend([Guard::LambdaBlowUp, Guard::PowerKink]);
+        if law == FrictionLaw::Coulomb {
+            out.extend([Guard::FootStops, Guard::FootSlips]);
         }
-    }
-
-    /// The guard of an event index of the integrator's [`crate::ode::Outcome::Event`].
-    pub fn of_event(index: usize) -> Option<Guard> {
-        Self::ALL.get(index).copied()
+        out
     }
 
     /// The direction of the zero crossing that fires the guard.
     pub fn direction(self) -> Direction {
         match self {
-            Guard::Strike | Guard::LambdaBlowUp | Guard::FootSlips => Direction::Rising,
-            Guard::LiftOff | Guard::FellBackward | Guard::FootStops => Direction::Falling,
+            Guard::LambdaBlowUp | Guard::FootSlips => Direction::Rising,
+            Guard::Strike | Guard::LiftOff | Guard::Fall(_) | Guard::FootStops => {
+                Direction::Falling
+            }
             Guard::PowerKink => Direction::Either,
         }
     }
@@ -76,44 +72,51 @@ impl Guard {
 /// reaction and power) and the thresholds they compare with.
 pub(super) struct Guards<'a> {
     foot: &'a Foot<'a>,
-    /// The heel-strike angle.
-    heel: f64,
-    /// The rear-contact angle.
-    rear: f64,
+    /// The guards, in the order of the event list.
+    list: Vec<Guard>,
     /// The blow-up threshold of `|lambda|`.
     lambda_max: f64,
-    /// The friction coefficient.
-    mu0: f64,
-    /// Whether the power kink is watched (active walker, before `T_set`).
+    /// Whether the power kink is watched (before the end of the power's count).
     kinks: Cell<bool>,
 }
 
 impl<'a> Guards<'a> {
     /// The guards of a stance phase of `foot`, with the blow-up threshold `lambda_max`.
     pub(super) fn new(foot: &'a Foot<'a>, lambda_max: f64) -> Self {
-        let model = foot.model;
+        let model: &Model = foot.model;
         Self {
             foot,
-            heel: model.heel_strike_angle(),
-            rear: model.rear_contact_angle(),
+            list: Guard::list(model.event_count() - 1, model.friction_law()),
             lambda_max,
-            mu0: model.runtime.mu0,
             kinks: Cell::new(model.is_active()),
         }
     }
 
-    /// Stop watching the power kink (from the breakpoint `T_set` on).
+    /// The guard of an event index of the integrator's [`crate::ode::Outcome::Event`].
+    pub(super) fn of_event(&self, index: usize) -> Option<Guard> {
+        self.list.get(index).copied()
+    }
+
+    /// Stop watching the power kink (from the end of the power's count on).
     pub(super) fn end_power_kinks(&self) {
         self.kinks.set(false);
     }
 
     /// The value of the guard function of `guard` at `(t, y)`.
-    fn value(&self, guard: Guard, t: f64, y: &[f64; N]) -> f64 {
+    fn value<const S: usize>(&self, guard: Guard, t: f64, y: &[f64; S]) -> f64 {
         let foot = self.foot;
+        let n = foot.model.n();
         match guard {
-            Guard::Strike => y[2] - self.heel,
+            Guard::Strike | Guard::Fall(_) => {
+                let mut e = [0.0; 1 + MAX_FALLS];
+                let k = foot.model.event_count().min(e.len());
+                foot.model.events(&y[..n], &mut e[..k]);
+                match guard {
+                    Guard::Fall(i) => e[1 + i],
+                    _ => e[0],
+                }
+            }
             Guard::LiftOff => foot.reaction(t, y).normal,
-            Guard::FellBackward => y[2] - self.rear,
             Guard::LambdaBlowUp => foot.reaction(t, y).lambda.abs() - self.lambda_max,
             Guard::PowerKink => {
                 if self.kinks.get() {
@@ -122,11 +125,11 @@ impl<'a> Guards<'a> {
                     1.0
                 }
             }
-            Guard::FootStops => foot.contact().sigma() * y[4],
+            Guard::FootStops => foot.contact().sigma() * y[n],
             Guard::FootSlips => {
                 if foot.contact() == Contact::Stuck {
                     let r = foot.reaction(t, y);
-                    r.tangential.abs() - self.mu0 * r.normal
+                    r.tangential.abs() - foot.model.mu0() * r.normal
                 } else {
                     -1.0
                 }
@@ -134,11 +137,14 @@ impl<'a> Guards<'a> {
         }
     }
 
-    /// The event list: one terminal event per guard of [`Guard::ALL`], in that order (pass
-    /// the prefix [`Guard::active`] to the integrator).
-    pub(super) fn events(&self) -> [Event<'_, N>; 7] {
-        Guard::ALL
-            .map(|g| Event::terminal(g.direction(), move |t, y: &[f64; N]| self.value(g, t, y)))
+    /// The event list: one terminal event per guard, in the order of [`Guard::list`].
+    pub(super) fn events<const S: usize>(&self) -> Vec<Event<'_, S>> {
+        self.list
+            .iter()
+            .map(|&g| {
+                Event::terminal(g.direction(), move |t, y: &[f64; S]| self.value(g, t, y))
+            })
+            .collect()
     }
 }
 
@@ -148,20 +154,21 @@ mod tests {
     use crate::model::FrictionLaw;
 
     #[test]
-    fn an_event_index_names_the_guard_at_that_place_of_the_list() {
-        for (i, g) in Guard::ALL.iter().enumerate() {
-            assert_eq!(Guard::of_event(i), Some(*g));
-        }
-        assert_eq!(Guard::of_event(Guard::ALL.len()), None);
-    }
-
-    #[test]
-    fn the_smooth_law_watches_five_guards_and_coulomb_adds_the_stick_slip_pair() {
-        let tanh = Guard::active(FrictionLaw::Tanh);
-        let coulomb = Guard::active(FrictionLaw::Coulomb);
-        assert_eq!(tanh.len(), 5);
-        assert!(!tanh.contains(&Guard::FootStops) && !tanh.contains(&Guard::FootSlips));
-        assert_eq!(coulomb, &Guard::ALL);
-        assert_eq!(&coulomb[..5], tanh);
+    fn the_list_has_the_falls_after_lift_off_and_coulomb_adds_the_stick_slip_pair() {
+        let tanh = Guard::list(1, FrictionLaw::Tanh);
+        assert_eq!(
+            tanh,
+            [
+                Guard::Strike,
+                Guard::LiftOff,
+                Guard::Fall(0),
+                Guard::LambdaBlowUp,
+                Guard::PowerKink
+            ]
+        );
+        let coulomb = Guard::list(2, FrictionLaw::Coulomb);
+        assert_eq!(coulomb.len(), 8);
+        assert_eq!(&coulomb[2..4], [Guard::Fall(0), Guard::Fall(1)]);
+        assert_eq!(&coulomb[6..], [Guard::FootStops, Guard::FootSlips]);
     }
 }

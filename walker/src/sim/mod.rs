@@ -3,10 +3,14 @@
 //! gait descriptors of Section 4.2 (Eqs. 34, 47, the average input power and the specific
 //! resistance).
 //!
-//! The integrated state is `[x, z, th1, th2, xd, zd, th1d, th2d, E]` where `E` is the quadrature
-//! `int_0^t |ydot u| dt` accumulated while `t < T_set` (zero for the passive wheel), so that the
-//! average input power is under the integrator's error control. The time is reset to zero at
-//! every impact; `T_set` is a breakpoint of the integrator (the control switches there).
+//! The simulator is written against a model ([`crate::model::Model`]): its kernels, its
+//! guards, its impact law, its relabelling, its descriptors. The integrated state is
+//! `[q, qd, E]` (`2n + 1` numbers for `n` coordinates) where `E` is the quadrature
+//! `int |ydot u| dt` of the input power, accumulated up to the model's `power_until` (`T_set`
+//! in the paper; zero for a passive walker), so that the average input power is under the
+//! integrator's error control. The time is reset to zero at every impact; the ends of the
+//! desired trajectories' ramps (`T_set`) are breakpoints of the integrator (the control
+//! switches there).
 //!
 //! Files, each using only those listed before it: `state.rs` (the integrated state),
 //! `config.rs` ([`SimConfig`], [`WalkLimits`]), `failure.rs` ([`Failure`], [`FailureKind`]), `gait.rs` ([`StepResult`], [`Sample`], [`Walk`]), `periodic.rs` (the
@@ -36,7 +40,6 @@ pub use failure::{Failure, FailureKind};
 pub use foot::{control_input, ground_reaction};
 pub use frame::Frame;
 pub use gait::{Sample, StepResult, Walk};
-pub use guard::Guard;
-pub use state::N;
+pub use guard::{Guard, MAX_FALLS};
 pub use trajectory::{Trajectory, trajectory};
 pub use walk::{walk, walk_with_stats};

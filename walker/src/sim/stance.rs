@@ -1,84 +1,70 @@
 //! The stance phase as an ODE system ([`Stance`]: the mechanical equations of motion and the
-//! input-power quadrature, with their Jacobian) and the observer that samples the motion
-//! ([`Recorder`]).
+//! input-power quadrature, with their Jacobian where the model's kernels give it) and the
+//! observer that samples the motion ([`Recorder`]).
 
+use crate::jacobian::StanceJacobian;
 use crate::model::Model;
 use crate::ode::{Observer, OdeSystem, Step};
+use crate::vector::{MAX_COORDINATES, Vector};
 
 use super::foot::{Foot, control_input, ground_reaction};
 use super::frame::Frames;
 use super::gait::Sample;
-use super::state::{N, mech};
+use super::state::mech;
 
 /// The stance phase of `model` with the foot `foot`, as an ODE system for [`crate::ode`].
 pub(super) struct Stance<'a> {
     /// The model.
     pub(super) model: &'a Model,
-    /// The generated Jacobian kernels (Table 1 models); `None` falls back to finite differences.
-    pub(super) jac: Option<crate::jacobian::Jac>,
+    /// The state Jacobian from the model's Jacobian kernels; `None` falls back to finite
+    /// differences.
+    pub(super) jac: Option<StanceJacobian<'a>>,
     /// The stance foot.
     pub(super) foot: &'a Foot<'a>,
 }
 
-impl OdeSystem<N> for Stance<'_> {
-    fn rhs(&mut self, t: f64, y: &[f64; N], dy: &mut [f64; N]) {
-        let (qdd, u) = self.model.stance(t, y, self.foot.contact());
-        dy[..4].copy_from_slice(&y[4..8]);
-        dy[4..8].copy_from_slice(&qdd);
-        dy[8] = if self.model.is_active() && t < self.model.runtime.t_set {
-            ((y[6] - y[7]) * u).abs()
+impl<const S: usize> OdeSystem<S> for Stance<'_> {
+    fn rhs(&mut self, t: f64, y: &[f64; S], dy: &mut [f64; S]) {
+        let n = S / 2;
+        let mut qdd = [0.0; MAX_COORDINATES];
+        let mut u = [0.0; MAX_COORDINATES];
+        self.model
+            .stance(t, y, self.foot.contact(), &mut qdd, &mut u);
+        dy[..n].copy_from_slice(&y[n..2 * n]);
+        dy[n..2 * n].copy_from_slice(&qdd[..n]);
+        dy[2 * n] = if self.model.power_counts(t) {
+            self.model.power_integrand(y, &u[..self.model.inputs()])
         } else {
             0.0
         };
     }
 
-    /// The error test watches the power quadrature (component 8) too, except on a step in
-    /// which `ydot u` changes sign: its absolute value has a kink there, which would only
-    /// cause rejections. Such a step is not kept: the kink is a terminal event of the stance
-    /// integration ([`super::Guard::PowerKink`]), so the step is taken again ending on
-    /// the kink, and the integration goes on from there, with a smooth integrand on each side.
-    fn controlled_components(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> usize {
+    /// The error test watches the power quadrature (the last component) too, except on a step
+    /// in which an input's power `u_i w_i` changes sign: its absolute value has a kink there,
+    /// which would only cause rejections. Such a step is not kept: the kink is a terminal event
+    /// of the stance integration ([`super::Guard::PowerKink`]), so the step is taken again
+    /// ending on the kink, and the integration goes on from there, with a smooth integrand on
+    /// each side.
+    fn controlled_components(&mut self, t0: f64, y0: &[f64; S], t1: f64, y1: &[f64; S]) -> usize {
         if self.foot.crossed(t0, y0, t1, y1) {
-            8
+            S - 1
         } else {
-            N
+            S
         }
     }
 
     /// The state Jacobian for the stiff integrator: `d qd / d y` is the identity block, and
-    /// `d qdd / d y` comes from the generated kernels (`closed_loop_level_jacobian`,
-    /// `accel_slope_jacobian`) with the chain rule through `mu(xd)` and `v(t, y, ydot)`. The
-    /// power quadrature's row is `sign(ydot u) d(ydot u)/dy` with `u = -I2 th2dd` (the torso's
-    /// only torque is `-u`, Eqs. 19-20; the derivation's tests check it).
-    fn jacobian(&mut self, t: f64, y: &[f64; N], jac: &mut [[f64; N]; N]) -> bool {
-        let Some(j) = self.jac else {
+    /// `d qdd / d y` and the power's row come from the model's Jacobian kernels
+    /// ([`StanceJacobian`]).
+    fn jacobian(&mut self, t: f64, y: &[f64; S], jac: &mut [[f64; S]; S]) -> bool {
+        let Some(j) = &self.jac else {
             return false;
         };
-        let a = j.accel(self.model, t, y);
-        for row in jac.iter_mut() {
-            *row = [0.0; N];
-        }
-        for i in 0..4 {
-            jac[i][4 + i] = 1.0;
-            jac[4 + i][..8].copy_from_slice(&a[i]);
-        }
-        if self.model.is_active() && t < self.model.runtime.t_set {
-            let ydot = y[6] - y[7];
-            let u = control_input(self.model, t, y, self.foot.contact());
-            let sign = (ydot * u).signum();
-            let i2 = self.model.physical.i2;
-            for k in 0..8 {
-                jac[8][k] = -sign * ydot * i2 * a[3][k];
-            }
-            jac[8][6] += sign * u;
-            jac[8][7] -= sign * u;
-        }
-        true
+        j.fill(t, y, self.foot.contact(), jac)
     }
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
-        let ts = self.model.runtime.t_set;
-        (self.model.is_active() && ts > t).then_some(ts)
+        self.model.next_breakpoint(t)
     }
 }
 
@@ -99,12 +85,12 @@ pub(super) struct Recorder<'a> {
     pub(super) frames: Option<&'a mut Frames>,
 }
 
-impl Observer<N> for Recorder<'_> {
-    fn wants_step(&mut self, _: f64, _: &[f64; N], _: f64, _: &[f64; N]) -> bool {
+impl<const S: usize> Observer<S> for Recorder<'_> {
+    fn wants_step(&mut self, _: f64, _: &[f64; S], _: f64, _: &[f64; S]) -> bool {
         self.out.is_some() || self.frames.is_some()
     }
 
-    fn on_step(&mut self, st: &Step<'_, N>) {
+    fn on_step(&mut self, st: &Step<'_, S>) {
         if let Some(frames) = self.frames.as_deref_mut() {
             frames.on_step(self.foot, self.t_offset, self.step, st);
         }
@@ -112,12 +98,12 @@ impl Observer<N> for Recorder<'_> {
             return;
         };
         let (model, contact) = (self.foot.model, self.foot.contact());
-        let mut y = [0.0; N];
+        let mut y = [0.0; S];
         for k in 1..=self.interior + 1 {
             let t =
                 st.t_start() + (st.t_end() - st.t_start()) * k as f64 / (self.interior + 1) as f64;
             st.eval(t, &mut y);
-            let u = control_input(model, t, &y, contact);
+            let u: Vector = control_input(model, t, &y, contact);
             let lambda = ground_reaction(model, t, &y, contact).lambda;
             if y.iter().all(|v| v.is_finite()) && lambda.is_finite() {
                 out.push(Sample {

@@ -1,11 +1,13 @@
 //! One step of a walk: a stance phase from a post-impact state, integrated segment by segment
 //! between its events, and the impact that ends it, with the step's gait descriptors.
 //!
-//! The time is reset to zero at every impact; `T_set` is a breakpoint of the integrator (the
-//! control switches there).
+//! The time is reset to zero at every impact; the ends of the desired trajectories' ramps
+//! (`T_set`) are breakpoints of the integrator (the control switches there).
 
+use crate::jacobian::StanceJacobian;
 use crate::model::{Contact, Model, Reaction, Slide};
 use crate::ode::{GaveUp, Integrator, Outcome, Stats};
+use crate::vector::Vector;
 
 use super::blowup::{blow_up, blown_up};
 use super::config::SimConfig;
@@ -17,7 +19,7 @@ use super::frame::Frames;
 use super::gait::{Sample, StepResult};
 use super::guard::{Guard, Guards};
 use super::stance::{Recorder, Stance};
-use super::state::{N, finite, mech};
+use super::state::{finite, integrated, mech};
 
 /// Where samples of the motion go (none, either or both), and the time of the step's start
 /// since the start of the walk.
@@ -32,16 +34,16 @@ pub(super) struct Record<'r> {
 
 /// Integrate one stance phase from the post-impact state `s0` and apply the impact; append
 /// samples and frames of the motion to those of `record`.
-pub(super) fn one_step(
+pub(super) fn one_step<const S: usize>(
     model: &Model,
     cfg: &SimConfig,
-    integ: &mut Integrator<N>,
+    integ: &mut Integrator<S>,
     step: usize,
-    s0: [f64; 8],
+    s0: &Vector,
     record: Record<'_>,
 ) -> Result<StepResult, Failure> {
-    let lambda_max = cfg.lambda_blowup * model.physical.total_mass() * model.physical.g;
-    let (foot, y0, r0) = start(model, step, s0, lambda_max)?;
+    let lambda_max = cfg.lambda_blowup * model.total_mass() * model.gravity();
+    let (foot, y0, r0) = start::<S>(model, step, s0, lambda_max)?;
     let Record {
         samples: mut out,
         frames,
@@ -51,7 +53,7 @@ pub(super) fn one_step(
         samples.push(Sample {
             time: t_offset,
             step,
-            state: s0,
+            state: *s0,
             lambda: r0.lambda,
             u: control_input(model, 0.0, &y0, foot.contact()),
         });
@@ -65,39 +67,38 @@ pub(super) fn one_step(
         frames,
     };
     let strike = stance_phase(cfg, integ, &foot, step, y0, r0.lambda, lambda_max, obs)?;
-    impact(model, step, &s0, &strike)
+    impact(model, step, s0, &strike)
 }
 
-/// Whether the desired trajectory `[y_d, yd_d, ydd_d]` of the active walker's control, an input
-/// of its kernels, is finite at `t` (a `T_set` below about `1e-154` overflows `ydd_d`'s scale
-/// `60 alpha / T_set^2`, and the ramp is then NaN at `t = 0`); always true for the passive
-/// wheel, which has no control.
+/// Whether the desired trajectories of an actuated walker's control, inputs of its kernels,
+/// are finite at `t` (a ramp of `T_set` below about `1e-154` overflows `ydd_d`'s scale
+/// `60 alpha / T_set^2`, and the ramp is then NaN at `t = 0`); always true for a passive
+/// walker, which has no control.
 fn desired_finite(model: &Model, t: f64) -> bool {
-    !model.is_active() || finite(&model.desired(t))
+    model.desired_finite(t)
 }
 
 /// The checks at the start of a stance phase: a finite state and desired trajectory (the
 /// kernels' inputs), a contact consistent with them, a finite `lambda` below the blow-up
 /// threshold and a non-negative normal force. Returns the foot, the integrated initial state
 /// and the ground reaction there.
-fn start(
-    model: &Model,
+fn start<'a, const S: usize>(
+    model: &'a Model,
     step: usize,
-    s0: [f64; 8],
+    s0: &Vector,
     lambda_max: f64,
-) -> Result<(Foot<'_>, [f64; N], Reaction), Failure> {
-    if !finite(&s0) || !desired_finite(model, 0.0) {
-        return Err(FailureKind::NonFinite.at(step, 0.0, s0));
+) -> Result<(Foot<'a>, [f64; S], Reaction), Failure> {
+    if !finite(s0) || !desired_finite(model, 0.0) {
+        return Err(FailureKind::NonFinite.at(step, 0.0, *s0));
     }
-    let mut y0 = [0.0; N];
-    y0[..8].copy_from_slice(&s0);
+    let y0: [f64; S] = integrated(s0);
     let foot = Foot::new(model, initial_contact(model, &y0, step)?);
 
     let r0 = foot.reaction(0.0, &y0);
     if !r0.lambda.is_finite() || r0.lambda.abs() > lambda_max {
         // A pole, a huge numerator (spin whose square is huge or overflows), or non-finite.
         let kind = blow_up(&foot, 0.0, &y0, r0.lambda, lambda_max);
-        return Err(kind.at(step, 0.0, s0));
+        return Err(kind.at(step, 0.0, *s0));
     }
     reaction_at_start(&foot, 0.0, &y0, step)?;
     Ok((foot, y0, r0))
@@ -105,23 +106,25 @@ fn start(
 
 /// The end of a stance phase: the heel strike at `t` with the integrated state `y`, the
 /// smallest `lambda` seen and the time the foot spent stuck.
-struct Strike {
+struct Strike<const S: usize> {
     t: f64,
-    y: [f64; N],
+    y: [f64; S],
     lambda_min: f64,
     stuck_time: f64,
 }
 
 /// What follows an integration segment.
-enum Next {
+enum Next<const S: usize> {
     /// Integrate on from `(t, y)`.
-    Continue(f64, [f64; N]),
+    Continue(f64, [f64; S]),
     /// The heel struck at `(t, y)`.
-    Strike(f64, [f64; N]),
+    Strike(f64, [f64; S]),
 }
 
 /// Integrate the stance phase from `y0` (time 0) segment by segment until the heel strikes:
-/// segments end at the breakpoint `T_set`, at a power kink and at stick-slip transitions.
+/// segments end at the breakpoints (the ramps' ends, `T_set`), at a power kink, at a zero of
+/// the strike guard with the striking point behind the stance foot, and at stick-slip
+/// transitions.
 ///
 /// The integrator's [`Config::max_steps`](crate::ode::Config::max_steps) is the budget of
 /// attempted steps of the whole stance phase, not of each segment: every segment spends at
@@ -133,16 +136,16 @@ enum Next {
     clippy::too_many_arguments,
     reason = "the pieces of one stance phase, prepared by `one_step`"
 )]
-fn stance_phase(
+fn stance_phase<const S: usize>(
     cfg: &SimConfig,
-    integ: &mut Integrator<N>,
+    integ: &mut Integrator<S>,
     foot: &Foot<'_>,
     step: usize,
-    y0: [f64; N],
+    y0: [f64; S],
     lambda0: f64,
     lambda_max: f64,
     obs: Recorder<'_>,
-) -> Result<Strike, Failure> {
+) -> Result<Strike<S>, Failure> {
     let budget = integ.config().max_steps;
     let strike = segments(cfg, integ, foot, step, y0, lambda0, lambda_max, obs, budget);
     integ.config_mut().max_steps = budget;
@@ -160,24 +163,23 @@ fn attempts(stats: &Stats) -> u64 {
     clippy::too_many_arguments,
     reason = "the pieces of one stance phase, prepared by `one_step`"
 )]
-fn segments(
+fn segments<const S: usize>(
     cfg: &SimConfig,
-    integ: &mut Integrator<N>,
+    integ: &mut Integrator<S>,
     foot: &Foot<'_>,
     step: usize,
-    y0: [f64; N],
+    y0: [f64; S],
     lambda0: f64,
     lambda_max: f64,
     mut obs: Recorder<'_>,
     budget: usize,
-) -> Result<Strike, Failure> {
+) -> Result<Strike<S>, Failure> {
     let model = foot.model;
     let guards = Guards::new(foot, lambda_max);
-    let mut events = guards.events();
-    let n_events = Guard::active(model.friction_law()).len();
+    let mut events = guards.events::<S>();
     let mut sys = Stance {
         model,
-        jac: crate::jacobian::Jac::new(model).ok(),
+        jac: StanceJacobian::new(model).ok(),
         foot,
     };
     let mut lambda_min = lambda0;
@@ -190,7 +192,7 @@ fn segments(
         let spent = usize::try_from(attempts(integ.stats()) - first).unwrap_or(usize::MAX);
         integ.config_mut().max_steps = budget.saturating_sub(spent);
         let (t_start, contact) = (t, foot.contact());
-        let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events[..n_events], &mut obs);
+        let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events, &mut obs);
         if contact == Contact::Stuck {
             stuck_time += out.t() - t_start;
         }
@@ -214,22 +216,24 @@ fn segments(
 
 /// The consequence of the outcome `out` of a segment (`lam` is `lambda` at its end): go on from
 /// a breakpoint, a power kink or a stick-slip transition, stop at the heel strike, or fail.
-fn after_segment(
-    out: Outcome<N>,
+fn after_segment<const S: usize>(
+    out: Outcome<S>,
     guards: &Guards<'_>,
     foot: &Foot<'_>,
     step: usize,
     lam: f64,
     lambda_max: f64,
-) -> Result<Next, Failure> {
+) -> Result<Next<S>, Failure> {
     match out {
         Outcome::Breakpoint { t, y } => {
-            // The only breakpoint is `T_set`, where the input power stops counting.
-            guards.end_power_kinks();
+            // A ramp's end: the input power may stop counting there (`T_set` in the paper).
+            if !foot.model.power_counts(t) {
+                guards.end_power_kinks();
+            }
             Ok(Next::Continue(t, y))
         }
         Outcome::Event { index, t, y } => {
-            on_guard(Guard::of_event(index), foot, step, t, y, lam, lambda_max)
+            on_guard(guards.of_event(index), foot, step, t, y, lam, lambda_max)
         }
         Outcome::Reached { t, y } => Err(FailureKind::NoImpact.at(step, t, mech(&y))),
         Outcome::NonFinite { t, y } => {
@@ -257,11 +261,11 @@ fn after_segment(
 
 /// Why the integrator gave up with `reason` at `(t, y)`: a blown-up `lambda` (`lam`) is the
 /// cause where there is one ([`blow_up`] names which), otherwise the integrator's reason.
-fn gave_up(
+fn gave_up<const S: usize>(
     reason: GaveUp,
     foot: &Foot<'_>,
     t: f64,
-    y: &[f64; N],
+    y: &[f64; S],
     lam: f64,
     lambda_max: f64,
 ) -> FailureKind {
@@ -273,21 +277,26 @@ fn gave_up(
 }
 
 /// The consequence of the guard `guard` firing at `(t, y)` (`lam` is `lambda` there).
-fn on_guard(
+fn on_guard<const S: usize>(
     guard: Option<Guard>,
     foot: &Foot<'_>,
     step: usize,
     t: f64,
-    y: [f64; N],
+    y: [f64; S],
     lam: f64,
     lambda_max: f64,
-) -> Result<Next, Failure> {
+) -> Result<Next<S>, Failure> {
+    let model = foot.model;
     let kind = match guard {
-        Some(Guard::Strike) => return Ok(Next::Strike(t, y)),
-        Some(Guard::PowerKink) => return Ok(Next::Continue(t, y)),
+        Some(Guard::Strike) if model.strike_ahead(&y[..model.n()]) => {
+            return Ok(Next::Strike(t, y));
+        }
+        // The striking point passes the floor behind the stance foot (the compass gait's
+        // swing foot at mid-stance): no strike.
+        Some(Guard::Strike | Guard::PowerKink) => return Ok(Next::Continue(t, y)),
         Some(Guard::FootStops) => {
             // The sliding foot stops: it sticks, or slides back if the cone cannot hold it.
-            let y = at_rest(y);
+            let y = at_rest(y, model.n());
             foot.set_contact(contact_at_rest(foot.model, t, &y, step)?);
             reaction_at_start(foot, t, &y, step)?;
             return Ok(Next::Continue(t, y));
@@ -300,7 +309,13 @@ fn on_guard(
             return Ok(Next::Continue(t, y));
         }
         Some(Guard::LiftOff) if !blown_up(lam, lambda_max) => FailureKind::LiftOff { lambda: lam },
-        Some(Guard::FellBackward) => FailureKind::FellBackward { th1: y[2] },
+        Some(Guard::Fall(i)) => {
+            let fall = &model.spec().model.falls[i];
+            FailureKind::Fall {
+                name: fall.name.name.clone(),
+                doc: fall.doc.clone(),
+            }
+        }
         Some(Guard::LiftOff | Guard::LambdaBlowUp) | None => blow_up(foot, t, &y, lam, lambda_max),
     };
     Err(kind.at(step, t, mech(&y)))
@@ -309,19 +324,20 @@ fn on_guard(
 /// The impact that ends the stance phase: the checks on the heel strike (not at the start, not
 /// before `T_set`, no double support), the impact map, the change of stance leg and the gait
 /// descriptors of the step that began at `s0`.
-fn impact(
+fn impact<const S: usize>(
     model: &Model,
     step: usize,
-    s0: &[f64; 8],
-    strike: &Strike,
+    s0: &Vector,
+    strike: &Strike<S>,
 ) -> Result<StepResult, Failure> {
     let (te, ye) = (strike.t, &strike.y);
     let pre = mech(ye);
     if te <= 0.0 {
         return Err(FailureKind::ImpactAtStart.at(step, 0.0, pre));
     }
-    if model.is_active() && te < model.runtime.t_set {
-        let t_set = model.runtime.t_set;
+    if let Some(t_set) = model.ramps_end()
+        && te < t_set
+    {
         return Err(FailureKind::ImpactBeforeTSet { t_set }.at(step, te, pre));
     }
     let imp = model
@@ -332,13 +348,13 @@ fn impact(
         return Err(FailureKind::DoubleSupport { rear_impulse }.at(step, te, pre));
     }
     let post = model.reset(&pre, &imp);
-    let dx = (post.q_plus[0] - s0[0]) / model.runtime.phi.cos();
+    let dx = (post.q_plus[0] - s0[0]) / model.phi().cos();
     let speed = dx / te;
     let (p, sr) = if model.is_active() {
-        let p = ye[8] / te;
+        let p = ye[S - 1] / te;
         (
             Some(p),
-            Some(p / (model.physical.total_mass() * model.physical.g * speed)),
+            Some(p / (model.total_mass() * model.gravity() * speed)),
         )
     } else {
         (None, None)

@@ -59,7 +59,7 @@ impl Trajectory {
 pub fn trajectory(
     model: &Model,
     cfg: &SimConfig,
-    initial: [f64; 8],
+    initial: &[f64],
     limits: &WalkLimits,
     dt: f64,
     max_frames: usize,

@@ -3,17 +3,19 @@
 
 use crate::model::Model;
 use crate::ode::{Integrator, Stats, Tolerances};
+use crate::vector::Vector;
 
 use super::config::{SimConfig, WalkLimits};
+use super::failure::FailureKind;
 use super::frame::Frames;
 use super::gait::Walk;
 use super::periodic::is_periodic;
-use super::state::N;
+use super::state::with_state_size;
 use super::step::{Record, one_step};
 
-/// Simulate a walk of `model` from the post-impact state `initial`
-/// (`[x, z, th1, th2, xd, zd, th1d, th2d]`, time 0 = the 0th impact).
-pub fn walk(model: &Model, cfg: &SimConfig, initial: [f64; 8], limits: &WalkLimits) -> Walk {
+/// Simulate a walk of `model` from the post-impact state `initial` (`[q, qd]`, time 0 = the 0th
+/// impact).
+pub fn walk(model: &Model, cfg: &SimConfig, initial: &[f64], limits: &WalkLimits) -> Walk {
     walk_with_stats(model, cfg, initial, limits).0
 }
 
@@ -22,24 +24,41 @@ pub fn walk(model: &Model, cfg: &SimConfig, initial: [f64; 8], limits: &WalkLimi
 pub fn walk_with_stats(
     model: &Model,
     cfg: &SimConfig,
-    initial: [f64; 8],
+    initial: &[f64],
     limits: &WalkLimits,
 ) -> (Walk, Stats) {
     walk_recording(model, cfg, initial, limits, None)
 }
 
-/// [`walk_with_stats`], also sampling the motion into `frames` if given.
+/// [`walk_with_stats`], also sampling the motion into `frames` if given. An initial state of
+/// the wrong length is a non-finite start (nothing to integrate).
 pub(super) fn walk_recording(
     model: &Model,
     cfg: &SimConfig,
-    initial: [f64; 8],
+    initial: &[f64],
+    limits: &WalkLimits,
+    frames: Option<&mut Frames>,
+) -> (Walk, Stats) {
+    let n = model.n();
+    if initial.len() != 2 * n {
+        let failure = FailureKind::NonFinite.at(0, 0.0, Vector::from_slice(initial));
+        return (Walk::failed(failure), Stats::default());
+    }
+    with_state_size!(n, S => walk_sized::<S>(model, cfg, initial, limits, frames),
+        _ => (Walk::failed(FailureKind::NonFinite.at(0, 0.0, Vector::from_slice(initial))), Stats::default()))
+}
+
+fn walk_sized<const S: usize>(
+    model: &Model,
+    cfg: &SimConfig,
+    initial: &[f64],
     limits: &WalkLimits,
     mut frames: Option<&mut Frames>,
 ) -> (Walk, Stats) {
-    let mut integ = Integrator::<N>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
+    let mut integ = Integrator::<S>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut steps = Vec::new();
     let mut samples = Vec::new();
-    let mut state = initial;
+    let mut state = Vector::from_slice(initial);
     let mut time = 0.0;
     let mut failure = None;
     let mut periodic = false;
@@ -49,7 +68,7 @@ pub(super) fn walk_recording(
             frames: frames.as_deref_mut(),
             t_offset: time,
         };
-        let res = one_step(model, cfg, &mut integ, k, state, record);
+        let res = one_step(model, cfg, &mut integ, k, &state, record);
         match res {
             Ok(r) => {
                 time += r.period;

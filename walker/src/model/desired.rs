@@ -1,0 +1,153 @@
+//! The desired output trajectories `y_d(t)` of the output-following control (Section 3.2,
+//! generalised to the model's outputs) and the auxiliary input `v` of Eq. 32.
+//!
+//! The paper's ramp is the quintic from `-alpha/2` to `alpha/2` in `T_set`,
+//! `y_d = alpha (6 s^5 - 15 s^4 + 10 s^3) - alpha/2` with `s = t / T_set`, then held; a model
+//! file writes it `{ shape = "quintic", from = "-alpha/2", to = "alpha/2", duration = "T_set" }`
+//! and may give any ends and duration, or hold a constant. The time `t` is reset to zero at
+//! every impact. The quintic has zero first and second derivatives at both ends (the
+//! derivation checks these boundary conditions symbolically).
+
+use walker_scene::model::Desired as DesiredSpec;
+
+/// A desired trajectory, evaluated for one set of parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Desired {
+    /// The quintic ramp (with its coefficients computed once: it is evaluated at every
+    /// right-hand side of an actuated walker).
+    Quintic(Ramp),
+    /// A constant.
+    Hold(f64),
+}
+
+impl Desired {
+    /// The trajectory `spec` with its expressions evaluated by `eval`.
+    pub fn new(spec: &DesiredSpec, eval: impl Fn(&walker_scene::model::ModelExpr) -> f64) -> Self {
+        match spec {
+            DesiredSpec::Quintic { from, to, duration } => {
+                Desired::Quintic(Ramp::new(eval(from), eval(to), eval(duration)))
+            }
+            DesiredSpec::Hold { value } => Desired::Hold(eval(value)),
+        }
+    }
+
+    /// `[y_d, yd_d, ydd_d]` at time `t` since the last impact.
+    #[must_use]
+    pub fn at(&self, t: f64) -> [f64; 3] {
+        match self {
+            Desired::Quintic(r) => r.at(t),
+            Desired::Hold(v) => [*v, 0.0, 0.0],
+        }
+    }
+
+    /// The end of the ramp (`None` for a constant): the control switches there, so it is a
+    /// breakpoint of the integration.
+    #[must_use]
+    pub fn ramp_end(&self) -> Option<f64> {
+        match self {
+            Desired::Quintic(r) => Some(r.duration),
+            Desired::Hold(_) => None,
+        }
+    }
+
+    /// Whether the trajectory is finite at `t` (a ramp so short that `60 (to - from) /
+    /// duration^2` overflows is NaN at `t = 0`).
+    #[must_use]
+    pub fn is_finite_at(&self, t: f64) -> bool {
+        self.at(t).iter().all(|v| v.is_finite())
+    }
+}
+
+/// The quintic ramp from `from` at `t = 0` to `to` at `t = duration`, then held.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ramp {
+    from: f64,
+    to: f64,
+    duration: f64,
+    /// `to - from`.
+    span: f64,
+    inv_duration: f64,
+    /// `30 (to - from) / duration`, the scale of `yd_d`.
+    c1: f64,
+    /// `60 (to - from) / duration^2`, the scale of `ydd_d`.
+    c2: f64,
+}
+
+impl Ramp {
+    /// The ramp from `from` to `to` in `duration`.
+    #[must_use]
+    pub fn new(from: f64, to: f64, duration: f64) -> Self {
+        let span = to - from;
+        Self {
+            from,
+            to,
+            duration,
+            span,
+            inv_duration: 1.0 / duration,
+            c1: 30.0 * span / duration,
+            c2: 60.0 * span / (duration * duration),
+        }
+    }
+
+    /// `[y_d, yd_d, ydd_d]` at time `t` since the last impact: with `s = t / duration` and
+    /// `a = to - from`, `y_d = a s^3 (10 - 15 s + 6 s^2) + from`,
+    /// `yd_d = (30 a / duration) s^2 (1 - s)^2`,
+    /// `ydd_d = (60 a / duration^2) s (1 - s) (1 - 2 s)`; `[to, 0, 0]` from `duration` on.
+    #[must_use]
+    pub fn at(&self, t: f64) -> [f64; 3] {
+        if t >= self.duration {
+            return [self.to, 0.0, 0.0];
+        }
+        let s = t.max(0.0) * self.inv_duration;
+        let s2 = s * s;
+        let s3 = s2 * s;
+        let y = self.span * s3 * (10.0 + s * (-15.0 + 6.0 * s)) + self.from;
+        let yd = self.c1 * s2 * (1.0 - 2.0 * s + s2);
+        let ydd = self.c2 * s * (1.0 - 3.0 * s + 2.0 * s2);
+        [y, yd, ydd]
+    }
+}
+
+/// The auxiliary input `v = ydd_d + K_D (yd_d - ydot) + K_P (y_d - y)` (Eq. 32).
+#[must_use]
+pub fn aux_input(desired: [f64; 3], y: f64, ydot: f64, k_p: f64, k_d: f64) -> f64 {
+    desired[2] + k_d * (desired[1] - ydot) + k_p * (desired[0] - y)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Ramp;
+
+    /// The paper's boundary conditions (Section 3.2): `y_d(0) = -alpha/2`, `y_d(T_set) =
+    /// alpha/2`, both derivatives zero at both ends; the derivatives are those of `y_d`
+    /// (central differences, step 1e-6: truncation about 1e-12 times the third derivative,
+    /// rounding about 1e-16 / 1e-6 = 1e-10 times the values).
+    #[test]
+    fn the_papers_ramp_meets_its_boundary_conditions() {
+        let (a, ts) = (0.5, 0.3);
+        let r = Ramp::new(-a / 2.0, a / 2.0, ts);
+        let d0 = r.at(0.0);
+        assert!((d0[0] + a / 2.0).abs() < 1e-15 && d0[1] == 0.0 && d0[2] == 0.0);
+        let d1 = r.at(ts * (1.0 - 1e-12));
+        assert!((d1[0] - a / 2.0).abs() < 1e-10);
+        assert!(d1[1].abs() < 1e-9 && d1[2].abs() < 1e-8);
+        assert_eq!(r.at(ts), [a / 2.0, 0.0, 0.0]);
+        let (t, e) = (0.1, 1e-6);
+        let (dp, dm, d) = (r.at(t + e), r.at(t - e), r.at(t));
+        assert!(((dp[0] - dm[0]) / (2.0 * e) - d[1]).abs() < 1e-6);
+        assert!(((dp[1] - dm[1]) / (2.0 * e) - d[2]).abs() < 1e-5);
+    }
+
+    /// A ramp between any two values is the paper's shape shifted and scaled.
+    #[test]
+    fn a_ramp_is_the_unit_ramp_scaled() {
+        let unit = Ramp::new(0.0, 1.0, 2.0);
+        let r = Ramp::new(3.0, -1.0, 2.0);
+        for k in 0..=20 {
+            let t = 0.1 * f64::from(k);
+            let (u, v) = (unit.at(t), r.at(t));
+            assert!((v[0] - (3.0 - 4.0 * u[0])).abs() < 1e-14, "{t}");
+            assert!((v[1] + 4.0 * u[1]).abs() < 1e-13 && (v[2] + 4.0 * u[2]).abs() < 1e-12);
+        }
+    }
+}

@@ -1,0 +1,216 @@
+//! A [`Walker`]: a model file ([`Spec`]) and where its kernels come from ([`KernelSource`]):
+//! the variants compiled into this library at build time ([`Compiled`]), or an implementation
+//! given at run time (the `walker-load` crate derives a model file and evaluates its kernels).
+//! [`Walker::model`] prepares the kernels for a set of parameters: a [`Model`] to simulate.
+
+use std::sync::Arc;
+
+use walker_scene::{Friction, ImpactLaw};
+
+use super::contact::FrictionLaw;
+use super::kernels::Kernels;
+use super::parameters::Parameters;
+use super::prepared::Model;
+use super::spec::Spec;
+
+/// Why a model's kernels cannot be prepared.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum NoKernels {
+    /// The model file does not list the friction law.
+    #[error("model `{model}` does not list the friction law `{law}`; it lists {listed}")]
+    FrictionLaw {
+        /// The model.
+        model: String,
+        /// The law asked for.
+        law: Friction,
+        /// The laws the model lists.
+        listed: String,
+    },
+    /// No compiled variant has this friction law with these parameters (a variant fixes some
+    /// parameters at generation).
+    #[error(
+        "no kernels of model `{model}` are compiled for the friction law `{law}` with these \
+         parameters; {hint}"
+    )]
+    NotCompiled {
+        /// The model.
+        model: String,
+        /// The law asked for.
+        law: Friction,
+        /// What would work.
+        hint: String,
+    },
+    /// A run-time source failed (its own message).
+    #[error("model `{model}`: {message}")]
+    Source {
+        /// The model.
+        model: String,
+        /// What went wrong.
+        message: String,
+    },
+}
+
+/// Where a model's kernels come from.
+pub trait KernelSource: Send + Sync {
+    /// The kernels for the friction law `law` (`Tanh` or `Coulomb`; the simulator runs `None`
+    /// as `Tanh` with `mu0 = 0`), prepared for `params`.
+    ///
+    /// # Errors
+    /// [`NoKernels`] when this source has no such kernels.
+    fn prepare(&self, law: Friction, params: &Parameters) -> Result<Arc<dyn Kernels>, NoKernels>;
+}
+
+/// One compiled variant of a model: its kernels generated for a friction law with some
+/// parameters fixed at generation (`walker/build.rs`).
+#[derive(Clone, Copy)]
+pub struct Variant {
+    /// The friction law the kernels were generated for.
+    pub friction: Friction,
+    /// The parameters substituted at generation, with their values.
+    pub fixed: &'static [(&'static str, f64)],
+    /// Prepares the kernels: the run-time parameters by name.
+    pub prepare: fn(&dyn Fn(&str) -> f64) -> Arc<dyn Kernels>,
+}
+
+/// The variants of a model compiled into this library.
+#[derive(Clone, Copy)]
+pub struct Compiled {
+    /// The model's name.
+    pub name: &'static str,
+    /// The model file's text (the compiled kernels were generated from exactly this).
+    pub source: &'static str,
+    /// The variants, those fixing more parameters first (they are faster where they apply).
+    pub variants: &'static [Variant],
+}
+
+impl KernelSource for Compiled {
+    /// The first variant with the friction law `law` whose every fixed parameter has exactly
+    /// the value of `params`.
+    fn prepare(&self, law: Friction, params: &Parameters) -> Result<Arc<dyn Kernels>, NoKernels> {
+        let fits = |v: &&Variant| {
+            v.friction == law
+                && v.fixed
+                    .iter()
+                    .all(|(name, value)| params.get(name).is_some_and(|p| p == *value))
+        };
+        let Some(v) = self.variants.iter().find(fits) else {
+            let laws: Vec<String> = self
+                .variants
+                .iter()
+                .filter(|v| v.friction == law)
+                .map(|v| {
+                    let fixed: Vec<String> =
+                        v.fixed.iter().map(|(n, x)| format!("{n} = {x}")).collect();
+                    if fixed.is_empty() {
+                        "every parameter at run time".to_owned()
+                    } else {
+                        fixed.join(", ")
+                    }
+                })
+                .collect();
+            return Err(NoKernels::NotCompiled {
+                model: self.name.to_owned(),
+                law,
+                hint: if laws.is_empty() {
+                    "compiled laws: ".to_owned()
+                        + &self
+                            .variants
+                            .iter()
+                            .map(|v| v.friction.to_string())
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                } else {
+                    format!("compiled with {}", laws.join("; "))
+                },
+            });
+        };
+        let values = params.values();
+        let spec = params.spec();
+        let by_name = |name: &str| spec.parameter(name).map_or(f64::NAN, |i| values[i]);
+        Ok((v.prepare)(&by_name))
+    }
+}
+
+/// A walker: a model file and where its kernels come from.
+#[derive(Clone)]
+pub struct Walker {
+    spec: Arc<Spec>,
+    source: Arc<dyn KernelSource>,
+}
+
+impl std::fmt::Debug for Walker {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Walker")
+            .field("model", &self.spec.name())
+            .finish_non_exhaustive()
+    }
+}
+
+impl Walker {
+    /// The walker of `spec` with kernels from `source`.
+    #[must_use]
+    pub fn new(spec: Arc<Spec>, source: Arc<dyn KernelSource>) -> Walker {
+        Walker { spec, source }
+    }
+
+    /// The model file.
+    #[must_use]
+    pub fn spec(&self) -> &Arc<Spec> {
+        &self.spec
+    }
+
+    /// Every parameter at its default.
+    #[must_use]
+    pub fn defaults(&self) -> Parameters {
+        Parameters::defaults(&self.spec)
+    }
+
+    /// The model with the friction law `friction` and the impact law `impact`, its kernels
+    /// prepared for `params` (`Friction::None` runs the tanh kernels with `mu0 = 0`).
+    ///
+    /// # Errors
+    /// The model does not list `friction`, or its source has no such kernels.
+    pub fn model(
+        &self,
+        params: &Parameters,
+        friction: Friction,
+        impact: ImpactLaw,
+    ) -> Result<Model, NoKernels> {
+        if !self.spec.has_friction(friction) {
+            return Err(NoKernels::FrictionLaw {
+                model: self.spec.name().to_owned(),
+                law: friction,
+                listed: self
+                    .spec
+                    .model
+                    .stance
+                    .friction
+                    .iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            });
+        }
+        let (law, kernel_law, params) = match friction {
+            Friction::Coulomb => (FrictionLaw::Coulomb, Friction::Coulomb, params.clone()),
+            Friction::Tanh => (FrictionLaw::Tanh, Friction::Tanh, params.clone()),
+            Friction::None if self.spec.mu0.is_none() => {
+                (FrictionLaw::Tanh, Friction::None, params.clone())
+            }
+            Friction::None => {
+                let mut p = params.clone();
+                if let Some(i) = self.spec.mu0 {
+                    let name = self.spec.model.parameters[i].name.name.clone();
+                    // A range that refuses zero cannot describe a frictionless floor.
+                    p.set(&name, 0.0).map_err(|e| NoKernels::Source {
+                        model: self.spec.name().to_owned(),
+                        message: e.to_string(),
+                    })?;
+                }
+                (FrictionLaw::Tanh, Friction::Tanh, p)
+            }
+        };
+        let kernels = self.source.prepare(kernel_law, &params)?;
+        Ok(Model::new(params, kernels, law).with_impact_law(impact))
+    }
+}
