@@ -5,12 +5,12 @@
 use std::path::PathBuf;
 
 use clap::{Parser, Subcommand};
-use walker::model::{FrictionLaw, ImpactLaw};
+use walker::model::{Friction, ImpactLaw};
 use walker::ode::Method;
 use walker::setup::Overrides;
 use walker::sim::SimConfig;
 
-use crate::input::{InputError, tolerance};
+use crate::input::{InputError, assignments, tolerance};
 
 /// Command-line interface.
 #[derive(Parser, Debug)]
@@ -37,17 +37,20 @@ pub enum MethodArg {
 /// Friction law choice.
 #[derive(clap::ValueEnum, Clone, Copy, Debug)]
 pub enum FrictionArg {
+    /// No friction (mu = 0).
+    None,
     /// mu = -mu0 tanh(c xd) (Eqs. 26, 37): the paper's simulations.
     Tanh,
     /// Exact Coulomb friction (Eq. 25) with stick-slip.
     Coulomb,
 }
 
-impl From<FrictionArg> for FrictionLaw {
+impl From<FrictionArg> for Friction {
     fn from(f: FrictionArg) -> Self {
         match f {
-            FrictionArg::Tanh => FrictionLaw::Tanh,
-            FrictionArg::Coulomb => FrictionLaw::Coulomb,
+            FrictionArg::None => Friction::None,
+            FrictionArg::Tanh => Friction::Tanh,
+            FrictionArg::Coulomb => Friction::Coulomb,
         }
     }
 }
@@ -73,9 +76,17 @@ impl From<ImpactArg> for ImpactLaw {
 /// Flags shared by the simulation commands.
 #[derive(clap::Args, Debug)]
 pub struct Common {
-    /// `active-level`, `passive-slope` or a scene FILE.toml.
+    /// `active-level`, `passive-slope` or a scene FILE.toml (a model scene, or the paper's
+    /// scene format).
+    #[arg(long, required_unless_present = "model", conflicts_with = "model")]
+    pub scene: Option<String>,
+    /// A model FILE.toml (docs/model-format.md), with its defaults; the shipped models run
+    /// compiled kernels, any other file is derived when the command starts.
     #[arg(long)]
-    pub scene: String,
+    pub model: Option<PathBuf>,
+    /// Set a run-time parameter of the model: NAME=VALUE (repeat), e.g. --set T_set=0.2.
+    #[arg(long = "set")]
+    pub set: Vec<String>,
     /// Friction law (default: the scene's; tanh for the built-in scenes).
     #[arg(long, value_enum)]
     pub friction: Option<FrictionArg>,
@@ -101,16 +112,24 @@ pub struct Common {
 
 impl Common {
     /// The scene overrides of these flags and of a command's `mu0`, `T_set` and `phi`.
-    #[must_use]
-    pub fn overrides(&self, mu0: Option<f64>, t_set: Option<f64>, phi: Option<f64>) -> Overrides {
-        Overrides {
+    ///
+    /// # Errors
+    /// A `--set` that is not `NAME=VALUE` with a number.
+    pub fn overrides(
+        &self,
+        mu0: Option<f64>,
+        t_set: Option<f64>,
+        phi: Option<f64>,
+    ) -> Result<Overrides, InputError> {
+        Ok(Overrides {
             mu0,
             c: self.c,
             t_set,
             phi,
-            friction: self.friction.map(FrictionLaw::from),
+            set: assignments("set", &self.set)?,
+            friction: self.friction.map(Friction::from),
             impact: self.impact.map(ImpactLaw::from),
-        }
+        })
     }
 
     /// The integrator settings of the flags: the method's default tolerances, overridden by
@@ -145,12 +164,17 @@ pub struct WalkFlags {
     /// Ramp duration T_set (s), > 0 (active walker).
     #[arg(long = "t-set", allow_hyphen_values = true)]
     pub t_set: Option<f64>,
-    /// Initial angular velocity omega0 (rad/s).
+    /// Initial angular velocity omega0 (rad/s) of the paper's walkers (a parameter of their
+    /// start).
     #[arg(long, allow_hyphen_values = true)]
     pub omega0: Option<f64>,
     /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
     #[arg(long, allow_hyphen_values = true)]
     pub phi: Option<f64>,
+    /// Start from this value of a coordinate or velocity instead of the model's start:
+    /// NAME=VALUE (repeat), e.g. --init th1d=0.7.
+    #[arg(long = "init")]
+    pub init: Vec<String>,
 }
 
 /// The commands.
@@ -171,36 +195,39 @@ pub enum Command {
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 100)]
         max_steps: usize,
     },
-    /// Sweep mu0 (procedures P1a-P5a / P1b-P5b).
+    /// Sweep a run-time parameter (mu0 by default: procedures P1a-P5a / P1b-P5b).
     Sweep {
         /// The shared flags.
         #[command(flatten)]
         common: Common,
-        /// First mu0.
-        #[arg(long = "mu0-from", allow_hyphen_values = true)]
-        mu0_from: f64,
-        /// Last mu0.
-        #[arg(long = "mu0-to", allow_hyphen_values = true)]
-        mu0_to: f64,
-        /// Increment of mu0, > 0.
-        #[arg(long = "mu0-step", allow_hyphen_values = true)]
-        mu0_step: f64,
+        /// The parameter to sweep (default mu0, the friction coefficient).
+        #[arg(long)]
+        param: Option<String>,
+        /// First value.
+        #[arg(long, visible_alias = "mu0-from", allow_hyphen_values = true)]
+        from: f64,
+        /// Last value.
+        #[arg(long, visible_alias = "mu0-to", allow_hyphen_values = true)]
+        to: f64,
+        /// Increment, > 0.
+        #[arg(long, visible_alias = "mu0-step", allow_hyphen_values = true)]
+        step: f64,
         /// T_set values (active walker; repeat for several chains).
         #[arg(long = "t-set", allow_hyphen_values = true)]
         t_set: Vec<f64>,
         /// Slope angles (passive wheel; repeat for several chains).
         #[arg(long, allow_hyphen_values = true)]
         phi: Vec<f64>,
-        /// Start every mu0 from the initial condition instead of the previous steady state.
+        /// Start every value from the initial condition instead of the previous steady state.
         #[arg(long)]
         restart: bool,
-        /// Walk each mu0 for this long (s).
+        /// Walk each value for this long (s).
         #[arg(long, default_value_t = 100.0, allow_hyphen_values = true)]
         duration: f64,
-        /// At most this many steps per mu0.
+        /// At most this many steps per value.
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 1000)]
         max_steps: usize,
-        /// Stop a mu0 early once its gait is periodic: when the step-to-step change of T, dx
+        /// Stop a value early once its gait is periodic: when the step-to-step change of T, dx
         /// and p, continued geometrically, adds up to at most this (relative; in (0, 1)). The
         /// last step then stands for the rest of the duration.
         #[arg(long = "until-periodic", allow_hyphen_values = true)]
@@ -220,9 +247,13 @@ pub enum Command {
         /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
         #[arg(long, allow_hyphen_values = true)]
         phi: Option<f64>,
-        /// Initial angular velocity omega0 of the warm-up walk (rad/s).
+        /// Initial angular velocity omega0 of the warm-up walk (rad/s; the paper's walkers).
         #[arg(long, allow_hyphen_values = true)]
         omega0: Option<f64>,
+        /// Start the warm-up walk from this value of a coordinate or velocity: NAME=VALUE
+        /// (repeat).
+        #[arg(long = "init")]
+        init: Vec<String>,
     },
     /// Draw a walk to scale and play it: an animated SVG or GIF, or a stick diagram
     /// (`--strobe`, SVG or PNG).
@@ -260,8 +291,8 @@ pub enum Command {
         /// The shared flags.
         #[command(flatten)]
         common: Common,
-        /// The parameter to move: mu0, c, T_set, K_P, K_D, phi (or a physical one: m1, m2, l,
-        /// I1, I2, g, alpha).
+        /// The parameter to move: any run-time parameter of the model (the paper's mu0, c,
+        /// T_set, K_P, K_D, phi, m1, m2, l, I1, I2, g, alpha).
         #[arg(long)]
         param: String,
         /// Start of the range (within the parameter's valid range).
@@ -270,9 +301,6 @@ pub enum Command {
         /// End of the range (within the parameter's valid range, not equal to --from).
         #[arg(long, allow_hyphen_values = true)]
         to: f64,
-        /// Fix another parameter: NAME=VALUE (repeat), e.g. --set T_set=0.2.
-        #[arg(long = "set")]
-        set: Vec<String>,
         /// Also place a point exactly at this parameter value (repeat; within the range).
         #[arg(long, allow_hyphen_values = true)]
         at: Vec<f64>,

@@ -2,8 +2,8 @@
 //! code 2). Parameter errors of the library ([`walker::setup::SetupError`]) are named here by
 //! the flag a user typed (`--t-set` for `T_set`).
 
+use walker::model::{NoKernels, ParamError};
 use walker::setup::SetupError;
-use walker_scene::Param;
 
 /// A user error: which input was wrong and what is accepted (exit code 2).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -31,24 +31,74 @@ impl InputError {
     }
 }
 
-/// The flag (without `--`) that sets `param`, or the parameter's scene name where no flag
-/// does.
+/// The flag (without `--`) that sets the parameter called `name`, or the name itself where no
+/// flag does (it is set with `--set NAME=VALUE`).
 #[must_use]
-pub fn flag(param: Param) -> &'static str {
-    match param {
-        Param::TSet => "t-set",
-        other => other.name(),
+pub fn flag(name: &str) -> &str {
+    match name {
+        "T_set" => "t-set",
+        other => other,
+    }
+}
+
+impl From<ParamError> for InputError {
+    /// Named by the flag of the parameter, with its valid range.
+    fn from(e: ParamError) -> Self {
+        match &e {
+            ParamError::OutOfRange { name, value, range } => {
+                InputError::out_of_range(flag(name), *value, &format!("in {range}"))
+            }
+            ParamError::Unknown { name, .. } => InputError::new(flag(name), e.to_string()),
+        }
     }
 }
 
 impl From<SetupError> for InputError {
-    /// Named by the flag of the parameter the error is about, else `scene`.
+    /// Named by the flag of the parameter the error is about, else `scene` (`model` for a
+    /// model file's own errors).
     fn from(e: SetupError) -> Self {
-        if let SetupError::OutOfRange { param, value } = e {
-            return InputError::out_of_range(flag(param), value, param.valid_range());
+        match e {
+            SetupError::Param(p) => p.into(),
+            SetupError::Model(_) | SetupError::Spec(_) | SetupError::NotCompiled { .. } => {
+                InputError::new("model", e.to_string())
+            }
+            other => InputError::new(other.param().map_or("scene", flag), other.to_string()),
         }
-        InputError::new(e.param().map_or("scene", flag), e.to_string())
     }
+}
+
+impl From<NoKernels> for InputError {
+    /// Named `friction` (the law that has no kernels) or `model`.
+    fn from(e: NoKernels) -> Self {
+        let field = match e {
+            NoKernels::FrictionLaw { .. } | NoKernels::NotCompiled { .. } => "friction",
+            NoKernels::Source { .. } => "model",
+        };
+        InputError::new(field, e.to_string())
+    }
+}
+
+/// `NAME=VALUE` pairs given as the flag `field`, the values numbers.
+///
+/// # Errors
+/// A pair without `=`, an empty name, or a value that is not a number.
+pub fn assignments(field: &str, pairs: &[String]) -> Result<Vec<(String, f64)>, InputError> {
+    pairs
+        .iter()
+        .map(|s| {
+            let (name, value) = s.split_once('=').ok_or_else(|| {
+                InputError::new(field, format!("{s:?}: expected NAME=VALUE"))
+            })?;
+            let name = name.trim();
+            if name.is_empty() {
+                return Err(InputError::new(field, format!("{s:?}: expected NAME=VALUE")));
+            }
+            let v: f64 = value.trim().parse().map_err(|_| {
+                InputError::new(field, format!("{s:?}: the value of {name} is not a number"))
+            })?;
+            Ok((name.to_owned(), v))
+        })
+        .collect()
 }
 
 /// `x` given as `field` if it is finite and `ok`; else an error naming `field` and what it

@@ -1,5 +1,5 @@
-//! `walker`: simulate the paper's walkers, sweep the friction coefficient, and reproduce the
-//! paper's figures. The arguments are defined in [`walker_cli::args`]; this file dispatches
+//! `walker`: simulate any model file's walker (the paper's walkers are built in), sweep its
+//! parameters, find and follow its limit cycles, and reproduce the paper's figures. The arguments are defined in [`walker_cli::args`]; this file dispatches
 //! the commands and maps their errors to exit codes.
 //!
 //! Exit codes: 0 success (also for a walk that ends in a failure: that is a result), 2 invalid
@@ -9,10 +9,9 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use clap::Parser;
-use walker::model::Kind;
 use walker::sim::WalkLimits;
 use walker_cli::args::{Cli, Command, WalkFlags};
-use walker_cli::input::{InputError, check, duration as positive_duration, tolerance};
+use walker_cli::input::{InputError, duration as positive_duration, tolerance};
 use walker_cli::{animate, continue_cmd, report, reproduce, run};
 
 /// Why a command did not finish, and its exit code.
@@ -74,12 +73,13 @@ fn run(cli: Cli) -> Result<(), CliError> {
                     t_set,
                     omega0,
                     phi,
+                    init,
                 },
             duration,
             max_steps,
         } => {
-            let ov = common.overrides(mu0, t_set, phi);
-            let setup = run::setup(&common.scene, &ov)?;
+            let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
+            run::set_omega0(&mut setup, omega0, |_| true, "finite")?;
             let duration = duration
                 .map(|d| positive_duration("duration", d))
                 .transpose()?;
@@ -89,7 +89,9 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 record: false,
                 periodic: None,
             };
-            let w = run::simulate(&setup, omega0, &limits, &common.config()?)?;
+            let model = run::model(&setup)?;
+            let start = run::start(&model, &init)?;
+            let w = run::simulate(&model, &start, &limits, &common.config()?)?;
             if common.json {
                 emit(&format!("{}\n", report::walk_json(&w)))?;
             } else {
@@ -98,9 +100,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
         }
         Command::Sweep {
             common,
-            mu0_from,
-            mu0_to,
-            mu0_step,
+            param,
+            from,
+            to,
+            step,
             t_set,
             phi,
             restart,
@@ -108,15 +111,15 @@ fn run(cli: Cli) -> Result<(), CliError> {
             max_steps,
             until_periodic,
         } => {
-            // A non-finite `--mu0-from` is refused by `run::sweep`, naming it (not as `mu0`).
-            let ov = common.overrides(
-                Some(mu0_from.max(0.0)).filter(|m| m.is_finite()),
-                t_set.first().copied(),
-                phi.first().copied(),
+            let setup = run::setup(&common, &common.overrides(None, None, None)?)?;
+            let param = param.as_deref().map_or_else(
+                || {
+                    let spec = setup.walker.spec();
+                    spec.mu0
+                        .map_or("mu0".to_owned(), |i| spec.model.parameters[i].name.name.clone())
+                },
+                str::to_owned,
             );
-            let setup = run::setup(&common.scene, &ov)?;
-            let active = setup.kind == Kind::ActiveLevel;
-            let chains = if active { t_set } else { phi };
             let duration = positive_duration("duration", duration)?;
             let periodic = until_periodic
                 .map(|x| tolerance("until-periodic", x))
@@ -127,20 +130,33 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 record: false,
                 periodic,
             };
-            let res = run::sweep(
-                &setup,
-                &chains,
-                mu0_from,
-                mu0_to,
-                mu0_step,
+            let chains = match (t_set.is_empty(), phi.is_empty()) {
+                (false, false) => {
+                    return Err(InputError::new(
+                        "phi",
+                        "give either --t-set or --phi values: they chain the sweep",
+                    )
+                    .into());
+                }
+                (false, true) => Some(("T_set", &t_set[..])),
+                (true, false) => Some(("phi", &phi[..])),
+                (true, true) => None,
+            };
+            let model = run::model(&setup)?;
+            let start = model.start_state();
+            let req = run::SweepRequest {
+                param: &param,
+                from,
+                to,
+                step,
+                chains,
                 restart,
-                &limits,
-                &common.config()?,
-            )?;
+            };
+            let res = run::sweep(&setup, &start, &req, &limits, &common.config()?)?;
             if common.json {
-                emit(&format!("{}\n", serde_json::json!({ "chains": res })))?;
+                emit(&format!("{}\n", report::sweep_json(&res)))?;
             } else {
-                emit(&report::sweep_text(&res, active))?;
+                emit(&report::sweep_text(&res))?;
             }
         }
         Command::FixedPoint {
@@ -149,11 +165,14 @@ fn run(cli: Cli) -> Result<(), CliError> {
             t_set,
             phi,
             omega0,
+            init,
         } => {
-            let ov = common.overrides(mu0, t_set, phi);
-            let setup = run::setup(&common.scene, &ov)?;
-            let search = run::fixed_point_search(&setup, omega0, &common.config()?)?;
-            let out = report::fixed_point_report(&search);
+            let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
+            run::set_omega0(&mut setup, omega0, |w| w > 0.0, "finite and > 0")?;
+            let model = run::model(&setup)?;
+            let start = run::start(&model, &init)?;
+            let search = run::fixed_point_search(&model, &start, &common.config()?);
+            let out = report::fixed_point_report(&search, &model.spec().state_names());
             if common.json {
                 emit(&format!("{}\n", out.json))?;
             } else {
@@ -168,6 +187,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                     t_set,
                     omega0,
                     phi,
+                    init,
                 },
             steps,
             duration,
@@ -177,12 +197,11 @@ fn run(cli: Cli) -> Result<(), CliError> {
             strobe,
         } => {
             let req = animate::Request::new(steps, duration, speed, fps, &output, strobe)?;
-            let setup = run::setup(&common.scene, &common.overrides(mu0, t_set, phi))?;
-            let model = setup.model();
-            let w0 = omega0.unwrap_or_else(|| model.default_omega0());
-            check("omega0", w0, true, "finite")?;
-            let written =
-                animate::animate(&model, &common.config()?, model.initial_state(w0), &req)?;
+            let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
+            run::set_omega0(&mut setup, omega0, |_| true, "finite")?;
+            let model = run::model(&setup)?;
+            let start = run::start(&model, &init)?;
+            let written = animate::animate(&model, &common.config()?, &start, &req)?;
             if common.json {
                 emit(&format!("{}\n", serde_json::json!(written)))?;
             } else {
@@ -194,19 +213,17 @@ fn run(cli: Cli) -> Result<(), CliError> {
             param,
             from,
             to,
-            set,
             at,
             period_two,
             max_step,
             csv,
             plot,
         } => {
-            let setup = run::setup(&common.scene, &common.overrides(None, None, None))?;
-            let req = continue_cmd::Request::new(
-                setup, &param, from, to, &set, &at, period_two, max_step,
-            )?;
+            let setup = run::setup(&common, &common.overrides(None, None, None)?)?;
+            let req =
+                continue_cmd::Request::new(setup, &param, from, to, &at, period_two, max_step)?;
             let branches = continue_cmd::run(&req, &common.config()?)?;
-            let name = req.param.name();
+            let name = req.param.as_str();
             if let Some(path) = &csv {
                 std::fs::write(path, continue_cmd::output::csv(&branches)).map_err(|e| {
                     CliError::File {
@@ -234,7 +251,14 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 })?;
             }
             if common.json {
-                let j = continue_cmd::output::json(&common.scene, name, from, to, &branches);
+                let scene = common.scene.clone().unwrap_or_else(|| {
+                    common
+                        .model
+                        .as_ref()
+                        .map(|p| p.display().to_string())
+                        .unwrap_or_default()
+                });
+                let j = continue_cmd::output::json(&scene, name, from, to, &branches);
                 emit(&format!("{j}\n"))?;
             } else {
                 emit(&continue_cmd::output::text(&branches))?;

@@ -48,20 +48,54 @@ pub fn walk_text(w: &Walk) -> String {
 /// One sweep chain (one `T_set` or `phi`) in a report.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Chain {
-    /// `T_set` (active) or `phi` (passive).
+    /// The chain's parameter (`T_set` for the active walker, `phi` for the passive wheel), if
+    /// the sweep is chained.
+    pub param: Option<String>,
+    /// Its value.
     pub value: f64,
+    /// The swept parameter (`mu0`).
+    pub swept: String,
     /// The points of the chain.
     pub points: Vec<SweepPoint>,
 }
 
+/// The JSON report of a sweep: `{"chains": [{"param", "value", "points": [{<swept>, "steps",
+/// "last", "previous", "failure", "periodic"}]}]}`, each point keyed by the swept parameter's
+/// name (`"mu0": 0.4`).
+pub fn sweep_json(chains: &[Chain]) -> serde_json::Value {
+    let chains: Vec<serde_json::Value> = chains
+        .iter()
+        .map(|ch| {
+            let points: Vec<serde_json::Value> = ch
+                .points
+                .iter()
+                .map(|p| {
+                    let mut o = serde_json::Map::new();
+                    o.insert(ch.swept.clone(), json!(p.value));
+                    o.insert("steps".into(), json!(p.steps));
+                    o.insert("last".into(), json!(p.last));
+                    o.insert("previous".into(), json!(p.previous));
+                    o.insert("failure".into(), json!(p.failure));
+                    o.insert("periodic".into(), json!(p.periodic));
+                    serde_json::Value::Object(o)
+                })
+                .collect();
+            json!({ "param": ch.param, "value": ch.value, "points": points })
+        })
+        .collect();
+    json!({ "chains": chains })
+}
+
 /// A text table of a sweep.
-pub fn sweep_text(chains: &[Chain], active: bool) -> String {
+pub fn sweep_text(chains: &[Chain]) -> String {
     let mut s = String::new();
     for ch in chains {
-        let name = if active { "T_set" } else { "phi" };
+        if let Some(name) = &ch.param {
+            s.push_str(&format!("{name} = {}\n", ch.value));
+        }
         s.push_str(&format!(
-            "{name} = {}\n  mu0   steps          T         dx          V         SR  status\n",
-            ch.value
+            "{:>5}   steps          T         dx          V         SR  status\n",
+            ch.swept
         ));
         for p in &ch.points {
             let l: Option<&StepResult> = p.last.as_ref();
@@ -71,7 +105,7 @@ pub fn sweep_text(chains: &[Chain], active: bool) -> String {
             };
             s.push_str(&format!(
                 "{:5.3} {:7} {:>10} {:>10} {:>10} {:>10}  {}\n",
-                p.mu0,
+                p.value,
                 p.steps,
                 f(|s| Some(s.period)),
                 f(|s| Some(s.dx)),
@@ -95,13 +129,14 @@ pub struct Report {
     pub text: String,
 }
 
-/// The report of a fixed-point search; a failed search is a result (status `failed`).
+/// The report of a fixed-point search (`names`: the model's state components, for the text);
+/// a failed search is a result (status `failed`).
 #[must_use]
-pub fn fixed_point_report(result: &Result<FixedPoint, FixedPointError>) -> Report {
+pub fn fixed_point_report(result: &Result<FixedPoint, FixedPointError>, names: &[String]) -> Report {
     match result {
         Ok(fp) => Report {
             json: serde_json::to_value(fp).unwrap_or(serde_json::Value::Null),
-            text: fixed_point_text(fp),
+            text: fixed_point_text(fp, names),
         },
         Err(e) => Report {
             json: json!({ "status": "failed", "reason": e.to_string() }),
@@ -110,7 +145,7 @@ pub fn fixed_point_report(result: &Result<FixedPoint, FixedPointError>) -> Repor
     }
 }
 
-fn fixed_point_text(fp: &FixedPoint) -> String {
+fn fixed_point_text(fp: &FixedPoint, names: &[String]) -> String {
     let mut s = String::new();
     let status = serde_json::to_value(fp.status)
         .ok()
@@ -120,11 +155,7 @@ fn fixed_point_text(fp: &FixedPoint) -> String {
     if let Some(f) = &fp.failure {
         let _ = writeln!(s, "walk on the cycle fails: {}", f.name());
     }
-    let _ = writeln!(
-        s,
-        "state_plus [x z th1 th2 xd zd th1d th2d]: {:?}",
-        fp.state_plus
-    );
+    let _ = writeln!(s, "state_plus [{}]: {:?}", names.join(" "), fp.state_plus);
     let _ = writeln!(
         s,
         "T = {:.10} s, V = {:.10} m/s, dx = {:.10} m",
@@ -135,7 +166,8 @@ fn fixed_point_text(fp: &FixedPoint) -> String {
         "residual {:.3e} after {} Newton iterations",
         fp.residual, fp.iterations
     );
-    let _ = writeln!(s, "multipliers (reduced map in xd+, th1d+):");
+    let section: Vec<String> = fp.section.iter().map(|c| format!("{c}+")).collect();
+    let _ = writeln!(s, "multipliers (reduced map in {}):", section.join(", "));
     for m in &fp.multipliers {
         let _ = writeln!(
             s,

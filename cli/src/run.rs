@@ -1,13 +1,17 @@
 //! The commands' work between parsing and printing: validate what the library does not (the
-//! flags' own ranges), build the model, and call the library.
+//! flags' own ranges), build the setup and the model, and call the library.
 
-use walker::model::{Kind, Runtime};
+use std::path::Path;
+
+use walker::model::Model;
 use walker::poincare::{FixedPoint, FixedPointError, FixedPointOptions, fixed_point};
-use walker::setup::{self, Overrides, Setup};
+use walker::setup::{Overrides, Setup};
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 use walker::sweep::{mu0_grid, sweep_chains};
+use walker::vector::Vector;
 
-use crate::input::{InputError, check};
+use crate::args::Common;
+use crate::input::{InputError, assignments, check};
 use crate::progress::Progress;
 use crate::report::Chain;
 
@@ -20,41 +24,55 @@ pub const MAX_STEPS: usize = 1_000_000;
 /// chain runs on its own thread.
 pub const MAX_SWEEP_CHAINS: usize = 64;
 
-/// The most points a sweep may have in all (chains times `mu0` values).
+/// The most points a sweep may have in all (chains times swept values).
 pub const MAX_SWEEP_POINTS: usize = 100_000;
 
-/// The longest scene file read (bytes): a scene is a few hundred bytes.
+/// The longest scene or model file read (bytes): a scene is a few hundred bytes, the largest
+/// shipped model a dozen kilobytes.
 pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 
-/// The scene of `--scene` with the overrides of the flags. A scene FILE.toml must be a
-/// regular file of at most [`MAX_SCENE_BYTES`] (not a device or a pipe, which could be read
-/// without end).
-///
-/// # Errors
-/// The scene file is not a regular file or too long; the scene is unknown or invalid; an
-/// override is out of its range.
-pub fn setup(scene: &str, ov: &Overrides) -> Result<Setup, InputError> {
-    if scene.ends_with(".toml") {
-        // A file that cannot be inspected is left to the scene reader, which names it.
-        if let Ok(meta) = std::fs::metadata(scene) {
-            if !meta.is_file() {
-                return Err(InputError::new(
-                    "scene",
-                    format!("{scene} is not a regular file"),
-                ));
-            }
-            if meta.len() > MAX_SCENE_BYTES {
-                return Err(InputError::new(
-                    "scene",
-                    format!(
-                        "{scene} has {} bytes; a scene file has at most {MAX_SCENE_BYTES}",
-                        meta.len()
-                    ),
-                ));
-            }
+/// Checks that the file `path` given as `field` is a regular file of at most
+/// [`MAX_SCENE_BYTES`] (not a device or a pipe, which could be read without end). A file that
+/// cannot be inspected is left to the reader, which names it.
+fn check_file(field: &str, path: &Path) -> Result<(), InputError> {
+    if let Ok(meta) = std::fs::metadata(path) {
+        if !meta.is_file() {
+            return Err(InputError::new(
+                field,
+                format!("{} is not a regular file", path.display()),
+            ));
+        }
+        if meta.len() > MAX_SCENE_BYTES {
+            return Err(InputError::new(
+                field,
+                format!(
+                    "{} has {} bytes; a {field} file has at most {MAX_SCENE_BYTES}",
+                    path.display(),
+                    meta.len()
+                ),
+            ));
         }
     }
-    Ok(Setup::resolve(scene, ov)?)
+    Ok(())
+}
+
+/// The setup of `--scene` or `--model` with the overrides `ov`. A model file that is not one
+/// of the shipped models is derived here.
+///
+/// # Errors
+/// The file is not a regular file or too long; the scene is unknown or invalid; the model file
+/// is invalid or cannot be derived; an override is unknown or out of its range.
+pub fn setup(common: &Common, ov: &Overrides) -> Result<Setup, InputError> {
+    let runtime = walker_load::runtime_source();
+    if let Some(path) = &common.model {
+        check_file("model", path)?;
+        return Ok(Setup::from_model_file(path, ov, Some(&runtime))?);
+    }
+    let scene = common.scene.as_deref().unwrap_or_default();
+    if scene.ends_with(".toml") {
+        check_file("scene", Path::new(scene))?;
+    }
+    Ok(Setup::resolve(scene, ov, Some(&runtime))?)
 }
 
 /// `--max-steps` if it is at most [`MAX_STEPS`].
@@ -71,142 +89,229 @@ pub fn max_steps(n: usize) -> Result<usize, InputError> {
     Ok(n)
 }
 
-/// Run `walker simulate`.
+/// Sets the paper's initial angular velocity `omega0` (a parameter of the start) where the
+/// flag gives it.
 ///
 /// # Errors
-/// `omega0` is not finite, `duration` is not positive, or `max_steps` is above
-/// [`MAX_STEPS`].
-pub fn simulate(
-    setup: &Setup,
+/// Not finite, not `ok`, or the model has no start parameter `omega0`.
+pub fn set_omega0(
+    setup: &mut Setup,
     omega0: Option<f64>,
+    ok: impl Fn(f64) -> bool,
+    must_be: &str,
+) -> Result<(), InputError> {
+    if let Some(w) = omega0 {
+        check("omega0", w, ok(w), must_be)?;
+        if setup.walker.spec().parameter("omega0").is_none() {
+            return Err(InputError::new(
+                "omega0",
+                format!(
+                    "model `{}` has no start parameter omega0; use --init NAME=VALUE",
+                    setup.walker.spec().name()
+                ),
+            ));
+        }
+        setup.set("omega0", w)?;
+    }
+    Ok(())
+}
+
+/// The model of `setup`.
+///
+/// # Errors
+/// Its friction law has no kernels.
+pub fn model(setup: &Setup) -> Result<Model, InputError> {
+    Ok(setup.model()?)
+}
+
+/// The start of a walk: the model's `[start]` with `--init NAME=VALUE` replacing components
+/// (a coordinate or a velocity by name).
+///
+/// # Errors
+/// A malformed pair, an unknown component, or a value that is not finite.
+pub fn start(model: &Model, init: &[String]) -> Result<Vector, InputError> {
+    let mut s = model.start_state();
+    for (name, v) in assignments("init", init)? {
+        let i = model.spec().state_index(&name).ok_or_else(|| {
+            InputError::new(
+                "init",
+                format!(
+                    "`{name}` is not a coordinate or velocity of model `{}`; they are: {}",
+                    model.spec().name(),
+                    model.spec().state_names().join(", ")
+                ),
+            )
+        })?;
+        s[i] = check("init", v, true, "finite")?;
+    }
+    Ok(s)
+}
+
+/// Run `walker simulate` from `start`.
+///
+/// # Errors
+/// `duration` is not positive, or `max_steps` is above [`MAX_STEPS`].
+pub fn simulate(
+    model: &Model,
+    start: &Vector,
     limits: &WalkLimits,
     cfg: &SimConfig,
 ) -> Result<Walk, InputError> {
-    let model = setup.model();
-    let w0 = omega0.unwrap_or_else(|| model.default_omega0());
-    check("omega0", w0, true, "finite")?;
     if limits.duration.is_nan() || limits.duration <= 0.0 {
         return Err(InputError::out_of_range("duration", limits.duration, "> 0"));
     }
     max_steps(limits.max_steps)?;
-    Ok(walk(&model, cfg, model.initial_state(w0), limits))
+    Ok(walk(model, cfg, start, limits))
 }
 
-/// Run `walker sweep` over `mu0` for each of `chains` (`T_set` or `phi` values; empty: the
-/// scene's value).
+/// The swept values and where they chain: `walker sweep`'s request.
+#[derive(Clone, Debug)]
+pub struct SweepRequest<'a> {
+    /// The swept parameter.
+    pub param: &'a str,
+    /// First value.
+    pub from: f64,
+    /// Last value.
+    pub to: f64,
+    /// Increment.
+    pub step: f64,
+    /// The chain parameter (`T_set` or `phi`) and its values (`--t-set`, `--phi`).
+    pub chains: Option<(&'a str, &'a [f64])>,
+    /// Start every value from the initial condition.
+    pub restart: bool,
+}
+
+/// The chain parameter of a sweep without `--t-set` or `--phi`: `T_set` where the model has
+/// one (the paper's active walker, Fig. 8), else its slope (the passive wheel, Fig. 10).
+fn default_chain(setup: &Setup) -> Option<(String, f64)> {
+    let spec = setup.walker.spec();
+    let name = spec
+        .parameter("T_set")
+        .or(spec.slope)
+        .map(|i| spec.model.parameters[i].name.name.clone())?;
+    let value = setup.params.get(&name)?;
+    Some((name, value))
+}
+
+/// Run `walker sweep` of `req.param` for each chain value.
 ///
 /// # Errors
-/// A `mu0` flag is out of range, a chain value is invalid, more than [`MAX_SWEEP_CHAINS`]
-/// chains, more than [`MAX_SWEEP_POINTS`] points in all, or `max_steps` above [`MAX_STEPS`].
-#[allow(clippy::too_many_arguments)]
+/// A range flag is out of range, a chain value is invalid, more than [`MAX_SWEEP_CHAINS`]
+/// chains, more than [`MAX_SWEEP_POINTS`] points in all, `max_steps` above [`MAX_STEPS`], or a
+/// point's model cannot be built.
 pub fn sweep(
     setup: &Setup,
-    chains: &[f64],
-    mu0_from: f64,
-    mu0_to: f64,
-    mu0_step: f64,
-    restart: bool,
+    start: &Vector,
+    req: &SweepRequest<'_>,
     limits: &WalkLimits,
     cfg: &SimConfig,
 ) -> Result<Vec<Chain>, InputError> {
-    check("mu0-from", mu0_from, mu0_from >= 0.0, "finite and >= 0")?;
-    check(
-        "mu0-to",
-        mu0_to,
-        mu0_to >= mu0_from,
-        "finite and >= mu0-from",
-    )?;
-    check("mu0-step", mu0_step, mu0_step > 0.0, "finite and > 0")?;
+    let (from, to, step) = (req.from, req.to, req.step);
+    check("from", from, true, "finite")?;
+    check("to", to, to >= from, "finite and >= from")?;
+    check("step", step, step > 0.0, "finite and > 0")?;
     max_steps(limits.max_steps)?;
-    let active = setup.kind == Kind::ActiveLevel;
-    let chain_flag = if active { "t-set" } else { "phi" };
-    if chains.len() > MAX_SWEEP_CHAINS {
+    let (chain_param, chain_values): (Option<String>, Vec<f64>) = match req.chains {
+        Some((name, values)) if !values.is_empty() => (Some(name.to_owned()), values.to_vec()),
+        _ => match default_chain(setup) {
+            Some((name, v)) => (Some(name), vec![v]),
+            None => (None, vec![f64::NAN]),
+        },
+    };
+    if chain_values.len() > MAX_SWEEP_CHAINS {
         return Err(InputError::new(
-            chain_flag,
+            crate::input::flag(chain_param.as_deref().unwrap_or("chain")),
             format!(
                 "given {} times; at most {MAX_SWEEP_CHAINS} chains",
-                chains.len()
+                chain_values.len()
             ),
         ));
     }
     // Count the points before making them: the grid is allocated by the request (the inputs
     // are finite and the step positive, so the count is a number, possibly infinite). The
     // count is `mu0_grid`'s.
-    let per_chain = ((mu0_to - mu0_from) / mu0_step + 1e-9).floor() + 1.0;
-    let total = per_chain * chains.len().max(1) as f64;
+    let per_chain = ((to - from) / step + 1e-9).floor() + 1.0;
+    let total = per_chain * chain_values.len() as f64;
     if total > MAX_SWEEP_POINTS as f64 {
         return Err(InputError::new(
-            "mu0-step",
+            "step",
             format!(
-                "{mu0_step:e} gives {per_chain:.3e} mu0 values from mu0-from to mu0-to, \
-                 {total:.3e} points for {} chain(s) of --{chain_flag}; at most \
-                 {MAX_SWEEP_POINTS} points in all",
-                chains.len().max(1)
+                "{step:e} gives {per_chain:.3e} values from --from to --to, {total:.3e} points \
+                 for {} chain(s); at most {MAX_SWEEP_POINTS} points in all",
+                chain_values.len()
             ),
         ));
     }
-    let grid = mu0_grid(mu0_from, mu0_to, mu0_step);
-    let base = setup.runtime;
-    let chains: Vec<f64> = if chains.is_empty() {
-        vec![if active { base.t_set } else { base.phi }]
-    } else {
-        chains.to_vec()
-    };
-    for &c in &chains {
-        let r = if active {
-            Runtime { t_set: c, ..base }
-        } else {
-            Runtime { phi: c, ..base }
-        };
-        setup::validate(&setup.physical, &r)?;
+    let grid = mu0_grid(from, to, step);
+    // Every point's model, built before any walk: a value out of its range or kernels that
+    // cannot be prepared are input errors, named by the flag.
+    let mut models = Vec::with_capacity(chain_values.len());
+    for &c in &chain_values {
+        let mut base = setup.params.clone();
+        if let Some(name) = &chain_param {
+            base.set(name, c)?;
+        }
+        let mut row = Vec::with_capacity(grid.len());
+        for &v in &grid {
+            let params = base.with(req.param, v).map_err(|e| {
+                let field = if v == from { "from" } else { "to" };
+                InputError::new(field, e.to_string())
+            })?;
+            row.push(setup.model_with(&params)?);
+        }
+        models.push(row);
     }
-    let make = |c: f64, mu0: f64| {
-        let r = if active {
-            Runtime {
-                t_set: c,
-                mu0,
-                ..base
-            }
-        } else {
-            Runtime {
-                phi: c,
-                mu0,
-                ..base
-            }
-        };
-        setup.model_with(r)
+    let index = |c: f64, v: f64| {
+        let i = chain_values
+            .iter()
+            .position(|&x| x.to_bits() == c.to_bits())
+            .unwrap_or(0);
+        let j = grid
+            .iter()
+            .position(|&x| x.to_bits() == v.to_bits())
+            .unwrap_or(0);
+        (i, j)
     };
-    let initial = |c: f64| {
-        let m = make(c, 0.0);
-        m.initial_state(m.default_omega0())
+    let make = |c: f64, v: f64| {
+        let (i, j) = index(c, v);
+        models[i][j].clone()
     };
-    let bar = Progress::new("sweep", chains.len() * grid.len());
-    let res = sweep_chains(&chains, make, cfg, &grid, initial, limits, restart, &|| {
-        bar.tick()
-    });
+    let initial = |_: f64| *start;
+    let bar = Progress::new("sweep", chain_values.len() * grid.len());
+    let res = sweep_chains(
+        &chain_values,
+        make,
+        cfg,
+        &grid,
+        initial,
+        limits,
+        req.restart,
+        &|| bar.tick(),
+    );
     bar.finish();
-    Ok(chains
+    Ok(chain_values
         .iter()
         .zip(res)
-        .map(|(&value, points)| Chain { value, points })
+        .map(|(&value, points)| Chain {
+            param: chain_param.clone(),
+            value,
+            swept: req.param.to_owned(),
+            points,
+        })
         .collect())
 }
 
-/// Run `walker fixed-point`: validate `omega0` (finite, `> 0`) and the scene (the Jacobian
-/// kernels exist for Table 1 and the tanh law only), then search the cycle. A failed search is
-/// a result, not an input error.
-///
-/// # Errors
-/// `omega0` is out of range.
+/// Run `walker fixed-point` from `start` (the warm-up walk's start). A failed search is a
+/// result, not an input error.
+#[must_use]
 pub fn fixed_point_search(
-    setup: &Setup,
-    omega0: Option<f64>,
+    model: &Model,
+    start: &Vector,
     cfg: &SimConfig,
-) -> Result<Result<FixedPoint, FixedPointError>, InputError> {
-    let model = setup.model();
-    let mut opts = FixedPointOptions::for_model(&model);
-    if let Some(w) = omega0 {
-        opts.omega0 = check("omega0", w, w > 0.0, "finite and > 0")?;
-    }
-    Ok(fixed_point(&model, cfg, &opts))
+) -> Result<FixedPoint, FixedPointError> {
+    let opts = FixedPointOptions {
+        start: *start,
+        ..FixedPointOptions::for_model(model)
+    };
+    fixed_point(model, cfg, &opts)
 }

@@ -9,7 +9,7 @@ use std::collections::BTreeMap;
 
 use walker_scene::Friction;
 use walker_scene::model::{Model, Stage};
-use walker_symbolic::model::ModelDerivation;
+pub use walker_symbolic::model::ModelDerivation;
 
 use crate::error::Error;
 use crate::ir::Module;

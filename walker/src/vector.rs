@@ -119,6 +119,14 @@ impl Serialize for Vector {
     }
 }
 
+impl<'a> IntoIterator for &'a Vector {
+    type Item = &'a f64;
+    type IntoIter = std::slice::Iter<'a, f64>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.as_slice().iter()
+    }
+}
+
 impl From<&[f64]> for Vector {
     fn from(values: &[f64]) -> Vector {
         Vector::from_slice(values)

@@ -1,7 +1,7 @@
 //! The words drawn on an animation: the step counter and the time of a frame, the walk's
 //! description ([`title`]), and where the walk failed (the failure's name, step and moment).
 
-use walker::model::{FrictionLaw, Kind, Model};
+use walker::model::{FrictionLaw, Model};
 use walker::sim::{Frame, Trajectory};
 
 /// The label of `frame`: its step (counted from 1 as a person counts) and its time since the
@@ -33,15 +33,22 @@ pub const LEGEND: &str = "blue: normal force, red: friction, orange: slip of the
 /// speed.
 #[must_use]
 pub fn title(model: &Model, speed: f64) -> String {
-    let r = &model.runtime;
     let law = match model.friction_law() {
-        FrictionLaw::Tanh => format!("mu0 = {}, c = {} s/m", r.mu0, r.c),
-        FrictionLaw::Coulomb => format!("Coulomb friction, mu0 = {}", r.mu0),
+        FrictionLaw::Tanh => format!("mu0 = {}, c = {} s/m", model.mu0(), model.sharpness()),
+        FrictionLaw::Coulomb => format!("Coulomb friction, mu0 = {}", model.mu0()),
     };
-    let walker = match model.kind() {
-        Kind::ActiveLevel => format!("active walker, level floor, T_set = {} s", r.t_set),
-        Kind::PassiveSlope => format!("passive wheel, slope phi = {} rad", r.phi),
+    let floor = if model.spec().slope.is_some() {
+        format!("slope phi = {} rad", model.phi())
+    } else {
+        "level floor".to_owned()
     };
+    let ramp = model
+        .ramps_end()
+        .map_or_else(String::new, |t| format!(", T_set = {t} s"));
+    let walker = format!(
+        "{}, {floor}{ramp}",
+        model.spec().model.title.as_deref().unwrap_or(model.spec().name())
+    );
     let speed = if (speed - 1.0).abs() < 1e-12 {
         "real time".to_owned()
     } else {

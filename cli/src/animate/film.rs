@@ -49,7 +49,7 @@ pub struct Film {
 
 impl Film {
     /// The film of `tr`, a walk of `model`, played at `speed` times real time in pictures of
-    /// `width x height` pixels.
+    /// `width x height` pixels; `None` for a model without a drawing ([`Body::of`]).
     #[must_use]
     pub fn new(
         model: &Model,
@@ -57,8 +57,8 @@ impl Film {
         speed: f64,
         (width, height): (u32, u32),
         title: String,
-    ) -> Self {
-        let body = Body::of(model);
+    ) -> Option<Self> {
+        let body = Body::of(model)?;
         let mut frames = tr.frames.clone();
         if let Some(ff) = tr.failure_frame
             && frames.last().is_none_or(|last| ff.time > last.time)
@@ -87,7 +87,7 @@ impl Film {
             };
             marks.push(mark);
         }
-        Film {
+        Some(Film {
             body,
             view,
             frames,
@@ -97,7 +97,7 @@ impl Film {
             failure: failure_label(tr),
             speed,
             hold: 1.0,
-        }
+        })
     }
 
     /// The last slip mark of every step up to frame `i` (the marks on the floor then).

@@ -8,7 +8,7 @@
 
 use std::f64::consts::TAU;
 
-use walker::model::{Model, Physical};
+use walker::model::Model;
 use walker::sim::Frame;
 
 /// The most spokes drawn: `2 pi / alpha` of them, at most this many (`alpha` is in `(0, pi)`;
@@ -40,24 +40,27 @@ pub struct Body {
 }
 
 impl Body {
-    /// The drawn body of `model`.
+    /// The drawn body of `model`: a rimless wheel of radius `l` and spokes `alpha` apart
+    /// (the model's parameters of these names), its stance spoke at the third coordinate and
+    /// its torso, if it has a fourth coordinate, at that angle from the horizontal; `None` for
+    /// a model without `l` and `alpha`.
     #[must_use]
-    pub fn of(model: &Model) -> Self {
-        let p: &Physical = &model.physical;
-        let spokes = (TAU / p.alpha + 1e-9).floor();
+    pub fn of(model: &Model) -> Option<Self> {
+        let (l, alpha) = (model.params().get("l")?, model.params().get("alpha")?);
+        let spokes = (TAU / alpha + 1e-9).floor();
         let spokes = if spokes.is_finite() && spokes >= 1.0 {
             (spokes as usize).min(MAX_SPOKES)
         } else {
             MAX_SPOKES
         };
-        Body {
-            l: p.l,
-            alpha: p.alpha,
+        Some(Body {
+            l,
+            alpha,
             spokes,
-            r: 0.6 * p.l,
-            phi: model.runtime.phi,
-            weight: p.total_mass() * p.g,
-        }
+            r: if model.n() > 3 { 0.6 * l } else { 0.0 },
+            phi: model.phi(),
+            weight: model.total_mass() * model.gravity(),
+        })
     }
 
     /// The floor's height at `x` (`z = -x tan phi`).
@@ -100,7 +103,12 @@ impl Body {
     /// The walker at `frame`.
     #[must_use]
     pub fn pose(&self, frame: &Frame) -> Pose {
-        let [x, z, th1, th2, ..] = frame.state;
+        let (x, z, th1) = (frame.state[0], frame.state[1], frame.state[2]);
+        let th2 = if frame.state.len() > 6 {
+            frame.state[3]
+        } else {
+            0.0
+        };
         let hub = (x + self.l * th1.sin(), z + self.l * th1.cos());
         let spokes = (0..self.spokes)
             .map(|k| {

@@ -72,7 +72,7 @@ impl Written {
 pub fn sample(
     model: &Model,
     cfg: &SimConfig,
-    initial: [f64; 8],
+    initial: &[f64],
     req: &Request,
 ) -> Result<Trajectory, InputError> {
     let max = req.max_frames();
@@ -116,7 +116,16 @@ pub fn sample(
 /// # Errors
 /// The file could not be drawn or written.
 pub fn write(model: &Model, tr: &Trajectory, req: &Request) -> Result<Written, AnimateError> {
-    let film = Film::new(model, tr, req.speed, req.size, title(model, req.speed));
+    let film = Film::new(model, tr, req.speed, req.size, title(model, req.speed)).ok_or_else(|| {
+        InputError::new(
+            "model",
+            format!(
+                "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
+                 alpha)",
+                model.spec().name()
+            ),
+        )
+    })?;
     let path = &req.output;
     let draw = |message: String| AnimateError::Draw {
         path: path.clone(),
@@ -178,7 +187,7 @@ fn write_file(path: &Path, bytes: &[u8]) -> Result<(), AnimateError> {
 pub fn animate(
     model: &Model,
     cfg: &SimConfig,
-    initial: [f64; 8],
+    initial: &[f64],
     req: &Request,
 ) -> Result<Written, AnimateError> {
     let tr = sample(model, cfg, initial, req)?;

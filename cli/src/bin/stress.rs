@@ -14,12 +14,80 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use walker::control;
-use walker::kernels::general_level;
-use walker::model::{Model, Physical, Runtime};
+use walker::model::{Args, KernelId, Model};
 use walker::ode::Method;
-use walker::params;
+use walker::setup::Setup;
 use walker::sim::{SimConfig, Walk, WalkLimits, walk, walk_with_stats};
+use walker::vector::Vector;
+
+/// The paper's Table 1 as the built-in scene `active-level` fixes it.
+#[derive(Clone, Copy)]
+struct Physical {
+    m1: f64,
+    m2: f64,
+    l: f64,
+    i1: f64,
+    i2: f64,
+    alpha: f64,
+}
+
+impl Physical {
+    fn total_mass(&self) -> f64 {
+        self.m1 + self.m2
+    }
+}
+
+/// A built-in scene with parameters set by name (`Err`: a defect of the shipped files or a
+/// value out of range).
+fn scene(name: &str, set: &[(&str, f64)]) -> Result<Setup, String> {
+    let mut s = Setup::built_in(name).map_err(|e| e.to_string())?;
+    for (n, v) in set {
+        s.set(n, *v).map_err(|e| e.to_string())?;
+    }
+    Ok(s)
+}
+
+/// The model of a built-in scene with parameters set by name.
+fn model_of(name: &str, set: &[(&str, f64)]) -> Result<Model, String> {
+    scene(name, set)?.model().map_err(|e| e.to_string())
+}
+
+/// The active walker with the physical parameters `ph` (every other parameter the scene's).
+fn active_with(ph: &Physical, mu0: f64) -> Result<Model, String> {
+    model_of(
+        "active-level",
+        &[
+            ("m1", ph.m1),
+            ("m2", ph.m2),
+            ("l", ph.l),
+            ("I1", ph.i1),
+            ("I2", ph.i2),
+            ("alpha", ph.alpha),
+            ("mu0", mu0),
+        ],
+    )
+}
+
+/// Table 1.
+fn table1() -> Result<Physical, String> {
+    let s = scene("active-level", &[])?;
+    let get = |n: &str| s.params.get(n).ok_or_else(|| format!("no parameter {n}"));
+    Ok(Physical {
+        m1: get("m1")?,
+        m2: get("m2")?,
+        l: get("l")?,
+        i1: get("I1")?,
+        i2: get("I2")?,
+        alpha: get("alpha")?,
+    })
+}
+
+/// The start of the paper's walks with `omega0`.
+fn start(model: &Model, omega0: f64) -> Result<Vector, String> {
+    model
+        .start_state_with("omega0", omega0)
+        .map_err(|e| e.to_string())
+}
 
 fn main() -> ExitCode {
     let mut long_steps = 100_000_usize;
@@ -34,13 +102,22 @@ fn main() -> ExitCode {
             }
         }
     }
-    small_angles();
-    ratios();
-    stiffness();
-    singular();
-    grazing();
-    long_run(long_steps);
-    ExitCode::SUCCESS
+    let run = || -> Result<(), String> {
+        let t1 = table1()?;
+        small_angles(&t1)?;
+        ratios(&t1)?;
+        stiffness()?;
+        singular(&t1)?;
+        grazing()?;
+        long_run(long_steps)
+    };
+    match run() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("stress: cannot set up the paper's walkers: {e}");
+            ExitCode::FAILURE
+        }
+    }
 }
 
 fn fmt_e(v: f64) -> String {
@@ -61,7 +138,7 @@ fn has_non_finite(w: &Walk) -> bool {
         let scalars = [s.period, s.dx, s.speed, s.rear_impulse, s.lambda_min];
         !s.q_plus
             .iter()
-            .chain(&s.qd_plus)
+            .chain(s.qd_plus.iter())
             .chain(&scalars)
             .chain(s.p.iter())
             .chain(s.sr.iter())
@@ -75,16 +152,13 @@ fn has_non_finite(w: &Walk) -> bool {
     steps || failure
 }
 
-/// The general level kernels prepared for `ph` at `mu0`, the other settings those of Section 4
-/// (`c = 100`, `T_set = 0.3`, `K_P = K_D = 0`), each field looked up by its name.
-fn level_prepared(ph: &Physical, mu0: f64) -> general_level::Prepared {
-    let rt = Runtime {
-        mu0,
-        ..Runtime::default()
+/// A kernel of `model` at `(q, qd)` with the inputs `u`.
+fn kernel(model: &Model, k: KernelId, q: &[f64], qd: &[f64], u: &[f64], out: &mut [f64]) {
+    let args = Args {
+        u,
+        ..Args::state(q, qd)
     };
-    general_level::prepare(&general_level::Params::from_fn(|name| {
-        params::by_name(ph, &rt, name)
-    }))
+    model.kernels().eval(k, &args, out);
 }
 
 /// The heel strike of a rigid rotation (`th1 = alpha/2`, foot at rest, `th1d = th2d = 1`) in
@@ -110,10 +184,10 @@ fn rel(a: f64, b: f64) -> f64 {
     ((a - b) / b).abs()
 }
 
-fn small_angles() {
+fn small_angles(t1: &Physical) -> Result<(), String> {
     println!("## Small and large spoke angles: the heel-strike impact\n");
     println!(
-        "`impact2_level` (general kernels, Table 1 masses) at `th1 = alpha/2`, foot at rest, \
+        "`impact` (general kernels, Table 1 masses) at `th1 = alpha/2`, foot at rest, \
          `th1d = th2d = 1`, against the exact closed form (`1 - cos alpha = 2 sin^2(alpha/2)`, \
          relative error a few ulps). \"naive\" evaluates the same closed form with `1 - cos alpha` \
          computed as written.\n"
@@ -123,14 +197,18 @@ fn small_angles() {
     );
     println!("|---|---|---|---|---|---|");
     for alpha in [1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 0.5, 1.0, 2.0, 2.5] {
-        let ph = Physical {
-            alpha,
-            ..Physical::TABLE1
-        };
+        let ph = Physical { alpha, ..*t1 };
         let exact = heel_strike_closed_form(&ph, false);
         let naive = heel_strike_closed_form(&ph, true);
-        let p = level_prepared(&ph, 0.0);
-        let out = general_level::impact2_level(&p, alpha / 2.0, 0.0, 0.0, 1.0, 1.0);
+        let m = active_with(&ph, 0.0)?;
+        // `impact`: `[lambda_I (striking foot, lock), qd+]`; `impact_double`: the rear foot's
+        // impulse second.
+        let mut single = [0.0; 6];
+        let mut double = [0.0; 7];
+        let (q, qd) = ([0.0, 0.0, alpha / 2.0, 0.0], [0.0, 0.0, 1.0, 1.0]);
+        kernel(&m, KernelId::Impact, &q, &qd, &[], &mut single);
+        kernel(&m, KernelId::ImpactDouble, &q, &qd, &[], &mut double);
+        let out = [single[0], double[1], 0.0, 0.0, single[4]];
         println!(
             "| {alpha:e} | {} | {} | {} | {} | {} |",
             fmt_e(exact[1]),
@@ -141,9 +219,10 @@ fn small_angles() {
         );
     }
     println!();
+    Ok(())
 }
 
-fn ratios() {
+fn ratios(t1: &Physical) -> Result<(), String> {
     println!("## Extreme mass and inertia ratios\n");
     println!(
         "General level kernels, Table 1 otherwise, `mu0 = 0.4`, `omega0 = 0.8`, 3 steps, \
@@ -158,7 +237,7 @@ fn ratios() {
         for &ri1 in &grid {
             let mut cells = Vec::new();
             for ri2 in [1e-6, 1.0, 1e6] {
-                let b = Physical::TABLE1;
+                let b = *t1;
                 let m2 = b.m1 * rm;
                 let i1 = ri1 * (b.m1 + m2) * b.l * b.l;
                 let ph = Physical {
@@ -167,12 +246,12 @@ fn ratios() {
                     i2: ri2 * i1,
                     ..b
                 };
-                let model = Model::general_level(ph, Runtime::default());
+                let model = active_with(&ph, 0.4)?;
                 let cfg = SimConfig {
                     max_step_time: 2.0,
                     ..SimConfig::default()
                 };
-                let w = walk(&model, &cfg, model.initial_state(0.8), &limits(3));
+                let w = walk(&model, &cfg, &start(&model, 0.8)?, &limits(3));
                 if has_non_finite(&w) {
                     defects += 1;
                     cells.push(format!("{} **NaN**", outcome(&w)));
@@ -184,6 +263,7 @@ fn ratios() {
         }
     }
     println!("\nNon-finite values in any output: {defects}.\n");
+    Ok(())
 }
 
 fn limits(n: usize) -> WalkLimits {
@@ -193,7 +273,7 @@ fn limits(n: usize) -> WalkLimits {
     }
 }
 
-fn stiffness() {
+fn stiffness() -> Result<(), String> {
     println!("## Stiff friction: DOP853 against RODAS4\n");
     println!(
         "Active walker (Table 1, `T_set = 0.3`, `omega0 = 0.8`), 5 steps, `rtol = 1e-8`, \
@@ -206,11 +286,7 @@ fn stiffness() {
     for c in [1e2, 1e3, 1e4] {
         for mu0 in [0.4, 1.0, 2.0] {
             for method in [Method::Dop853, Method::Rodas4] {
-                let model = Model::active_level(Runtime {
-                    mu0,
-                    c,
-                    ..Runtime::default()
-                });
+                let model = model_of("active-level", &[("mu0", mu0), ("c", c)])?;
                 let cfg = SimConfig {
                     method,
                     rtol: 1e-8,
@@ -218,7 +294,7 @@ fn stiffness() {
                     ..SimConfig::default()
                 };
                 let t0 = Instant::now();
-                let (w, st) = walk_with_stats(&model, &cfg, model.initial_state(0.8), &limits(5));
+                let (w, st) = walk_with_stats(&model, &cfg, &start(&model, 0.8)?, &limits(5));
                 let ms = t0.elapsed().as_secs_f64() * 1e3;
                 let dx = w
                     .steps
@@ -236,6 +312,7 @@ fn stiffness() {
         }
     }
     println!();
+    Ok(())
 }
 
 fn singular_angles(ph: &Physical, mu: f64) -> Option<[f64; 2]> {
@@ -247,38 +324,41 @@ fn singular_angles(ph: &Physical, mu: f64) -> Option<[f64; 2]> {
     })
 }
 
-fn singular() {
+fn singular(ph: &Physical) -> Result<(), String> {
     println!("## The pole of lambda (Eq. 23)\n");
     println!(
         "Level ground, Table 1: the denominator `2 I1 + 2 m_t l^2 sin th1 (sin th1 - mu cos th1)` \
          vanishes where `cos 2th1 + mu sin 2th1 = 1 + 2 I1/(m_t l^2)`, which needs \
-         `|mu| >= 0.882`. `lambda_level` at `u = 0`, `th1d = 1`, `xd = -1` (so `mu = mu0`), at \
-         `th1* -+ eps`; then the passive wheel (`general_slope`, `phi = 0`, so `u = 0`) started at \
+         `|mu| >= 0.882`. `lambda` at `u = 0`, `th1d = 1`, `xd = -1` (so `mu = mu0`), at \
+         `th1* -+ eps`; then the passive wheel (general kernels, `phi = 0`, so `u = 0`) started at \
          `th1* - 1e-9` rolling towards the pole.\n"
     );
     println!(
         "| mu | th1* | lambda(th1* - 1e-4) | lambda(th1* + 1e-4) | lambda(th1* - 1e-8) | lambda(th1* + 1e-8) | walk |"
     );
     println!("|---|---|---|---|---|---|---|");
-    let ph = Physical::TABLE1;
     for mu in [0.85, 0.9, 1.0, 2.0] {
-        let Some(roots) = singular_angles(&ph, mu) else {
+        let Some(roots) = singular_angles(ph, mu) else {
             println!("| {mu} | none | - | - | - | - | - |");
             continue;
         };
-        let p = level_prepared(&ph, mu);
+        let level = active_with(ph, mu)?;
         for th in roots {
-            let lam = |t: f64| general_level::lambda_level(&p, t, 1.0, 0.0, -1.0);
-            let model = Model::general_slope(
-                ph,
-                Runtime {
-                    mu0: mu,
-                    phi: 0.0,
-                    ..Runtime::default()
-                },
-            );
+            let lam = |t: f64| {
+                let mut out = [0.0];
+                kernel(
+                    &level,
+                    KernelId::Lambda,
+                    &[0.0, 0.0, t, 0.0],
+                    &[-1.0, 0.0, 1.0, 0.0],
+                    &[0.0],
+                    &mut out,
+                );
+                out[0]
+            };
+            let model = model_of("passive-slope", &[("mu0", mu), ("phi", 0.0)])?;
             let start = [0.0, 0.0, th - 1e-9, 0.0, -1.0, 0.0, 1.0, 1.0];
-            let w = walk(&model, &SimConfig::default(), start, &limits(1));
+            let w = walk(&model, &SimConfig::default(), &start, &limits(1));
             let nan = if has_non_finite(&w) { " **NaN**" } else { "" };
             println!(
                 "| {mu} | {th:.6} | {} | {} | {} | {} | {}{nan} |",
@@ -291,9 +371,10 @@ fn singular() {
         }
     }
     println!();
+    Ok(())
 }
 
-fn grazing() {
+fn grazing() -> Result<(), String> {
     println!("## Near-grazing impacts and impacts at the start of a step\n");
     println!(
         "Passive wheel on the slope (Table 1, `phi = 0.05`, `mu0 = 0.4`, `c = 100`), one step from \
@@ -303,12 +384,9 @@ fn grazing() {
     );
     println!("| case | outcome | T | fore-foot normal velocity after impact | rear impulse |");
     println!("|---|---|---|---|---|");
-    let rt = Runtime {
-        phi: 0.05,
-        ..Runtime::default()
-    };
-    let model = Model::passive_slope(rt);
-    let heel = model.heel_strike_angle();
+    let model = model_of("passive-slope", &[("phi", 0.05), ("mu0", 0.4)])?;
+    let (alpha, phi) = (model.param("alpha"), model.phi());
+    let heel = alpha / 2.0 + phi;
     for (d, w0) in [
         (1e-3, 1e-3),
         (1e-6, 1e-6),
@@ -318,17 +396,14 @@ fn grazing() {
         (0.0, 0.0),
     ] {
         let start = [0.0, 0.0, heel - d, 0.0, 0.0, 0.0, w0, 0.0];
-        let w = walk(&model, &SimConfig::default(), start, &limits(1));
+        let w = walk(&model, &SimConfig::default(), &start, &limits(1));
         row(&format!("passive, d = {d:e}, w = {w0:e}"), &w);
     }
     // Barely passing mid-stance: the smallest omega0 that completes a step (bisection).
-    let level = Model::passive_slope(Runtime {
-        phi: 0.0,
-        ..Runtime::default()
-    });
+    let level = model_of("passive-slope", &[("phi", 0.0), ("mu0", 0.4)])?;
     let passes = |om: f64| {
-        let s = [0.0, 0.0, level.rear_contact_angle(), 0.0, 0.0, 0.0, om, 0.0];
-        walk(&level, &SimConfig::default(), s, &limits(1))
+        let s = [0.0, 0.0, -alpha / 2.0, 0.0, 0.0, 0.0, om, 0.0];
+        walk(&level, &SimConfig::default(), &s, &limits(1))
     };
     let (mut lo, mut hi) = (0.0, 5.0);
     for _ in 0..60 {
@@ -347,12 +422,13 @@ fn grazing() {
         &format!("passive, level, barely fails (omega0 = {lo:.12})"),
         &passes(lo),
     );
-    let active = Model::active_level(Runtime::default());
-    let mut s = active.initial_state(0.8);
-    s[2] = active.heel_strike_angle();
-    let w = walk(&active, &SimConfig::default(), s, &limits(1));
+    let active = model_of("active-level", &[])?;
+    let mut s = start(&active, 0.8)?;
+    s[2] = active.param("alpha") / 2.0;
+    let w = walk(&active, &SimConfig::default(), &s, &limits(1));
     row("active, started at th1 = alpha/2", &w);
     println!();
+    Ok(())
 }
 
 fn row(case: &str, w: &Walk) {
@@ -370,26 +446,25 @@ fn row(case: &str, w: &Walk) {
     println!("| {case} | {}{nan} | {t} | {v} | {r} |", outcome(w));
 }
 
-fn long_run(n: usize) {
+fn long_run(n: usize) -> Result<(), String> {
     println!("## Long run: {n} steps of the active walker\n");
-    let model = Model::active_level(Runtime::default());
+    let model = model_of("active-level", &[])?;
     let cfg = SimConfig::default();
     let chunk = 1000;
-    let mut state = model.initial_state(0.8);
+    let mut state = start(&model, 0.8)?;
     let (mut max_z, mut max_zd, mut max_y) = (0.0_f64, 0.0_f64, 0.0_f64);
     let (mut max_fnv, mut done) = (0.0_f64, 0);
     let mut first: Option<[f64; 4]> = None;
     let mut window: Vec<[f64; 4]> = Vec::new();
     let mut failure = None;
     let t0 = Instant::now();
-    let alpha = model.physical.alpha;
     while done < n {
         let lim = WalkLimits {
             max_steps: chunk.min(n - done),
             record: true,
             ..WalkLimits::default()
         };
-        let w = walk(&model, &cfg, state, &lim);
+        let w = walk(&model, &cfg, &state, &lim);
         // time of each step's start within the chunk
         let mut starts = vec![0.0];
         for s in &w.steps {
@@ -398,8 +473,8 @@ fn long_run(n: usize) {
         }
         for smp in &w.samples {
             let t = smp.time - starts.get(smp.step).copied().unwrap_or(0.0);
-            let yd = control::desired(alpha, model.runtime.t_set, t)[0];
-            let [_, z, th1, th2, _, zd, ..] = smp.state;
+            let yd = model.desired(0, t)[0];
+            let (z, th1, th2, zd) = (smp.state[1], smp.state[2], smp.state[3], smp.state[5]);
             max_z = max_z.max(z.abs());
             max_zd = max_zd.max(zd.abs());
             if t >= 0.0 {
@@ -466,4 +541,5 @@ fn long_run(n: usize) {
         }
     }
     println!();
+    Ok(())
 }

@@ -3,12 +3,11 @@
 //! (`--at`), and the switch to period-two branches at period doublings (`--period-two`).
 
 use walker::continuation::{
-    Branch, ContinuationError, ContinuationOptions, LabelKind, PaperWalker, continuation,
+    Branch, ContinuationError, ContinuationOptions, LabelKind, WalkerProblem, continuation,
     period_two,
 };
 use walker::setup::Setup;
 use walker::sim::SimConfig;
-use walker_scene::Param;
 
 use crate::input::InputError;
 
@@ -37,10 +36,10 @@ impl ContinueError {
 /// A checked request.
 #[derive(Clone, Debug)]
 pub struct Request {
-    /// The walker with its fixed values.
+    /// The walker with its fixed values (`--set`).
     pub setup: Setup,
-    /// The free parameter.
-    pub param: Param,
+    /// The free parameter's name.
+    pub param: String,
     /// Start of the range.
     pub from: f64,
     /// End of the range.
@@ -53,59 +52,53 @@ pub struct Request {
     pub max_step: Option<f64>,
 }
 
-/// The parameters that `--param` and `--set` accept, in words.
-const NAMES: &str = "mu0, c, T_set, K_P, K_D, phi, m1, m2, l, I1, I2, g, alpha";
-
-/// The parameter called `name` (its scene name, or `t-set`), named as `field` in errors.
-fn param_named(field: &str, name: &str) -> Result<Param, InputError> {
-    if name == "omega0" {
-        return Err(InputError::new(
-            field,
-            "omega0 is the start of a walk, not a parameter of the Poincare map; use one of "
-                .to_owned()
-                + NAMES,
-        ));
-    }
-    let name = if name == "t-set" { "T_set" } else { name };
-    Param::from_name(name).ok_or_else(|| {
-        InputError::new(
-            field,
-            format!("unknown parameter {name:?}; use one of {NAMES}"),
-        )
-    })
-}
-
-/// Set `param` to `value` in `setup` (the general kernels for a physical parameter, whose
-/// fast kernels have Table 1 compiled in).
-fn set(setup: &mut Setup, param: Param, value: f64) {
-    if setup.physical.set(param, value) {
-        setup.fast = false;
-    } else {
-        setup.runtime.set(param, value);
-    }
-}
-
 impl Request {
-    /// Check the flags of `walker continue` against the resolved scene `setup`.
+    /// Check the flags of `walker continue` against the resolved scene `setup` (with the
+    /// values of `--set` in it).
     ///
     /// # Errors
-    /// An unknown or absent parameter, a range outside the parameter's valid range or empty,
-    /// a malformed or invalid `--set`, `--at` outside the range, `--max-step` outside (0, 1].
-    #[allow(clippy::too_many_arguments, reason = "one argument per flag")]
+    /// An unknown parameter or one of the start, a range outside the parameter's valid range
+    /// or empty, `--at` outside the range, `--max-step` outside (0, 1].
     pub fn new(
-        mut setup: Setup,
+        setup: Setup,
         param: &str,
         from: f64,
         to: f64,
-        sets: &[String],
         at: &[f64],
         period_two: bool,
         max_step: Option<f64>,
     ) -> Result<Request, InputError> {
-        let param = param_named("param", param)?;
+        let param = if param == "t-set" { "T_set" } else { param };
+        let spec = setup.walker.spec();
+        let Some(index) = spec.parameter(param) else {
+            let known: Vec<&str> = spec.dynamic_parameters().collect();
+            return Err(InputError::new(
+                "param",
+                format!(
+                    "unknown parameter {param:?} of model `{}`; use one of {}",
+                    spec.name(),
+                    known.join(", ")
+                ),
+            ));
+        };
+        let p = &spec.model.parameters[index];
+        if p.stage == walker_scene::model::Stage::Start {
+            return Err(InputError::new(
+                "param",
+                format!(
+                    "{param} is the start of a walk, not a parameter of the Poincare map; use \
+                     one of {}",
+                    spec.dynamic_parameters().collect::<Vec<_>>().join(", ")
+                ),
+            ));
+        }
         for (field, v) in [("from", from), ("to", to)] {
-            if !param.accepts(v) {
-                return Err(InputError::out_of_range(field, v, param.valid_range()));
+            if !p.range.contains(v) {
+                return Err(InputError::out_of_range(
+                    field,
+                    v,
+                    &format!("in {}", p.range),
+                ));
             }
         }
         if from == to {
@@ -114,32 +107,6 @@ impl Request {
                 format!("{to}: must differ from --from"),
             ));
         }
-        for s in sets {
-            let Some((name, value)) = s.split_once('=') else {
-                return Err(InputError::new("set", format!("{s:?}: must be NAME=VALUE")));
-            };
-            let p = param_named("set", name.trim())?;
-            if p == param {
-                return Err(InputError::new(
-                    "set",
-                    format!("{name} is the continued parameter (--param)"),
-                ));
-            }
-            let v: f64 = value
-                .trim()
-                .parse()
-                .map_err(|_| InputError::new("set", format!("{s:?}: {value:?} is not a number")))?;
-            if !p.accepts(v) {
-                return Err(InputError::new(
-                    "set",
-                    format!("{name}={v}: must be {}", p.valid_range()),
-                ));
-            }
-            set(&mut setup, p, v);
-        }
-        setup
-            .validate()
-            .map_err(|e| InputError::new("set", e.to_string()))?;
         let (lo, hi) = (from.min(to), from.max(to));
         for &a in at {
             if !(a.is_finite() && a >= lo && a <= hi) {
@@ -156,8 +123,8 @@ impl Request {
             return Err(InputError::out_of_range("max-step", h, "in (0, 1]"));
         }
         Ok(Request {
+            param: param.to_owned(),
             setup,
-            param,
             from,
             to,
             at: at.to_vec(),
@@ -175,7 +142,7 @@ impl Request {
 /// family of cycles throughout the range ([`ContinueError::Input`], naming `--set`); no
 /// fixed point anywhere in the range ([`ContinueError::NoBranch`]).
 pub fn run(req: &Request, cfg: &SimConfig) -> Result<Vec<Branch>, ContinueError> {
-    let walker = PaperWalker::new(req.setup.clone(), req.param, *cfg)
+    let walker = WalkerProblem::new(req.setup.clone(), &req.param, *cfg)
         .map_err(|e| InputError::new("param", e.to_string()))?;
     let mut opts = ContinuationOptions {
         user_points: req.at.clone(),

@@ -10,7 +10,7 @@ use walker::model::Model;
 use walker::sim::SimConfig;
 
 use super::error::WriteError;
-use super::models::{active, passive};
+use super::models::{active, passive, start};
 use crate::animate::{AnimateError, Request, animate};
 
 /// One picture: the file name, the walk's steps, the playback speed, frames (poses) per second
@@ -87,7 +87,7 @@ fn draw(out: &Path, model: &Model, omega0: f64, p: &Picture) -> Result<(), Write
     let req = Request::new(Some(p.steps), None, p.speed, Some(p.fps), &path, p.strobe)
         .map_err(|e| err(e.into()))?;
     let cfg = SimConfig::default();
-    animate(model, &cfg, model.initial_state(omega0), &req).map_err(err)?;
+    animate(model, &cfg, &start(model, omega0)?, &req).map_err(err)?;
     Ok(())
 }
 
@@ -96,11 +96,11 @@ fn draw(out: &Path, model: &Model, omega0: f64, p: &Picture) -> Result<(), Write
 /// # Errors
 /// A file could not be drawn or written (the error names it).
 pub fn write_animations(out: &Path) -> Result<(), WriteError> {
-    let fig5 = active(0.4, 0.3);
+    let fig5 = active(0.4, 0.3)?;
     for p in &FIG5 {
         draw(out, &fig5, 0.8, p)?;
     }
-    let fig14 = passive(0.19, 0.10);
+    let fig14 = passive(0.19, 0.10)?;
     for p in &FIG14 {
         draw(out, &fig14, 0.5, p)?;
     }

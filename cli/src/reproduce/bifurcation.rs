@@ -9,14 +9,14 @@
 use std::path::Path;
 
 use plotters::chart::SeriesLabelPosition;
-use walker::continuation::{Branch, ContinuationOptions, PaperWalker, continuation};
+use walker::continuation::{Branch, ContinuationOptions, WalkerProblem, continuation};
 use walker::setup::Setup;
 use walker::sim::SimConfig;
 use walker::sweep::SweepPoint;
-use walker_scene::Param;
 
 use super::data::{Data, PHIS, T_SETS};
 use super::error::WriteError;
+use super::models::{active_setup, passive_setup};
 use crate::continue_cmd::{diagram, output};
 
 /// Largest continuation step of the diagrams: a twentieth of the range, so that the drawn
@@ -27,8 +27,8 @@ const MAX_STEP: f64 = 0.05;
 const MU0_OVER_PHI: f64 = 0.5;
 
 /// The branch of `setup` in `param` over `[from, to]`, or `None` where none was found.
-fn branch(setup: Setup, param: Param, from: f64, to: f64) -> Option<Branch> {
-    let w = PaperWalker::new(setup, param, SimConfig::default()).ok()?;
+fn branch(setup: Result<Setup, WriteError>, param: &str, from: f64, to: f64) -> Option<Branch> {
+    let w = WalkerProblem::new(setup.ok()?, param, SimConfig::default()).ok()?;
     let opts = ContinuationOptions {
         max_step: MAX_STEP,
         ..ContinuationOptions::default()
@@ -45,7 +45,7 @@ fn simulated(sweeps: &[(f64, Vec<SweepPoint>)]) -> Vec<(f64, f64)> {
         .filter_map(|p| {
             let (last, prev) = (p.last?, p.previous?);
             let repeats = ((last.speed - prev.speed) / last.speed).abs() < 1e-6;
-            repeats.then_some((p.mu0, last.speed))
+            repeats.then_some((p.value, last.speed))
         })
         .collect()
 }
@@ -85,24 +85,15 @@ fn write(
 /// # Errors
 /// A file could not be written.
 pub fn write_bifurcation(out: &Path, d: &Data) -> Result<(), WriteError> {
-    let active = |t: f64| {
-        let mut s = Setup::active_level();
-        s.runtime.t_set = t;
-        s
-    };
-    let passive = |phi: f64, mu0: f64| {
-        let mut s = Setup::passive_slope();
-        s.runtime.phi = phi;
-        s.runtime.mu0 = mu0;
-        s
-    };
+    let active = |t: f64| active_setup(0.4, t);
+    let passive = |phi: f64, mu0: f64| passive_setup(mu0, phi);
     let (fig8, fig10, over_phi) = std::thread::scope(|scope| {
         let fig8: Vec<_> = T_SETS
             .map(|t| {
                 scope.spawn(move || {
                     (
                         format!("T_set = {t}"),
-                        branch(active(t), Param::Mu0, 0.0, 1.0),
+                        branch(active(t), "mu0", 0.0, 1.0),
                     )
                 })
             })
@@ -113,13 +104,13 @@ pub fn write_bifurcation(out: &Path, d: &Data) -> Result<(), WriteError> {
                 scope.spawn(move || {
                     (
                         format!("phi = {phi}"),
-                        branch(passive(phi, 0.0), Param::Mu0, 0.0, 0.7),
+                        branch(passive(phi, 0.0), "mu0", 0.0, 0.7),
                     )
                 })
             })
             .into_iter()
             .collect();
-        let over_phi = scope.spawn(|| branch(passive(0.2, MU0_OVER_PHI), Param::Phi, 0.05, 0.3));
+        let over_phi = scope.spawn(|| branch(passive(0.2, MU0_OVER_PHI), "phi", 0.05, 0.3));
         let join = |hs: Vec<std::thread::ScopedJoinHandle<'_, (String, Option<Branch>)>>| {
             hs.into_iter()
                 .filter_map(|h| h.join().ok())

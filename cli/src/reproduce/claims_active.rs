@@ -5,7 +5,7 @@
 
 use std::fmt::Write as _;
 
-use walker::model::Physical;
+use super::models::Table1;
 use walker::sim::{StepResult, Walk};
 use walker::sweep::SweepPoint;
 
@@ -15,20 +15,19 @@ use super::ranges::describe;
 /// The foot's step `2 l sin(alpha/2)` of Table 1 (Eq. 17; along the slope, Eq. 43): the step
 /// length without sliding (m).
 #[must_use]
-pub fn step_limit() -> f64 {
-    let p = Physical::TABLE1;
+pub fn step_limit(p: &Table1) -> f64 {
     2.0 * p.l * (p.alpha / 2.0).sin()
 }
 
 /// How far the stance foot slid in each step of `w` (along the floor): `dx - 2 l sin(alpha/2)`
 /// (Eqs. 34, 47).
-pub fn slides(w: &Walk) -> Vec<f64> {
-    w.steps.iter().map(|s| s.dx - step_limit()).collect()
+pub fn slides(w: &Walk, t: &Table1) -> Vec<f64> {
+    w.steps.iter().map(|s| s.dx - step_limit(t)).collect()
 }
 
 /// `n of N steps, by a to b m per step` for the slides of [`slides`] with the sign `sign`.
-fn slide_text(w: &Walk, sign: f64) -> String {
-    let s = slides(w);
+fn slide_text(w: &Walk, sign: f64, t: &Table1) -> String {
+    let s = slides(w, t);
     let n = s.iter().filter(|&&d| d * sign > 0.0).count();
     let (lo, hi) = s
         .iter()
@@ -46,7 +45,7 @@ pub fn slides_backward(s: &mut String, d: &Data) {
     let _ = writeln!(
         s,
         "- Fig. 3 (T_set = 0.3, mu0 = 0, omega0 = 0.8): the stance foot slides backward in {}",
-        slide_text(&d.motion[0], -1.0)
+        slide_text(&d.motion[0], -1.0, &d.table1)
     );
 }
 
@@ -58,10 +57,10 @@ pub fn slides_forward(s: &mut String, d: &Data) {
         s,
         "- Fig. 5 (T_set = 0.3, mu0 = 0.4, omega0 = 0.8): the stance foot slides forward in {}; \
          dx = {:.4} to {:.4} m against 2 l sin(alpha/2) = {:.6}",
-        slide_text(&d.motion[1], 1.0),
+        slide_text(&d.motion[1], 1.0, &d.table1),
         dx.iter().copied().fold(f64::INFINITY, f64::min),
         dx.iter().copied().fold(f64::NEG_INFINITY, f64::max),
-        step_limit()
+        step_limit(&d.table1)
     );
 }
 
@@ -169,18 +168,18 @@ fn descriptors(p: &SweepPoint) -> String {
 
 /// Fig. 8, per `T_set`: the descriptors at `mu0 = 0` and 0.01 (the paper: significant
 /// differences except the period) and where the step length lies above or below its limit.
-pub fn fig8_details(s: &mut String, pts: &[SweepPoint]) {
+pub fn fig8_details(s: &mut String, pts: &[SweepPoint], t: &Table1) {
     if let [p0, p1, ..] = pts {
         let _ = writeln!(
             s,
             "  mu0 = {:.2}: {}; mu0 = {:.2}: {}",
-            p0.mu0,
+            p0.value,
             descriptors(p0),
-            p1.mu0,
+            p1.value,
             descriptors(p1)
         );
     }
-    let lim = step_limit();
+    let lim = step_limit(t);
     let side = |p: &SweepPoint| {
         if p.failure.is_some() {
             return None;

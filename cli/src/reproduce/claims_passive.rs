@@ -6,7 +6,7 @@
 
 use std::fmt::Write as _;
 
-use walker::model::Physical;
+use super::models::Table1;
 use walker::sweep::SweepPoint;
 
 use super::claims_active::slides;
@@ -37,7 +37,7 @@ pub fn transient(p: &SweepPoint) -> bool {
 /// `2 I1 + m_t l^2 (1 - cos alpha) - mu0 m_t l^2 sin alpha`, is zero there (Painleve's paradox
 /// of sliding friction). It does not depend on `phi`.
 #[must_use]
-pub fn painleve_mu0(p: &Physical) -> f64 {
+pub fn painleve_mu0(p: &Table1) -> f64 {
     let ml2 = (p.m1 + p.m2) * p.l * p.l;
     (2.0 * p.i1 + ml2 * (1.0 - p.alpha.cos())) / (ml2 * p.alpha.sin())
 }
@@ -56,9 +56,9 @@ fn transients(pts: &[SweepPoint]) -> Option<String> {
         "V after {PASSIVE_DURATION} s {:.2} m/s at mu0 = {:.2} and {:.2} m/s at mu0 = {:.2}; the step \
          still lengthens at the end in {growing} of these {}",
         speed(first),
-        first.mu0,
+        first.value,
         speed(last),
-        last.mu0,
+        last.value,
         t.len()
     ))
 }
@@ -71,7 +71,7 @@ fn chain(s: &mut String, phi: f64, pts: &[SweepPoint], reading: &str) {
         "- phi = {phi} ({reading}): {}",
         describe(pts, |p| Some(outcome(p)))
     );
-    let below = |p: &SweepPoint| (p.mu0 < phi.tan() && transient(p)).then(|| "x".to_owned());
+    let below = |p: &SweepPoint| (p.value < phi.tan() && transient(p)).then(|| "x".to_owned());
     for (_, a, b) in runs(pts, below) {
         let _ = writeln!(
             s,
@@ -171,7 +171,7 @@ pub fn sticks(s: &mut String, d: &Data) {
         .sticks
         .iter()
         .map(|(mu0, w)| {
-            let sl = slides(w);
+            let sl = slides(w, &d.table1);
             let max = sl.iter().copied().fold(0.0_f64, |a, b| a.max(b.abs()));
             let (share, latest) = sliding_time(w, phi);
             format!(
@@ -224,7 +224,7 @@ fn all_at_first_impact(pts: &[SweepPoint]) -> bool {
 /// The passive wheel beyond the paper's `mu0` and with other wheel inertias: where it fails,
 /// when, and the threshold of [`painleve_mu0`].
 pub fn large_mu0(s: &mut String, d: &Data) {
-    let table1 = Physical::TABLE1;
+    let table1 = d.table1;
     for (phi, pts) in &d.passive_large_mu0 {
         let _ = writeln!(
             s,
@@ -246,7 +246,7 @@ pub fn large_mu0(s: &mut String, d: &Data) {
         painleve_mu0(&table1)
     );
     for (i1, pts) in &d.passive_inertia {
-        let p = Physical { i1: *i1, ..table1 };
+        let p = Table1 { i1: *i1, ..table1 };
         let _ = writeln!(
             s,
             "- wheel inertia I1 = {i1} (Table 1: {}; phi = {INERTIA_PHI}): {}; predicted threshold \
@@ -262,7 +262,7 @@ pub fn large_mu0(s: &mut String, d: &Data) {
 #[cfg(test)]
 mod tests {
     use super::painleve_mu0;
-    use walker::model::Physical;
+    use super::super::models::Table1;
 
     /// Table 1: `(2 * 0.5 + 3 (1 - cos 30 deg)) / (3 sin 30 deg) = (1 + 0.401924) / 1.5`
     /// (the 0.402 of the paper's text under Eq. 11); the inputs are exact to f64, so 1e-12.
@@ -270,7 +270,8 @@ mod tests {
     fn the_table1_painleve_threshold_is_1_402_over_1_5() {
         let k = 3.0 * (1.0 - (std::f64::consts::PI / 6.0).cos());
         let want = (1.0 + k) / 1.5;
-        assert!((painleve_mu0(&Physical::TABLE1) - want).abs() < 1e-12);
+        let t = Table1::load().expect("Table 1");
+        assert!((painleve_mu0(&t) - want).abs() < 1e-12);
         assert!((want - 0.934_616).abs() < 1e-6, "{want}");
     }
 }

@@ -27,10 +27,12 @@ fn samples_csv(path: &Path, s: &[Sample]) -> Result<(), WriteError> {
     let mut out = String::from("time,step,x,z,th1,th2,xd,zd,th1d,th2d,lambda,u\n");
     for p in s {
         let _ = write!(out, "{:.9e},{}", p.time, p.step);
-        for v in p.state {
+        for v in p.state.iter() {
             let _ = write!(out, ",{v:.9e}");
         }
-        let _ = writeln!(out, ",{:.9e},{:.9e}", p.lambda, p.u);
+        // The paper's walkers have one input or none (the passive wheel's `u` is 0).
+        let u = p.u.first().copied().unwrap_or(0.0);
+        let _ = writeln!(out, ",{:.9e},{u:.9e}", p.lambda);
     }
     write(path, out)
 }
@@ -50,7 +52,7 @@ fn step_row(s: &StepResult) -> String {
         fmt(s.p),
         fmt(s.sr)
     );
-    for v in s.q_plus.iter().chain(&s.qd_plus) {
+    for v in s.q_plus.iter().chain(s.qd_plus.iter()) {
         let _ = write!(r, ",{}", fmt(Some(*v)));
     }
     r
@@ -91,7 +93,7 @@ fn sweep_csv(
             } else {
                 String::new()
             };
-            let _ = writeln!(out, "{v},{:.4},{},{status},{flag}{row}", p.mu0, p.steps);
+            let _ = writeln!(out, "{v},{:.4},{},{status},{flag}{row}", p.value, p.steps);
         }
     }
     write(path, out)

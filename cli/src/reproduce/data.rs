@@ -3,11 +3,13 @@
 //! [`super::passive`]), collected once into [`Data`] for the CSV files, the figures and the
 //! summary.
 
-use walker::model::{ImpactLaw, Model, Physical};
+use walker::model::{Friction, ImpactLaw};
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
+use walker::vector::Vector;
 
-use super::models::{active, passive, runtime};
+use super::error::WriteError;
+use super::models::{Table1, active, active_setup, grid, model, passive, start};
 pub use super::passive::PHIS;
 use super::passive::{PassiveSweeps, passive_sweeps, passive_walks};
 use crate::progress::Progress;
@@ -19,6 +21,8 @@ pub const T_SETS: [f64; 3] = [0.2, 0.3, 0.4];
 
 /// The collected data of every figure.
 pub struct Data {
+    /// Table 1, as the built-in scenes fix it.
+    pub table1: Table1,
     /// Fig. 3 (`mu0 = 0`) and Fig. 5 (`mu0 = 0.4`) motions, `T_set = 0.3`, `omega0 = 0.8`.
     pub motion: [Walk; 2],
     /// Figs. 4 and 6: steps for three `omega0` at `mu0 = 0` and `mu0 = 0.4`.
@@ -63,43 +67,53 @@ fn limits(max_steps: usize, record: bool) -> WalkLimits {
 /// Fig. 7: the steady state at `T_set = 0.3`, `mu0 = 0.4`, then a start 0.1 rad/s above its
 /// angular velocity; per impact `[|qd+ - qd+_eq|, d xd+, d th1d+]` (empty if the steady walk
 /// has no step).
-fn convergence(cfg: &SimConfig) -> Vec<[f64; 3]> {
-    let m = active(0.4, 0.3);
-    let steady = walk(&m, cfg, m.initial_state(0.8), &limits(400, false));
+fn convergence(cfg: &SimConfig) -> Result<Vec<[f64; 3]>, WriteError> {
+    let m = active(0.4, 0.3)?;
+    let steady = walk(&m, cfg, &start(&m, 0.8)?, &limits(400, false));
     let mut convergence = Vec::new();
     if let Some(eq) = steady.steps.last() {
         let w0 = eq.qd_plus[2] + 0.1;
-        let w = walk(&m, cfg, m.initial_state(w0), &limits(30, false));
-        let mut qds = vec![[0.0, 0.0, w0, w0]];
+        let w = walk(&m, cfg, &start(&m, w0)?, &limits(30, false));
+        let mut qds = vec![Vector::from([0.0, 0.0, w0, w0])];
         qds.extend(w.steps.iter().map(|s| s.qd_plus));
         for qd in qds {
-            let d: Vec<f64> = qd.iter().zip(&eq.qd_plus).map(|(a, b)| a - b).collect();
+            let d: Vec<f64> = qd.iter().zip(eq.qd_plus.iter()).map(|(a, b)| a - b).collect();
             let norm = d.iter().map(|v| v * v).sum::<f64>().sqrt();
             convergence.push([norm, d[0], d[2]]);
         }
     }
-    convergence
+    Ok(convergence)
+}
+
+/// A walk of `m` from the paper's start with `omega0`, under `limits`.
+fn walk_from(
+    m: &walker::model::Model,
+    cfg: &SimConfig,
+    omega0: f64,
+    limits: &WalkLimits,
+) -> Result<Walk, WriteError> {
+    Ok(walk(m, cfg, &start(m, omega0)?, limits))
 }
 
 /// Compute every figure's data.
-#[must_use]
-pub fn collect() -> Data {
+///
+/// # Errors
+/// The paper's walkers cannot be set up (a defect of the shipped files).
+pub fn collect() -> Result<Data, WriteError> {
     let cfg = SimConfig::default();
-    let motion = [0.0, 0.4].map(|mu0| {
-        let m = active(mu0, 0.3);
-        walk(&m, &cfg, m.initial_state(0.8), &limits(6, true))
-    });
-    let omega_series = [0.0, 0.4].map(|mu0| {
+    let motion = [
+        walk_from(&active(0.0, 0.3)?, &cfg, 0.8, &limits(6, true))?,
+        walk_from(&active(0.4, 0.3)?, &cfg, 0.8, &limits(6, true))?,
+    ];
+    let omegas = |mu0: f64| -> Result<Vec<(f64, Walk)>, WriteError> {
         OMEGAS
             .iter()
-            .map(|&w0| {
-                let m = active(mu0, 0.3);
-                (w0, walk(&m, &cfg, m.initial_state(w0), &limits(30, false)))
-            })
+            .map(|&w0| Ok((w0, walk_from(&active(mu0, 0.3)?, &cfg, w0, &limits(30, false))?)))
             .collect()
-    });
-    let convergence = convergence(&cfg);
-    let grid = mu0_grid(0.0, 1.0, 0.01);
+    };
+    let omega_series = [omegas(0.0)?, omegas(0.4)?];
+    let convergence = convergence(&cfg)?;
+    let mu0s = mu0_grid(0.0, 1.0, 0.01);
     let long = WalkLimits {
         max_steps: 1000,
         duration: 100.0,
@@ -110,19 +124,32 @@ pub fn collect() -> Data {
     // Fig. 8, its two Coulomb chains, the continued passive chains) each on a thread of their own,
     // the independent passive walks on the rayon pool, so that no core waits for the longest
     // chain of one sweep while another sweep has work.
+    let fig8_models = grid(&T_SETS, &mu0s, |ts, mu0| active(mu0, ts))?;
+    let coulomb_models = |law: ImpactLaw| {
+        grid(&[0.3], &mu0s, move |ts, mu0| {
+            let mut s = active_setup(mu0, ts)?;
+            s.friction = Friction::Coulomb;
+            s.impact = law;
+            model(&s)
+        })
+    };
+    let coulomb_frictionless = coulomb_models(ImpactLaw::Frictionless)?;
+    let coulomb_with_friction = coulomb_models(ImpactLaw::Coulomb)?;
+    let start08 = start(&active(0.0, 0.3)?, 0.8)?;
+    let passive_models = super::passive::PassiveModels::new()?;
     let bar = Progress::new(
         "Figs. 8, 10 and 13 sweeps",
-        (T_SETS.len() + 2) * grid.len() + passive_walks(),
+        (T_SETS.len() + 2) * mu0s.len() + passive_walks(),
     );
     let tick = || bar.tick();
     let (active_sweep, coulomb_sweep, coulomb_impact_sweep, sweeps) = std::thread::scope(|scope| {
         let fig8 = scope.spawn(|| {
             sweep_chains(
                 &T_SETS,
-                |ts, mu0| active(mu0, ts),
+                &fig8_models,
                 &cfg,
-                &grid,
-                |ts| active(0.0, ts).initial_state(0.8),
+                &mu0s,
+                |_| start08,
                 &long,
                 false,
                 &tick,
@@ -130,27 +157,15 @@ pub fn collect() -> Data {
         });
         // Fig. 8 at T_set = 0.3 under exact Coulomb friction, with the paper's impact and with
         // friction at the impact.
-        let coulomb_chain = |law: ImpactLaw| {
-            let (cfg, grid, long, tick) = (&cfg, &grid, &long, &tick);
-            scope.spawn(move || {
-                sweep_chains(
-                    &[0.3],
-                    |ts, mu0| {
-                        Model::coulomb_level(Physical::TABLE1, runtime(mu0, ts))
-                            .with_impact_law(law)
-                    },
-                    cfg,
-                    grid,
-                    |ts| active(0.0, ts).initial_state(0.8),
-                    long,
-                    false,
-                    tick,
-                )
-            })
-        };
-        let coulomb = coulomb_chain(ImpactLaw::Frictionless);
-        let coulomb_impact = coulomb_chain(ImpactLaw::Coulomb);
-        let passive = passive_sweeps(&cfg, &tick);
+        let coulomb = scope.spawn(|| {
+            let m = &coulomb_frictionless;
+            sweep_chains(&[0.3], m, &cfg, &mu0s, |_| start08, &long, false, &tick)
+        });
+        let coulomb_impact = scope.spawn(|| {
+            let m = &coulomb_with_friction;
+            sweep_chains(&[0.3], m, &cfg, &mu0s, |_| start08, &long, false, &tick)
+        });
+        let passive = passive_sweeps(&passive_models, &cfg, &tick);
         let join = |h: std::thread::ScopedJoinHandle<'_, Vec<Vec<SweepPoint>>>| {
             h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
         };
@@ -168,24 +183,18 @@ pub fn collect() -> Data {
     } = sweeps;
     let sticks = [0.2, 0.5]
         .iter()
-        .map(|&mu0| {
-            let m = passive(mu0, 0.2);
-            (mu0, walk(&m, &cfg, m.initial_state(0.5), &limits(6, true)))
-        })
-        .collect();
+        .map(|&mu0| Ok((mu0, walk_from(&passive(mu0, 0.2)?, &cfg, 0.5, &limits(6, true))?)))
+        .collect::<Result<_, WriteError>>()?;
     let step_lengths = [0.2, 0.3, 0.4, 0.5]
         .iter()
         .map(|&mu0| {
-            let m = passive(mu0, 0.2);
-            (
-                mu0,
-                walk(&m, &cfg, m.initial_state(0.5), &limits(20, false)),
-            )
+            let walk = walk_from(&passive(mu0, 0.2)?, &cfg, 0.5, &limits(20, false))?;
+            Ok((mu0, walk))
         })
-        .collect();
-    let m = passive(0.19, 0.10);
-    let fall = walk(&m, &cfg, m.initial_state(0.5), &limits(5, true));
-    Data {
+        .collect::<Result<_, WriteError>>()?;
+    let fall = walk_from(&passive(0.19, 0.10)?, &cfg, 0.5, &limits(5, true))?;
+    Ok(Data {
+        table1: Table1::load()?,
         motion,
         omega_series,
         convergence,
@@ -199,5 +208,5 @@ pub fn collect() -> Data {
         sticks,
         step_lengths,
         fall,
-    }
+    })
 }

@@ -15,6 +15,10 @@ pub enum WriteError {
         #[source]
         source: io::Error,
     },
+    /// A built-in scene or one of its models could not be made (a defect of the shipped
+    /// files, which a test loads).
+    #[error("cannot set up the paper's walkers: {0}")]
+    Setup(String),
     /// Drawing or writing a figure failed.
     #[error("cannot write the figure {}: {message}", path.display())]
     Figure {

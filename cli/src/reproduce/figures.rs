@@ -3,7 +3,6 @@
 
 use std::path::Path;
 
-use walker::model::Physical;
 use walker::sim::{Sample, StepResult, Walk};
 use walker::sweep::SweepPoint;
 
@@ -74,8 +73,8 @@ fn per_mu0(
             Series::new(
                 format!("{name} = {v}"),
                 pts.iter()
-                    .filter(|p| p.failure.is_none() && p.mu0 >= mu0_min)
-                    .filter_map(|p| p.last.as_ref().and_then(key).map(|y| (p.mu0, y)))
+                    .filter(|p| p.failure.is_none() && p.value >= mu0_min)
+                    .filter_map(|p| p.last.as_ref().and_then(key).map(|y| (p.value, y)))
                     .collect(),
             )
         })
@@ -93,7 +92,7 @@ fn per_mu0_marked(
     mu0_min: f64,
     magnify: bool,
 ) -> Vec<Series> {
-    let shown = |p: &&SweepPoint| p.failure.is_none() && p.mu0 >= mu0_min;
+    let shown = |p: &&SweepPoint| p.failure.is_none() && p.value >= mu0_min;
     let (bottom, top) = chains
         .iter()
         .flat_map(|(_, pts)| pts.iter().filter(shown))
@@ -109,7 +108,7 @@ fn per_mu0_marked(
             pts.iter()
                 .filter(shown)
                 .filter(|p| p.periodic == periodic)
-                .filter_map(|p| p.last.as_ref().map(|r| (p.mu0, key(r))))
+                .filter_map(|p| p.last.as_ref().map(|r| (p.value, key(r))))
                 .collect()
         };
         series.push(Series::new(format!("phi = {v}"), points(true)));
@@ -231,7 +230,7 @@ fn fig7(d: &Data) -> Vec<Panel> {
 fn fig8(d: &Data) -> Vec<Panel> {
     let sweep = |key| per_mu0(&d.active_sweep, "T_set", key, 0.0);
     let mut dx = sweep(|s| Some(s.dx));
-    let lim = 2.0 * Physical::TABLE1.l * (Physical::TABLE1.alpha / 2.0).sin();
+    let lim = 2.0 * d.table1.l * (d.table1.alpha / 2.0).sin();
     dx.push(Series::new(
         "2 l sin(alpha/2)",
         vec![(0.0, lim), (1.0, lim)],
@@ -315,7 +314,7 @@ fn fig10(d: &Data) -> Vec<Panel> {
 
 /// Fig. 11: stick diagrams at `phi = 0.2`, `mu0` = 0.2 and 0.5.
 fn fig11(d: &Data) -> Vec<Panel> {
-    let l = Physical::TABLE1.l;
+    let l = d.table1.l;
     vec![
         (
             "fig11a",
@@ -347,7 +346,7 @@ fn fig13(d: &Data) -> Vec<Panel> {
 /// Fig. 14: the stick diagram of the fall at `phi = 0.10`, `mu0 = 0.19`.
 fn fig14(d: &Data) -> Vec<Panel> {
     let title = "Fig. 14: phi = 0.10, mu0 = 0.19";
-    let f = stick_fig(title, &d.fall.samples, Physical::TABLE1.l);
+    let f = stick_fig(title, &d.fall.samples, d.table1.l);
     vec![("fig14", f)]
 }
 

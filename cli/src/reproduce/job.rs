@@ -24,7 +24,7 @@ pub fn run(out: &Path) -> Result<String, WriteError> {
     fs::create_dir_all(out).map_err(WriteError::file(out))?;
     let summary_path = out.join("summary.txt");
     let mut summary_file = File::create(&summary_path).map_err(WriteError::file(&summary_path))?;
-    let d = collect();
+    let d = collect()?;
     write_csvs(out, &d)?;
     write_figures(out, &d)?;
     write_animations(out)?;

@@ -6,11 +6,13 @@
 //! keeps `periodic = false`. Beyond the paper: Table 1 for `mu0` up to 1.5 ([`LARGE_MU0`]) and
 //! other wheel inertias ([`INERTIAS`]), for the paper's remark on large `mu0` and small inertia.
 
-use walker::model::{Model, Physical, Runtime};
+use walker::model::Model;
 use walker::sim::{SimConfig, WalkLimits};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
+use walker::vector::Vector;
 
-use super::models::passive;
+use super::error::WriteError;
+use super::models::{grid, model, passive, passive_setup, start};
 
 /// Slope angles of Fig. 10.
 pub const PHIS: [f64; 3] = [0.10, 0.15, 0.20];
@@ -66,22 +68,44 @@ fn limits() -> WalkLimits {
 
 /// The passive wheel of Table 1 with the wheel inertia `I1 = i1` on [`INERTIA_PHI`] at `mu0`
 /// (every parameter at run time).
-fn with_inertia(i1: f64, mu0: f64) -> Model {
-    Model::general_slope(
-        Physical {
-            i1,
-            ..Physical::TABLE1
-        },
-        Runtime {
-            mu0,
-            phi: INERTIA_PHI,
-            ..Runtime::default()
-        },
-    )
+fn with_inertia(i1: f64, mu0: f64) -> Result<Model, WriteError> {
+    let mut s = passive_setup(mu0, INERTIA_PHI)?;
+    s.set("I1", i1)
+        .map_err(|e| WriteError::Setup(e.to_string()))?;
+    model(&s)
+}
+
+/// The models of every passive sweep, built before any walk, and the start (P2b).
+pub struct PassiveModels {
+    paper: Box<dyn Fn(f64, f64) -> Model + Sync>,
+    large: Box<dyn Fn(f64, f64) -> Model + Sync>,
+    inertia: Box<dyn Fn(f64, f64) -> Model + Sync>,
+    start: Vector,
+}
+
+impl PassiveModels {
+    /// Builds them.
+    ///
+    /// # Errors
+    /// The passive wheel cannot be set up (a defect of the shipped files).
+    pub fn new() -> Result<PassiveModels, WriteError> {
+        let over = |(from, to, step): (f64, f64, f64)| {
+            grid(&PHIS, &mu0_grid(from, to, step), |phi, mu0| passive(mu0, phi))
+        };
+        let (from, to, step) = INERTIA_MU0;
+        Ok(PassiveModels {
+            paper: over(PAPER_MU0)?,
+            large: over(LARGE_MU0)?,
+            inertia: grid(&INERTIAS, &mu0_grid(from, to, step), with_inertia)?,
+            start: start(&passive(0.0, PHIS[0])?, 0.5)?,
+        })
+    }
 }
 
 /// `(chain, points)` of [`sweep_chains`] over the passive wheel of Table 1, one chain per `phi`.
 fn over_phi(
+    models: &(dyn Fn(f64, f64) -> Model + Sync),
+    start: Vector,
     cfg: &SimConfig,
     (from, to, step): (f64, f64, f64),
     restart: bool,
@@ -89,10 +113,10 @@ fn over_phi(
 ) -> Vec<(f64, Vec<SweepPoint>)> {
     let points = sweep_chains(
         &PHIS,
-        |phi, mu0| passive(mu0, phi),
+        models,
         cfg,
         &mu0_grid(from, to, step),
-        |phi| passive(0.0, phi).initial_state(0.5),
+        |_| start,
         &limits(),
         restart,
         tick,
@@ -104,18 +128,22 @@ fn over_phi(
 /// continued reading ((P4b), three sequential chains) runs on threads of its own next to the
 /// others (independent walks on the rayon pool), so that both cores stay busy.
 #[must_use]
-pub fn passive_sweeps(cfg: &SimConfig, tick: &(dyn Fn() + Sync)) -> PassiveSweeps {
+pub fn passive_sweeps(
+    m: &PassiveModels,
+    cfg: &SimConfig,
+    tick: &(dyn Fn() + Sync),
+) -> PassiveSweeps {
     std::thread::scope(|scope| {
-        let continued = scope.spawn(|| over_phi(cfg, PAPER_MU0, false, tick));
-        let restart = over_phi(cfg, PAPER_MU0, true, tick);
-        let large_mu0 = over_phi(cfg, LARGE_MU0, true, tick);
+        let continued = scope.spawn(|| over_phi(&m.paper, m.start, cfg, PAPER_MU0, false, tick));
+        let restart = over_phi(&m.paper, m.start, cfg, PAPER_MU0, true, tick);
+        let large_mu0 = over_phi(&m.large, m.start, cfg, LARGE_MU0, true, tick);
         let (from, to, step) = INERTIA_MU0;
         let inertia = sweep_chains(
             &INERTIAS,
-            with_inertia,
+            &m.inertia,
             cfg,
             &mu0_grid(from, to, step),
-            |i1| with_inertia(i1, 0.0).initial_state(0.5),
+            |_| m.start,
             &limits(),
             true,
             tick,

@@ -15,9 +15,9 @@ pub fn runs(
     for p in pts {
         match label(p) {
             Some(l) => match out.last_mut() {
-                Some(last) if open && last.0 == l => last.2 = p.mu0,
+                Some(last) if open && last.0 == l => last.2 = p.value,
                 _ => {
-                    out.push((l, p.mu0, p.mu0));
+                    out.push((l, p.value, p.value));
                     open = true;
                 }
             },

@@ -33,13 +33,13 @@ fn continue_chains() -> Vec<(bool, Vec<ContinuationPoint>)> {
         .map(|&(is_active, chain)| {
             let pts = if is_active {
                 continuation(
-                    |t_set, mu0| active(mu0, t_set),
+                    |t_set, mu0| active(mu0, t_set).ok(),
                     &[chain],
                     &active_grid,
                     &cfg,
                 )
             } else {
-                continuation(|phi, mu0| passive(mu0, phi), &[chain], &passive_grid, &cfg)
+                continuation(|phi, mu0| passive(mu0, phi).ok(), &[chain], &passive_grid, &cfg)
             };
             (is_active, pts)
         })

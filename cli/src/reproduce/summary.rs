@@ -21,11 +21,11 @@ use super::ranges::describe;
 /// (`max`) or smallest, with that value, or `none`.
 fn argbest(pts: &[SweepPoint], key: impl Fn(&StepResult) -> Option<f64>, max: bool) -> String {
     let mut best: Option<(f64, f64)> = None;
-    for p in pts.iter().filter(|p| p.failure.is_none() && p.mu0 > 0.0) {
+    for p in pts.iter().filter(|p| p.failure.is_none() && p.value > 0.0) {
         if let Some(v) = p.last.as_ref().and_then(&key) {
             let better = best.is_none_or(|(_, b)| if max { v > b } else { v < b });
             if better {
-                best = Some((p.mu0, v));
+                best = Some((p.value, v));
             }
         }
     }
@@ -79,12 +79,12 @@ fn active_sweep(s: &mut String, d: &Data) {
             let _ = writeln!(
                 s,
                 "  dx at mu0 = {:.2}: {:.6} (limit 2 l sin(alpha/2) = {:.6})",
-                pts.last().map_or(f64::NAN, |p| p.mu0),
+                pts.last().map_or(f64::NAN, |p| p.value),
                 last.dx,
-                step_limit()
+                step_limit(&d.table1)
             );
         }
-        fig8_details(s, pts);
+        fig8_details(s, pts, &d.table1);
     }
 }
 
@@ -93,8 +93,8 @@ fn active_sweep(s: &mut String, d: &Data) {
 fn max_speed_difference(a: &[SweepPoint], b: &[SweepPoint]) -> (f64, f64) {
     a.iter()
         .zip(b)
-        .filter(|(a, b)| a.mu0 > 0.0 && a.failure.is_none() && b.failure.is_none())
-        .filter_map(|(a, b)| Some((a.mu0, a.last?.speed, b.last?.speed)))
+        .filter(|(a, b)| a.value > 0.0 && a.failure.is_none() && b.failure.is_none())
+        .filter_map(|(a, b)| Some((a.value, a.last?.speed, b.last?.speed)))
         .map(|(mu0, a, b)| (((a - b) / b).abs(), mu0))
         .fold(
             (0.0, f64::NAN),
@@ -129,7 +129,7 @@ fn coulomb(s: &mut String, d: &Data) {
             .rev()
             .take_while(|p| p.last.is_some_and(|r| r.impact == ImpactRegime::Stick))
             .last()
-            .map_or_else(|| "none".to_owned(), |p| format!("{:.2}", p.mu0));
+            .map_or_else(|| "none".to_owned(), |p| format!("{:.2}", p.value));
         let _ = writeln!(
             s,
             "- exact Coulomb friction in stance and at the impact (docs/impacts.md), T_set = 0.3: \

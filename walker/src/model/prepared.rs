@@ -15,7 +15,7 @@ use super::desired::{Desired, aux_input};
 use super::friction_impact::{ImpactJam, ImpactRegime, Ingredients, plastic_coulomb, rear_test};
 use super::impact::{ImpactResult, PostImpact};
 use super::kernels::{Args, KernelId, Kernels};
-use super::parameters::Parameters;
+use super::parameters::{ParamError, Parameters};
 use super::spec::Spec;
 use crate::vector::{MAX_COORDINATES, MAX_LEN, Vector};
 
@@ -554,13 +554,27 @@ impl Model {
     /// nothing) as a mechanical state `[q, qd]`.
     #[must_use]
     pub fn start_state(&self) -> Vector {
+        self.start_at(&self.params)
+    }
+
+    /// The model's start at the parameters `params` (of the same model).
+    fn start_at(&self, params: &Parameters) -> Vector {
         let n = self.n();
         let mut s = Vector::zeros(2 * n);
         for v in &self.spec.model.start {
             let i = v.coordinate + if v.velocity { n } else { 0 };
-            s[i] = self.spec.eval(&v.value, self.params.values());
+            s[i] = self.spec.eval(&v.value, params.values());
         }
         s
+    }
+
+    /// The model's start with the start parameter `name` (stage `start`: the paper's
+    /// `omega0`) set to `value`.
+    ///
+    /// # Errors
+    /// `name` is not a parameter, or `value` is out of its range.
+    pub fn start_state_with(&self, name: &str, value: f64) -> Result<Vector, ParamError> {
+        Ok(self.start_at(&self.params.with(name, value)?))
     }
 
     /// The parameters of the start (stage `start`: the paper's `omega0`), by name.
