@@ -83,31 +83,36 @@ pub fn trajectory(
 #[cfg(test)]
 mod tests {
     use super::trajectory;
-    use crate::model::{Model, Runtime};
+    use crate::model::Model;
+    use crate::setup::Setup;
     use crate::sim::{SimConfig, WalkLimits, walk};
+    use crate::vector::Vector;
 
     /// Fig. 5's walker (`mu0 = 0.4`, `T_set = 0.3`, `omega0 = 0.8`), two steps.
-    fn fig5() -> (Model, [f64; 8], WalkLimits) {
-        let m = Model::active_level(Runtime::default());
+    fn fig5() -> (Model, Vector, WalkLimits) {
+        let m = Setup::active_level()
+            .and_then(|s| Ok(s.model()?))
+            .expect("the built-in scene");
         let limits = WalkLimits {
             max_steps: 2,
             ..WalkLimits::default()
         };
-        (m, m.initial_state(0.8), limits)
+        let s0 = m.start_state();
+        (m, s0, limits)
     }
 
     #[test]
     fn sampling_frames_leaves_the_walk_unchanged() {
         let (m, s0, limits) = fig5();
         let cfg = SimConfig::default();
-        let tr = trajectory(&m, &cfg, s0, &limits, 0.01, 10_000);
-        assert_eq!(tr.walk, walk(&m, &cfg, s0, &limits));
+        let tr = trajectory(&m, &cfg, &s0, &limits, 0.01, 10_000);
+        assert_eq!(tr.walk, walk(&m, &cfg, &s0, &limits));
     }
 
     #[test]
     fn frames_are_at_exact_multiples_of_dt_up_to_the_last_impact() {
         let (m, s0, limits) = fig5();
-        let tr = trajectory(&m, &SimConfig::default(), s0, &limits, 0.01, 10_000);
+        let tr = trajectory(&m, &SimConfig::default(), &s0, &limits, 0.01, 10_000);
         assert_eq!(tr.frames[0].state, s0);
         for (k, f) in tr.frames.iter().enumerate() {
             assert_eq!(f.time, k as f64 * 0.01);
@@ -115,7 +120,7 @@ mod tests {
         let end = tr.end_time();
         assert_eq!(tr.frames.len(), (end / 0.01).floor() as usize + 1);
         assert!(!tr.truncated);
-        let short = trajectory(&m, &SimConfig::default(), s0, &limits, 0.01, 5);
+        let short = trajectory(&m, &SimConfig::default(), &s0, &limits, 0.01, 5);
         assert_eq!((short.frames.len(), short.truncated), (5, true));
     }
 
@@ -129,19 +134,19 @@ mod tests {
     #[test]
     fn frames_agree_with_a_tighter_integration_at_the_same_times() {
         let (m, s0, limits) = fig5();
-        let loose = trajectory(&m, &SimConfig::default(), s0, &limits, 0.01, 10_000);
+        let loose = trajectory(&m, &SimConfig::default(), &s0, &limits, 0.01, 10_000);
         let tight_cfg = SimConfig {
             rtol: 1e-13,
             atol: 1e-15,
             ..SimConfig::default()
         };
-        let tight = trajectory(&m, &tight_cfg, s0, &limits, 0.01, 10_000);
+        let tight = trajectory(&m, &tight_cfg, &s0, &limits, 0.01, 10_000);
         let n = loose.frames.len().min(tight.frames.len());
         assert!(n > 50, "{n} frames");
         let mut worst = 0.0_f64;
         for (a, b) in loose.frames[..n - 1].iter().zip(&tight.frames) {
             assert_eq!(a.step, b.step);
-            for (x, y) in a.state.iter().zip(&b.state) {
+            for (x, y) in a.state.iter().zip(b.state.iter()) {
                 worst = worst.max((x - y).abs());
             }
         }
@@ -152,11 +157,13 @@ mod tests {
     /// second step (Section 5.3); the trajectory ends with the frame at that moment.
     #[test]
     fn a_failed_walk_ends_with_the_frame_at_its_failure() {
-        let m = Model::passive_slope(Runtime {
-            mu0: 0.19,
-            phi: 0.10,
-            ..Runtime::default()
-        });
+        let m = Setup::passive_slope()
+            .and_then(|mut s| {
+                s.set("mu0", 0.19)?;
+                s.set("phi", 0.10)?;
+                Ok(s.model()?)
+            })
+            .expect("the built-in scene");
         let limits = WalkLimits {
             max_steps: 5,
             ..WalkLimits::default()
@@ -164,7 +171,7 @@ mod tests {
         let tr = trajectory(
             &m,
             &SimConfig::default(),
-            m.initial_state(0.5),
+            &m.start_state(),
             &limits,
             0.01,
             10_000,
