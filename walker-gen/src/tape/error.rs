@@ -55,7 +55,8 @@ pub enum TapeError {
         /// The length of the slice given.
         got: usize,
     },
-    /// The [`Prepared`](super::Prepared) values were made by another [`TapeModule`](super::TapeModule).
+    /// The [`Prepared`](super::Prepared) values were made by another
+    /// [`TapeModule`](super::TapeModule).
     #[error("these prepared values belong to another tape module")]
     ForeignPrepared,
     /// The plan holds something the tape cannot translate (a walker-gen bug, never the user's).

@@ -43,8 +43,8 @@ impl TapeKernel {
         &self.args
     }
 
-    /// The output names, row-major for a matrix (the order [`TapeModule::eval`](super::TapeModule::eval)
-    /// writes them in).
+    /// The output names, row-major for a matrix (the order
+    /// [`TapeModule::eval`](super::TapeModule::eval) writes them in).
     #[must_use]
     pub fn output_names(&self) -> &[String] {
         &self.outputs

@@ -5,9 +5,9 @@
 //!
 //! | registers | hold | filled |
 //! |---|---|---|
-//! | `0 .. n_args` | the arguments (a kernel's, in signature order; `prepare`'s parameters) | copied in per call |
-//! | next `consts.len()` | the block's constants, each once | copied in per call |
-//! | next `gathers.len()` | the `Prepared` values the block reads | gathered per call |
+//! | `0 .. n_args` | the arguments (a kernel's, in signature order; or the parameters) | per call |
+//! | next `consts.len()` | the block's constants, each once | per call |
+//! | next `gathers.len()` | the `Prepared` values the block reads | per call |
 //! | the rest | temporaries, reused once their value is dead | by the instructions |
 //!
 //! Copying the leaves in per call lets every operand be a plain register index (no tag to

@@ -458,7 +458,8 @@ proptest! {
         });
         let got = eval(&m, &options(Division::Exact, FloatFunctions::Std, false), &params, &args);
         for (g, w) in got.iter().zip(&want) {
-            prop_assert!(same(*g, *w), "{g:e} != {w:e} for {:?}", m.graph.iter().map(|n| n.1).collect::<Vec<Node>>());
+            let nodes: Vec<Node> = m.graph.iter().map(|n| n.1).collect();
+            prop_assert!(same(*g, *w), "{g:e} != {w:e} for {nodes:?}");
         }
     }
 }
