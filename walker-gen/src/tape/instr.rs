@@ -1,11 +1,17 @@
 //! The instruction set of the tape and its interpreter loop.
 //!
-//! An instruction reads registers of one flat `f64` register file and writes one (two for
-//! [`Instr::SinCos`]). Each arithmetic instruction is one IEEE operation of the generated code,
-//! rounded once, as the generated `f64` expression rounds it: Rust neither reassociates nor
-//! contracts float expressions into fused multiply-adds, so the compiled kernel performs
-//! exactly these operations. The float functions are the ones the generated code calls, chosen
-//! when the tape is built ([`Func`], [`PairFunc`], [`PowiFunc`]).
+//! An instruction ([`Instr`]) is an operation ([`Op`]) and three register indices into one flat
+//! `f64` register file: `[d, a, b]` for `d = a op b`, `[d, a, _]` for `d = op a`, `[sin, cos, a]`
+//! for a sine and cosine computed together. Each arithmetic instruction is one IEEE operation of
+//! the generated code, rounded once, as the generated `f64` expression rounds it: Rust neither
+//! reassociates nor contracts float expressions into fused multiply-adds, so the compiled
+//! kernel performs exactly these operations. The float functions are the ones the generated
+//! code calls, chosen when the tape is built ([`Func`], [`PairFunc`], [`PowiFunc`]).
+//!
+//! The code is stored as *runs* ([`Code`]): consecutive instructions of the same operation share
+//! one dispatch, and the loop over a run's operands has no indirect branch. The schedule
+//! (`compile.rs`) orders the instructions to make runs long; on the shipped models a run holds
+//! from 2.6 (paper-active) to 9 (five-link) instructions on average.
 
 use super::float;
 
@@ -13,7 +19,7 @@ use super::float;
 pub(crate) type Reg = u32;
 
 /// A float function of one argument, as the generated code calls it.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub(crate) enum Func {
     /// `x.sqrt()` (std).
     Sqrt,
@@ -54,7 +60,7 @@ impl Func {
 }
 
 /// How a sine and a cosine of one argument are computed together.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub(crate) enum PairFunc {
     /// The file's own `sin_cos` ([`FloatFunctions::Inline`](crate::FloatFunctions::Inline)).
     Inline,
@@ -79,7 +85,7 @@ impl PairFunc {
 /// How an integer power is computed. The plan expands every power into multiplications before
 /// a block is scheduled, so a tape built from a module never holds one; kept, as in the
 /// emitter, so that every node has a translation.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub(crate) enum PowiFunc {
     /// `x.powi(n)` (std).
     Std,
@@ -87,65 +93,108 @@ pub(crate) enum PowiFunc {
     Libm,
 }
 
-/// One instruction: `d` the register written, `a`, `b` the registers read.
-#[derive(Clone, Copy, PartialEq, Debug)]
-pub(crate) enum Instr {
+/// The operation of an instruction.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
+pub(crate) enum Op {
     /// `d = a + b`.
-    Add { d: Reg, a: Reg, b: Reg },
+    Add,
     /// `d = a - b`.
-    Sub { d: Reg, a: Reg, b: Reg },
+    Sub,
     /// `d = a * b`.
-    Mul { d: Reg, a: Reg, b: Reg },
+    Mul,
     /// `d = a / b`.
-    Div { d: Reg, a: Reg, b: Reg },
+    Div,
     /// `d = -a`.
-    Neg { d: Reg, a: Reg },
+    Neg,
     /// `d = |a|`.
-    Abs { d: Reg, a: Reg },
+    Abs,
     /// `d = f(a)`.
-    Call { f: Func, d: Reg, a: Reg },
-    /// `(sin, cos) = f(a)`.
-    SinCos {
-        f: PairFunc,
-        sin: Reg,
-        cos: Reg,
-        a: Reg,
-    },
+    Call(Func),
+    /// `(sin, cos) = f(a)`: registers `[sin, cos, a]`.
+    SinCos(PairFunc),
     /// `d = a^n`.
-    Powi { f: PowiFunc, d: Reg, a: Reg, n: i32 },
+    Powi(PowiFunc, i32),
+}
+
+/// One instruction: an operation and its registers (see the module docs for their order).
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) struct Instr {
+    /// The operation.
+    pub(crate) op: Op,
+    /// `[d, a, b]`, `[d, a, _]` or `[sin, cos, a]`.
+    pub(crate) regs: [Reg; 3],
 }
 
 impl Instr {
     /// The registers the instruction reads.
-    pub(crate) fn reads(&self) -> impl Iterator<Item = Reg> {
-        let (a, b) = match *self {
-            Instr::Add { a, b, .. }
-            | Instr::Sub { a, b, .. }
-            | Instr::Mul { a, b, .. }
-            | Instr::Div { a, b, .. } => (a, Some(b)),
-            Instr::Neg { a, .. }
-            | Instr::Abs { a, .. }
-            | Instr::Call { a, .. }
-            | Instr::SinCos { a, .. }
-            | Instr::Powi { a, .. } => (a, None),
-        };
-        std::iter::once(a).chain(b)
+    pub(crate) fn reads(&self) -> &[Reg] {
+        let [_, a, b] = &self.regs;
+        match self.op {
+            Op::Add | Op::Sub | Op::Mul | Op::Div => self.regs.get(1..).unwrap_or(&[]),
+            Op::SinCos(_) => std::slice::from_ref(b),
+            Op::Neg | Op::Abs | Op::Call(_) | Op::Powi(..) => std::slice::from_ref(a),
+        }
     }
 
     /// The registers the instruction writes.
-    pub(crate) fn writes(&self) -> impl Iterator<Item = Reg> {
-        let (d, e) = match *self {
-            Instr::Add { d, .. }
-            | Instr::Sub { d, .. }
-            | Instr::Mul { d, .. }
-            | Instr::Div { d, .. }
-            | Instr::Neg { d, .. }
-            | Instr::Abs { d, .. }
-            | Instr::Call { d, .. }
-            | Instr::Powi { d, .. } => (d, None),
-            Instr::SinCos { sin, cos, .. } => (sin, Some(cos)),
-        };
-        std::iter::once(d).chain(e)
+    pub(crate) fn writes(&self) -> &[Reg] {
+        match self.op {
+            Op::SinCos(_) => self.regs.get(..2).unwrap_or(&[]),
+            _ => self.regs.get(..1).unwrap_or(&[]),
+        }
+    }
+}
+
+/// A run of consecutive instructions with the same operation: `regs[start..end]` of [`Code`].
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) struct Run {
+    pub(crate) op: Op,
+    pub(crate) start: u32,
+    pub(crate) end: u32,
+}
+
+/// Straight-line code as runs of one operation each.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct Code {
+    /// The runs, in order.
+    pub(crate) runs: Vec<Run>,
+    /// The registers of every instruction, in order.
+    pub(crate) regs: Vec<[Reg; 3]>,
+}
+
+impl Code {
+    /// `instrs` as runs.
+    pub(crate) fn new(instrs: &[Instr]) -> Option<Code> {
+        let mut code = Code::default();
+        for i in instrs {
+            let at = u32::try_from(code.regs.len()).ok()?;
+            match code.runs.last_mut() {
+                Some(run) if run.op == i.op => run.end = at + 1,
+                _ => code.runs.push(Run {
+                    op: i.op,
+                    start: at,
+                    end: at + 1,
+                }),
+            }
+            code.regs.push(i.regs);
+        }
+        Some(code)
+    }
+
+    /// The number of instructions.
+    pub(crate) fn len(&self) -> usize {
+        self.regs.len()
+    }
+
+    /// The instructions, in order.
+    pub(crate) fn instrs(&self) -> impl Iterator<Item = Instr> + '_ {
+        self.runs.iter().flat_map(|run| {
+            let regs = self
+                .regs
+                .get(run.start as usize..run.end as usize)
+                .unwrap_or(&[]);
+            regs.iter().map(|&regs| Instr { op: run.op, regs })
+        })
     }
 }
 
@@ -153,45 +202,45 @@ impl Instr {
 /// `r` when the program is built, so `None` (a register out of range) does not happen; it is
 /// returned rather than a panic.
 #[inline]
-pub(crate) fn run(code: &[Instr], r: &mut [f64]) -> Option<()> {
+pub(crate) fn run(code: &Code, r: &mut [f64]) -> Option<()> {
     // `get` costs the same compare and branch as an index's bounds check, without a panic path.
-    macro_rules! binary {
-        ($r:ident, $d:expr, $a:expr, $b:expr, $op:tt) => {{
-            let x = *$r.get($a as usize)? $op *$r.get($b as usize)?;
-            *$r.get_mut($d as usize)? = x;
-        }};
+    macro_rules! each {
+        ($regs:ident, |$d:ident, $a:ident, $b:ident| $value:expr) => {
+            for &[$d, $a, $b] in $regs {
+                let v = $value;
+                *r.get_mut($d as usize)? = v;
+            }
+        };
     }
-    for instr in code {
-        match *instr {
-            Instr::Add { d, a, b } => binary!(r, d, a, b, +),
-            Instr::Sub { d, a, b } => binary!(r, d, a, b, -),
-            Instr::Mul { d, a, b } => binary!(r, d, a, b, *),
-            Instr::Div { d, a, b } => binary!(r, d, a, b, /),
-            Instr::Neg { d, a } => {
-                let x = -*r.get(a as usize)?;
-                *r.get_mut(d as usize)? = x;
+    macro_rules! get {
+        ($x:expr) => {
+            *r.get($x as usize)?
+        };
+    }
+    for run in &code.runs {
+        let regs = code.regs.get(run.start as usize..run.end as usize)?;
+        match run.op {
+            Op::Add => each!(regs, |d, a, b| get!(a) + get!(b)),
+            Op::Sub => each!(regs, |d, a, b| get!(a) - get!(b)),
+            Op::Mul => each!(regs, |d, a, b| get!(a) * get!(b)),
+            Op::Div => each!(regs, |d, a, b| get!(a) / get!(b)),
+            Op::Neg => each!(regs, |d, a, _b| -get!(a)),
+            Op::Abs => each!(regs, |d, a, _b| get!(a).abs()),
+            Op::Call(f) => each!(regs, |d, a, _b| f.apply(get!(a))),
+            Op::SinCos(f) => {
+                for &[sin, cos, a] in regs {
+                    let (s, c) = f.apply(get!(a));
+                    *r.get_mut(sin as usize)? = s;
+                    *r.get_mut(cos as usize)? = c;
+                }
             }
-            Instr::Abs { d, a } => {
-                let x = r.get(a as usize)?.abs();
-                *r.get_mut(d as usize)? = x;
-            }
-            Instr::Call { f, d, a } => {
-                let x = f.apply(*r.get(a as usize)?);
-                *r.get_mut(d as usize)? = x;
-            }
-            Instr::SinCos { f, sin, cos, a } => {
-                let (s, c) = f.apply(*r.get(a as usize)?);
-                *r.get_mut(sin as usize)? = s;
-                *r.get_mut(cos as usize)? = c;
-            }
-            Instr::Powi { f, d, a, n } => {
-                let x = *r.get(a as usize)?;
-                let y = match f {
+            Op::Powi(f, n) => each!(regs, |d, a, _b| {
+                let x = get!(a);
+                match f {
                     PowiFunc::Std => x.powi(n),
                     PowiFunc::Libm => libm::pow(x, f64::from(n)),
-                };
-                *r.get_mut(d as usize)? = y;
-            }
+                }
+            }),
         }
     }
     Some(())

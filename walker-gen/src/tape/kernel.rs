@@ -69,6 +69,13 @@ impl TapeKernel {
         self.program.code.len()
     }
 
+    /// The number of dispatches one call makes: runs of consecutive instructions with the same
+    /// operation, which the interpreter loop runs without a branch between them.
+    #[must_use]
+    pub fn dispatches(&self) -> usize {
+        self.program.code.runs.len()
+    }
+
     /// The size of the register file one call needs (arguments, constants, `Prepared` values
     /// read, live temporaries).
     #[must_use]

@@ -13,7 +13,7 @@
 //! Copying the leaves in per call lets every operand be a plain register index (no tag to
 //! decode per operand) and lets one [`Scratch`](super::Scratch) serve every kernel.
 
-use super::instr::{Instr, Reg, run};
+use super::instr::{Code, Reg, run};
 
 /// One block, compiled.
 #[derive(Clone, Debug)]
@@ -25,7 +25,7 @@ pub(crate) struct Program {
     /// Indices into the source (`Prepared`) of the values in the registers after the constants.
     pub(crate) gathers: Vec<u32>,
     /// The instructions, in order.
-    pub(crate) code: Vec<Instr>,
+    pub(crate) code: Code,
     /// The register of each output, in output order.
     pub(crate) outputs: Vec<Reg>,
     /// The size of the register file.
@@ -41,10 +41,10 @@ impl Program {
         let fits = |r: Reg| (r as usize) < n;
         leaves <= n
             && self.outputs.iter().all(|&r| fits(r))
-            && self
-                .code
-                .iter()
-                .all(|i| i.reads().all(fits) && i.writes().all(|w| fits(w) && w as usize >= leaves))
+            && self.code.instrs().all(|i| {
+                i.reads().iter().all(|&r| fits(r))
+                    && i.writes().iter().all(|&w| fits(w) && w as usize >= leaves)
+            })
     }
 
     /// The first register of the temporaries.

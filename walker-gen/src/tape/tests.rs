@@ -195,6 +195,26 @@ fn a_sine_and_cosine_of_one_argument_are_one_instruction() {
 }
 
 #[test]
+fn independent_instructions_of_one_operation_share_a_dispatch() {
+    // x*y + z, y*z + x, z*x + y, built product, sum, product, sum...: in id order six
+    // dispatches, scheduled three products then three sums.
+    let m = module(&["x", "y", "z"], |m, a| {
+        (0..3)
+            .map(|i| {
+                let p = m.graph.mul(a[i], a[(i + 1) % 3]);
+                m.graph.add(p, a[(i + 2) % 3])
+            })
+            .collect()
+    });
+    let tape = TapeModule::new(&m, &EmitOptions::default()).expect("valid");
+    let k = &tape.kernels()[0];
+    assert_eq!((k.instructions(), k.dispatches()), (6, 2));
+    let (x, y, z) = (0.1, -2.3, 7.7);
+    let got = eval(&m, &EmitOptions::default(), &[], &[x, y, z]);
+    assert_same(&got, &[x * y + z, y * z + x, z * x + y], "runs");
+}
+
+#[test]
 fn parameter_only_values_are_computed_by_prepare() {
     // (a + b) * x: `a + b` is hoisted; the kernel is one multiplication.
     let m = module(&["x"], |m, a| {
