@@ -1,8 +1,10 @@
 //! From a planned block to a [`Program`]: one instruction per operation node of the block (the
-//! nodes the emitted function evaluates, let-bound or inlined, each once), one `SinCos` per
-//! sine-cosine pair the schedule computes together, leaves (arguments, constants, `Prepared`
-//! values) in their registers; the instructions ordered to form long runs of one operation, and
-//! temporaries given registers by a linear scan that reuses a register once its value is dead.
+//! nodes the emitted function evaluates, let-bound or inlined, each once), except that a product
+//! used once by a sum, difference or product shares its user's instruction ([`fusions`]); one
+//! `SinCos` per sine-cosine pair the schedule computes together; leaves (arguments, constants,
+//! `Prepared` values) in their registers; the instructions ordered to form long runs of one
+//! operation, and temporaries given registers by a linear scan that reuses a register once its
+//! value is dead.
 //!
 //! The emitted function evaluates every node of its block exactly once (a node used twice is a
 //! `let`; a node used once is written inline where it is used), and a node's value does not
@@ -133,7 +135,7 @@ pub(crate) fn compile(
     leaf: &dyn Fn(NodeId) -> Option<Leaf>,
     funcs: Funcs,
 ) -> Result<Program, TapeError> {
-    let emits = emits(g, block, funcs)?;
+    let emits = emits(g, block, roots, funcs)?;
     let computed: HashSet<NodeId> = emits.iter().flat_map(|e| e.results.clone()).collect();
 
     // Leaves: every operand or root the block does not compute.
@@ -187,8 +189,11 @@ pub(crate) fn compile(
 }
 
 /// The instructions of `block`, in id order: one per node, one per sine-cosine pair (at the
-/// first of its two nodes).
-fn emits(g: &Graph, block: &Block, funcs: Funcs) -> Result<Vec<Emit>, TapeError> {
+/// first of its two nodes), and a product used once, by a sum, difference or product, fused
+/// into its user ([`fusions`]).
+fn emits(g: &Graph, block: &Block, roots: &[NodeId], funcs: Funcs) -> Result<Vec<Emit>, TapeError> {
+    let fused = fusions(g, block, roots);
+    let absorbed: HashSet<NodeId> = fused.values().copied().collect();
     let mut pair_of: HashMap<NodeId, (NodeId, NodeId, NodeId)> = HashMap::new();
     for step in &block.steps {
         if let Step::SinCos { sin, cos, arg } = *step {
@@ -199,10 +204,12 @@ fn emits(g: &Graph, block: &Block, funcs: Funcs) -> Result<Vec<Emit>, TapeError>
     let mut done: HashSet<NodeId> = HashSet::new();
     let mut emits = Vec::with_capacity(block.nodes.len());
     for &n in &block.nodes {
-        if done.contains(&n) {
+        if done.contains(&n) || absorbed.contains(&n) {
             continue;
         }
-        if let Some(&(sin, cos, arg)) = pair_of.get(&n) {
+        if let Some(&m) = fused.get(&n) {
+            emits.push(fuse(g, n, m)?);
+        } else if let Some(&(sin, cos, arg)) = pair_of.get(&n) {
             done.extend([sin, cos]);
             emits.push(Emit {
                 op: Op::SinCos(funcs.sin_cos()),
@@ -219,6 +226,70 @@ fn emits(g: &Graph, block: &Block, funcs: Funcs) -> Result<Vec<Emit>, TapeError>
         }
     }
     Ok(emits)
+}
+
+/// Which product each sum, difference or product of `block` absorbs (by its node): a product
+/// of the block whose only use is that operand (once; not an output, nor absorbing one
+/// itself). In id order, so that a product's own choice is made before its user's. The
+/// generated code writes such a product inline in its user's expression; the tape computes
+/// both in one instruction, each operation rounded as there.
+fn fusions(g: &Graph, block: &Block, roots: &[NodeId]) -> HashMap<NodeId, NodeId> {
+    let in_block: HashSet<NodeId> = block.nodes.iter().copied().collect();
+    let mut uses: HashMap<NodeId, usize> = HashMap::new();
+    for &n in &block.nodes {
+        for c in g.node(n).children() {
+            *uses.entry(c).or_default() += 1;
+        }
+    }
+    for &r in roots {
+        // An output is kept in its register to the end: never absorbed.
+        *uses.entry(r).or_default() += 2;
+    }
+    let mut fused: HashMap<NodeId, NodeId> = HashMap::new();
+    let mut absorbed: HashSet<NodeId> = HashSet::new();
+    for &n in &block.nodes {
+        let (Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b)) = g.node(n) else {
+            continue;
+        };
+        let fusable = |m: NodeId| {
+            in_block.contains(&m)
+                && matches!(g.node(m), Node::Mul(..))
+                && uses.get(&m) == Some(&1)
+                && !fused.contains_key(&m)
+        };
+        if let Some(m) = [a, b]
+            .into_iter()
+            .find(|&m| fusable(m) && !absorbed.contains(&m))
+        {
+            fused.insert(n, m);
+            absorbed.insert(m);
+        }
+    }
+    fused
+}
+
+/// The fused instruction computing `n` (a sum, difference or product) with its operand `m`, a
+/// product `x * y`, in it.
+fn fuse(g: &Graph, n: NodeId, m: NodeId) -> Result<Emit, TapeError> {
+    let Node::Mul(x, y) = g.node(m) else {
+        return Err(internal(format!(
+            "node #{} fused but no product",
+            m.index()
+        )));
+    };
+    // `(x * y) op c`, or `c - (x * y)`; `+` and `*` commute exactly (also in the sign of zero).
+    let (op, c) = match g.node(n) {
+        Node::Add(a, b) => (Op::MulAdd, if a == m { b } else { a }),
+        Node::Mul(a, b) => (Op::MulMul, if a == m { b } else { a }),
+        Node::Sub(a, b) if a == m => (Op::MulSub, b),
+        Node::Sub(a, _) => (Op::SubMul, a),
+        other => return Err(internal(format!("{other:?} fused with a product"))),
+    };
+    Ok(Emit {
+        op,
+        results: vec![n],
+        operands: vec![x, y, c],
+    })
 }
 
 /// The operation that computes `node`.
@@ -247,10 +318,11 @@ fn op(node: Node, funcs: Funcs) -> Result<Op, TapeError> {
 /// the most ready instructions (the lowest operation, then the lowest index, on ties).
 ///
 /// The interpreter dispatches once per run of one operation: on the shipped models this order
-/// has from 2.6 (paper-active) to 9 (five-link) times fewer runs than instructions, and the
+/// has from 1.7 (paper-active) to 4.6 (five-link) times fewer runs than instructions, and the
 /// instructions of a run are often independent, so the processor overlaps them as it does the
 /// compiled code's. In id order, one dispatch per instruction, the indirect branch of a long
-/// kernel is mispredicted so often that five-link's `closed_loop` took 5.4 us instead of 0.9.
+/// kernel was mispredicted so often that five-link's `closed_loop` took 5.4 us instead of 0.9
+/// (before products were fused).
 fn schedule(emits: &[Emit]) -> Vec<usize> {
     let producer: HashMap<NodeId, usize> = emits
         .iter()
@@ -390,8 +462,8 @@ fn allocate(
         }
         let operand = |i: usize| regs.get(i).copied().unwrap_or(0);
         let regs = match e.op {
-            Op::SinCos(_) => [results[0], results[1], operand(0)],
-            _ => [results[0], operand(0), operand(1)],
+            Op::SinCos(_) => [results[0], results[1], operand(0), 0],
+            _ => [results[0], operand(0), operand(1), operand(2)],
         };
         instrs.push(Instr { op: e.op, regs });
         // A value nothing reads (not expected: every node of a block is reachable from a

@@ -1,17 +1,20 @@
 //! The instruction set of the tape and its interpreter loop.
 //!
-//! An instruction ([`Instr`]) is an operation ([`Op`]) and three register indices into one flat
-//! `f64` register file: `[d, a, b]` for `d = a op b`, `[d, a, _]` for `d = op a`, `[sin, cos, a]`
-//! for a sine and cosine computed together. Each arithmetic instruction is one IEEE operation of
-//! the generated code, rounded once, as the generated `f64` expression rounds it: Rust neither
+//! An instruction ([`Instr`]) is an operation ([`Op`]) and four register indices into one flat
+//! `f64` register file: `[d, a, b, _]` for `d = a op b`, `[d, a, _, _]` for `d = op a`,
+//! `[d, a, b, c]` for the fused operations (`d = a * b + c`, ...), `[sin, cos, a, _]` for a sine
+//! and cosine computed together. Each arithmetic operation is an IEEE operation of the
+//! generated code, rounded once, as the generated `f64` expression rounds it: Rust neither
 //! reassociates nor contracts float expressions into fused multiply-adds, so the compiled
-//! kernel performs exactly these operations. The float functions are the ones the generated
+//! kernel performs exactly these operations. A fused operation is two of them, each rounded:
+//! `a * b + c` is `(a * b) + c`, a product used once, by a sum, in the generated code, never a
+//! fused multiply-add. The float functions are the ones the generated
 //! code calls, chosen when the tape is built ([`Func`], [`PairFunc`], [`PowiFunc`]).
 //!
 //! The code is stored as *runs* ([`Code`]): consecutive instructions of the same operation share
 //! one dispatch, and the loop over a run's operands has no indirect branch. The schedule
 //! (`compile.rs`) orders the instructions to make runs long; on the shipped models a run holds
-//! from 2.6 (paper-active) to 9 (five-link) instructions on average.
+//! from 1.7 (paper-active) to 4.6 (five-link) instructions on average.
 
 use super::float;
 
@@ -108,6 +111,14 @@ pub(crate) enum Op {
     Neg,
     /// `d = |a|`.
     Abs,
+    /// `d = (a * b) + c`, two roundings.
+    MulAdd,
+    /// `d = (a * b) - c`, two roundings.
+    MulSub,
+    /// `d = c - (a * b)`, two roundings.
+    SubMul,
+    /// `d = (a * b) * c`, two roundings.
+    MulMul,
     /// `d = f(a)`.
     Call(Func),
     /// `(sin, cos) = f(a)`: registers `[sin, cos, a]`.
@@ -121,19 +132,20 @@ pub(crate) enum Op {
 pub(crate) struct Instr {
     /// The operation.
     pub(crate) op: Op,
-    /// `[d, a, b]`, `[d, a, _]` or `[sin, cos, a]`.
-    pub(crate) regs: [Reg; 3],
+    /// `[d, a, b, _]`, `[d, a, _, _]`, `[d, a, b, c]` or `[sin, cos, a, _]`.
+    pub(crate) regs: [Reg; 4],
 }
 
 impl Instr {
     /// The registers the instruction reads.
     pub(crate) fn reads(&self) -> &[Reg] {
-        let [_, a, b] = &self.regs;
-        match self.op {
-            Op::Add | Op::Sub | Op::Mul | Op::Div => self.regs.get(1..).unwrap_or(&[]),
-            Op::SinCos(_) => std::slice::from_ref(b),
-            Op::Neg | Op::Abs | Op::Call(_) | Op::Powi(..) => std::slice::from_ref(a),
-        }
+        let range = match self.op {
+            Op::Add | Op::Sub | Op::Mul | Op::Div => 1..3,
+            Op::MulAdd | Op::MulSub | Op::SubMul | Op::MulMul => 1..4,
+            Op::SinCos(_) => 2..3,
+            Op::Neg | Op::Abs | Op::Call(_) | Op::Powi(..) => 1..2,
+        };
+        self.regs.get(range).unwrap_or(&[])
     }
 
     /// The registers the instruction writes.
@@ -159,7 +171,7 @@ pub(crate) struct Code {
     /// The runs, in order.
     pub(crate) runs: Vec<Run>,
     /// The registers of every instruction, in order.
-    pub(crate) regs: Vec<[Reg; 3]>,
+    pub(crate) regs: Vec<[Reg; 4]>,
 }
 
 impl Code {
@@ -205,8 +217,8 @@ impl Code {
 pub(crate) fn run(code: &Code, r: &mut [f64]) -> Option<()> {
     // `get` costs the same compare and branch as an index's bounds check, without a panic path.
     macro_rules! each {
-        ($regs:ident, |$d:ident, $a:ident, $b:ident| $value:expr) => {
-            for &[$d, $a, $b] in $regs {
+        ($regs:ident, |$d:ident, $a:ident, $b:ident, $c:ident| $value:expr) => {
+            for &[$d, $a, $b, $c] in $regs {
                 let v = $value;
                 *r.get_mut($d as usize)? = v;
             }
@@ -220,21 +232,25 @@ pub(crate) fn run(code: &Code, r: &mut [f64]) -> Option<()> {
     for run in &code.runs {
         let regs = code.regs.get(run.start as usize..run.end as usize)?;
         match run.op {
-            Op::Add => each!(regs, |d, a, b| get!(a) + get!(b)),
-            Op::Sub => each!(regs, |d, a, b| get!(a) - get!(b)),
-            Op::Mul => each!(regs, |d, a, b| get!(a) * get!(b)),
-            Op::Div => each!(regs, |d, a, b| get!(a) / get!(b)),
-            Op::Neg => each!(regs, |d, a, _b| -get!(a)),
-            Op::Abs => each!(regs, |d, a, _b| get!(a).abs()),
-            Op::Call(f) => each!(regs, |d, a, _b| f.apply(get!(a))),
+            Op::Add => each!(regs, |d, a, b, _c| get!(a) + get!(b)),
+            Op::Sub => each!(regs, |d, a, b, _c| get!(a) - get!(b)),
+            Op::Mul => each!(regs, |d, a, b, _c| get!(a) * get!(b)),
+            Op::Div => each!(regs, |d, a, b, _c| get!(a) / get!(b)),
+            Op::Neg => each!(regs, |d, a, _b, _c| -get!(a)),
+            Op::Abs => each!(regs, |d, a, _b, _c| get!(a).abs()),
+            Op::MulAdd => each!(regs, |d, a, b, c| get!(a) * get!(b) + get!(c)),
+            Op::MulSub => each!(regs, |d, a, b, c| get!(a) * get!(b) - get!(c)),
+            Op::SubMul => each!(regs, |d, a, b, c| get!(c) - get!(a) * get!(b)),
+            Op::MulMul => each!(regs, |d, a, b, c| get!(a) * get!(b) * get!(c)),
+            Op::Call(f) => each!(regs, |d, a, _b, _c| f.apply(get!(a))),
             Op::SinCos(f) => {
-                for &[sin, cos, a] in regs {
+                for &[sin, cos, a, _] in regs {
                     let (s, c) = f.apply(get!(a));
                     *r.get_mut(sin as usize)? = s;
                     *r.get_mut(cos as usize)? = c;
                 }
             }
-            Op::Powi(f, n) => each!(regs, |d, a, _b| {
+            Op::Powi(f, n) => each!(regs, |d, a, _b, _c| {
                 let x = get!(a);
                 match f {
                     PowiFunc::Std => x.powi(n),

@@ -63,7 +63,8 @@ impl TapeKernel {
     }
 
     /// The number of instructions one call runs: one per operation of the generated function
-    /// (a `sin_cos` is one).
+    /// (a `sin_cos` is one), except that a product used once by a sum, difference or product
+    /// is computed by its user's instruction (each operation still rounded on its own).
     #[must_use]
     pub fn instructions(&self) -> usize {
         self.program.code.len()

@@ -1,13 +1,13 @@
 //! A tape (register-machine) interpreter of a lowered [`Module`](crate::Module)'s kernels, for
 //! model files read at run time, where no compiler is available to build the generated Rust.
 //!
-//! [`TapeModule::new`] plans the module exactly as the emitter does (the same
-//! plan (`src/plan/`): powers expanded, divisions by the [`Division`](crate::Division)
-//! strategy, parameter-only values hoisted into `prepare`, common subexpressions, `sin_cos`
-//! pairs) and compiles each block to straight-line instructions over one flat `f64` register
-//! file. [`TapeModule::prepare`] runs `prepare`'s block on a parameter set, and
-//! [`TapeModule::eval`] runs a kernel's block on its arguments, with no allocation per call once
-//! the caller's [`Scratch`] has grown:
+//! [`TapeModule::new`] plans the module with the emitter's own plan (`src/plan/`: powers
+//! expanded, divisions by the [`Division`](crate::Division) strategy, parameter-only values
+//! hoisted into `prepare`, common subexpressions, `sin_cos` pairs) and compiles each block to
+//! straight-line instructions over one flat `f64` register file, grouped into runs of one
+//! operation (one dispatch per run). [`TapeModule::prepare`] runs `prepare`'s block on a
+//! parameter set, and [`TapeModule::eval`] runs a kernel's block on its arguments, with no
+//! allocation per call once the caller's [`Scratch`] has grown:
 //!
 //! ```text
 //! let tape = TapeModule::new(&module, &options)?;      // once per model file
@@ -23,17 +23,31 @@
 //! as IEEE `f64` arithmetic (Rust does not reassociate float expressions nor contract them into
 //! fused multiply-adds), and the emitter's only reorderings swap the operands of `+` and `*`,
 //! which commute exactly. The tape evaluates the same nodes, each once, with the same
-//! operation, and calls the same float functions the writer picks for the options: the file's
-//! own `sin_cos` and `tanh` for [`FloatFunctions::Inline`](crate::FloatFunctions::Inline) (the
-//! tape includes the same source files the emitter appends), std's `sin`, `cos`, `sqrt` (and
-//! `sin_cos`, `tanh` for [`FloatFunctions::Std`](crate::FloatFunctions::Std)), `libm`'s in no-std
-//! mode. So each value, and each output, is the same bits, including the sign of zero. Only
-//! NaNs may differ in sign and payload: Rust does not specify the bits of a NaN an operation
-//! returns (x86's `addsd` returns the first operand's payload, and the compiler may swap the
-//! operands of a commutative operation), so equality is of the value, NaN matching NaN. The
-//! tests (`tests/tests/tape_vs_compiled.rs` in the workspace) check this against the compiled
-//! kernels of every model file and of the simulator's scenes. `f32` code
-//! ([`Float::F32`](crate::Float::F32)) is not evaluated ([`TapeError::Unsupported`]).
+//! operation on the same operands, and calls the same float functions the writer picks for the
+//! options: the file's own `sin_cos` and `tanh` for
+//! [`FloatFunctions::Inline`](crate::FloatFunctions::Inline) (the tape includes the same source
+//! files the emitter appends), std's `sin`, `cos`, `sqrt` (and `sin_cos`, `tanh` for
+//! [`FloatFunctions::Std`](crate::FloatFunctions::Std)), `libm`'s in no-std mode. So each value,
+//! and each output, is the same bits, including the sign of zero. What the tape does
+//! differently changes no value: it evaluates the nodes in another order that also computes
+//! operands first (a node's value depends on its operands' values only), and computes a product
+//! used once together with its user (`a * b + c` as two operations, each rounded, never a fused
+//! multiply-add).
+//!
+//! Only NaNs may differ in sign and payload: Rust does not specify the bits of a NaN an
+//! operation returns (x86's `addsd` returns the first operand's payload, and the compiler may
+//! swap the operands of a commutative operation), so equality is of the value, NaN matching
+//! NaN. The tests (`tests/tests/tape_vs_compiled.rs` in the workspace) check all this against
+//! the compiled kernels of every model file and of the simulator's scenes, at ordinary points
+//! and at zeros, subnormals, infinities, NaN and the branch points of the inline functions.
+//!
+//! Where the bits can come apart, outside these tests: std's `sin`, `cos`, `exp` (inside the
+//! inline `tanh`) and, with `FloatFunctions::Std`, `sin_cos` and `tanh` are the platform's
+//! `libm`, so the tape and a compiled kernel agree when they run on the same platform (LLVM
+//! may also fold such a call of a constant at compile time, with the compiling machine's
+//! `libm`); in no-std mode the tape calls walker-gen's `libm` crate (0.2), and a compiled
+//! kernel the `libm` its own build resolves. `f32` code ([`Float::F32`](crate::Float::F32)) is
+//! not evaluated ([`TapeError::Unsupported`]).
 //!
 //! # Why by hand
 //!

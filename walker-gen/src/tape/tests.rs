@@ -196,22 +196,65 @@ fn a_sine_and_cosine_of_one_argument_are_one_instruction() {
 
 #[test]
 fn independent_instructions_of_one_operation_share_a_dispatch() {
-    // x*y + z, y*z + x, z*x + y, built product, sum, product, sum...: in id order six
-    // dispatches, scheduled three products then three sums.
+    // x*y + z, y*z + x, z*x + y and the products themselves (outputs, so not fused), built
+    // product, sum, product, sum...: in id order six dispatches, scheduled products then sums.
     let m = module(&["x", "y", "z"], |m, a| {
-        (0..3)
-            .map(|i| {
-                let p = m.graph.mul(a[i], a[(i + 1) % 3]);
-                m.graph.add(p, a[(i + 2) % 3])
-            })
-            .collect()
+        let mut outs = Vec::new();
+        for i in 0..3 {
+            let p = m.graph.mul(a[i], a[(i + 1) % 3]);
+            outs.push(m.graph.add(p, a[(i + 2) % 3]));
+            outs.push(p);
+        }
+        outs
     });
     let tape = TapeModule::new(&m, &EmitOptions::default()).expect("valid");
     let k = &tape.kernels()[0];
     assert_eq!((k.instructions(), k.dispatches()), (6, 2));
     let (x, y, z) = (0.1, -2.3, 7.7);
     let got = eval(&m, &EmitOptions::default(), &[], &[x, y, z]);
-    assert_same(&got, &[x * y + z, y * z + x, z * x + y], "runs");
+    let want = [x * y + z, x * y, y * z + x, y * z, z * x + y, z * x];
+    assert_same(&got, &want, "runs");
+}
+
+#[test]
+fn a_product_used_once_fuses_into_its_user_with_two_roundings() {
+    // a*b + c, a*b - c, c - a*b, (a*b)*c, each product used once: four instructions. At
+    // a = 1 + 2^-30, b = 1 - 2^-30, c = -1 the product rounds to 1, so a*b + c is 0, where a
+    // fused multiply-add would give -2^-60.
+    let m = module(&["a", "b", "c"], |m, v| {
+        let (a, b, c) = (v[0], v[1], v[2]);
+        // Four distinct products (the graph shares equal nodes): (2^i a) * b.
+        let p: Vec<NodeId> = (0..4)
+            .map(|i| {
+                let s = m.graph.constant(f64::from(1 << i));
+                let sa = m.graph.mul(s, a);
+                m.graph.mul(sa, b)
+            })
+            .collect();
+        vec![
+            m.graph.add(p[0], c),
+            m.graph.sub(p[1], c),
+            m.graph.sub(c, p[2]),
+            m.graph.mul(p[3], c),
+        ]
+    });
+    let tape = TapeModule::new(&m, &EmitOptions::default()).expect("valid");
+    // Three scalings (1 * a folds to a) and four fused instructions.
+    assert_eq!(tape.kernels()[0].instructions(), 3 + 4);
+    let points = [
+        (1.0 + 2f64.powi(-30), 1.0 - 2f64.powi(-30), -1.0),
+        (0.1, 0.3, -0.03),
+        (-0.0, 5.0, 0.0),
+        (1e308, 10.0, -f64::INFINITY),
+    ];
+    for (a, b, c) in points {
+        let got = eval(&m, &EmitOptions::default(), &[], &[a, b, c]);
+        let want = [a * b + c, 2.0 * a * b - c, c - 4.0 * a * b, 8.0 * a * b * c];
+        assert_same(&got, &want, "fused");
+    }
+    let (a, b, c) = points[0];
+    assert_eq!(eval(&m, &EmitOptions::default(), &[], &[a, b, c])[0], 0.0);
+    assert!(a.mul_add(b, c) != 0.0, "a fused multiply-add differs here");
 }
 
 #[test]
@@ -295,7 +338,8 @@ fn registers_of_dead_values_are_reused() {
     });
     let tape = TapeModule::new(&m, &EmitOptions::default()).expect("valid");
     let k = &tape.kernels()[0];
-    assert_eq!(k.instructions(), 400);
+    // Each step one instruction, the product fused into the sum.
+    assert_eq!(k.instructions(), 200);
     // One argument, 200 constants, and two temporaries at most.
     assert!(k.registers() <= 1 + 200 + 2, "{} registers", k.registers());
     let mut want = 0.7_f64;
