@@ -527,3 +527,37 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_tape_and_its_prepared_values_are_shared_between_threads() {
+    fn shared<T: Send + Sync>() {}
+    fn sent<T: Send>() {}
+    shared::<TapeModule>();
+    shared::<Prepared>();
+    sent::<Scratch>();
+    // One tape and one parameter set, one scratch per thread: the same bits in each.
+    let m = module(&["x"], |m, a| {
+        let p = m.param("r", "");
+        let s = m.graph.sin(a[0]);
+        vec![m.graph.mul(s, p)]
+    });
+    let tape = TapeModule::new(&m, &EmitOptions::default()).expect("valid");
+    let prepared = tape.prepare(&[1.5]).expect("one parameter");
+    let k = tape.kernel_index("k").expect("k");
+    let results: Vec<f64> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..2)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut out = [0.0];
+                    tape.eval(k, &prepared, &[0.25], &mut out, &mut tape.scratch())
+                        .map(|()| out[0])
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().ok().and_then(Result::ok).unwrap_or(f64::NAN))
+            .collect()
+    });
+    assert_eq!(results, vec![0.25_f64.sin() * 1.5; 2]);
+}
