@@ -1,7 +1,8 @@
 //! Generates the kernels of every model file in `models/` (exact Coulomb friction, so that a
 //! test realises any `mu` as `-mu0 sigma`), and for each a small adapter that calls a kernel by
 //! name with its arguments by name: the model tests then run the same checks over every model
-//! without knowing any model's signatures.
+//! without knowing any model's signatures. Also writes the same adapters for the simulator's
+//! scenes as `walker` compiles them (`walker::kernels`; no kernel is generated here for them).
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -44,24 +45,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             .checked(false);
         let module = config.module()?;
         std::fs::write(out.join(format!("model_{ident}.rs")), config.render()?)?;
-        let mut arms = String::new();
-        let mut outputs = String::new();
-        for k in &module.kernels {
-            let args: Vec<String> = k.args.iter().map(|a| format!("arg(\"{a}\")")).collect();
-            let flatten = match k.output_shape {
-                Shape::Scalar => "vec![out]",
-                Shape::Vector(_) => "out.to_vec()",
-                Shape::Matrix(..) => "out.iter().flatten().copied().collect()",
-            };
-            let _ = writeln!(
-                arms,
-                "        \"{0}\" => {{ let out = {0}(&p, {1}); {flatten} }}",
-                k.name,
-                args.join(", ")
-            );
-            let names: Vec<String> = k.outputs.iter().map(|(n, _)| format!("\"{n}\"")).collect();
-            let _ = writeln!(outputs, "    (\"{}\", &[{}]),", k.name, names.join(", "));
-        }
+        let (arms, outputs) = adapter(&module);
         let _ = write!(
             modules,
             "/// The kernels of `models/{name}.toml` (generated with Coulomb friction).\n\
@@ -84,5 +68,82 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     }
     index.push_str("];\n");
     std::fs::write(out.join("models.rs"), modules + &index)?;
+    scenes(&out)?;
     Ok(())
+}
+
+/// The scenes `walker/build.rs` compiles into `walker::kernels` (the same list).
+const WALKER_SCENES: [&str; 6] = [
+    "active-level",
+    "passive-slope",
+    "general-level",
+    "general-slope",
+    "general-level-coulomb",
+    "general-slope-coulomb",
+];
+
+/// `scenes.rs`: per scene of [`WALKER_SCENES`], an adapter that calls the kernels of
+/// `walker::kernels::<scene>` by name, lowered from one derivation (as `walker/build.rs` does).
+fn scenes(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../walker/scenes");
+    let derivation = walker_gen::lower::derive()?;
+    let mut modules = String::new();
+    let mut index = String::from(
+        "/// The simulator's scenes as `walker` compiles them: name and kernels called by name.\n\
+         pub const SCENES: &[GeneratedModel] = &[\n",
+    );
+    for name in WALKER_SCENES {
+        let path = dir.join(format!("{name}.toml"));
+        println!("cargo:rerun-if-changed={}", path.display());
+        let scene = Config::new().scene_file(&path).load_scene()?;
+        let module = walker_gen::lower::lower(&derivation, &scene)?;
+        let ident = name.replace('-', "_");
+        let (arms, outputs) = adapter(&module);
+        let _ = write!(
+            modules,
+            "/// The kernels of `walker/scenes/{name}.toml` as compiled into \
+             `walker::kernels::{ident}`.\n\
+             #[allow(clippy::all, clippy::pedantic, missing_docs, reason = \"generated\")]\n\
+             pub mod {ident} {{\n\
+             use walker::kernels::{ident}::*;\n\
+             /// Calls kernel `kernel` with parameters and arguments by name; `None` for a \
+             kernel the scene does not have.\n\
+             pub fn call(kernel: &str, param: &dyn Fn(&str) -> f64, arg: &dyn Fn(&str) -> f64) \
+             -> Option<Vec<f64>> {{\n\
+             let p = prepare(&Params::from_fn(|n| param(n)));\n\
+             Some(match kernel {{\n{arms}        _ => return None,\n    }})\n}}\n\
+             /// Every kernel and its output names.\n\
+             pub const KERNELS: &[(&str, &[&str])] = &[\n{outputs}];\n}}\n"
+        );
+        let _ = writeln!(
+            index,
+            "    GeneratedModel {{ name: \"{name}\", call: {ident}::call, kernels: {ident}::KERNELS }},"
+        );
+    }
+    index.push_str("];\n");
+    std::fs::write(out.join("scenes.rs"), modules + &index)?;
+    Ok(())
+}
+
+/// The match arms that call each kernel of `module` by name, and its `KERNELS` entries.
+fn adapter(module: &walker_gen::Module) -> (String, String) {
+    let mut arms = String::new();
+    let mut outputs = String::new();
+    for k in &module.kernels {
+        let args: Vec<String> = k.args.iter().map(|a| format!("arg(\"{a}\")")).collect();
+        let flatten = match k.output_shape {
+            Shape::Scalar => "vec![out]",
+            Shape::Vector(_) => "out.to_vec()",
+            Shape::Matrix(..) => "out.iter().flatten().copied().collect()",
+        };
+        let _ = writeln!(
+            arms,
+            "        \"{0}\" => {{ let out = {0}(&p, {1}); {flatten} }}",
+            k.name,
+            args.join(", ")
+        );
+        let names: Vec<String> = k.outputs.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+        let _ = writeln!(outputs, "    (\"{}\", &[{}]),", k.name, names.join(", "));
+    }
+    (arms, outputs)
 }

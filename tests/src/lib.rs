@@ -53,7 +53,10 @@
 //!   adapter that calls them by name: [`models::MODELS`]) against the same reference;
 //! - `models_vs_nalgebra`: proptest over random parameters and states, every model's stance,
 //!   stick, impact and control kernels against KKT systems solved by nalgebra from the
-//!   generated matrices `M`, `h`, `S`, `J_I`, `H`.
+//!   generated matrices `M`, `h`, `S`, `J_I`, `H`;
+//! - `tape_vs_compiled`: walker-gen's tape interpreter (`walker_gen::tape`) of every model
+//!   file's and every simulator scene's module against the compiled kernels ([`models::MODELS`],
+//!   [`scenes::SCENES`]), bit for bit.
 //!
 //! # Running
 //!
@@ -72,7 +75,8 @@
 //! `friction` (the `tanh` law), `linear` (solves with conditioning), `stance`, `stick`,
 //! `closed_loop`, `impact` and `coulomb_impact` (the generic path of each phase), `kinematics`
 //! (positions, energies, momenta), `models` (the model files' generated kernels by name, their
-//! reference samples and names). Imports run one way:
+//! reference samples and names), `scenes` (the simulator's compiled scenes by name). Imports
+//! run one way:
 //! `phys <- matrices <- {stance, stick, impact, coulomb_impact, kinematics}`,
 //! `linear <- {stance, stick, impact, coulomb_impact}`, `impact <- coulomb_impact`,
 //! `{stance, stick} <- closed_loop`.
@@ -88,6 +92,7 @@ mod linear;
 mod matrices;
 pub mod models;
 mod phys;
+pub mod scenes;
 mod stance;
 mod stick;
 

@@ -11,6 +11,7 @@ mod model_scene;
 mod options;
 mod plan;
 pub mod stats;
+pub mod tape;
 
 /// The shared vocabulary (structures, parameters, kernel names, scene files), re-exported from
 /// `walker-scene` so that `walker_gen::scene::Scene` and `walker_gen::Param` keep working.
