@@ -1,22 +1,30 @@
 //! `walker-load`: a model file that is not compiled into the `walker` library, derived and
 //! lowered when a program starts (by `walker-symbolic` and `walker-gen`, as a build script
-//! would) and its kernels evaluated by an interpreter of the lowered graph, behind the
-//! library's kernel interface ([`walker::model::Kernels`]).
+//! would) and its kernels evaluated by walker-gen's tape (a register machine that computes, bit
+//! for bit, what the generated Rust computes; 3 to 6 times slower), behind the library's
+//! kernel interface ([`walker::model::Kernels`]).
 //!
 //! The `walker` library links no computer algebra; the front ends (the command line, the
 //! Python module) link this crate and give [`runtime_source`] to [`walker::setup`], which calls
 //! it for any model file that is not one of the shipped ones.
 //!
 //! Written here, not taken from a crate: the kernels are our own graph, and evaluating them is
-//! the generator's business (`walker_gen::Graph`).
+//! the generator's business (`walker_gen::tape`).
 
+use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex};
 
 use walker::model::{Args, KernelId, KernelSource, Kernels, NoKernels, Parameters};
 use walker_gen::scene::Friction;
 use walker_gen::scene::model::{Model, SymbolKind};
-use walker_gen::{Module, ModelScene, derive_model, lower_model};
+use walker_gen::tape::{KernelIndex, Prepared, Scratch, TapeModule};
+use walker_gen::{EmitOptions, ModelScene, derive_model, lower_model};
+
+thread_local! {
+    /// The register file of this thread's kernel calls (it grows to the largest kernel called).
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::new());
+}
 
 /// What [`walker::setup`] calls for a model file that is not compiled in: derives it once and
 /// gives its kernels for every friction law and parameter set.
@@ -36,12 +44,13 @@ pub struct Derived {
     lowered: Mutex<BTreeMap<u8, Arc<Lowered>>>,
 }
 
-/// The kernels of one friction law, lowered: the module and where each kernel argument comes
-/// from.
+/// The kernels of one friction law, lowered and compiled to a tape, and where each kernel
+/// argument comes from.
 struct Lowered {
-    module: Module,
-    /// Per kernel (by [`KernelId`]): its index in the module, and the argument sources.
-    kernels: Vec<Option<(usize, Vec<Slot>)>>,
+    tape: TapeModule,
+    /// Per kernel (by [`KernelId`]): its index in the tape, its number of outputs, and the
+    /// argument sources.
+    kernels: Vec<Option<(KernelIndex, usize, Vec<Slot>)>>,
 }
 
 /// Where a kernel argument's value comes from in [`Args`].
@@ -77,17 +86,16 @@ impl Derived {
         let mut scene = ModelScene::new(self.model.clone());
         scene.friction = law;
         let module = lower_model(&self.derivation, &scene).map_err(|e| e.to_string())?;
+        let tape =
+            TapeModule::new(&module, &EmitOptions::default()).map_err(|e| e.to_string())?;
         let symbols = self.model.symbols();
         let kernels = KernelId::ALL
             .iter()
             .map(|id| {
-                let (index, k) = module
-                    .kernels
-                    .iter()
-                    .enumerate()
-                    .find(|(_, k)| k.name == id.name())?;
+                let index = tape.kernel_index(id.name())?;
+                let k = tape.kernel(index)?;
                 let slots = k
-                    .args
+                    .args()
                     .iter()
                     .map(|a| {
                         if a == "sigma" {
@@ -103,10 +111,10 @@ impl Derived {
                         })
                     })
                     .collect::<Option<Vec<_>>>()?;
-                Some((index, slots))
+                Some((index, k.output_len(), slots))
             })
             .collect();
-        let l = Arc::new(Lowered { module, kernels });
+        let l = Arc::new(Lowered { tape, kernels });
         cache.insert(key, Arc::clone(&l));
         Ok(l)
     }
@@ -118,60 +126,71 @@ impl KernelSource for Derived {
             model: self.model.name.clone(),
             message,
         })?;
-        let values: Vec<f64> = lowered
-            .module
-            .params
-            .iter()
-            .map(|p| params.get(&p.name).unwrap_or(f64::NAN))
-            .collect();
-        Ok(Arc::new(Evaluated { lowered, values }))
+        let prepared = lowered
+            .tape
+            .prepare_with(|name| params.get(name).unwrap_or(f64::NAN));
+        Ok(Arc::new(Taped { lowered, prepared }))
     }
 }
 
-/// Kernels evaluated from the lowered graph at one parameter set.
-struct Evaluated {
+/// The most arguments and outputs of a kernel evaluated without allocating (larger ones, of
+/// models beyond the simulator's size, are NaN).
+const MAX_ARGS: usize = 64;
+const MAX_OUTPUTS: usize = 256;
+
+/// A model's kernels on the tape, prepared for one parameter set.
+struct Taped {
     lowered: Arc<Lowered>,
-    values: Vec<f64>,
+    prepared: Prepared,
 }
 
-impl Kernels for Evaluated {
+impl Kernels for Taped {
     fn has(&self, k: KernelId) -> bool {
         self.entry(k).is_some()
     }
 
     fn eval(&self, k: KernelId, args: &Args<'_>, out: &mut [f64]) {
-        let Some((index, slots)) = self.entry(k) else {
+        let Some((index, outputs, slots)) = self.entry(k) else {
             out.fill(f64::NAN);
             return;
         };
-        let kernel = &self.lowered.module.kernels[*index];
-        let value = |slot: &Slot| -> f64 {
-            let get = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(f64::NAN);
-            match *slot {
+        if slots.len() > MAX_ARGS || *outputs > MAX_OUTPUTS {
+            out.fill(f64::NAN);
+            return;
+        }
+        let get = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(f64::NAN);
+        let mut values = [0.0; MAX_ARGS];
+        for (v, slot) in values.iter_mut().zip(slots) {
+            *v = match *slot {
                 Slot::Q(i) => get(args.q, i),
                 Slot::Qd(i) => get(args.qd, i),
                 Slot::U(i) => get(args.u, i),
                 Slot::V(i) => get(args.v, i),
                 Slot::Sigma => args.sigma,
-            }
-        };
-        let names = &kernel.args;
-        let input = |name: &str| {
-            names
-                .iter()
-                .position(|a| a == name)
-                .map_or(f64::NAN, |i| value(&slots[i]))
-        };
-        let roots: Vec<_> = kernel.outputs.iter().map(|(_, id)| *id).collect();
-        let values = self.lowered.module.graph.eval(&roots, &self.values, &input);
-        for (o, v) in out.iter_mut().zip(values) {
-            *o = v;
+            };
         }
+        let mut result = [0.0; MAX_OUTPUTS];
+        let done = SCRATCH.with(|scratch| {
+            self.lowered.tape.eval(
+                *index,
+                &self.prepared,
+                &values[..slots.len()],
+                &mut result[..*outputs],
+                &mut scratch.borrow_mut(),
+            )
+        });
+        if done.is_err() {
+            out.fill(f64::NAN);
+            return;
+        }
+        let n = out.len().min(*outputs);
+        out[..n].copy_from_slice(&result[..n]);
+        out[n..].fill(f64::NAN);
     }
 }
 
-impl Evaluated {
-    fn entry(&self, k: KernelId) -> Option<&(usize, Vec<Slot>)> {
+impl Taped {
+    fn entry(&self, k: KernelId) -> Option<&(KernelIndex, usize, Vec<Slot>)> {
         let i = KernelId::ALL.iter().position(|id| *id == k)?;
         self.lowered.kernels.get(i)?.as_ref()
     }

@@ -1,0 +1,66 @@
+//! A model file that is not compiled in walks exactly as the compiled one: every shipped model
+//! that `walker` compiles, copied with a changed title (so that it is not the shipped file byte
+//! for byte and `walker-load` derives it at run time), walks the same steps bit for bit under
+//! each friction law it is compiled for. The tape computes what the generated Rust computes
+//! (walker-gen's `tape_vs_compiled`), so nothing may differ, not even in the last bit.
+
+use std::path::PathBuf;
+
+use walker::model::Friction;
+use walker::setup::{Overrides, Setup};
+use walker::sim::{SimConfig, WalkLimits, walk};
+
+fn shipped(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../models")
+        .join(format!("{name}.toml"))
+}
+
+/// A copy of `models/<name>.toml` in a temporary file, its title changed.
+fn copy(name: &str) -> PathBuf {
+    let text = std::fs::read_to_string(shipped(name)).expect("a shipped model");
+    let changed = text.replacen("title = \"", "title = \"(a copy) ", 1);
+    assert_ne!(text, changed, "{name} has a title to change");
+    let path = std::env::temp_dir().join(format!("walker-load-{}-{name}.toml", std::process::id()));
+    std::fs::write(&path, changed).expect("a temporary file");
+    path
+}
+
+fn walk_of(path: &std::path::Path, friction: Friction, runtime: bool) -> walker::sim::Walk {
+    let ov = Overrides {
+        friction: Some(friction),
+        ..Overrides::default()
+    };
+    let source = walker_load::runtime_source();
+    let setup = Setup::from_model_file(path, &ov, runtime.then_some(&source as &_))
+        .expect("the model sets up");
+    let model = setup.model().expect("kernels");
+    let limits = WalkLimits {
+        max_steps: 3,
+        ..WalkLimits::default()
+    };
+    walk(&model, &SimConfig::default(), &model.start_state(), &limits)
+}
+
+#[test]
+fn a_derived_copy_of_every_compiled_model_walks_bit_for_bit_as_the_compiled_one() {
+    for name in ["paper-active", "paper-passive", "rimless-wheel", "compass-gait", "three-link"] {
+        let copied = copy(name);
+        for friction in [Friction::Tanh, Friction::Coulomb] {
+            let compiled = walk_of(&shipped(name), friction, false);
+            let derived = walk_of(&copied, friction, true);
+            let json = |w: &walker::sim::Walk| serde_json::to_string(w).expect("json");
+            assert_eq!(json(&compiled), json(&derived), "{name} {friction:?}");
+        }
+        let _ = std::fs::remove_file(copied);
+    }
+}
+
+#[test]
+fn a_model_that_is_not_compiled_needs_the_run_time_source() {
+    let copied = copy("rimless-wheel");
+    let ov = Overrides::default();
+    let err = Setup::from_model_file(&copied, &ov, None).expect_err("not compiled");
+    assert!(err.to_string().contains("not one of the shipped models"), "{err}");
+    let _ = std::fs::remove_file(copied);
+}
