@@ -673,3 +673,107 @@ fn columns_count_characters_not_bytes() {
     let r = load_with(MINI, "doc = \"leg\"", "doc = \"lég\" x");
     assert_error(r, ModelErrorKind::Toml, "15:13", "");
 }
+
+#[test]
+fn a_section_names_every_component_but_the_foot_once_free_or_given() {
+    // Line 60: `[section]` (before `[stance]`), line 61 `free`, line 62 `given`.
+    let with = |section: &str| load_with(MINI, "[stance]", &format!("{section}\n\n[stance]"));
+    let model = with("[section]\nfree = [\"thd\"]\ngiven = { th = \"-alpha/2\", xd = \"0\" }")
+        .expect("a complete section loads");
+    let section = model.section.expect("the section");
+    // State [x, z, th, xd, zd, thd]: thd is component 5, th 2 and xd 3.
+    assert_eq!(section.free, [5]);
+    assert_eq!(
+        section.given.iter().map(|(i, _)| *i).collect::<Vec<_>>(),
+        [2, 3]
+    );
+    assert_error(
+        with("[section]\nfree = [\"thd\"]\ngiven = { xd = \"0\" }"),
+        ModelErrorKind::Inconsistent,
+        "60:1",
+        "`th` is neither free nor given",
+    );
+    assert_error(
+        with("[section]\nfree = [\"z\", \"thd\"]\ngiven = { th = \"0\", xd = \"0\" }"),
+        ModelErrorKind::Inconsistent,
+        "61:9",
+        "x = z = 0",
+    );
+    assert_error(
+        with("[section]\nfree = [\"thd\", \"th\"]\ngiven = { th = \"0\", xd = \"0\" }"),
+        ModelErrorKind::Duplicate,
+        "62:11",
+        "both free and given",
+    );
+    assert_error(
+        with("[section]\nfree = [\"thd\"]\ngiven = { th = \"xd\", xd = \"0\" }"),
+        ModelErrorKind::SymbolNotAllowed,
+        "62:17",
+        "expected a parameter or a free component (thd)",
+    );
+    assert_error(
+        with("[section]\nfree = [\"thdd\"]"),
+        ModelErrorKind::UnknownReference,
+        "61:9",
+        "expected a coordinate or a velocity",
+    );
+}
+
+#[test]
+fn a_start_parameter_appears_in_the_start_only() {
+    let omega = "[[parameter]]\nname = \"omega0\"\nunit = \"rad/s\"\ndoc = \"start\"\nrange = \"(-inf, inf)\"\ndefault = 0.5\nstage = \"start\"\n\n[floor]";
+    let base = MINI.replacen("[floor]", omega, 1);
+    let model = load_with(&base, "[stance]", "[start]\nthd = \"omega0\"\n\n[stance]")
+        .expect("a start parameter in [start] loads");
+    assert_eq!(model.start.len(), 1);
+    // Line 74 after the 8 added lines: the strike guard.
+    assert_error(
+        load_with(
+            &base,
+            "guard = \"alpha/2 - th\"",
+            "guard = \"alpha/2 - th + omega0\"",
+        ),
+        ModelErrorKind::SymbolNotAllowed,
+        "74:25",
+        "`omega0` is a parameter of the start",
+    );
+    assert_error(
+        load_with(&base, "mu0 = \"mu0\"", "mu0 = \"omega0\""),
+        ModelErrorKind::SymbolNotAllowed,
+        "70:7",
+        "expected a parameter of the dynamics",
+    );
+    assert_error(
+        load_with(MINI, "default = 0.4", "default = 0.4\nstage = \"later\""),
+        ModelErrorKind::Toml,
+        "47:9",
+        "expected \"run\", \"generation\" or \"start\"",
+    );
+}
+
+#[test]
+fn the_power_is_counted_until_a_time_in_the_parameters_and_only_with_inputs() {
+    let controlled = format!("{MINI}{CONTROLLED}");
+    let with = |extra: &str| Model::from_toml(&format!("{controlled}{extra}"), "mini.toml");
+    let model = with("\n[descriptors]\npower_until = \"2*alpha\"\n").expect("loads");
+    assert_eq!(
+        model.power_until.map(|e| e.text),
+        Some("2*alpha".to_owned())
+    );
+    assert_error(
+        with("\n[descriptors]\npower_until = \"th\"\n"),
+        ModelErrorKind::SymbolNotAllowed,
+        "86:16",
+        "descriptors power_until",
+    );
+    assert_error(
+        load_with(
+            MINI,
+            "[relabel]",
+            "[descriptors]\npower_until = \"1\"\n\n[relabel]",
+        ),
+        ModelErrorKind::Inconsistent,
+        "69:15",
+        "needs inputs",
+    );
+}

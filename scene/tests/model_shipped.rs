@@ -48,8 +48,8 @@ fn the_active_walkers_symbols_come_in_canonical_order() -> Result<(), ModelError
         names,
         [
             "x", "z", "th1", "th2", "xd", "zd", "th1d", "th2d", "xdd", "zdd", "th1dd", "th2dd",
-            "m1", "m2", "l", "I1", "I2", "g", "alpha", "mu0", "c", "T_set", "K_P", "K_D", "u",
-            "mu", "v", "t"
+            "m1", "m2", "l", "I1", "I2", "g", "alpha", "mu0", "c", "T_set", "K_P", "K_D",
+            "omega0", "u", "mu", "v", "t"
         ]
     );
     let angles: Vec<&str> = m
@@ -88,8 +88,13 @@ fn alpha_has_base_angle_divisor_two_because_it_appears_as_alpha_over_two() -> Re
 fn the_active_walker_has_its_sections() -> Result<(), ModelError> {
     let m = load(ACTIVE, "a")?;
     assert_eq!(m.coordinates[2].unit, CoordinateUnit::Angle);
-    assert_eq!(m.parameters.len(), 12);
-    assert!(m.parameters.iter().all(|p| p.stage == Stage::Run));
+    // Table 1 and g, the friction and the control, and the start's omega0 (Eq. 33).
+    assert_eq!(m.parameters.len(), 13);
+    assert!(m.parameters[..12].iter().all(|p| p.stage == Stage::Run));
+    assert_eq!(m.parameters[12].stage, Stage::Start);
+    assert_eq!(m.start.len(), 3);
+    let section = m.section.as_ref().expect("a section");
+    assert_eq!(section.free, [4, 6], "xd and th1d");
     assert_eq!(m.floor.gravity.name, "g");
     assert!(m.floor.slope.is_none());
     assert_eq!(m.bodies.len(), 2);

@@ -162,7 +162,10 @@ impl Loader<'_> {
             });
         }
 
-        let report = raw.descriptors.as_ref().and_then(|d| d.get_ref().report.as_ref());
+        let report = raw
+            .descriptors
+            .as_ref()
+            .and_then(|d| d.get_ref().report.as_ref());
         let descriptors = match report {
             None => Descriptor::ALL
                 .into_iter()
@@ -200,7 +203,11 @@ impl Loader<'_> {
             }
         };
 
-        let power_until = match raw.descriptors.as_ref().and_then(|d| d.get_ref().power_until.as_ref()) {
+        let power_until = match raw
+            .descriptors
+            .as_ref()
+            .and_then(|d| d.get_ref().power_until.as_ref())
+        {
             None => None,
             Some(s) if inputs.is_empty() => {
                 return Err(self.error(

@@ -273,7 +273,8 @@ impl Expr {
     pub fn derivative(&self, name: &str) -> Expr {
         let span = self.span;
         let num = |k: u64| Expr::new(ExprKind::Number(Number::integer(k)), span);
-        let bin = |op, a: Expr, b: Expr| Expr::new(ExprKind::Binary(op, Box::new(a), Box::new(b)), span);
+        let bin =
+            |op, a: Expr, b: Expr| Expr::new(ExprKind::Binary(op, Box::new(a), Box::new(b)), span);
         match &self.kind {
             ExprKind::Number(_) => num(0),
             ExprKind::Symbol(s) => num(u64::from(s == name)),
@@ -299,7 +300,8 @@ impl Expr {
                 }
             }
             ExprKind::Pow(a, k) => {
-                let coefficient = Expr::new(ExprKind::Number(Number::integer(k.unsigned_abs())), span);
+                let coefficient =
+                    Expr::new(ExprKind::Number(Number::integer(k.unsigned_abs())), span);
                 let coefficient = if *k < 0 {
                     Expr::new(ExprKind::Neg(Box::new(coefficient)), span)
                 } else {
@@ -307,7 +309,11 @@ impl Expr {
                 };
                 bin(
                     BinOp::Mul,
-                    bin(BinOp::Mul, coefficient, Expr::new(ExprKind::Pow(a.clone(), k - 1), span)),
+                    bin(
+                        BinOp::Mul,
+                        coefficient,
+                        Expr::new(ExprKind::Pow(a.clone(), k - 1), span),
+                    ),
                     a.derivative(name),
                 )
             }

@@ -467,9 +467,7 @@ impl Loader<'_> {
                     return Err(self.error(
                         span,
                         ModelErrorKind::Toml,
-                        format!(
-                            "stage `{other}`: expected \"run\", \"generation\" or \"start\""
-                        ),
+                        format!("stage `{other}`: expected \"run\", \"generation\" or \"start\""),
                     ));
                 }
             };

@@ -9,13 +9,13 @@ use crate::model::control::Actuation;
 use crate::model::divisors::base_divisors;
 use crate::model::error::{ModelError, ModelErrorKind};
 use crate::model::load::{Loader, Use, is_identifier, is_kebab_name};
+use crate::model::raw::RawSection;
 use crate::model::raw::{RawModel, Str};
 use crate::model::symbols::SymbolKind;
 use crate::model::types::{
     Body, Coordinate, Fall, FallCondition, Floor, Impact, Model, ModelExpr, Name, Parameter, Point,
     Relabel, Section, Stage, Stance, StartValue, Strike,
 };
-use crate::model::raw::RawSection;
 use crate::structure::{Friction, ImpactLaw};
 
 impl Loader<'_> {
@@ -164,21 +164,36 @@ impl Loader<'_> {
                 return Err(self.error(
                     key.span(),
                     ModelErrorKind::Duplicate,
-                    format!("section: `{}` is both free and given, or given twice", key.get_ref()),
+                    format!(
+                        "section: `{}` is both free and given, or given twice",
+                        key.get_ref()
+                    ),
                 ));
             }
             let what = format!("section given `{}`", key.get_ref());
             let e = self.expr(value, &what, Use::Guard)?;
             for (name, span) in e.expr.symbols() {
-                let ok = self.symbols.get(name).is_some_and(|s| s.kind == SymbolKind::Parameter)
-                    || self.state_component(name, n).is_some_and(|j| free.contains(&j));
+                let ok = self
+                    .symbols
+                    .get(name)
+                    .is_some_and(|s| s.kind == SymbolKind::Parameter)
+                    || self
+                        .state_component(name, n)
+                        .is_some_and(|j| free.contains(&j));
                 if !ok {
                     return Err(ModelError::invalid(
                         self.path,
                         e.location_of(span),
                         ModelErrorKind::SymbolNotAllowed,
-                        format!("{what}: `{name}`: expected a parameter or a free component ({})",
-                            raw.free.get_ref().iter().map(|s| s.get_ref().as_str()).collect::<Vec<_>>().join(", ")),
+                        format!(
+                            "{what}: `{name}`: expected a parameter or a free component ({})",
+                            raw.free
+                                .get_ref()
+                                .iter()
+                                .map(|s| s.get_ref().as_str())
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
                     ));
                 }
             }
