@@ -1,9 +1,9 @@
 //! The paper's two walkers written as model files (`models/paper-active.toml`,
 //! `models/paper-passive.toml`) derive exactly the mechanics of the hand-written derivation:
 //! every entry of `M`, `h`, `S`, the stance quantities, the control terms, the stuck foot, the
-//! impact maps, the stuck closed loop and the Coulomb impact's ingredients is the same rational
-//! function (compared exactly, after renaming the model's symbols into the paper's table by
-//! name).
+//! impact maps, the stuck closed loop, the Coulomb impact's ingredients and the Jacobians is the
+//! same rational function (compared exactly, after renaming the model's symbols into the paper's
+//! table by name).
 
 use walker_scene::model::Model;
 use walker_symbolic::Derivation;
@@ -173,6 +173,8 @@ fn the_active_model_kernels_take_the_hand_derived_arguments() {
         ("impact_double", "impact3_level"),
         ("closed_loop_stick", "closed_loop_stick_level"),
         ("impact_coulomb", "impact_coulomb_level"),
+        ("closed_loop_jacobian", "closed_loop_level_jacobian"),
+        ("impact_jacobian", "impact2_level_jacobian"),
     ] {
         let names = |args: &[Sym], table: &Symbols| -> Vec<String> {
             args.iter().map(|s| table.name(*s).to_owned()).collect()
@@ -213,6 +215,37 @@ fn same_kernel(
     );
 }
 
+/// A model Jacobian (`n` rows over `[q, qdot, mu, v]` or `[q, qdot]`) against the hand-derived
+/// one over the paper's variables `theirs_vars`: the columns of those variables equal exactly,
+/// every other column identically zero.
+fn same_jacobian(
+    d: &walker_symbolic::model::ModelDerivation,
+    paper: &Derivation,
+    (mine, mine_vars): (&str, &[&str]),
+    (theirs, theirs_vars): (&str, &[&str]),
+) {
+    let r = renamer(&d.symbols, &paper.symbols);
+    let k = d.kernel(mine).expect("model kernel");
+    let h = paper.kernel(theirs).expect("paper kernel");
+    let (n, cols) = (4, mine_vars.len());
+    assert_eq!(k.shape, walker_symbolic::Shape::Matrix(n, cols), "{mine}");
+    assert_eq!(k.outputs.len(), n * cols, "{mine}");
+    for (c, var) in mine_vars.iter().enumerate() {
+        for i in 0..n {
+            let got = k.outputs[i * cols + c].1.map_slots(&r).expect("renamed");
+            match theirs_vars.iter().position(|v| v == var) {
+                Some(hc) => {
+                    let want = &h.outputs[i * theirs_vars.len() + hc].1;
+                    assert!(got == *want, "{mine}[{i}][d/d{var}] against {theirs}");
+                }
+                None => assert!(got.is_zero(), "{mine}[{i}][d/d{var}] is zero"),
+            }
+        }
+    }
+}
+
+const STATE: [&str; 8] = ["x", "z", "th1", "th2", "xd", "zd", "th1d", "th2d"];
+
 #[test]
 fn the_active_model_file_derives_the_stuck_closed_loop_exactly() {
     let d = walker_symbolic::model::ModelDerivation::new(&load("paper-active")).expect("derives");
@@ -247,6 +280,44 @@ fn the_model_files_derive_the_coulomb_impact_ingredients_exactly() {
             "{model}: the hand-derived kernel's output names"
         );
     }
+}
+
+#[test]
+fn the_model_files_derive_the_papers_jacobians_exactly() {
+    let paper = Derivation::new().expect("paper derivation");
+    let active = walker_symbolic::model::ModelDerivation::new(&load("paper-active")).expect("a");
+    let passive = walker_symbolic::model::ModelDerivation::new(&load("paper-passive")).expect("p");
+    let with = |extra: &[&'static str]| -> Vec<&'static str> {
+        STATE.iter().chain(extra).copied().collect()
+    };
+    let impact_vars = ["th1", "xd", "zd", "th1d", "th2d"];
+    same_jacobian(
+        &active,
+        &paper,
+        ("closed_loop_jacobian", &with(&["mu", "v"])),
+        ("closed_loop_level_jacobian", &["th1", "th1d", "mu", "v"]),
+    );
+    same_jacobian(
+        &active,
+        &paper,
+        ("impact_jacobian", &STATE),
+        ("impact2_level_jacobian", &impact_vars),
+    );
+    same_jacobian(
+        &passive,
+        &paper,
+        ("accel_jacobian", &with(&["mu"])),
+        ("accel_slope_jacobian", &["th1", "th1d", "mu"]),
+    );
+    same_jacobian(
+        &passive,
+        &paper,
+        ("impact_jacobian", &STATE),
+        ("impact_slope_jacobian", &impact_vars),
+    );
+    // A model with inputs has no open-loop Jacobian, a passive one no closed loop.
+    assert!(active.kernel("accel_jacobian").is_err());
+    assert!(passive.kernel("closed_loop_jacobian").is_err());
 }
 
 /// The descriptors' kernels of the active walker: the output and its rate `th1d - th2d`, the

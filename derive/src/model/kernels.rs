@@ -1,9 +1,9 @@
 //! A model's named kernels: what the code generator turns into Rust for any model file. The
 //! names are the model-independent ones of `docs/model-format.md` (`mass_matrix`, `bias`,
 //! `lambda`, `accel`, `control`, `closed_loop`, `stick`, `closed_loop_stick`, `impact`,
-//! `impact_double`, `impact_coulomb`, `input_map`, `impact_rows`, `impact_double_rows`,
-//! `outputs`, `events`, `relabel`, `points`, `energy`, `output_rates`, `input_rates`,
-//! `total_mass`); a kernel's
+//! `impact_double`, `impact_coulomb`, `accel_jacobian`, `closed_loop_jacobian`,
+//! `impact_jacobian`, `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `events`,
+//! `relabel`, `points`, `energy`, `output_rates`, `input_rates`, `total_mass`); a kernel's
 //! arguments are the non-parameter symbols its outputs contain, in the
 //! table's order (coordinates, velocities, inputs, `mu`, auxiliary inputs, `t`), and the impact
 //! kernels take every velocity.
@@ -15,6 +15,7 @@ use super::control_check::check_control;
 use super::coulomb::impact_coulomb;
 use super::descriptors::descriptor_kernels;
 use super::events::event_kernels;
+use super::jacobians::{Differentiated, jacobian_kernels};
 use super::maps::map_kernels;
 use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
 use super::phases::{output_control, sliding, strike_impacts, strike_rows, stuck};
@@ -58,7 +59,8 @@ impl ModelDerivation {
     /// Derives every kernel of `model`: the stance and impact kernels as closed forms where the
     /// closed-form `M^-1` is small (at most [`MAX_INVERSE_TERMS`]; the stuck stance's where the
     /// angles' block is at most [`MAX_CLOSED_COORDINATES`] square), and as structured solves
-    /// always; the code generator evaluates the cheaper.
+    /// always; the code generator evaluates the cheaper. The Jacobians exist in closed form
+    /// only, where the closed forms they differentiate do.
     ///
     /// # Errors
     /// As [`Mechanics::new`], the phases' derivations, or a kernel that depends on a symbol it
@@ -83,6 +85,42 @@ impl ModelDerivation {
             Some(closed_loop_stick(&m, model, stuck_closed, &mut table)?)
         };
         let coulomb = impact_coulomb(&m, model, closed, &mut table)?;
+        // The closed forms: the sliding stance, its control and closed loop, the impacts, and
+        // the Jacobians of the closed loop's (or, without inputs, the stance's) accelerations
+        // and of the impact.
+        let slide = if closed { Some(sliding(&m)?) } else { None };
+        let imp = if closed {
+            Some(strike_impacts(&m, model)?)
+        } else {
+            None
+        };
+        let control = match &slide {
+            Some(s) if !model.outputs.is_empty() => {
+                let c = output_control(&m, model, &s.projection)?;
+                // Closed loop: u = A^-1 (v + B) once, then Eq. 27 with that u.
+                let subst = |r: &RatFunc| -> Result<RatFunc> {
+                    let mut r = r.clone();
+                    for (u, value) in m.syms.inputs.iter().zip(c.u.entries()) {
+                        r = r.substitute(Atom::Sym(*u), value)?;
+                    }
+                    Ok(r)
+                };
+                let closed_accel = s.accel.try_map(subst)?;
+                Some((c, closed_accel))
+            }
+            _ => None,
+        };
+        let jacobians = match (&slide, &imp) {
+            (Some(s), Some(imp)) => {
+                let of = Differentiated {
+                    accel: model.inputs.is_empty().then_some(&s.accel),
+                    closed_loop: control.as_ref().map(|(_, accel)| accel),
+                    impact: &imp.single.velocity,
+                };
+                jacobian_kernels(&m, &of, &mut table)?
+            }
+            _ => Vec::new(),
+        };
         let t = &table;
         let inputs = m.syms.inputs.len();
         let outputs = model.outputs.len();
@@ -107,7 +145,6 @@ impl ModelDerivation {
                 &[],
             ),
         ];
-        let slide = if closed { Some(sliding(&m)?) } else { None };
         let (lambda_doc, lambda_eq) = (
             "Vertical ground reaction lambda of the sliding stance foot",
             "Eqs. 22-23",
@@ -165,9 +202,8 @@ impl ModelDerivation {
                 "Accelerations qddot and inputs u under the output-following control, with yddot = v",
                 "Eqs. 27, 31",
             );
-            match &slide {
-                Some(s) => {
-                    let c = output_control(&m, model, &s.projection)?;
+            match (&slide, &control) {
+                (Some(s), Some((c, closed_accel))) => {
                     let mut parts = named("A", &c.a);
                     parts.extend(named("B", &c.b));
                     kernels.push(finish(
@@ -183,15 +219,7 @@ impl ModelDerivation {
                         control_solve,
                     ));
                     // Closed loop: u = A^-1 (v + B) once, then Eq. 27 with that u.
-                    let subst = |r: &RatFunc| -> Result<RatFunc> {
-                        let mut r = r.clone();
-                        for (u, value) in m.syms.inputs.iter().zip(c.u.entries()) {
-                            r = r.substitute(Atom::Sym(*u), value)?;
-                        }
-                        Ok(r)
-                    };
-                    let closed_accel = s.accel.try_map(subst)?;
-                    let mut loop_outputs = named("qdd", &closed_accel);
+                    let mut loop_outputs = named("qdd", closed_accel);
                     loop_outputs.extend(named("u", &c.u));
                     let mut staged_out: Vec<RatFunc> = s.accel.entries().to_vec();
                     staged_out.extend(m.syms.inputs.iter().map(|u| RatFunc::sym(*u)));
@@ -216,7 +244,7 @@ impl ModelDerivation {
                     });
                     kernels.push(finish(closed_loop, closed_loop_solve));
                 }
-                None => {
+                _ => {
                     let mut parts = names("A", outputs, inputs);
                     parts.extend(names("B", outputs, 1));
                     kernels.push(finish(
@@ -249,11 +277,6 @@ impl ModelDerivation {
         kernels.push(with_solve(stick, solves.stick, stick_closed, t));
         kernels.extend(loop_stick);
         let qd = m.syms.qd.clone();
-        let imp = if closed {
-            Some(strike_impacts(&m, model)?)
-        } else {
-            None
-        };
         let rows = strike_rows(&m, model)?;
         let (impact_doc, impact_eq) = (
             "Normal impulses and post-impact velocities: the striking point and the locks",
@@ -304,6 +327,7 @@ impl ModelDerivation {
             kernels.push(double);
         }
         kernels.push(coulomb);
+        kernels.extend(jacobians);
         kernels.extend(map_kernels(&m, model, &rows, t)?);
         kernels.extend(event_kernels(&m, model, t)?);
         let mut points = Vec::new();

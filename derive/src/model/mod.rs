@@ -14,14 +14,16 @@
 //! `control_check` (`A` regular at the start posture and somewhere at all), and the kernels of
 //! their own files: `stick_control` (the control with the foot stuck, `closed_loop_stick`, both
 //! forms), `coulomb` (the impact with Coulomb friction's ingredients, `impact_coulomb`, both
-//! forms) and `descriptors` (output and input rates, the total mass); `events` (the strike
-//! guard, the falls and the relabelling as kernels) uses `mechanics`.
+//! forms), `jacobians` (the closed forms' partial derivatives) and `descriptors` (output and
+//! input rates, the total mass); `events` (the strike guard, the falls and the relabelling as
+//! kernels) uses `mechanics`.
 
 mod assemble;
 mod control_check;
 mod coulomb;
 mod descriptors;
 mod events;
+mod jacobians;
 mod kernels;
 mod lower;
 mod maps;
