@@ -5,7 +5,9 @@
    model (model.py, its kernel tables of docs/kernels.md) on the samples of
    tests/data/models/<name>.json.  The hand-written kernels' symbolic outputs are evaluated at
    70 digits at those samples and compared with (a) the generic numeric route recomputed at 70
-   digits and (b) the 32-digit values written in the JSON.
+   digits (for the Jacobians: models.py's derivatives of its closed forms) and (b) the 32-digit
+   values written in the JSON.  Among them the impact with Coulomb friction's ingredients and
+   the Jacobians of the closed loop, the sliding stance and the impacts.
 2. The compass gait: the angle block of M (the stance foot pinned) equals the inertia matrix
    printed by Goswami, Thuilot and Espiau (1998), Section 2 (the swing-phase equation of motion
    `M(theta) theta_dd + N(theta, theta_d) theta_d + g(theta) = 0`, theta = [theta_ns, theta_s]):
@@ -35,6 +37,21 @@ def _vec(prefix, n):
     return [f"{prefix}_{i}" for i in range(n)]
 
 
+# The impact with Coulomb friction's ingredients, in the hand-written kernels' order.
+COULOMB = (_vec("coulomb_qdl", 4) + [f"coulomb_v_{c}" for c in "tnr"]
+           + [f"coulomb_W_{ab}" for ab in ("tt", "tn", "tr", "nn", "nr", "rr")]
+           + [f"coulomb_R_{i}_{j}" for i in range(4) for j in range(2)])
+
+
+def _jac(prefix, columns):
+    """A generic Jacobian's entries (columns over x, z, th1, th2, xd, zd, th1d, th2d, mu, v) in
+    the order of a hand-written one over the given columns."""
+    return [f"{prefix}_{i}_{j}" for i in range(4) for j in columns]
+
+
+TH1, XD, ZD, TH1D, TH2D, MU, V = 2, 4, 5, 6, 7, 8, 9
+
+
 PAPER = {
     "paper-active": {
         "mass_matrix": [f"M_{i}_{j}" for i in range(4) for j in range(4)],
@@ -50,6 +67,9 @@ PAPER = {
                                                               "stick_lambda_n_cl"],
         "impact3_level": _vec("impact_ds_lambda", 3) + _vec("impact_ds_qdp", 4),
         "impact2_level": _vec("impact_lambda", 2) + _vec("impact_qdp", 4),
+        "impact_coulomb_level": COULOMB,
+        "closed_loop_level_jacobian": _jac("cl_jac", (TH1, TH1D, MU, V)),
+        "impact2_level_jacobian": _jac("impact_jac", (TH1, XD, ZD, TH1D, TH2D)),
         "fore_foot": ["fore_foot_x", "fore_foot_z", "fore_foot_xd", "fore_foot_zd"],
         "energy": ["T", "V"],
     },
@@ -61,6 +81,9 @@ PAPER = {
         "stick_slope": _vec("stick_qdd", 4) + ["stick_lambda_t", "stick_lambda_n"],
         "impact_slope": _vec("impact_lambda", 1) + _vec("impact_qdp", 4),
         "impact2_slope": _vec("impact_ds_lambda", 2) + _vec("impact_ds_qdp", 4),
+        "impact_coulomb_slope": COULOMB,
+        "accel_slope_jacobian": _jac("accel_jac", (TH1, TH1D, MU)),
+        "impact_slope_jacobian": _jac("impact_jac", (TH1, XD, ZD, TH1D, TH2D)),
         "fore_foot": ["fore_foot_x", "fore_foot_z", "fore_foot_xd", "fore_foot_zd"],
         "energy": ["T", "V"],
     },
@@ -82,7 +105,7 @@ def check_paper(name, mdl):
     with open(os.path.join(ms.OUTDIR, f"{name}.json")) as fh:
         data = json.load(fh)
     m = ms.load(os.path.join(ms.MODELS, f"{name}.toml"))
-    num = ms.Numeric(m, ms.derive(m))
+    num = ms.Numeric(m, ms.derive(m, closed=True))     # closed: the Jacobians
     worst_fresh = worst_json = mp.mpf(0)
     count = 0
     fns = {}

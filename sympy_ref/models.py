@@ -33,6 +33,19 @@ Derivation (conventions of docs/kernels.md, generalised to n coordinates and p i
 * Relabelling: the new foot is the striking point (`q0, q1` = its position, `qd0, qd1` = its
   velocity at `qd+`); every other coordinate by the `[relabel]` map (unlisted: unchanged), its
   velocity by the map's Jacobian times `qd+`.  Given for both impact variants.
+* Impact with Coulomb friction at the striking point, its ingredients: rows
+  `J_c = [grad(t . strike); grad(n . strike); grad(n . foot)]` (unit tangent and normal, no
+  scaling), the locks `J_L` bilateral and frictionless, applied by the KKT system
+  `[[M, J_L^T], [J_L, 0]] [x; l] = [b; 0]` whose `x` is `M_L^-1 b` (`M^-1 b` without locks):
+  `qd_L` from `b = M qd-` (`qd-` itself without locks), `v = J_c qd_L`, `W = J_c M_L^-1 J_c^T`
+  (upper triangle over t, n, r), `R = M_L^-1 [J_t; J_n]^T`.
+* Input rates `w = S^T qd` (input k's power is `u_k w_k`); the total mass, the sum of the
+  bodies' masses.
+* Jacobians (only where the closed forms are derived and the model has at most `JAC_MAX_N`
+  coordinates): sympy's derivatives of the closed forms, `d qdd / d (q, qd, mu)` of the sliding
+  stance (no inputs), `d qdd_cl / d (q, qd, mu, v)` of the closed loop, `d qd+ / d (q, qd)` of the
+  impact; checked against complex-step derivatives (step `1e-40`, at 70 digits) of the numeric
+  route (`checks.jacobians_vs_complex_step`, which must be below 1e-40).
 
 Evaluation: the numeric route applies the formulas above with mpmath linear algebra to the
 symbolic `M, h, S, J, J_mu, J_s, J_I, H, Hdot qd` evaluated at the sample, at 50 and at 70
@@ -63,12 +76,17 @@ Output names (i, j over coordinates, k, l over inputs/outputs, r over impact row
 stick with `u`: `stick_qdd_i`, `stick_lambda_t`, `stick_lambda_n`; with inputs, its closed loop
 with `v`: `stick_A_k_l`, `stick_B_k`, `stick_u_cl_k`, `stick_qdd_cl_i`, `stick_lambda_t_cl`,
 `stick_lambda_n_cl`; impact: `impact_lambda_r`, `impact_qdp_i`, `impact_ds_lambda_r`,
-`impact_ds_qdp_i`, relabelled: `relabel_q_i`, `relabel_qd_i`, `relabel_ds_qd_i`; points:
+`impact_ds_qdp_i`, relabelled: `relabel_q_i`, `relabel_qd_i`, `relabel_ds_qd_i`; the Coulomb
+impact: `coulomb_qdl_i`, `coulomb_v_t`, `coulomb_v_n`, `coulomb_v_r`, `coulomb_W_tt`, `_tn`,
+`_tr`, `_nn`, `_nr`, `_rr`, `coulomb_R_i_j` (j = 0, 1); points:
 `<point>_x`, `<point>_z`, `<point>_xd`, `<point>_zd`; outputs: `y_k`, `yd_k` (rate), the desired
 trajectory at `t`: `ydes_k`, `yddes_k`, `ydddes_k`, and Eq. 32's `vpd_k`
 (`ydddes + K_D (yddes - yd) + K_P (ydes - y)`); `guard` (the strike guard) and
-`fall_<name>` (each fall's guard or point distance).  `impact` rows: strike, then locks;
-`impact_ds` rows: strike, rear foot, then locks.
+`fall_<name>` (each fall's guard or point distance); with inputs `w_k`; `total_mass`; the
+Jacobians `accel_jac_i_j`, `cl_jac_i_j`, `impact_jac_i_j` (column j over q, qd, then mu, then
+v).  `impact` rows: strike, then locks; `impact_ds` rows: strike, rear foot, then locks.  New
+outputs are appended after the old ones (and sampled from the same random stream), so adding
+them leaves every existing value unchanged.
 
 Usage: python models.py [MODEL.toml ...]   (default: every models/*.toml; writes the JSON)
 """
@@ -251,7 +269,11 @@ class Derived:
     H: sp.Matrix
     Hdqd: sp.Matrix        # Hdot qd
     y: sp.Matrix
+    Jc: sp.Matrix = None   # Coulomb impact: strike point along the floor, its gap, rear foot's gap
+    JL: sp.Matrix = None   # the locks' gradients (0 x n without locks)
+    mass: sp.Expr = None   # the bodies' total mass
     closed: dict = field(default_factory=dict)     # name -> symbolic closed forms (optional)
+    jacobians: dict = field(default_factory=dict)  # name -> derivatives of closed forms (optional)
     timings: dict = field(default_factory=dict)
 
 
@@ -307,14 +329,47 @@ def derive(m: Model, closed=False) -> Derived:
     H = y.jacobian(sp.Matrix(m.q)) if m.outputs else sp.zeros(0, n)
     qdv = sp.Matrix(m.qd)
     Hdqd = (H * qdv).jacobian(sp.Matrix(m.q)) * qdv if m.outputs else sp.zeros(0, 1)
+    sx, sz = m.points[m.strike_point]
+    Jc = sp.Matrix.vstack(grad(sx * sp.cos(phi) - sz * sp.sin(phi), m.q),
+                          grad(signed_distance((sx, sz), phi), m.q),
+                          grad(signed_distance(foot, phi), m.q))
+    JL = sp.Matrix.vstack(*locks) if locks else sp.zeros(0, n)
+    mass = sp.Add(*[b[0] for b in m.bodies])
     tm["contacts_outputs"] = time.perf_counter() - t1
     d = Derived(M=M, h=h, T=T, V=V, S=S, J=J, Jmu=Jmu, Js=Js, JI=JI, JI_ds=JI_ds, H=H,
-                Hdqd=Hdqd, y=y, timings=tm)
+                Hdqd=Hdqd, y=y, Jc=Jc, JL=JL, mass=mass, timings=tm)
     if closed:
         t2 = time.perf_counter()
         d.closed = closed_forms(m, d)
         tm["closed_forms"] = time.perf_counter() - t2
+        if n <= JAC_MAX_N:
+            t3 = time.perf_counter()
+            d.jacobians = jacobians(m, d)
+            tm["jacobians"] = time.perf_counter() - t3
     return d
+
+
+JAC_MAX_N = 4   # the Jacobians of the closed forms up to this many coordinates
+
+
+def jacobian_vars(m: Model):
+    """The variables of each Jacobian: `accel_jac` (no inputs) over (q, qd, mu), `cl_jac` (with
+    outputs) over (q, qd, mu, v), `impact_jac` over (q, qd)."""
+    x = m.q + m.qd
+    out = {"impact_jac": x}
+    if m.inputs:
+        out["cl_jac"] = x + [m.mu] + [m.sym[o[2]] for o in m.outputs]
+    else:
+        out["accel_jac"] = x + [m.mu]
+    return out
+
+
+def jacobians(m: Model, d: Derived):
+    """The Jacobians by sympy's differentiation of the closed forms (sin/cos form, chain rule
+    through sin and cos of the angles): `accel_jac` of the sliding `qdd` (no inputs), `cl_jac` of
+    the closed loop's `qdd`, `impact_jac` of `qd+`."""
+    of = {"accel_jac": "qdd", "cl_jac": "qdd_cl", "impact_jac": "impact_qdp"}
+    return {k: d.closed[of[k]].jacobian(v) for k, v in jacobian_vars(m).items()}
 
 
 def trig_standins(m: Model):
@@ -428,8 +483,13 @@ class Numeric:
         self.args = (m.q + m.qd + [s for s, *_ in m.params] + [m.mu, m.t])
         L = lambda e: sp.lambdify(self.args, e, modules="mpmath")
         self.f = {k: L(getattr(d, k)) for k in ("M", "h", "S", "J", "Jmu", "Js", "JI", "JI_ds",
-                                                "H", "Hdqd", "y")}
-        self.f["TV"] = L(sp.Matrix([d.T, d.V]))
+                                                "H", "Hdqd", "y", "Jc")}
+        if m.locks:
+            self.f["JL"] = L(d.JL)
+        self.f["TV"] = L(sp.Matrix([d.T, d.V, d.mass]))
+        aux = [m.sym.setdefault(o[2], sp.Symbol(o[2], real=True)) for o in m.outputs]
+        self.jac = {k: sp.lambdify(self.args + aux, e, modules="mpmath", cse=True)
+                    for k, e in d.jacobians.items()}
         qv = sp.Matrix(m.qd)
         pts = {}
         for nm, (px, pz) in m.points.items():
@@ -462,7 +522,7 @@ class Numeric:
         vec = lambda nm, A: out.update({f"{nm}_{i}": A[i] for i in range(len(A))})
         put("M", M)
         vec("h", h)
-        T, V = E("TV")
+        T, V, total_mass = E("TV")
         out["T"], out["V"] = T, V
         vec("J", J)
         vec("Jmu", Jmu)
@@ -542,7 +602,102 @@ class Numeric:
         out["guard"] = self.guard(*a)
         for nm, f in self.falls:
             out[f"fall_{nm}"] = f(*a)
+        # the impact with Coulomb friction's ingredients, the input rates, the total mass
+        coulomb(out, M, E("Jc"), E("JL") if m.locks else None, qd)
+        if p:
+            vec("w", S.T * qd)
+        out["total_mass"] = total_mass
+        # the Jacobians, from sympy's derivatives of the closed forms
+        v = [mp.mpf(x) for x in s["v"]]
+        for k, f in self.jac.items():
+            put(k, mp.matrix(f(*a, *v)))
         return out
+
+    def maps(self, a, v):
+        """The maps the Jacobians differentiate, by the numeric route at the argument list `a`
+        (complex entries allowed, for complex-step derivatives): the sliding `qdd` (no inputs) or
+        the closed loop's `qdd` at `v`, and the impact's `qd+`."""
+        m = self.m
+        n = len(m.q)
+        E = lambda k: mp.matrix(self.f[k](*a))
+        M, h, J, Jmu = E("M"), E("h"), E("J"), E("Jmu")
+        Minv = mp.inverse(M)
+        Jh = J + Jmu
+        den = (J * Minv * Jh.T)[0, 0]
+
+        def slide(rhs):
+            lam = -(J * Minv * rhs)[0, 0] / den
+            return Minv * (rhs + Jh.T * lam)
+        out = {}
+        if m.inputs:
+            S, H, Hdqd = E("S"), E("H"), E("Hdqd")
+            Y = mp.eye(n) - Jh.T * (1 / den) * J * Minv
+            A = H * Minv * Y * S
+            B = H * Minv * Y * h - Hdqd
+            out["cl_jac"] = slide(S * mp.lu_solve(A, mp.matrix(v) + B) - h)
+        else:
+            out["accel_jac"] = slide(-h)
+        JI = E("JI")
+        qd = mp.matrix(a[n:2 * n])
+        out["impact_jac"] = qd + Minv * JI.T * (-mp.lu_solve(JI * Minv * JI.T, JI * qd))
+        return out
+
+    def complex_step(self, s):
+        """The Jacobians by complex-step differentiation of `maps` (no subtraction, so no
+        cancellation; truncation error about `step^2` relative), name -> mpf."""
+        m = self.m
+        n = len(m.q)
+        a = ([mp.mpf(x) for x in s["q"]] + [mp.mpf(x) for x in s["qd"]]
+             + [mp.mpf(s["params"][p.name]) for p, *_ in m.params] + [mp.mpf(s["mu"]),
+                                                                       mp.mpf(s["t"])])
+        v = [mp.mpf(x) for x in s["v"]]
+        step = mp.mpf(10) ** -40
+        # each variable: (list, index) in (a, v)
+        where = {x: ("a", i) for i, x in enumerate(m.q + m.qd)}
+        where[m.mu] = ("a", 2 * n + len(m.params))
+        where.update({m.sym[o[2]]: ("v", k) for k, o in enumerate(m.outputs)})
+        out = {}
+        for k, xs in jacobian_vars(m).items():
+            if k not in self.jac:
+                continue
+            for j, x in enumerate(xs):
+                which, i = where[x]
+                aa, vv = list(a), list(v)
+                (aa if which == "a" else vv)[i] += mp.mpc(0, step)
+                col = self.maps(aa, vv)[k]
+                for r in range(n):
+                    out[f"{k}_{r}_{j}"] = mp.im(col[r]) / step
+        return out
+
+
+def coulomb(out, M, Jc, JL, qd):
+    """The ingredients of the impact with Coulomb friction (module docstring): the locks by the
+    KKT system `[[M, JL^T], [JL, 0]] [x; l] = [b; 0]`, whose `x` is `M_L^-1 b`."""
+    n = M.rows
+    k = JL.rows if JL is not None else 0
+    K = mp.zeros(n + k, n + k)
+    for i in range(n):
+        for j in range(n):
+            K[i, j] = M[i, j]
+        for r in range(k):
+            K[i, n + r] = JL[r, i]
+            K[n + r, i] = JL[r, i]
+
+    def restricted(b):
+        x = mp.lu_solve(K, mp.matrix(list(b) + [0] * k))
+        return mp.matrix([x[i] for i in range(n)])
+    qdl = restricted(M * qd) if k else qd
+    cols = [restricted(Jc[r, :].T) for r in range(3)]
+    for i in range(n):
+        out[f"coulomb_qdl_{i}"] = qdl[i]
+    v = Jc * qdl
+    for r, nm in enumerate("tnr"):
+        out[f"coulomb_v_{nm}"] = v[r]
+    for a, b in ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)):
+        out[f"coulomb_W_{'tnr'[a]}{'tnr'[b]}"] = (Jc[a, :] * cols[b])[0, 0]
+    for i in range(n):
+        for j in range(2):
+            out[f"coulomb_R_{i}_{j}"] = cols[j][i]
 
 
 def desired(des, a, t):
@@ -677,6 +832,7 @@ def reference(m: Model, d: Derived):
     samples = make_samples(m)
     worst = mp.mpf(0)
     worst_closed = mp.mpf(0)
+    worst_jac = mp.mpf(0)
     rows = []
     names = None
     for s in samples:
@@ -697,6 +853,13 @@ def reference(m: Model, d: Derived):
                     den = max(abs(vh), mp.mpf(10) ** -20 * scale)
                     if den:
                         worst_closed = max(worst_closed, abs(vc - vh) / den)
+        if d.jacobians:
+            with mp.workdps(DPS_HI):
+                for k, vc in num.complex_step(s).items():
+                    vh = hi[k]
+                    den = max(abs(vh), mp.mpf(10) ** -20 * scale)
+                    if den:
+                        worst_jac = max(worst_jac, abs(vc - vh) / den)
         names = list(hi)
         with mp.workdps(DPS_HI):
             out = {k: fmt(v) for k, v in hi.items()}
@@ -708,8 +871,12 @@ def reference(m: Model, d: Derived):
     assert worst < mp.mpf(10) ** -CLAIM_DIGITS, (m.name, worst)
     if d.closed:
         assert worst_closed < mp.mpf(10) ** -(CLAIM_DIGITS + 10), (m.name, worst_closed)
+    if d.jacobians:
+        assert worst_jac < mp.mpf(10) ** -(CLAIM_DIGITS + 10), (m.name, worst_jac)
     checks = {"rel_dps50_vs_dps70": mp.nstr(worst, 3),
               "closed_vs_numeric": mp.nstr(worst_closed, 3) if d.closed else None}
+    if d.jacobians:
+        checks["jacobians_vs_complex_step"] = mp.nstr(worst_jac, 3)
     return rows, names, checks
 
 

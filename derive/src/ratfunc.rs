@@ -273,6 +273,11 @@ impl RatFunc {
     /// Substitutes a rational function for an atom, and cancels.
     pub fn substitute(&self, atom: Atom, value: &RatFunc) -> Result<RatFunc> {
         let slot = atom.slot();
+        // Already cancelled: without the atom there is nothing to substitute or cancel (and the
+        // quotient below would compute the gcd of numerator and denominator again).
+        if !self.num.contains(slot) && !self.den.contains(slot) {
+            return Ok(self.clone());
+        }
         let sub = |p: &Poly| -> Result<RatFunc> {
             if !p.contains(slot) {
                 return Ok(p.clone().into());

@@ -1,8 +1,9 @@
 //! The paper's two walkers written as model files (`models/paper-active.toml`,
 //! `models/paper-passive.toml`) derive exactly the mechanics of the hand-written derivation:
-//! every entry of `M`, `h`, `S`, the stance quantities, the control terms, the stuck foot and the
-//! impact maps is the same rational function (compared exactly, after renaming the model's
-//! symbols into the paper's table by name).
+//! every entry of `M`, `h`, `S`, the stance quantities, the control terms, the stuck foot, the
+//! impact maps, the stuck closed loop, the Coulomb impact's ingredients and the Jacobians is the
+//! same rational function (compared exactly, after renaming the model's symbols into the paper's
+//! table by name).
 
 use walker_scene::model::Model;
 use walker_symbolic::Derivation;
@@ -170,6 +171,10 @@ fn the_active_model_kernels_take_the_hand_derived_arguments() {
         ("closed_loop", "closed_loop_level"),
         ("impact", "impact2_level"),
         ("impact_double", "impact3_level"),
+        ("closed_loop_stick", "closed_loop_stick_level"),
+        ("impact_coulomb", "impact_coulomb_level"),
+        ("closed_loop_jacobian", "closed_loop_level_jacobian"),
+        ("impact_jacobian", "impact2_level_jacobian"),
     ] {
         let names = |args: &[Sym], table: &Symbols| -> Vec<String> {
             args.iter().map(|s| table.name(*s).to_owned()).collect()
@@ -182,4 +187,159 @@ fn the_active_model_kernels_take_the_hand_derived_arguments() {
             "{mine} against {theirs}"
         );
     }
+}
+
+/// The outputs of a kernel's closed form, in order, as a column.
+fn outputs_of(k: &walker_symbolic::Kernel) -> Matrix {
+    assert!(k.closed, "{} has a closed form", k.name);
+    Matrix::column(k.outputs.iter().map(|(_, r)| r.clone()).collect())
+}
+
+/// A kernel of the model file's derivation against the hand-derived one, output by output (the
+/// names differ only where the model numbers what the paper's single input leaves plain: `u0`
+/// against `u`).
+fn same_kernel(
+    d: &walker_symbolic::model::ModelDerivation,
+    paper: &Derivation,
+    mine: &str,
+    theirs: &str,
+) {
+    let r = renamer(&d.symbols, &paper.symbols);
+    let k = d.kernel(mine).expect("model kernel");
+    let h = paper.kernel(theirs).expect("paper kernel");
+    same(
+        &format!("{mine} against {theirs}"),
+        &outputs_of(k),
+        &outputs_of(h),
+        &r,
+    );
+}
+
+/// A model Jacobian (`n` rows over `[q, qdot, mu, v]` or `[q, qdot]`) against the hand-derived
+/// one over the paper's variables `theirs_vars`: the columns of those variables equal exactly,
+/// every other column identically zero.
+fn same_jacobian(
+    d: &walker_symbolic::model::ModelDerivation,
+    paper: &Derivation,
+    (mine, mine_vars): (&str, &[&str]),
+    (theirs, theirs_vars): (&str, &[&str]),
+) {
+    let r = renamer(&d.symbols, &paper.symbols);
+    let k = d.kernel(mine).expect("model kernel");
+    let h = paper.kernel(theirs).expect("paper kernel");
+    let (n, cols) = (4, mine_vars.len());
+    assert_eq!(k.shape, walker_symbolic::Shape::Matrix(n, cols), "{mine}");
+    assert_eq!(k.outputs.len(), n * cols, "{mine}");
+    for (c, var) in mine_vars.iter().enumerate() {
+        for i in 0..n {
+            let got = k.outputs[i * cols + c].1.map_slots(&r).expect("renamed");
+            match theirs_vars.iter().position(|v| v == var) {
+                Some(hc) => {
+                    let want = &h.outputs[i * theirs_vars.len() + hc].1;
+                    assert!(got == *want, "{mine}[{i}][d/d{var}] against {theirs}");
+                }
+                None => assert!(got.is_zero(), "{mine}[{i}][d/d{var}] is zero"),
+            }
+        }
+    }
+}
+
+const STATE: [&str; 8] = ["x", "z", "th1", "th2", "xd", "zd", "th1d", "th2d"];
+
+#[test]
+fn the_active_model_file_derives_the_stuck_closed_loop_exactly() {
+    let d = walker_symbolic::model::ModelDerivation::new(&load("paper-active")).expect("derives");
+    let paper = Derivation::new().expect("paper derivation");
+    same_kernel(&d, &paper, "closed_loop_stick", "closed_loop_stick_level");
+    let k = d.kernel("closed_loop_stick").expect("kernel");
+    let names: Vec<&str> = k.outputs.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        ["qdd0", "qdd1", "qdd2", "qdd3", "u0", "lambda_t", "lambda_n"]
+    );
+    // Both forms are there for the generator to choose from, and the staged form composes.
+    assert!(k.staged.is_some() && k.solve.is_some());
+    k.check_staged().expect("staged form composes");
+}
+
+#[test]
+fn the_model_files_derive_the_coulomb_impact_ingredients_exactly() {
+    let paper = Derivation::new().expect("paper derivation");
+    for (model, theirs) in [
+        ("paper-active", "impact_coulomb_level"),
+        ("paper-passive", "impact_coulomb_slope"),
+    ] {
+        let d = walker_symbolic::model::ModelDerivation::new(&load(model)).expect("derives");
+        same_kernel(&d, &paper, "impact_coulomb", theirs);
+        let names = |k: &walker_symbolic::Kernel| -> Vec<String> {
+            k.outputs.iter().map(|(n, _)| n.clone()).collect()
+        };
+        assert_eq!(
+            names(d.kernel("impact_coulomb").expect("kernel")),
+            names(paper.kernel(theirs).expect("kernel")),
+            "{model}: the hand-derived kernel's output names"
+        );
+    }
+}
+
+#[test]
+fn the_model_files_derive_the_papers_jacobians_exactly() {
+    let paper = Derivation::new().expect("paper derivation");
+    let active = walker_symbolic::model::ModelDerivation::new(&load("paper-active")).expect("a");
+    let passive = walker_symbolic::model::ModelDerivation::new(&load("paper-passive")).expect("p");
+    let with = |extra: &[&'static str]| -> Vec<&'static str> {
+        STATE.iter().chain(extra).copied().collect()
+    };
+    let impact_vars = ["th1", "xd", "zd", "th1d", "th2d"];
+    same_jacobian(
+        &active,
+        &paper,
+        ("closed_loop_jacobian", &with(&["mu", "v"])),
+        ("closed_loop_level_jacobian", &["th1", "th1d", "mu", "v"]),
+    );
+    same_jacobian(
+        &active,
+        &paper,
+        ("impact_jacobian", &STATE),
+        ("impact2_level_jacobian", &impact_vars),
+    );
+    same_jacobian(
+        &passive,
+        &paper,
+        ("accel_jacobian", &with(&["mu"])),
+        ("accel_slope_jacobian", &["th1", "th1d", "mu"]),
+    );
+    same_jacobian(
+        &passive,
+        &paper,
+        ("impact_jacobian", &STATE),
+        ("impact_slope_jacobian", &impact_vars),
+    );
+    // A model with inputs has no open-loop Jacobian, a passive one no closed loop.
+    assert!(active.kernel("accel_jacobian").is_err());
+    assert!(passive.kernel("closed_loop_jacobian").is_err());
+}
+
+/// The descriptors' kernels of the active walker: the output and its rate `th1d - th2d`, the
+/// input's rate (the same: `S = [0, 0, 1, -1]`, so the input power is `u (th1d - th2d)`, as
+/// Section 4 computes it) and the total mass `m1 + m2`.
+#[test]
+fn the_active_model_files_rates_and_total_mass_are_the_papers() {
+    let d = walker_symbolic::model::ModelDerivation::new(&load("paper-active")).expect("derives");
+    let s = |name: &str| RatFunc::sym(d.symbols.lookup(name).expect("symbol"));
+    let rate = &s("th1d") - &s("th2d");
+    let out = |k: &str| -> Vec<(String, RatFunc)> { d.kernel(k).expect(k).outputs.clone() };
+    assert_eq!(
+        out("output_rates"),
+        vec![
+            ("y0".to_owned(), &s("th1") - &s("th2")),
+            ("yd0".to_owned(), rate.clone())
+        ]
+    );
+    assert_eq!(out("input_rates"), vec![("w0".to_owned(), rate)]);
+    assert_eq!(
+        out("total_mass"),
+        vec![("m_total".to_owned(), &s("m1") + &s("m2"))]
+    );
+    assert!(d.kernel("total_mass").expect("kernel").args.is_empty());
 }

@@ -8,6 +8,8 @@ use std::path::PathBuf;
 
 use serde_json::Value;
 use walker_gen::scene::model::{Model, SymbolKind};
+use walker_symbolic::symbol::Point;
+use walker_symbolic::{Poly, RatFunc};
 
 /// Calls a kernel by name: `(kernel, parameter by name, argument by name)` to its outputs,
 /// flattened row-major, or `None` for a kernel the model does not have.
@@ -146,7 +148,8 @@ pub fn samples(model: &Model) -> Vec<Sample> {
 /// control's `A`, the model's inputs); `None` for the matrices the reference does not list
 /// (`S`, `J_I`, `H`, the drift), which the generic linear-algebra tests check through the
 /// solves built from them. Every shipped model has fewer than ten coordinates, inputs and
-/// outputs, so a matrix entry's index pair is two digits.
+/// outputs, so a matrix entry's index pair is two digits, except a Jacobian's column (up to
+/// `2n + 1 + m`): its first digit is the row, the rest the column.
 #[must_use]
 pub fn reference_name(kernel: &str, name: &str, cols: usize) -> Option<String> {
     let index = |prefix: &str| name.strip_prefix(prefix).map(str::to_owned);
@@ -159,6 +162,12 @@ pub fn reference_name(kernel: &str, name: &str, cols: usize) -> Option<String> {
         } else {
             format!("{to}_{digits}_0")
         })
+    };
+    // `J{i}{j}`: row i (one digit), column j (the rest).
+    let jacobian = |to: &str| {
+        let digits = index("J")?;
+        let (i, j) = digits.split_at(1);
+        Some(format!("{to}_{i}_{j}"))
     };
     Some(match (kernel, name) {
         ("mass_matrix", _) => {
@@ -176,6 +185,12 @@ pub fn reference_name(kernel: &str, name: &str, cols: usize) -> Option<String> {
         ("stick", "lambda_t") => "stick_lambda_t".into(),
         ("stick", "lambda_n") => "stick_lambda_n".into(),
         ("stick", _) => format!("stick_qdd_{}", index("qdd")?),
+        ("closed_loop_stick", "lambda_t") => "stick_lambda_t_cl".into(),
+        ("closed_loop_stick", "lambda_n") => "stick_lambda_n_cl".into(),
+        ("closed_loop_stick", n) if n.starts_with("qdd") => {
+            format!("stick_qdd_cl_{}", index("qdd")?)
+        }
+        ("closed_loop_stick", _) => format!("stick_u_cl_{}", index("u")?),
         ("impact", n) if n.starts_with("lambdaI") => {
             format!("impact_lambda_{}", index("lambdaI")?)
         }
@@ -184,18 +199,38 @@ pub fn reference_name(kernel: &str, name: &str, cols: usize) -> Option<String> {
             format!("impact_ds_lambda_{}", index("lambdaI")?)
         }
         ("impact_double", _) => format!("impact_ds_qdp_{}", index("qdp")?),
+        ("impact_coulomb", n) if n.starts_with("qdl") => {
+            format!("coulomb_qdl_{}", index("qdl")?)
+        }
+        ("impact_coulomb", n) if n.starts_with('R') => {
+            let digits = index("R")?;
+            let (i, j) = digits.split_at(1);
+            format!("coulomb_R_{i}_{j}")
+        }
+        ("impact_coulomb", n) => format!("coulomb_{n}"),
+        ("accel_jacobian", _) => jacobian("accel_jac")?,
+        ("closed_loop_jacobian", _) => jacobian("cl_jac")?,
+        ("impact_jacobian", _) => jacobian("impact_jac")?,
         ("points", _) => {
             let (axis, point) = name.split_once('_')?;
             format!("{point}_{axis}")
         }
         ("energy", n) => n.to_owned(),
         ("outputs", n) if n.starts_with('y') => format!("y_{}", index("y")?),
+        ("output_rates", n) if n.starts_with("yd") => format!("yd_{}", index("yd")?),
+        ("output_rates", _) => format!("y_{}", index("y")?),
+        ("input_rates", _) => format!("w_{}", index("w")?),
+        ("total_mass", "m_total") => "total_mass".into(),
         ("events", n) => n.to_owned(),
         ("relabel", n) if n.starts_with("qd") => format!("relabel_qd_{}", index("qd")?),
         ("relabel", _) => format!("relabel_q_{}", index("q")?),
         _ => return None,
     })
 }
+
+/// The kernels whose outputs the reference does not list at all (the matrices `S`, `J_I`; see
+/// [`reference_name`]): every other kernel of a model is compared with it.
+pub const UNREFERENCED: &[&str] = &["input_map", "impact_rows", "impact_double_rows"];
 
 /// The factor that turns a kernel output into the reference's: impulses on a slope are
 /// reported by the reference as their vertical components (`cos phi` times the normal one).
@@ -242,4 +277,32 @@ pub fn spd_condition(mut a: Vec<Vec<f64>>) -> f64 {
     let max = eig.iter().copied().fold(0.0, f64::max);
     let min = eig.iter().copied().fold(f64::INFINITY, f64::min);
     max / min
+}
+
+/// A bound on the relative rounding error of `RatFunc::eval` of `r` at `p` in `f64`, to first
+/// order: each polynomial is evaluated as the sum of its `k` terms in sequence, each term its
+/// coefficient rounded to `f64` times powers of the atoms (`powi`), the atoms (sines and cosines
+/// from the maths library) within an ulp, so that a term of degree at most `d` carries at most
+/// `4d + 1` roundings and `|fl(P) - P| <= gamma_{k + 4d + 1} sum |t_i|` (Higham, Accuracy and
+/// Stability of Numerical Algorithms, 2nd ed., 2002, Lemma 3.1 and Eq. 4.4 for the recursive
+/// sum); the quotient adds one rounding. The bound is `gamma` times the sum's condition number
+/// `sum |t_i| / |P|` of numerator and denominator: large where the terms cancel (a closed form
+/// near a vanishing denominator), about `k eps` elsewhere.
+#[must_use]
+pub fn rounding_bound(r: &RatFunc, p: &Point<f64>) -> f64 {
+    let u = f64::EPSILON / 2.0;
+    let gamma = |n: usize| {
+        let nu = n as f64 * u;
+        nu / (1.0 - nu)
+    };
+    let relative = |q: &Poly| {
+        let (mut abs, mut degree) = (0.0, 0);
+        for (m, c) in q.terms() {
+            abs += Poly::term(m.clone(), c.clone()).eval(p).abs();
+            degree = degree.max(m.degree() as usize);
+        }
+        gamma(q.len() + 4 * degree + 1) * abs / q.eval(p).abs()
+    };
+    let (num, den) = (relative(r.num()), relative(r.den()));
+    (num + den + u) / (1.0 - den)
 }

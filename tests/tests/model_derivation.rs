@@ -7,7 +7,16 @@
 //! Tolerance, relative to `|ref| + 1` (the outputs are of order one at the samples: parameters
 //! near the defaults, velocities of order one):
 //! - closed forms, `1e-10`: canonical polynomials evaluated term by term in `f64`, at most a
-//!   few hundred terms of moderate size, so rounding stays near `1e-13`;
+//!   few hundred terms of moderate size, so rounding stays near `1e-13`; or, where larger, the
+//!   first-order rounding bound of that evaluation at the sample
+//!   ([`walker_tests::models::rounding_bound`], `gamma_k` times the condition number of the
+//!   sums) times `|ref|`: the Jacobians' expanded quotients `(N' D - N D') / D^2` have up to
+//!   1227 terms, and at the passive walker's "strike" sample, near the Painleve boundary
+//!   (below), the terms of one denominator cancel to `6e-7` of their size, so the rounding
+//!   reaches `1.4e-10` (the bound there: `3e-8`; everywhere the error is below 0.14 of it);
+//! - staged forms (the closed forms as the code generator evaluates them: the closed loop's `u`
+//!   once, the Jacobians by the quotient rule over `N` and `D`), `1e-10`, as closed forms: a
+//!   handful of closed forms of the sizes above, combined by a few operations;
 //! - structured solves, `1e-12 * kappa`: an `L D L^T` solve is backward stable, so its forward
 //!   error is a modest multiple of `kappa(M) * eps` (Higham, Accuracy and Stability of Numerical
 //!   Algorithms, 2002, Thm. 10.4 for Cholesky; `L D L^T` of a positive definite matrix is the
@@ -20,9 +29,13 @@
 //!   terms is `1e-12` of `lambda`. A wrong derivation is off by order one.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "test code")]
 
+use std::collections::BTreeSet;
 use walker_symbolic::model::ModelDerivation;
 use walker_symbolic::symbol::{Point, SymKind};
-use walker_tests::models::{load, reference_factor, reference_name, samples, spd_condition};
+
+use walker_tests::models::{
+    UNREFERENCED, load, reference_factor, reference_name, rounding_bound, samples, spd_condition,
+};
 
 /// Checks every kernel of `model_name`; returns the number of values compared per form.
 fn check(model_name: &str) -> (usize, usize) {
@@ -30,6 +43,7 @@ fn check(model_name: &str) -> (usize, usize) {
     let d = ModelDerivation::new(&model).expect("derives");
     let n = d.syms.q.len();
     let (mut closed, mut solved) = (0, 0);
+    let mut compared = BTreeSet::new();
     for sample in samples(&model) {
         let mut p = Point::zeros(&d.symbols);
         for s in d.symbols.syms() {
@@ -56,11 +70,12 @@ fn check(model_name: &str) -> (usize, usize) {
             };
             let forms = [
                 ("closed form", k.eval_closed(p), 1e-10),
+                ("staged form", k.eval_staged(p), 1e-10),
                 ("structured solve", k.eval_solve(p), 1e-12 * kappa),
             ];
             for (form, values, tol) in forms {
                 let Some(values) = values else { continue };
-                for ((name, _), got) in k.outputs.iter().zip(values) {
+                for ((name, r), got) in k.outputs.iter().zip(values) {
                     let Some(key) = reference_name(k.name, name, cols) else {
                         continue;
                     };
@@ -68,14 +83,21 @@ fn check(model_name: &str) -> (usize, usize) {
                     let want = sample
                         .reference(&key)
                         .unwrap_or_else(|| panic!("{model_name}: the reference has no {key}"));
+                    let bound = if form == "closed form" {
+                        rounding_bound(r, p) * want.abs()
+                    } else {
+                        0.0
+                    };
                     assert!(
-                        (got - want).abs() <= tol * (want.abs() + 1.0),
+                        (got - want).abs() <= (tol * (want.abs() + 1.0)).max(bound),
                         "{model_name} {} {}.{name} by {form}: {got} vs SymPy {want} \
-                         (tolerance {tol:e} relative, kappa(M) = {kappa:.3e})",
+                         (tolerance {tol:e} relative or the rounding bound {bound:e}, \
+                         kappa(M) = {kappa:.3e})",
                         sample.tag,
                         k.name
                     );
-                    if form == "closed form" {
+                    compared.insert(k.name);
+                    if form != "structured solve" {
                         closed += 1;
                     } else {
                         solved += 1;
@@ -83,6 +105,13 @@ fn check(model_name: &str) -> (usize, usize) {
                 }
             }
         }
+    }
+    for k in &d.kernels {
+        assert!(
+            compared.contains(k.name) || UNREFERENCED.contains(&k.name),
+            "{model_name}: {} is compared with the reference",
+            k.name
+        );
     }
     (closed, solved)
 }

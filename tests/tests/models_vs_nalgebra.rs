@@ -4,7 +4,8 @@
 //!
 //! The generic path takes only the generated *matrices* (`M` from `mass_matrix`, `h` from
 //! `bias`, `S` from `input_map`, `J_I` from `impact_rows` / `impact_double_rows`, `H` and
-//! `Hdot qdot` from `outputs`; `M` and `h` are checked against SymPy in `models_vs_sympy.rs`),
+//! `Hdot qdot` from `outputs`, the striking point's Cartesian Jacobian from `relabel`; `M`, `h`
+//! and the relabelling are checked against SymPy in `models_vs_sympy.rs`),
 //! and the stance contact from the floor (`J = [sin phi, cos phi, 0...]`, `J_mu = mu [cos phi,
 //! -sin phi, 0...]`, `phi = 0` on a level floor), and solves every phase as one KKT system by
 //! LU with partial pivoting: never the generated closed forms or structured solves.
@@ -16,7 +17,12 @@
 //! - impacts: `[[M, -J_I^T], [J_I, 0]] [qd+; lambda_I] = [M qd-; 0]`;
 //! - control: `A = H x_S`, `B = H x_h - Hdot qdot` with `x_S`, `x_h` the sliding system's
 //!   solutions for right-hand sides `[S; 0]` and `[h; 0]` (that is `M^-1 Y S`, `M^-1 Y h`),
-//!   `u = A^-1 (v + B)`, and the sliding system again at that `u`.
+//!   `u = A^-1 (v + B)`, and the sliding system again at that `u`; the stuck foot's closed loop
+//!   (`closed_loop_stick`) the same through the stuck system;
+//! - the impact with Coulomb friction's ingredients (`impact_coulomb`): the locks (from
+//!   `J_I`) by `[[M, -L^T], [L, 0]] [x; l] = [b; 0]`, whose `x` is `M_L^-1 b`, the contact rows
+//!   from the striking point's Cartesian Jacobian (read off the generated relabelling, see
+//!   `coulomb`) and the floor.
 //!
 //! Tolerance `|generated - generic| <= C eps s`, `s` the error scale of the generic solve
 //! (`walker_tests::Solved::scale`: `cond(K) ||x|| + ||K^-1|| ||b_abs||`), `C = 512`: LU of a
@@ -248,7 +254,9 @@ fn check(m: &GeneratedModel, c: &Case) -> Result<(), TestCaseError> {
         )?;
     }
 
-    // Output-following control.
+    coulomb(m, &model, c, &mass, &qd)?;
+
+    // Output-following control, sliding and stuck.
     if model.outputs.is_empty() {
         return Ok(());
     }
@@ -256,56 +264,217 @@ fn check(m: &GeneratedModel, c: &Case) -> Result<(), TestCaseError> {
     let maps = call("outputs");
     let hm = DMatrix::from_row_slice(outs, n, &maps[outs..outs + outs * n]);
     let drift = DVector::from_row_slice(&maps[outs + outs * n..]);
-    let (mut x_s, mut scale_s) = (Vec::<Solved>::new(), 0.0_f64);
-    for col in 0..inputs {
-        let column = s.column(col).into_owned();
-        let (b, b_abs) = rhs(&column, 1, &column.abs());
-        let sol = solve(&slide, &b).map_err(TestCaseError::fail)?;
-        scale_s = scale_s.max(sol.scale(&b_abs));
-        x_s.push(sol);
-    }
-    let (b, b_abs) = rhs(&h, 1, &h.abs());
-    let x_h = solve(&slide, &b).map_err(TestCaseError::fail)?;
-    let mut a = DMatrix::zeros(outs, inputs);
-    for (col, x) in x_s.iter().enumerate() {
-        a.set_column(col, &(&hm * x.x.rows(0, n)));
-    }
-    let bvec = &hm * x_h.x.rows(0, n) - &drift;
-    let h_norm = hm.norm();
-    let scale_a = h_norm * scale_s;
-    let scale_b = h_norm * x_h.scale(&b_abs) + drift.norm();
-    let mut want: Vec<f64> = a.transpose().iter().copied().collect();
-    want.extend(bvec.iter());
-    close(
-        &format!("{} control", m.name),
-        &call("control"),
-        &want,
-        scale_a.max(scale_b),
-    )?;
     let v = DVector::from_iterator(
         outs,
         names_of(&model, SymbolKind::Aux).iter().map(|v| value(v)),
     );
-    let sv = a.clone().svd(false, false).singular_values;
-    let a_inv = 1.0 / sv.min();
-    let uu = a
-        .clone()
-        .lu()
-        .solve(&(&v + &bvec))
-        .ok_or_else(|| TestCaseError::fail("A singular"))?;
-    let scale_u = a_inv * (scale_a * uu.norm() + scale_b + v.norm());
-    let f = &s * &uu - &h;
-    let (b, b_abs) = rhs(&f, 1, &(s.abs() * uu.abs() + h.abs()));
-    let sol = solve(&slide, &b).map_err(TestCaseError::fail)?;
-    let x_s_norm = x_s.iter().map(|x| x.x.norm()).fold(0.0, f64::max);
-    let mut want: Vec<f64> = sol.x.rows(0, n).iter().copied().collect();
-    want.extend(uu.iter());
+    let control = Control {
+        s: &s,
+        h: &h,
+        hm: &hm,
+        drift: &drift,
+        v: &v,
+    };
+    let sliding = control.closed_loop(&slide, 1)?;
+    let mut want: Vec<f64> = sliding.a.transpose().iter().copied().collect();
+    want.extend(sliding.b.iter());
+    close(
+        &format!("{} control", m.name),
+        &call("control"),
+        &want,
+        sliding.scale_a.max(sliding.scale_b),
+    )?;
+    let mut want: Vec<f64> = sliding.x.rows(0, n).iter().copied().collect();
+    want.extend(sliding.u.iter());
     close(
         &format!("{} closed_loop", m.name),
         &call("closed_loop"),
         &want,
-        sol.scale(&b_abs) + x_s_norm * scale_u + scale_u,
+        sliding.scale,
+    )?;
+    // The stuck foot's closed loop: the control recomputed for the stuck system.
+    let stuck = control.closed_loop(&kkt(&mass, &js), 2)?;
+    let mut want: Vec<f64> = stuck.x.rows(0, n).iter().copied().collect();
+    want.extend(stuck.u.iter());
+    want.extend(stuck.x.rows(n, 2).iter());
+    close(
+        &format!("{} closed_loop_stick", m.name),
+        &call("closed_loop_stick"),
+        &want,
+        stuck.scale,
     )
+}
+
+/// What the output-following control is computed from: `S`, `h`, the outputs' `H` and
+/// `Hdot qdot`, the auxiliary inputs `v`.
+struct Control<'a> {
+    s: &'a DMatrix<f64>,
+    h: &'a DVector<f64>,
+    hm: &'a DMatrix<f64>,
+    drift: &'a DVector<f64>,
+    v: &'a DVector<f64>,
+}
+
+/// A closed loop by the generic path, with the error scales of its parts.
+struct Loop {
+    a: DMatrix<f64>,
+    b: DVector<f64>,
+    scale_a: f64,
+    scale_b: f64,
+    u: DVector<f64>,
+    /// The contact system's solution at `u`: `qdd`, then the multipliers.
+    x: DVector<f64>,
+    /// The error scale of `x` and `u`.
+    scale: f64,
+}
+
+impl Control<'_> {
+    /// The closed loop through the contact system `system` with `k` constraint rows:
+    /// `A = H x_S`, `B = H x_h - Hdot qdot` with `x_S`, `x_h` the system's solutions for the
+    /// right-hand sides `[S; 0]` and `[h; 0]`, `u = A^-1 (v + B)`, and the system again at
+    /// that `u`.
+    fn closed_loop(&self, system: &DMatrix<f64>, k: usize) -> Result<Loop, TestCaseError> {
+        let (s, h, hm) = (self.s, self.h, self.hm);
+        let (n, inputs, outs) = (h.len(), s.ncols(), hm.nrows());
+        let (mut x_s, mut scale_s) = (Vec::<Solved>::new(), 0.0_f64);
+        for col in 0..inputs {
+            let column = s.column(col).into_owned();
+            let (b, b_abs) = rhs(&column, k, &column.abs());
+            let sol = solve(system, &b).map_err(TestCaseError::fail)?;
+            scale_s = scale_s.max(sol.scale(&b_abs));
+            x_s.push(sol);
+        }
+        let (b, b_abs) = rhs(h, k, &h.abs());
+        let x_h = solve(system, &b).map_err(TestCaseError::fail)?;
+        let mut a = DMatrix::zeros(outs, inputs);
+        for (col, x) in x_s.iter().enumerate() {
+            a.set_column(col, &(hm * x.x.rows(0, n)));
+        }
+        let bvec = hm * x_h.x.rows(0, n) - self.drift;
+        let h_norm = hm.norm();
+        let scale_a = h_norm * scale_s;
+        let scale_b = h_norm * x_h.scale(&b_abs) + self.drift.norm();
+        let sv = a.clone().svd(false, false).singular_values;
+        let a_inv = 1.0 / sv.min();
+        let u = a
+            .clone()
+            .lu()
+            .solve(&(self.v + &bvec))
+            .ok_or_else(|| TestCaseError::fail("A singular"))?;
+        let scale_u = a_inv * (scale_a * u.norm() + scale_b + self.v.norm());
+        let f = s * &u - h;
+        let (b, b_abs) = rhs(&f, k, &(s.abs() * u.abs() + h.abs()));
+        let sol = solve(system, &b).map_err(TestCaseError::fail)?;
+        let x_s_norm = x_s.iter().map(|x| x.x.norm()).fold(0.0, f64::max);
+        Ok(Loop {
+            a,
+            b: bvec,
+            scale_a,
+            scale_b,
+            scale: sol.scale(&b_abs) + x_s_norm * scale_u + scale_u,
+            u,
+            x: sol.x,
+        })
+    }
+}
+
+/// The impact with Coulomb friction's ingredients (`impact_coulomb`) by KKT solves: the
+/// striking point's Cartesian Jacobian `d(x_p, z_p)/dq` read column by column off the
+/// generated `relabel` (its `qd0`, `qd1` are the striking point's velocity, linear in the
+/// velocities, so velocity `e_j` gives column `j`), projected on the floor's unit tangent and
+/// normal; the old stance foot's normal row from the floor; the locks from `impact_rows` (its
+/// rows after the striking point's). With `L` the locks,
+/// `[[M, -L^T], [L, 0]] [x; l] = [b; 0]` gives `x = M_L^-1 b`: `qdl` from `b = M qd-` (`qd-`
+/// itself without locks) and `M_L^-1 J_a^T` for each contact row `a`; then `v = J qdl`,
+/// `W_ab = J_a M_L^-1 J_b^T`, `R = M_L^-1 [J_t; J_n]^T`.
+///
+/// Error scales, as for the paper's kernel (`walker_tests::coulomb_impact`): `qdl` the solve's
+/// scale (`||qd||` without locks), `v`: `||J|| (scale_qdl + ||qdl||)`, `R` the largest scale of
+/// the three column solves, `W`: `||J|| (scale_R + ||X||)` with `X` the three columns; `J`'s
+/// own rounding (an ulp of the generated Jacobian entries) is within the `||J|| ||.||` terms.
+fn coulomb(
+    m: &GeneratedModel,
+    model: &walker_gen::scene::model::Model,
+    c: &Case,
+    mass: &DMatrix<f64>,
+    qd: &DVector<f64>,
+) -> Result<(), TestCaseError> {
+    let n = qd.len();
+    let vals = values(model, c);
+    let velocities = names_of(model, SymbolKind::Velocity);
+    let value = |name: &str| vals.get(name).copied().unwrap_or(f64::NAN);
+    let mut point = DMatrix::zeros(2, n);
+    for (j, vj) in velocities.iter().enumerate() {
+        let unit = |name: &str| {
+            if velocities.iter().any(|v| v == name) {
+                if name == vj { 1.0 } else { 0.0 }
+            } else {
+                value(name)
+            }
+        };
+        let after = (m.call)("relabel", &value, &unit).unwrap();
+        point[(0, j)] = after[n];
+        point[(1, j)] = after[n + 1];
+    }
+    let phi = model.floor.slope.as_ref().map_or(0.0, |p| value(&p.name));
+    let (sp, cp) = phi.sin_cos();
+    let mut rows = DMatrix::zeros(3, n);
+    rows.set_row(0, &(point.row(0) * cp - point.row(1) * sp));
+    rows.set_row(1, &(point.row(0) * sp + point.row(1) * cp));
+    rows[(2, 0)] = sp;
+    rows[(2, 1)] = cp;
+    // The striking point's normal row is the first row of `impact_rows`: the same row two ways.
+    let impact_rows = (m.call)("impact_rows", &value, &value).unwrap();
+    close(
+        &format!("{} striking point's normal row", m.name),
+        &impact_rows[..n],
+        &rows.row(1).iter().copied().collect::<Vec<_>>(),
+        rows.norm(),
+    )?;
+    let locks = DMatrix::from_row_slice(impact_rows.len() / n - 1, n, &impact_rows[n..]);
+    let k = locks.nrows();
+    let system = kkt(mass, &locks);
+    let (qdl, scale_qdl) = if k == 0 {
+        (qd.clone(), qd.norm())
+    } else {
+        let (b, b_abs) = rhs(&(mass * qd), k, &(mass.abs() * qd.abs()));
+        let sol = solve(&system, &b).map_err(TestCaseError::fail)?;
+        let scale = sol.scale(&b_abs);
+        (sol.x.rows(0, n).into_owned(), scale)
+    };
+    let mut x = DMatrix::zeros(n, 3);
+    let mut scale_r: f64 = 0.0;
+    for a in 0..3 {
+        let row = rows.row(a).transpose();
+        let (b, b_abs) = rhs(&row, k, &row.abs());
+        let sol = solve(&system, &b).map_err(TestCaseError::fail)?;
+        scale_r = scale_r.max(sol.scale(&b_abs));
+        x.set_column(a, &sol.x.rows(0, n));
+    }
+    let got = (m.call)("impact_coulomb", &value, &value).unwrap();
+    let j_norm = rows.norm();
+    let name = |part: &str| format!("{} impact_coulomb {part}", m.name);
+    close(&name("qdl"), &got[..n], qdl.as_slice(), scale_qdl)?;
+    let v = &rows * &qdl;
+    close(
+        &name("v"),
+        &got[n..n + 3],
+        v.as_slice(),
+        j_norm * (scale_qdl + qdl.norm()),
+    )?;
+    let w = &rows * &x;
+    let upper: Vec<f64> = [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)]
+        .iter()
+        .map(|&(a, b)| w[(a, b)])
+        .collect();
+    close(
+        &name("W"),
+        &got[n + 3..n + 9],
+        &upper,
+        j_norm * (scale_r + x.norm()),
+    )?;
+    let r: Vec<f64> = (0..n).flat_map(|i| [x[(i, 0)], x[(i, 1)]]).collect();
+    close(&name("R"), &got[n + 9..], &r, scale_r)
 }
 
 proptest! {

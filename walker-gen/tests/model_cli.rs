@@ -76,6 +76,7 @@ fn the_active_model_file_costs_at_most_what_the_hand_derived_kernels_cost() {
         ("closed_loop", "closed_loop_level"),
         ("impact", "impact2_level"),
         ("impact_double", "impact3_level"),
+        ("impact_coulomb", "impact_coulomb_level"),
         ("energy", "energy"),
     ] {
         let ((model, form), (scene, _)) = (&model[m], &scene[s]);

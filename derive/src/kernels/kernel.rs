@@ -192,13 +192,25 @@ impl Kernel {
     /// The outputs evaluated at `point` by the structured solve (its locals computed in order),
     /// or `None` for a kernel without one.
     pub fn eval_solve(&self, point: &Point<f64>) -> Option<Vec<f64>> {
-        let solve = self.solve.as_ref()?;
+        Some(self.solve.as_ref()?.eval(point))
+    }
+
+    /// The outputs evaluated at `point` by the staged form of the closed forms (what the code
+    /// generator evaluates for the closed form), or `None` for a kernel without one.
+    pub fn eval_staged(&self, point: &Point<f64>) -> Option<Vec<f64>> {
+        Some(self.staged.as_ref()?.eval(point))
+    }
+}
+
+impl Staged {
+    /// The outputs evaluated at `point`, the locals computed in order.
+    pub fn eval(&self, point: &Point<f64>) -> Vec<f64> {
         let mut p = point.clone();
-        for (s, value) in &solve.locals {
+        for (s, value) in &self.locals {
             let v = value.eval(&p);
             p.set(s.slot(), v);
         }
-        Some(solve.outputs.iter().map(|r| r.eval(&p)).collect())
+        self.outputs.iter().map(|r| r.eval(&p)).collect()
     }
 }
 

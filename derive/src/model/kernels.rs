@@ -1,8 +1,9 @@
 //! A model's named kernels: what the code generator turns into Rust for any model file. The
 //! names are the model-independent ones of `docs/model-format.md` (`mass_matrix`, `bias`,
-//! `lambda`, `accel`, `control`, `closed_loop`, `stick`, `impact`, `impact_double`,
-//! `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `events`, `relabel`, `points`,
-//! `energy`); a kernel's
+//! `lambda`, `accel`, `control`, `closed_loop`, `stick`, `closed_loop_stick`, `impact`,
+//! `impact_double`, `impact_coulomb`, `accel_jacobian`, `closed_loop_jacobian`,
+//! `impact_jacobian`, `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `events`,
+//! `relabel`, `points`, `energy`, `output_rates`, `input_rates`, `total_mass`); a kernel's
 //! arguments are the non-parameter symbols its outputs contain, in the
 //! table's order (coordinates, velocities, inputs, `mu`, auxiliary inputs, `t`), and the impact
 //! kernels take every velocity.
@@ -11,10 +12,14 @@ use walker_scene::model::Model;
 
 use super::assemble::{kernel, kernel_args, named, names, solve_only, with_solve};
 use super::control_check::check_control;
+use super::coulomb::impact_coulomb;
+use super::descriptors::descriptor_kernels;
 use super::events::event_kernels;
+use super::jacobians::{Differentiated, jacobian_kernels};
 use super::maps::map_kernels;
 use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
 use super::phases::{output_control, sliding, strike_impacts, strike_rows, stuck};
+use super::stick_control::closed_loop_stick;
 use super::structured::structured_kernels;
 use super::table::ModelSymbols;
 use crate::error::Result;
@@ -52,8 +57,10 @@ fn inverse_terms(m: &Mechanics) -> Option<usize> {
 
 impl ModelDerivation {
     /// Derives every kernel of `model`: the stance and impact kernels as closed forms where the
-    /// closed-form `M^-1` is small (at most [`MAX_INVERSE_TERMS`]), and as structured solves
-    /// always; the code generator evaluates the cheaper.
+    /// closed-form `M^-1` is small (at most [`MAX_INVERSE_TERMS`]; the stuck stance's where the
+    /// angles' block is at most [`MAX_CLOSED_COORDINATES`] square), and as structured solves
+    /// always; the code generator evaluates the cheaper. The Jacobians exist in closed form
+    /// only, where the closed forms they differentiate do.
     ///
     /// # Errors
     /// As [`Mechanics::new`], the phases' derivations, or a kernel that depends on a symbol it
@@ -63,8 +70,58 @@ impl ModelDerivation {
         let closed = inverse_terms(&m).is_some_and(|terms| terms <= MAX_INVERSE_TERMS);
         let mut table = m.syms.table.clone();
         let solves = structured_kernels(&m, model, &mut table)?;
-        let t = &table;
         let n = m.syms.q.len();
+        // The stuck foot's closed form needs no M^-1 (it is solved by blocks), only the inverse
+        // of the angles' block: derived while that block is small.
+        let stick_closed = n - 2 < MAX_CLOSED_COORDINATES;
+        let st = if stick_closed { Some(stuck(&m)?) } else { None };
+        // The stuck closed loop in closed form where both its neighbours have theirs (`stick`
+        // and `closed_loop`): the three-link biped's stuck stance is closed, but substituting
+        // its 2x2 control into it did not finish in 9 minutes.
+        let loop_stick = if model.outputs.is_empty() {
+            None
+        } else {
+            let stuck_closed = st.as_ref().filter(|_| closed);
+            Some(closed_loop_stick(&m, model, stuck_closed, &mut table)?)
+        };
+        let coulomb = impact_coulomb(&m, model, closed, &mut table)?;
+        // The closed forms: the sliding stance, its control and closed loop, the impacts, and
+        // the Jacobians of the closed loop's (or, without inputs, the stance's) accelerations
+        // and of the impact.
+        let slide = if closed { Some(sliding(&m)?) } else { None };
+        let imp = if closed {
+            Some(strike_impacts(&m, model)?)
+        } else {
+            None
+        };
+        let control = match &slide {
+            Some(s) if !model.outputs.is_empty() => {
+                let c = output_control(&m, model, &s.projection)?;
+                // Closed loop: u = A^-1 (v + B) once, then Eq. 27 with that u.
+                let subst = |r: &RatFunc| -> Result<RatFunc> {
+                    let mut r = r.clone();
+                    for (u, value) in m.syms.inputs.iter().zip(c.u.entries()) {
+                        r = r.substitute(Atom::Sym(*u), value)?;
+                    }
+                    Ok(r)
+                };
+                let closed_accel = s.accel.try_map(subst)?;
+                Some((c, closed_accel))
+            }
+            _ => None,
+        };
+        let jacobians = match (&slide, &imp) {
+            (Some(s), Some(imp)) => {
+                let of = Differentiated {
+                    accel: model.inputs.is_empty().then_some(&s.accel),
+                    closed_loop: control.as_ref().map(|(_, accel)| accel),
+                    impact: &imp.single.velocity,
+                };
+                jacobian_kernels(&m, &of, &mut table)?
+            }
+            _ => Vec::new(),
+        };
+        let t = &table;
         let inputs = m.syms.inputs.len();
         let outputs = model.outputs.len();
         let finish = |k: Kernel, solve: Staged| with_solve(k, solve, closed, t);
@@ -88,7 +145,6 @@ impl ModelDerivation {
                 &[],
             ),
         ];
-        let slide = if closed { Some(sliding(&m)?) } else { None };
         let (lambda_doc, lambda_eq) = (
             "Vertical ground reaction lambda of the sliding stance foot",
             "Eqs. 22-23",
@@ -146,9 +202,8 @@ impl ModelDerivation {
                 "Accelerations qddot and inputs u under the output-following control, with yddot = v",
                 "Eqs. 27, 31",
             );
-            match &slide {
-                Some(s) => {
-                    let c = output_control(&m, model, &s.projection)?;
+            match (&slide, &control) {
+                (Some(s), Some((c, closed_accel))) => {
                     let mut parts = named("A", &c.a);
                     parts.extend(named("B", &c.b));
                     kernels.push(finish(
@@ -164,15 +219,7 @@ impl ModelDerivation {
                         control_solve,
                     ));
                     // Closed loop: u = A^-1 (v + B) once, then Eq. 27 with that u.
-                    let subst = |r: &RatFunc| -> Result<RatFunc> {
-                        let mut r = r.clone();
-                        for (u, value) in m.syms.inputs.iter().zip(c.u.entries()) {
-                            r = r.substitute(Atom::Sym(*u), value)?;
-                        }
-                        Ok(r)
-                    };
-                    let closed_accel = s.accel.try_map(subst)?;
-                    let mut loop_outputs = named("qdd", &closed_accel);
+                    let mut loop_outputs = named("qdd", closed_accel);
                     loop_outputs.extend(named("u", &c.u));
                     let mut staged_out: Vec<RatFunc> = s.accel.entries().to_vec();
                     staged_out.extend(m.syms.inputs.iter().map(|u| RatFunc::sym(*u)));
@@ -197,7 +244,7 @@ impl ModelDerivation {
                     });
                     kernels.push(finish(closed_loop, closed_loop_solve));
                 }
-                None => {
+                _ => {
                     let mut parts = names("A", outputs, inputs);
                     parts.extend(names("B", outputs, 1));
                     kernels.push(finish(
@@ -213,15 +260,11 @@ impl ModelDerivation {
                 }
             }
         }
-        // The stuck foot's closed form needs no M^-1 (it is solved by blocks), only the inverse
-        // of the angles' block: derived while that block is small.
         let (stick_doc, stick_eq) = (
             "Accelerations qddot and the ground force `[lambda_t, lambda_n]` with the stance foot stuck",
             "stick phase; Eq. 19 with both foot coordinates held",
         );
-        let stick_closed = n - 2 < MAX_CLOSED_COORDINATES;
-        let stick = if stick_closed {
-            let st = stuck(&m)?;
+        let stick = if let Some(st) = &st {
             let mut outputs = named("qdd", &st.accel);
             outputs.push(("lambda_t".into(), st.forces.get(0, 0).clone()));
             outputs.push(("lambda_n".into(), st.forces.get(1, 0).clone()));
@@ -232,12 +275,8 @@ impl ModelDerivation {
             solve_only("stick", stick_doc, stick_eq, parts, Shape::Parts)
         };
         kernels.push(with_solve(stick, solves.stick, stick_closed, t));
+        kernels.extend(loop_stick);
         let qd = m.syms.qd.clone();
-        let imp = if closed {
-            Some(strike_impacts(&m, model)?)
-        } else {
-            None
-        };
         let rows = strike_rows(&m, model)?;
         let (impact_doc, impact_eq) = (
             "Normal impulses and post-impact velocities: the striking point and the locks",
@@ -287,6 +326,8 @@ impl ModelDerivation {
             double.args = kernel_args(t, &double, &qd);
             kernels.push(double);
         }
+        kernels.push(coulomb);
+        kernels.extend(jacobians);
         kernels.extend(map_kernels(&m, model, &rows, t)?);
         kernels.extend(event_kernels(&m, model, t)?);
         let mut points = Vec::new();
@@ -315,6 +356,7 @@ impl ModelDerivation {
             Shape::Vector(2),
             &[],
         ));
+        kernels.extend(descriptor_kernels(&m, model, t)?);
         if let Some(control) = kernels.iter().find(|k| k.name == "control") {
             check_control(model, &m.syms, t, control)?;
         }

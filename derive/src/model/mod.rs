@@ -11,21 +11,30 @@
 //! kernels the code generator reads, closed form and structured solve) uses `phases`,
 //! `structured`, `maps` (the matrices `S`, `J_I`, `H` as kernels, for users and for checks
 //! by generic linear algebra), `assemble` (output names and arguments of a kernel) and
-//! `control_check` (`A` regular at the start posture and somewhere at all); `events` (the
-//! strike guard, the falls and the relabelling as kernels) uses `mechanics`.
+//! `control_check` (`A` regular at the start posture and somewhere at all), and the kernels of
+//! their own files: `stick_control` (the control with the foot stuck, `closed_loop_stick`, both
+//! forms), `coulomb` (the impact with Coulomb friction's ingredients, `impact_coulomb`, both
+//! forms), `jacobians` (the closed forms' partial derivatives) and `descriptors` (output and
+//! input rates, the total mass); `events` (the strike guard, the falls and the relabelling as
+//! kernels) uses `mechanics`.
 
 mod assemble;
 mod control_check;
+mod coulomb;
+mod descriptors;
 mod events;
+mod jacobians;
 mod kernels;
 mod lower;
 mod maps;
 mod mechanics;
 mod phases;
 mod program;
+mod stick_control;
 mod structured;
 mod table;
 
+pub use coulomb::{CoulombImpact, CoulombRows, coulomb_impact, coulomb_rows};
 pub use kernels::{MAX_INVERSE_TERMS, ModelDerivation};
 pub use mechanics::{FloorGeometry, MAX_CLOSED_COORDINATES, Mechanics, time_derivative};
 pub use phases::{
@@ -33,5 +42,6 @@ pub use phases::{
     output_control, output_maps, sliding, strike_impacts, strike_rows, stuck,
 };
 pub use program::{Ldlt, Program};
+pub use stick_control::stuck_control;
 pub use structured::{StructuredKernels, structured_kernels};
 pub use table::ModelSymbols;

@@ -43,7 +43,7 @@ pub struct StructuredKernels {
 }
 
 /// `M` bound (its lower triangle, mirrored) and factored.
-fn factored_mass(p: &mut Program, m: &Mechanics) -> Result<Ldlt> {
+pub(super) fn factored_mass(p: &mut Program, m: &Mechanics) -> Result<Ldlt> {
     let n = m.syms.q.len();
     let mut mm = Matrix::zeros(n, n);
     for i in 0..n {
@@ -56,7 +56,8 @@ fn factored_mass(p: &mut Program, m: &Mechanics) -> Result<Ldlt> {
     p.ldlt(&mm, "M")
 }
 
-fn dot(a: &[RatFunc], b: &[RatFunc]) -> RatFunc {
+/// `a . b`, unbound.
+pub(super) fn dot(a: &[RatFunc], b: &[RatFunc]) -> RatFunc {
     a.iter()
         .zip(b)
         .fold(RatFunc::zero(), |acc, (x, y)| &acc + &(x * y))
@@ -210,8 +211,21 @@ pub fn structured_kernels(
 
 /// The stuck foot by the angles' block (see [`super::phases::stuck`]).
 fn stick(m: &Mechanics, table: &mut Symbols) -> Result<Staged> {
-    let n = m.syms.q.len();
     let mut p = Program::new(table, "stick");
+    let factor = factored_angles(&mut p, m)?;
+    let f = p.bind_all(m.input_force.sub(&m.bias)?.entries())?;
+    let qdd_a = p.solve(&factor, &f[2..])?;
+    let forces = foot_forces(&mut p, m, &f, &qdd_a)?;
+    let mut outputs = vec![RatFunc::zero(), RatFunc::zero()];
+    outputs.extend(qdd_a);
+    outputs.extend(forces);
+    Ok(p.finish(outputs))
+}
+
+/// The angles' block `M_aa` of `M` (the coordinates after the foot's `x`, `z`) bound and
+/// factored.
+pub(super) fn factored_angles(p: &mut Program, m: &Mechanics) -> Result<Ldlt> {
+    let n = m.syms.q.len();
     let mut maa = Matrix::zeros(n - 2, n - 2);
     for i in 2..n {
         for j in 2..=i {
@@ -220,24 +234,33 @@ fn stick(m: &Mechanics, table: &mut Symbols) -> Result<Staged> {
             maa.set(j - 2, i - 2, v);
         }
     }
-    let factor = p.ldlt(&maa, "M_aa")?;
-    let f = p.bind_all(m.input_force.sub(&m.bias)?.entries())?;
-    let qdd_a = p.solve(&factor, &f[2..])?;
+    p.ldlt(&maa, "M_aa")
+}
+
+/// The stuck foot's force `[lambda_t, lambda_n]` from the foot's rows of the equations of
+/// motion, `J_f (M_fa qdd_a - f_f)`, for the generalised force `f = S u - h` (bound) and the
+/// angles' accelerations `qdd_a`.
+pub(super) fn foot_forces(
+    p: &mut Program,
+    m: &Mechanics,
+    f: &[RatFunc],
+    qdd_a: &[RatFunc],
+) -> Result<Vec<RatFunc>> {
+    let n = m.syms.q.len();
     let (x, z) = (RatFunc::sym(m.syms.q[0]), RatFunc::sym(m.syms.q[1]));
     let foot = Matrix::jacobian(&[m.floor.tangent(&x, &z), m.floor.gap(&x, &z)], &m.syms.q);
     let mut rows = Vec::with_capacity(2);
     for (i, fi) in f.iter().enumerate().take(2) {
         let mfa: Vec<RatFunc> = (2..n).map(|j| m.mass.get(i, j).clone()).collect();
         let mfa = p.bind_all(&mfa)?;
-        rows.push(p.bind(&dot(&mfa, &qdd_a) - fi)?);
+        rows.push(p.bind(&dot(&mfa, qdd_a) - fi)?);
     }
-    let mut outputs = vec![RatFunc::zero(), RatFunc::zero()];
-    outputs.extend(qdd_a);
+    let mut forces = Vec::with_capacity(2);
     for i in 0..2 {
         let force = &(foot.get(i, 0) * &rows[0]) + &(foot.get(i, 1) * &rows[1]);
-        outputs.push(p.bind(force)?);
+        forces.push(p.bind(force)?);
     }
-    Ok(p.finish(outputs))
+    Ok(forces)
 }
 
 /// An impact map for constraint rows `J_I`: `lambda_I` then `qdot+`.

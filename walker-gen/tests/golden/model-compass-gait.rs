@@ -787,6 +787,152 @@ pub fn impact_double_checked(
     Ok(out)
 }
 
+/// Impact with Coulomb friction at the striking point: `qdl` after the locks, `[v_t, v_n, v_r]`,
+/// Delassus `W`, response `R`.
+///
+/// Paper: impact with Coulomb friction, not in the paper; Eqs. 6-10 with the foot's tangent added.
+///
+/// Arguments: `th_st`, `th_sw`, `xd`, `zd`, `th_std`, `th_swd`; parameters through `p` from [`prepare`].
+/// Returns `[qdl0, qdl1, qdl2, qdl3, v_t, v_n, v_r, W_tt, W_tn, W_tr, W_nn, W_nr, W_rr, R00, R01, R10, R11, R20, R21, R30, R31]`.
+///
+/// Operations per call: 66 add/sub, 103 mul, 2 div, 2 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`impact_coulomb_checked`]
+/// rejects non-finite arguments and outputs.
+#[inline]
+#[must_use]
+pub fn impact_coulomb(
+    p: &Prepared,
+    th_st: F,
+    th_sw: F,
+    xd: F,
+    zd: F,
+    th_std: F,
+    th_swd: F,
+) -> [F; 21] {
+    let (t0, t1) = sin_cos(th_st);
+    let t2 = p.k2 * t1;
+    let (t3, t4) = sin_cos(th_sw);
+    let t5 = p.k1 * t4;
+    let t6 = p.k2 * t0;
+    let t7 = p.k1 * t3;
+    let t8 = t1 * p.k9 - t0 * p.k8;
+    let t9 = t3 * p.k8 - t4 * p.k9;
+    let t10 = p.k6 * xd;
+    let t11 = p.k7 * zd;
+    let t12 = t0 * p.k9 + t1 * p.k8;
+    let t13 = t3 * p.k9 + t4 * p.k8;
+    let t14 = t2 * p.k18;
+    let t15 = t6 * p.k18;
+    let t16 = t5 * p.k18;
+    let t17 = t7 * p.k18;
+    let t18 = p.k14 - (t2 * t14 + t6 * t15);
+    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
+    let t20 = 1.0_f64 / t18;
+    let t21 = t19 * t20;
+    let t22 = 1.0_f64 / (p.k13 - (t7 * t17 + t19 * t21 + t5 * t16));
+    let t23 = p.k6 * t14;
+    let t24 = p.k7 * t15;
+    let t25 = t8 + t24;
+    let t26 = p.k6 * t16;
+    let t27 = p.k7 * t17;
+    let t28 = t22 * (t9 + t21 * (t23 - t25) - t27 + t26);
+    let t29 = t20 * (t25 - t23 - t21 * t28 * t18);
+    let t30 = p.k18 * (p.k7 + p.k0 * (t15 * t29 - t17 * t28));
+    let t31 = p.k18 * (p.k6 + p.k0 * (t16 * t28 - t14 * t29));
+    let t32 = t22 * (t21 * (t23 - t24) - t27 + t26);
+    let t33 = t20 * (t24 - t23 - t21 * t32 * t18);
+    let t34 = p.k18 * (p.k7 + p.k0 * (t15 * t33 - t17 * t32));
+    let t35 = p.k18 * (p.k6 + p.k0 * (t16 * t32 - t14 * t33));
+    let t36 = p.k6 * t35;
+    let t37 = p.k7 * t34;
+    let t38 = p.k7 * t14;
+    let t39 = t12 - p.k6 * t15;
+    let t40 = t22 * (t21 * (t38 - t39) - t13 + p.k6 * t17 + p.k7 * t16);
+    let t41 = t20 * (t39 - t38 - t21 * t40 * t18);
+    let t42 = p.k18 * (p.k0 * (t15 * t41 - t17 * t40) - p.k6);
+    let t43 = p.k18 * (p.k7 + p.k0 * (t16 * t40 - t14 * t41));
+    [
+        xd,
+        zd,
+        th_std,
+        th_swd,
+        th_std * t12 - th_swd * t13 - p.k6 * zd + p.k7 * xd,
+        th_std * t8 + th_swd * t9 + t11 + t10,
+        t10 + t11,
+        t12 * t41 - t13 * t40 - p.k6 * t42 + p.k7 * t43,
+        t12 * t29 - t13 * t28 - p.k6 * t30 + p.k7 * t31,
+        t12 * t33 - t13 * t32 - p.k6 * t34 + p.k7 * t35,
+        t8 * t29 + t9 * t28 + p.k7 * t30 + p.k6 * t31,
+        t8 * t33 + t9 * t32 + t37 + t36,
+        t36 + t37,
+        t43,
+        t31,
+        t42,
+        t30,
+        t41,
+        t29,
+        t40,
+        t28,
+    ]
+}
+
+/// Checked variant of [`impact_coulomb`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 27
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th_st`, `th_sw`,
+/// `xd`, `zd`, `th_std`, `th_swd`) that is NaN or infinite; otherwise
+/// [`KernelError::NonFiniteOutput`] naming the first output (in the order `qdl0`, `qdl1`, `qdl2`,
+/// `qdl3`, `v_t`, `v_n`, `v_r`, `W_tt`, `W_tn`, `W_tr`, `W_nn`, `W_nr`, `W_rr`, `R00`, `R01`,
+/// `R10`, `R11`, `R20`, `R21`, `R30`, `R31`) that is NaN or infinite, for example where a
+/// denominator vanishes or a parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn impact_coulomb_checked(
+    p: &Prepared,
+    th_st: F,
+    th_sw: F,
+    xd: F,
+    zd: F,
+    th_std: F,
+    th_swd: F,
+) -> Result<[F; 21], KernelError> {
+    KernelError::argument("th_st", th_st)?;
+    KernelError::argument("th_sw", th_sw)?;
+    KernelError::argument("xd", xd)?;
+    KernelError::argument("zd", zd)?;
+    KernelError::argument("th_std", th_std)?;
+    KernelError::argument("th_swd", th_swd)?;
+    let out = impact_coulomb(p, th_st, th_sw, xd, zd, th_std, th_swd);
+    KernelError::output("qdl0", out[0])?;
+    KernelError::output("qdl1", out[1])?;
+    KernelError::output("qdl2", out[2])?;
+    KernelError::output("qdl3", out[3])?;
+    KernelError::output("v_t", out[4])?;
+    KernelError::output("v_n", out[5])?;
+    KernelError::output("v_r", out[6])?;
+    KernelError::output("W_tt", out[7])?;
+    KernelError::output("W_tn", out[8])?;
+    KernelError::output("W_tr", out[9])?;
+    KernelError::output("W_nn", out[10])?;
+    KernelError::output("W_nr", out[11])?;
+    KernelError::output("W_rr", out[12])?;
+    KernelError::output("R00", out[13])?;
+    KernelError::output("R01", out[14])?;
+    KernelError::output("R10", out[15])?;
+    KernelError::output("R11", out[16])?;
+    KernelError::output("R20", out[17])?;
+    KernelError::output("R21", out[18])?;
+    KernelError::output("R30", out[19])?;
+    KernelError::output("R31", out[20])?;
+    Ok(out)
+}
+
 /// Constraint rows `J_I` of the impact: the gradients of the striking point's gap and of the locks.
 ///
 /// Paper: Eqs. 6-10.
@@ -1170,6 +1316,42 @@ pub fn energy_checked(
     let out = energy(p, z, th_st, th_sw, xd, zd, th_std, th_swd);
     KernelError::output("T", out[0])?;
     KernelError::output("V", out[1])?;
+    Ok(out)
+}
+
+/// Total mass of the bodies.
+///
+/// Paper: Eq. 47.
+///
+/// Arguments: no state arguments; parameters through `p` from [`prepare`].
+/// Returns `m_total`.
+///
+/// Operations per call: no arithmetic.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`total_mass_checked`] rejects
+/// non-finite arguments and outputs.
+#[inline]
+#[must_use]
+pub const fn total_mass(p: &Prepared) -> F {
+    p.k0
+}
+
+/// Checked variant of [`total_mass`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 1
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument that is NaN or infinite; otherwise
+/// [`KernelError::NonFiniteOutput`] naming the first output (in the order `m_total`) that is NaN or
+/// infinite, for example where a denominator vanishes or a parameter given to [`prepare`] is not
+/// finite.
+#[inline]
+pub fn total_mass_checked(p: &Prepared) -> Result<F, KernelError> {
+    let out = total_mass(p);
+    KernelError::output("m_total", out)?;
     Ok(out)
 }
 
