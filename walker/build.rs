@@ -84,15 +84,24 @@ const MODELS: &[(&str, &[Variant])] = &[
     ),
     (
         "rimless-wheel",
-        &[variant(Friction::Tanh, &[]), variant(Friction::Coulomb, &[])],
+        &[
+            variant(Friction::Tanh, &[]),
+            variant(Friction::Coulomb, &[]),
+        ],
     ),
     (
         "compass-gait",
-        &[variant(Friction::Tanh, &[]), variant(Friction::Coulomb, &[])],
+        &[
+            variant(Friction::Tanh, &[]),
+            variant(Friction::Coulomb, &[]),
+        ],
     ),
     (
         "three-link",
-        &[variant(Friction::Tanh, &[]), variant(Friction::Coulomb, &[])],
+        &[
+            variant(Friction::Tanh, &[]),
+            variant(Friction::Coulomb, &[]),
+        ],
     ),
 ];
 
@@ -122,20 +131,15 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             let mut scene = ModelScene::new(model.clone());
             scene.friction = v.friction;
             scene.fixed = v.fixed.iter().map(|(n, x)| ((*n).to_owned(), *x)).collect();
-            let wanted = SIMULATED
-                .iter()
-                .chain(if v.fixed.is_empty() { &[][..] } else { JACOBIANS });
+            let wanted = SIMULATED.iter().chain(if v.fixed.is_empty() {
+                &[][..]
+            } else {
+                JACOBIANS
+            });
             let has = |name: &str| derivation.kernels.iter().any(|k| k.name == name);
-            // Until the derivation gives `output_rates` and `input_rates`, the adapter computes
-            // them from `outputs` (`y`, `H`) and `input_map` (`S`).
-            let fallback = [("output_rates", "outputs"), ("input_rates", "input_map")]
-                .into_iter()
-                .filter(|(rates, map)| !has(rates) && has(map))
-                .map(|(_, map)| map);
             scene.kernels = Some(
                 wanted
                     .copied()
-                    .chain(fallback)
                     .filter(|w| has(w))
                     .map(str::to_owned)
                     .collect(),
@@ -147,11 +151,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
                 ..EmitOptions::default()
             };
             write_if_changed(&out.join(format!("{ident}.rs")), &emit(&module, &options)?)?;
-            let _ = write!(
-                modules,
-                "{}",
-                adapter(&model, &ident, v, &module)?
-            );
+            let _ = write!(modules, "{}", adapter(&model, &ident, v, &module)?);
             let fixed: Vec<String> = v
                 .fixed
                 .iter()
@@ -190,7 +190,11 @@ fn arg_expr(model: &Model, arg: &str) -> Result<String, String> {
         SymbolKind::Velocity => "qd",
         SymbolKind::Input => "u",
         SymbolKind::Aux => "v",
-        other => return Err(format!("kernel argument `{arg}`: a {other:?} is not an argument")),
+        other => {
+            return Err(format!(
+                "kernel argument `{arg}`: a {other:?} is not an argument"
+            ));
+        }
     };
     Ok(format!("a.{field}[{}]", sym.index))
 }
@@ -205,7 +209,6 @@ fn adapter(
 ) -> Result<String, String> {
     let mut arms = String::new();
     let mut has = Vec::new();
-    let (n, m) = (model.coordinates.len(), model.inputs.len());
     for k in &module.kernels {
         let args: Vec<String> = k
             .args
@@ -213,28 +216,14 @@ fn adapter(
             .map(|a| arg_expr(model, a))
             .collect::<Result<_, _>>()?;
         let call = format!("{}(p, {})", k.name, args.join(", "));
-        if k.name == "outputs" {
-            has.push("KernelId::OutputRates".to_owned());
-            let _ = writeln!(
-                arms,
-                "            KernelId::OutputRates => {{ let o = {call}; for i in 0..{m} {{ out[i] = o[i]; let mut s = 0.0; for j in 0..{n} {{ s += o[{m} + i * {n} + j] * a.qd[j]; }} out[{m} + i] = s; }} }}"
-            );
-            continue;
-        }
-        if k.name == "input_map" {
-            has.push("KernelId::InputRates".to_owned());
-            let _ = writeln!(
-                arms,
-                "            KernelId::InputRates => {{ let s = {call}; for i in 0..{m} {{ let mut w = 0.0; for j in 0..{n} {{ w += s[j][i] * a.qd[j]; }} out[i] = w; }} }}"
-            );
-            continue;
-        }
         let id = camel(&k.name);
         has.push(format!("KernelId::{id}"));
         let store = match k.output_shape {
             Shape::Scalar => format!("out[0] = {call};"),
             Shape::Vector(n) => format!("out[..{n}].copy_from_slice(&{call});"),
-            Shape::Matrix(r, c) => format!("out[..{}].copy_from_slice({call}.as_flattened());", r * c),
+            Shape::Matrix(r, c) => {
+                format!("out[..{}].copy_from_slice({call}.as_flattened());", r * c)
+            }
         };
         let _ = writeln!(arms, "            KernelId::{id} => {{ {store} }}");
     }
@@ -258,7 +247,11 @@ fn adapter(
          }}\n}}\n",
         model = model.name,
         friction = v.friction,
-        fixed = if fixed.is_empty() { "none".to_owned() } else { fixed.join(", ") },
+        fixed = if fixed.is_empty() {
+            "none".to_owned()
+        } else {
+            fixed.join(", ")
+        },
         has = has.join(" | "),
     ))
 }

@@ -414,4 +414,3 @@ fn write_if_changed(
         out_file,
     })
 }
-

@@ -20,7 +20,9 @@ const MAX_JAC: usize = 2 * MAX_COORDINATES * (3 * MAX_COORDINATES + 1);
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum NoJacobian {
     /// The kernels have no Jacobian kernels (every parameter at run time, or no closed form).
-    #[error("the model's kernels have no Jacobian kernels (they are generated with the parameters fixed, for models with closed forms)")]
+    #[error(
+        "the model's kernels have no Jacobian kernels (they are generated with the parameters fixed, for models with closed forms)"
+    )]
     NoKernels,
     /// The friction law is not the smooth one.
     #[error("the Jacobian kernels are used for the tanh friction law only")]
@@ -78,8 +80,11 @@ impl<'a> StanceJacobian<'a> {
         let mut k = [0.0; MAX_JAC];
         let dmu = self.dmu(qd[0]);
         if inputs == 0 {
-            m.kernels()
-                .eval(KernelId::AccelJacobian, &Args::state(q, qd), &mut k[..n * cols]);
+            m.kernels().eval(
+                KernelId::AccelJacobian,
+                &Args::state(q, qd),
+                &mut k[..n * cols],
+            );
             for i in 0..n {
                 let row = &k[i * cols..(i + 1) * cols];
                 for j in 0..2 * n {
@@ -95,8 +100,11 @@ impl<'a> StanceJacobian<'a> {
             v: &v[..inputs],
             ..Args::state(q, qd)
         };
-        m.kernels()
-            .eval(KernelId::ClosedLoopJacobian, &args, &mut k[..(n + inputs) * cols]);
+        m.kernels().eval(
+            KernelId::ClosedLoopJacobian,
+            &args,
+            &mut k[..(n + inputs) * cols],
+        );
         // d v_k / d y_j = -(K_P d y_k / d y_j) - K_D d yd_k / d y_j.
         let mut rates = [0.0; 4 * MAX_COORDINATES * MAX_COORDINATES];
         m.kernels().eval(

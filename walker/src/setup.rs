@@ -445,7 +445,10 @@ mod tests {
         assert_eq!(a.params.get("T_set"), Some(0.3));
         assert_eq!(a.friction, Friction::Tanh);
         let p = Setup::passive_slope().expect("passive-slope");
-        assert_eq!((p.params.get("phi"), p.params.get("mu0")), (Some(0.2), Some(0.2)));
+        assert_eq!(
+            (p.params.get("phi"), p.params.get("mu0")),
+            (Some(0.2), Some(0.2))
+        );
         assert!(matches!(
             p.with("m1", -3.0),
             Err(SetupError::Param(ParamError::OutOfRange { ref name, .. })) if name == "m1"

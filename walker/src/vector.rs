@@ -155,7 +155,10 @@ mod tests {
         assert_eq!(v.len(), 3);
         assert_eq!(v, [1.0, 2.0, 3.0]);
         assert_ne!(v, Vector::from_slice(&[1.0, 2.0]));
-        assert_eq!(serde_json::to_string(&v).ok().as_deref(), Some("[1.0,2.0,3.0]"));
+        assert_eq!(
+            serde_json::to_string(&v).ok().as_deref(),
+            Some("[1.0,2.0,3.0]")
+        );
         let v = Vector::concat(&[1.0, 2.0], &[3.0, 4.0]);
         assert_eq!(v.halves(), (&[1.0, 2.0][..], &[3.0, 4.0][..]));
     }

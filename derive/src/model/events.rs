@@ -1,14 +1,16 @@
 //! What a hybrid simulation of a model evaluates besides its dynamics: the strike guard and each
 //! fall's value (`events`), and the relabelling at the impact (`relabel`: the striking point
 //! becomes the new stance foot, every other coordinate by the model's `[relabel]` map, the
-//! velocities by the same maps' Jacobians).
+//! velocities by the same maps' Jacobians), with its partial derivatives by the coordinates
+//! and the velocities it is evaluated at (`relabel_jacobian`, for a Poincare map's Jacobian).
 
 use walker_scene::model::{FallCondition, Model};
 
-use super::assemble::kernel;
+use super::assemble::{kernel, named};
 use super::mechanics::{Mechanics, time_derivative};
 use crate::error::Result;
 use crate::kernels::{Kernel, Shape};
+use crate::matrix::Matrix;
 use crate::ratfunc::RatFunc;
 use crate::symbol::Symbols;
 
@@ -59,6 +61,8 @@ pub fn event_kernels(m: &Mechanics, model: &Model, table: &Symbols) -> Result<Ve
     for (i, v) in after.iter().enumerate() {
         outputs.push((format!("qd{i}"), time_derivative(&m.syms, v)));
     }
+    let state: Vec<_> = m.syms.q.iter().chain(&m.syms.qd).copied().collect();
+    let values: Vec<RatFunc> = outputs.iter().map(|(_, v)| v.clone()).collect();
     let relabel = kernel(
         table,
         "relabel",
@@ -68,5 +72,14 @@ pub fn event_kernels(m: &Mechanics, model: &Model, table: &Symbols) -> Result<Ve
         Shape::Parts,
         &[],
     );
-    Ok(vec![events, relabel])
+    let relabel_jacobian = kernel(
+        table,
+        "relabel_jacobian",
+        "Partial derivatives of the relabelled coordinates and velocities by the coordinates and the post-impact velocities",
+        "Eqs. 12-16, model file",
+        named("J", &Matrix::jacobian(&values, &state)),
+        Shape::Matrix(values.len(), state.len()),
+        &[],
+    );
+    Ok(vec![events, relabel, relabel_jacobian])
 }

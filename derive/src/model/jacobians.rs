@@ -6,8 +6,9 @@
 //! Columns, every one present even where it is identically zero (the foot's `x`, `z`), so that
 //! a simulator indexes them uniformly:
 //! - `accel_jacobian` (a model without inputs): `d qdd / d [q, qdot, mu]`, `n x (2n + 1)`;
-//! - `closed_loop_jacobian` (a model with outputs): `d qdd / d [q, qdot, mu, v]` of
-//!   `closed_loop`'s `qdd`, `n x (2n + 1 + m)`;
+//! - `closed_loop_jacobian` (a model with outputs): `d [qdd, u] / d [q, qdot, mu, v]` of
+//!   `closed_loop`'s outputs, `(n + m) x (2n + 1 + m)` (the inputs' rows for the input power's
+//!   integrand);
 //! - `impact_jacobian`: `d qdot+ / d [q, qdot]` of `impact`'s `qdot+`, `n x 2n`.
 //!
 //! `mu` is the friction coefficient itself: the code generator substitutes the scene's friction
@@ -35,7 +36,7 @@ use crate::symbol::{Atom, Sym, Symbols};
 pub(super) struct Differentiated<'a> {
     /// `accel`'s `qdd`, for a model without inputs.
     pub(super) accel: Option<&'a Matrix>,
-    /// `closed_loop`'s `qdd` with `u` substituted.
+    /// `closed_loop`'s `[qdd, u]` with `u` substituted, a column.
     pub(super) closed_loop: Option<&'a Matrix>,
     /// `impact`'s `qdot+`.
     pub(super) impact: &'a Matrix,
@@ -134,7 +135,7 @@ pub(super) fn jacobian_kernels(
         kernels.push(jacobian_kernel(
             table,
             "closed_loop_jacobian",
-            "Partial derivatives of the closed-loop accelerations by (q, qdot, mu, v)",
+            "Partial derivatives of the closed-loop accelerations and inputs by (q, qdot, mu, v)",
             "Eqs. 27, 31",
             closed_loop,
             &vars,

@@ -24,6 +24,7 @@ use super::structured::structured_kernels;
 use super::table::ModelSymbols;
 use crate::error::Result;
 use crate::kernels::{Kernel, Shape, Staged, find_kernel};
+use crate::matrix::Matrix;
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, Symbols};
 
@@ -106,7 +107,15 @@ impl ModelDerivation {
                     Ok(r)
                 };
                 let closed_accel = s.accel.try_map(subst)?;
-                Some((c, closed_accel))
+                let closed_outputs = Matrix::column(
+                    closed_accel
+                        .entries()
+                        .iter()
+                        .chain(c.u.entries())
+                        .cloned()
+                        .collect(),
+                );
+                Some((c, closed_accel, closed_outputs))
             }
             _ => None,
         };
@@ -114,7 +123,7 @@ impl ModelDerivation {
             (Some(s), Some(imp)) => {
                 let of = Differentiated {
                     accel: model.inputs.is_empty().then_some(&s.accel),
-                    closed_loop: control.as_ref().map(|(_, accel)| accel),
+                    closed_loop: control.as_ref().map(|(_, _, outputs)| outputs),
                     impact: &imp.single.velocity,
                 };
                 jacobian_kernels(&m, &of, &mut table)?
@@ -203,7 +212,7 @@ impl ModelDerivation {
                 "Eqs. 27, 31",
             );
             match (&slide, &control) {
-                (Some(s), Some((c, closed_accel))) => {
+                (Some(s), Some((c, closed_accel, _))) => {
                     let mut parts = named("A", &c.a);
                     parts.extend(named("B", &c.b));
                     kernels.push(finish(

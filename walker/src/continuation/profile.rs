@@ -10,7 +10,7 @@ use crate::model::{Contact, Model};
 use crate::ode::{Direction, Event, GaveUp, Integrator, OdeSystem, Outcome, Step, Tolerances};
 use crate::poincare::MapError;
 use crate::sim::{MAX_FALLS, SimConfig};
-use crate::vector::{MAX_COORDINATES, Vector};
+use crate::vector::Vector;
 
 use super::problem::ProblemError;
 
@@ -22,11 +22,10 @@ struct Stance<'a> {
 impl<const M: usize> OdeSystem<M> for Stance<'_> {
     fn rhs(&mut self, t: f64, y: &[f64; M], dy: &mut [f64; M]) {
         let n = M / 2;
-        let mut qdd = [0.0; MAX_COORDINATES];
-        let mut u = [0.0; MAX_COORDINATES];
-        self.model.stance(t, y, Contact::Smooth, &mut qdd, &mut u);
+        let mut out = [0.0; Model::STANCE_LEN];
+        self.model.stance(t, y, Contact::Smooth, &mut out);
         dy[..n].copy_from_slice(&y[n..]);
-        dy[n..].copy_from_slice(&qdd[..n]);
+        dy[n..].copy_from_slice(&out[..n]);
     }
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
@@ -192,7 +191,12 @@ fn step_sized<const M: usize>(
             } if !model.strike_ahead(&ye[..n]) => (t, y) = (te, ye),
             Outcome::Event { index: 0, t, y } => break (t, y),
             Outcome::Event { index, t, .. } => {
-                let name = model.spec().falls().nth(index - 1).unwrap_or("fall").to_owned();
+                let name = model
+                    .spec()
+                    .falls()
+                    .nth(index - 1)
+                    .unwrap_or("fall")
+                    .to_owned();
                 return Err(ProblemError::Fall { name, t });
             }
             Outcome::Reached { t, .. } => return Err(MapError::NoHeelStrike { t }.into()),

@@ -124,7 +124,9 @@ impl WalkerProblem {
             .params
             .with(&self.param, p)
             .map_err(|e| err(e.to_string()))?;
-        self.setup.model_with(&params).map_err(|e| err(e.to_string()))
+        self.setup
+            .model_with(&params)
+            .map_err(|e| err(e.to_string()))
     }
 
     /// The simulation settings.
@@ -171,10 +173,7 @@ impl GaitProblem for WalkerProblem {
                 },
                 tests: Tests {
                     min_normal_force: Some(step.min_normal_force),
-                    rear_release: model
-                        .spec()
-                        .double_support()
-                        .then_some(-step.rear_impulse),
+                    rear_release: model.spec().double_support().then_some(-step.rear_impulse),
                     strike_after_t_set: strike(step.period),
                     structure: structure(&model, false, step.impact),
                 },
@@ -203,10 +202,7 @@ impl GaitProblem for WalkerProblem {
             },
             tests: Tests {
                 min_normal_force: Some(last.lambda_min / cphi),
-                rear_release: model
-                    .spec()
-                    .double_support()
-                    .then_some(-last.rear_impulse),
+                rear_release: model.spec().double_support().then_some(-last.rear_impulse),
                 strike_after_t_set: strike(last.period),
                 structure: structure(&model, last.stuck_time > 0.0, last.impact),
             },

@@ -126,18 +126,20 @@ impl Parameters {
     /// # Errors
     /// [`ParamError::Unknown`], listing the model's parameters.
     pub fn index(&self, name: &str) -> Result<usize, ParamError> {
-        self.spec.parameter(name).ok_or_else(|| ParamError::Unknown {
-            name: name.to_owned(),
-            model: self.spec.name().to_owned(),
-            known: self
-                .spec
-                .model
-                .parameters
-                .iter()
-                .map(|p| p.name.name.as_str())
-                .collect::<Vec<_>>()
-                .join(", "),
-        })
+        self.spec
+            .parameter(name)
+            .ok_or_else(|| ParamError::Unknown {
+                name: name.to_owned(),
+                model: self.spec.name().to_owned(),
+                known: self
+                    .spec
+                    .model
+                    .parameters
+                    .iter()
+                    .map(|p| p.name.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })
     }
 
     /// Every value `(name, value)`, in file order.

@@ -74,11 +74,7 @@ impl Model {
         let phi = params.at_opt(spec.slope).unwrap_or(0.0);
         let (sphi, cphi) = phi.sin_cos();
         let mass: f64 = spec.model.bodies.iter().map(|b| eval(&b.mass)).sum();
-        let power_until = spec
-            .model
-            .power_until
-            .as_ref()
-            .map_or(f64::INFINITY, eval);
+        let power_until = spec.model.power_until.as_ref().map_or(f64::INFINITY, eval);
         Model {
             impact_law: spec.default_impact(),
             desired,
@@ -245,7 +241,11 @@ impl Model {
     fn aux_inputs(&self, t: f64, y: &[f64], v: &mut [f64]) {
         let (n, m) = (self.n(), self.inputs());
         let mut rates = [0.0; 2 * MAX_COORDINATES];
-        self.eval(KernelId::OutputRates, Args::state(&y[..n], &y[n..2 * n]), &mut rates[..2 * m]);
+        self.eval(
+            KernelId::OutputRates,
+            Args::state(&y[..n], &y[n..2 * n]),
+            &mut rates[..2 * m],
+        );
         let (k_p, k_d) = self.gains;
         for (i, vi) in v.iter_mut().enumerate().take(m) {
             *vi = aux_input(self.desired(i, t), rates[i], rates[m + i], k_p, k_d);
@@ -253,20 +253,31 @@ impl Model {
     }
 
     /// Stance accelerations `qdd` and control inputs `u` at time `t` since the last impact and
-    /// state `y` in the contact `contact`: for an actuated walker under the output control of
+    /// state `y` in the contact `contact`, written to `out` as `[qdd, u]` (`n + m` numbers; it
+    /// must hold [`Model::STANCE_LEN`]): for an actuated walker under the output control of
     /// Eqs. 31-32 (`closed_loop`; stuck, `closed_loop_stick`, the control recomputed with both
-    /// foot coordinates held), for a passive one Eq. 27 with `u = 0` (`accel`; stuck, `stick`).
-    /// The smooth law's kernels ignore `contact`; a Coulomb model given [`Contact::Smooth`] is
-    /// treated as stuck.
-    pub fn stance(&self, t: f64, y: &[f64], contact: Contact, qdd: &mut [f64], u: &mut [f64]) {
+    /// foot coordinates held), for a passive one Eq. 27 with `u = 0` (`accel`; stuck, `stick`,
+    /// whose ground forces follow the accelerations in `out`). The smooth law's kernels ignore
+    /// `contact`; a Coulomb model given [`Contact::Smooth`] is treated as stuck.
+    pub fn stance(&self, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
         let (n, m) = (self.n(), self.inputs());
         let (q, qd) = (&y[..n], &y[n..2 * n]);
-        let mut out = [0.0; MAX_OUT];
         let stuck = self.friction == FrictionLaw::Coulomb && contact.sigma() == 0.0;
+        let sigma = contact.sigma();
         if m == 0 {
-            let k = if stuck { KernelId::Stick } else { KernelId::Accel };
-            self.eval(k, Args { sigma: contact.sigma(), ..Args::state(q, qd) }, &mut out[..n + 2 * usize::from(stuck)]);
-            qdd[..n].copy_from_slice(&out[..n]);
+            let (k, len) = if stuck {
+                (KernelId::Stick, n + 2)
+            } else {
+                (KernelId::Accel, n)
+            };
+            self.eval(
+                k,
+                Args {
+                    sigma,
+                    ..Args::state(q, qd)
+                },
+                &mut out[..len],
+            );
             return;
         }
         let mut v = [0.0; MAX_COORDINATES];
@@ -276,20 +287,29 @@ impl Model {
         } else {
             (KernelId::ClosedLoop, n + m)
         };
-        self.eval(k, Args { sigma: contact.sigma(), v: &v[..m], ..Args::state(q, qd) }, &mut out[..len]);
-        qdd[..n].copy_from_slice(&out[..n]);
-        u[..m].copy_from_slice(&out[n..n + m]);
+        let args = Args {
+            sigma,
+            v: &v[..m],
+            ..Args::state(q, qd)
+        };
+        self.eval(k, args, &mut out[..len]);
     }
+
+    /// The length a buffer for [`Model::stance`] needs: the accelerations, the inputs and the
+    /// stuck foot's two ground forces of a model with [`MAX_COORDINATES`] coordinates and as
+    /// many inputs.
+    pub const STANCE_LEN: usize = 2 * MAX_COORDINATES + 2;
 
     /// The control inputs `u` at `(t, y)` in the contact `contact` (empty for a passive walker).
     #[must_use]
     pub fn control_input(&self, t: f64, y: &[f64], contact: Contact) -> Vector {
-        let mut qdd = [0.0; MAX_COORDINATES];
-        let mut u = Vector::zeros(self.inputs());
-        if self.is_active() {
-            self.stance(t, y, contact, &mut qdd, &mut u);
+        let (n, m) = (self.n(), self.inputs());
+        if m == 0 {
+            return Vector::EMPTY;
         }
-        u
+        let mut out = [0.0; Model::STANCE_LEN];
+        self.stance(t, y, contact, &mut out);
+        Vector::from_slice(&out[n..n + m])
     }
 
     /// The rates `w_i = S_i^T qd` at which the inputs do work at state `y`.
@@ -320,7 +340,11 @@ impl Model {
         let mut w = [0.0; MAX_COORDINATES];
         let m = self.inputs();
         self.input_rates(y, &mut w[..m]);
-        w[..m].iter().zip(u.iter()).map(|(wi, ui)| wi * ui).product()
+        w[..m]
+            .iter()
+            .zip(u.iter())
+            .map(|(wi, ui)| wi * ui)
+            .product()
     }
 
     /// The friction coefficient `mu` of the smooth law at the foot's velocity `xd`:
@@ -345,7 +369,15 @@ impl Model {
     /// `sigma`.
     fn lambda(&self, q: &[f64], qd: &[f64], u: &[f64], sigma: f64) -> f64 {
         let mut out = [0.0; 1];
-        self.eval(KernelId::Lambda, Args { u: u, sigma: sigma, ..Args::state(q, qd) }, &mut out);
+        self.eval(
+            KernelId::Lambda,
+            Args {
+                u: u,
+                sigma: sigma,
+                ..Args::state(q, qd)
+            },
+            &mut out,
+        );
         out[0]
     }
 
@@ -365,7 +397,14 @@ impl Model {
             } else {
                 let mut v = [0.0; MAX_COORDINATES];
                 self.aux_inputs(t, y, &mut v[..m]);
-                self.eval(KernelId::ClosedLoopStick, Args { v: &v[..m], ..Args::state(q, qd) }, &mut out[..n + m + 2]);
+                self.eval(
+                    KernelId::ClosedLoopStick,
+                    Args {
+                        v: &v[..m],
+                        ..Args::state(q, qd)
+                    },
+                    &mut out[..n + m + 2],
+                );
             }
             let (tangential, normal) = (out[n + m], out[n + m + 1]);
             let (cphi, sphi) = (self.slope[1], self.slope[2]);
@@ -399,7 +438,14 @@ impl Model {
             let mut v = [0.0; MAX_COORDINATES];
             self.aux_inputs(t, y, &mut v[..m]);
             let mut out = [0.0; MAX_OUT];
-            self.eval(KernelId::ClosedLoop, Args { v: &v[..m], ..Args::state(&y[..n], &y[n..2 * n]) }, &mut out[..n + m]);
+            self.eval(
+                KernelId::ClosedLoop,
+                Args {
+                    v: &v[..m],
+                    ..Args::state(&y[..n], &y[n..2 * n])
+                },
+                &mut out[..n + m],
+            );
             u[..m].copy_from_slice(&out[n..n + m]);
         }
         Some(self.lambda(&y[..n], &y[n..2 * n], &u[..m], 0.0) / self.slope[1])
@@ -463,7 +509,11 @@ impl Model {
     pub fn energy(&self, s: &[f64]) -> [f64; 2] {
         let n = self.n();
         let mut out = [0.0; 2];
-        self.eval(KernelId::Energy, Args::state(&s[..n], &s[n..2 * n]), &mut out);
+        self.eval(
+            KernelId::Energy,
+            Args::state(&s[..n], &s[n..2 * n]),
+            &mut out,
+        );
         out
     }
 
@@ -499,7 +549,11 @@ impl Model {
         self.eval(KernelId::Impact, Args::state(q, qd), &mut out[..rows + n]);
         let applied = out;
         let rear = if self.spec.double_support() {
-            self.eval(KernelId::ImpactDouble, Args::state(q, qd), &mut out[..rows + 1 + n]);
+            self.eval(
+                KernelId::ImpactDouble,
+                Args::state(q, qd),
+                &mut out[..rows + 1 + n],
+            );
             out[1] * cphi
         } else {
             0.0
@@ -519,7 +573,11 @@ impl Model {
         let n = self.n();
         let mut out = [0.0; MAX_OUT];
         let len = Ingredients::kernel_len(n);
-        self.eval(KernelId::ImpactCoulomb, Args::state(&s[..n], &s[n..2 * n]), &mut out[..len]);
+        self.eval(
+            KernelId::ImpactCoulomb,
+            Args::state(&s[..n], &s[n..2 * n]),
+            &mut out[..len],
+        );
         Ingredients::from_kernel(n, &out[..len])
     }
 
@@ -534,7 +592,11 @@ impl Model {
     pub fn reset(&self, pre: &[f64], imp: &ImpactResult) -> PostImpact {
         let n = self.n();
         let mut out = [0.0; MAX_LEN];
-        self.eval(KernelId::Relabel, Args::state(&pre[..n], &imp.qd), &mut out[..2 * n]);
+        self.eval(
+            KernelId::Relabel,
+            Args::state(&pre[..n], &imp.qd),
+            &mut out[..2 * n],
+        );
         let mut q_plus = Vector::from_slice(&out[..n]);
         let mut qd_plus = Vector::from_slice(&out[n..2 * n]);
         if imp.regime == ImpactRegime::Stick {

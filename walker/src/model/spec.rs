@@ -15,9 +15,7 @@ use crate::vector::MAX_COORDINATES;
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SpecError {
     /// More coordinates than the simulator's state holds.
-    #[error(
-        "model `{model}` has {n} coordinates; the simulator takes at most {MAX_COORDINATES}"
-    )]
+    #[error("model `{model}` has {n} coordinates; the simulator takes at most {MAX_COORDINATES}")]
     TooManyCoordinates {
         /// The model's name.
         model: String,

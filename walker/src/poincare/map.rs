@@ -10,7 +10,7 @@ use crate::ode::{
     Direction, Event, GaveUp, Integrator, NoObserver, OdeSystem, Outcome, Tolerances,
 };
 use crate::sim::SimConfig;
-use crate::vector::{MAX_COORDINATES, MAX_LEN, Vector};
+use crate::vector::{MAX_LEN, Vector};
 
 use super::error::MapError;
 use super::finite_difference::finite_difference_map;
@@ -50,11 +50,10 @@ impl Variational<'_> {
     /// `[qd, qdd]` at `(t, y)`.
     fn mech_rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
         let n = self.model.n();
-        let mut qdd = [0.0; MAX_COORDINATES];
-        let mut u = [0.0; MAX_COORDINATES];
-        self.model.stance(t, y, Contact::Smooth, &mut qdd, &mut u);
+        let mut a = [0.0; Model::STANCE_LEN];
+        self.model.stance(t, y, Contact::Smooth, &mut a);
         out[..n].copy_from_slice(&y[n..2 * n]);
-        out[n..2 * n].copy_from_slice(&qdd[..n]);
+        out[n..2 * n].copy_from_slice(&a[..n]);
     }
 }
 
@@ -64,7 +63,8 @@ impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
         let m = 2 * n;
         self.mech_rhs(t, y, &mut dy[..m]);
         let mut a = [0.0; MAX_LEN * MAX_LEN];
-        self.jac.accel(t, y, &mut a[..(n + self.model.inputs()) * m]);
+        self.jac
+            .accel(t, y, &mut a[..(n + self.model.inputs()) * m]);
         for j in 0..m {
             for i in 0..n {
                 dy[m + m * i + j] = y[m + m * (i + n) + j];
@@ -178,10 +178,13 @@ fn variational_map<const NA: usize>(
     }
     let mut guard_values = [0.0; 1 + crate::sim::MAX_FALLS];
     let k = model.event_count().min(guard_values.len());
-    let mut events = [Event::terminal(Direction::Falling, move |_, y: &[f64; NA]| {
-        model.events(&y[..n], &mut guard_values[..k]);
-        guard_values[0]
-    })];
+    let mut events = [Event::terminal(
+        Direction::Falling,
+        move |_, y: &[f64; NA]| {
+            model.events(&y[..n], &mut guard_values[..k]);
+            guard_values[0]
+        },
+    )];
     let mut sys = Variational { model, jac };
     let mut integ = Integrator::<NA>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut t = 0.0;

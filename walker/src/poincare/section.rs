@@ -69,11 +69,11 @@ impl<'a> Section<'a> {
         let names = self.model.spec().state_names();
         let params = self.model.params();
         e.eval(&|name| {
-                params.get(name).or_else(|| {
-                    let i = names.iter().position(|s| s == name)?;
-                    let k = self.free.iter().position(|&f| f == i)?;
-                    r.get(k).copied()
-                })
+            params.get(name).or_else(|| {
+                let i = names.iter().position(|s| s == name)?;
+                let k = self.free.iter().position(|&f| f == i)?;
+                r.get(k).copied()
+            })
         })
         .unwrap_or(f64::NAN)
     }
@@ -89,7 +89,7 @@ impl<'a> Section<'a> {
         for &(i, e) in &self.given {
             s[i] = self.eval(&e.expr, r);
         }
-        s[n + 1] = -s[n] * self.model.phi().tan();
+        s[n + 1] = 0.0 - s[n] * self.model.phi().tan();
         s
     }
 
@@ -109,7 +109,7 @@ impl<'a> Section<'a> {
         }
         let tphi = self.model.phi().tan();
         for k in 0..self.dim() {
-            e[n + 1][k] = -e[n][k] * tphi;
+            e[n + 1][k] = 0.0 - e[n][k] * tphi;
         }
         e
     }
@@ -128,7 +128,12 @@ impl<'a> Section<'a> {
             .iter()
             .map(|&row| {
                 (0..self.dim())
-                    .map(|b| e.iter().enumerate().map(|(k, ek)| full[row][k] * ek[b]).sum())
+                    .map(|b| {
+                        e.iter()
+                            .enumerate()
+                            .map(|(k, ek)| full[row][k] * ek[b])
+                            .sum()
+                    })
                     .collect()
             })
             .collect()

@@ -56,7 +56,13 @@ pub(super) fn blow_up<const S: usize>(
     let u = control_input(model, t, y, contact)
         .iter()
         .copied()
-        .fold(0.0, |a: f64, b: f64| if b.abs() > a.abs() || b.is_nan() { b } else { a });
+        .fold(0.0, |a: f64, b: f64| {
+            if b.abs() > a.abs() || b.is_nan() {
+                b
+            } else {
+                a
+            }
+        });
     if lam.is_finite() && u.is_finite() {
         FailureKind::LambdaNumeratorHuge { lambda: lam, u }
     } else {

@@ -5,7 +5,7 @@
 use std::cell::Cell;
 
 use crate::model::{Contact, FrictionLaw, Model, Reaction, Slide};
-use crate::vector::{MAX_COORDINATES, Vector};
+use crate::vector::Vector;
 
 use super::failure::{Failure, FailureKind};
 use super::state::mech;
@@ -124,9 +124,8 @@ pub(super) fn contact_at_rest<const S: usize>(
         return Ok(Contact::Stuck);
     }
     let slide = Slide::of(-held.tangential);
-    let mut qdd = [0.0; MAX_COORDINATES];
-    let mut u = [0.0; MAX_COORDINATES];
-    model.stance(t, y, Contact::Sliding(slide), &mut qdd, &mut u);
+    let mut qdd = [0.0; Model::STANCE_LEN];
+    model.stance(t, y, Contact::Sliding(slide), &mut qdd);
     if !qdd[0].is_finite() {
         return Err(FailureKind::NonFinite.at(step, t, mech(y)));
     }

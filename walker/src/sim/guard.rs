@@ -141,9 +141,7 @@ impl<'a> Guards<'a> {
     pub(super) fn events<const S: usize>(&self) -> Vec<Event<'_, S>> {
         self.list
             .iter()
-            .map(|&g| {
-                Event::terminal(g.direction(), move |t, y: &[f64; S]| self.value(g, t, y))
-            })
+            .map(|&g| Event::terminal(g.direction(), move |t, y: &[f64; S]| self.value(g, t, y)))
             .collect()
     }
 }

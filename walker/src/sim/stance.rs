@@ -5,7 +5,7 @@
 use crate::jacobian::StanceJacobian;
 use crate::model::Model;
 use crate::ode::{Observer, OdeSystem, Step};
-use crate::vector::{MAX_COORDINATES, Vector};
+use crate::vector::Vector;
 
 use super::foot::{Foot, control_input, ground_reaction};
 use super::frame::Frames;
@@ -26,14 +26,13 @@ pub(super) struct Stance<'a> {
 impl<const S: usize> OdeSystem<S> for Stance<'_> {
     fn rhs(&mut self, t: f64, y: &[f64; S], dy: &mut [f64; S]) {
         let n = S / 2;
-        let mut qdd = [0.0; MAX_COORDINATES];
-        let mut u = [0.0; MAX_COORDINATES];
-        self.model
-            .stance(t, y, self.foot.contact(), &mut qdd, &mut u);
+        let mut out = [0.0; Model::STANCE_LEN];
+        self.model.stance(t, y, self.foot.contact(), &mut out);
         dy[..n].copy_from_slice(&y[n..2 * n]);
-        dy[n..2 * n].copy_from_slice(&qdd[..n]);
+        dy[n..2 * n].copy_from_slice(&out[..n]);
         dy[2 * n] = if self.model.power_counts(t) {
-            self.model.power_integrand(y, &u[..self.model.inputs()])
+            self.model
+                .power_integrand(y, &out[n..n + self.model.inputs()])
         } else {
             0.0
         };
