@@ -86,12 +86,15 @@ pub fn assignments(field: &str, pairs: &[String]) -> Result<Vec<(String, f64)>, 
     pairs
         .iter()
         .map(|s| {
-            let (name, value) = s.split_once('=').ok_or_else(|| {
-                InputError::new(field, format!("{s:?}: expected NAME=VALUE"))
-            })?;
+            let (name, value) = s
+                .split_once('=')
+                .ok_or_else(|| InputError::new(field, format!("{s:?}: expected NAME=VALUE")))?;
             let name = name.trim();
             if name.is_empty() {
-                return Err(InputError::new(field, format!("{s:?}: expected NAME=VALUE")));
+                return Err(InputError::new(
+                    field,
+                    format!("{s:?}: expected NAME=VALUE"),
+                ));
             }
             let v: f64 = value.trim().parse().map_err(|_| {
                 InputError::new(field, format!("{s:?}: the value of {name} is not a number"))

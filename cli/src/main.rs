@@ -115,8 +115,9 @@ fn run(cli: Cli) -> Result<(), CliError> {
             let param = param.as_deref().map_or_else(
                 || {
                     let spec = setup.walker.spec();
-                    spec.mu0
-                        .map_or("mu0".to_owned(), |i| spec.model.parameters[i].name.name.clone())
+                    spec.mu0.map_or("mu0".to_owned(), |i| {
+                        spec.model.parameters[i].name.name.clone()
+                    })
                 },
                 str::to_owned,
             );

@@ -132,7 +132,10 @@ pub struct Report {
 /// The report of a fixed-point search (`names`: the model's state components, for the text);
 /// a failed search is a result (status `failed`).
 #[must_use]
-pub fn fixed_point_report(result: &Result<FixedPoint, FixedPointError>, names: &[String]) -> Report {
+pub fn fixed_point_report(
+    result: &Result<FixedPoint, FixedPointError>,
+    names: &[String],
+) -> Report {
     match result {
         Ok(fp) => Report {
             json: serde_json::to_value(fp).unwrap_or(serde_json::Value::Null),

@@ -86,8 +86,7 @@ impl Derived {
         let mut scene = ModelScene::new(self.model.clone());
         scene.friction = law;
         let module = lower_model(&self.derivation, &scene).map_err(|e| e.to_string())?;
-        let tape =
-            TapeModule::new(&module, &EmitOptions::default()).map_err(|e| e.to_string())?;
+        let tape = TapeModule::new(&module, &EmitOptions::default()).map_err(|e| e.to_string())?;
         let symbols = self.model.symbols();
         let kernels = KernelId::ALL
             .iter()

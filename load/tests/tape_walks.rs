@@ -44,7 +44,13 @@ fn walk_of(path: &std::path::Path, friction: Friction, runtime: bool) -> walker:
 
 #[test]
 fn a_derived_copy_of_every_compiled_model_walks_bit_for_bit_as_the_compiled_one() {
-    for name in ["paper-active", "paper-passive", "rimless-wheel", "compass-gait", "three-link"] {
+    for name in [
+        "paper-active",
+        "paper-passive",
+        "rimless-wheel",
+        "compass-gait",
+        "three-link",
+    ] {
         let copied = copy(name);
         for friction in [Friction::Tanh, Friction::Coulomb] {
             let compiled = walk_of(&shipped(name), friction, false);
@@ -61,6 +67,9 @@ fn a_model_that_is_not_compiled_needs_the_run_time_source() {
     let copied = copy("rimless-wheel");
     let ov = Overrides::default();
     let err = Setup::from_model_file(&copied, &ov, None).expect_err("not compiled");
-    assert!(err.to_string().contains("not one of the shipped models"), "{err}");
+    assert!(
+        err.to_string().contains("not one of the shipped models"),
+        "{err}"
+    );
     let _ = std::fs::remove_file(copied);
 }

@@ -48,8 +48,8 @@ fn the_active_walkers_symbols_come_in_canonical_order() -> Result<(), ModelError
         names,
         [
             "x", "z", "th1", "th2", "xd", "zd", "th1d", "th2d", "xdd", "zdd", "th1dd", "th2dd",
-            "m1", "m2", "l", "I1", "I2", "g", "alpha", "mu0", "c", "T_set", "K_P", "K_D",
-            "omega0", "u", "mu", "v", "t"
+            "m1", "m2", "l", "I1", "I2", "g", "alpha", "mu0", "c", "T_set", "K_P", "K_D", "omega0",
+            "u", "mu", "v", "t"
         ]
     );
     let angles: Vec<&str> = m

@@ -47,7 +47,12 @@ pub fn title(model: &Model, speed: f64) -> String {
         .map_or_else(String::new, |t| format!(", T_set = {t} s"));
     let walker = format!(
         "{}, {floor}{ramp}",
-        model.spec().model.title.as_deref().unwrap_or(model.spec().name())
+        model
+            .spec()
+            .model
+            .title
+            .as_deref()
+            .unwrap_or(model.spec().name())
     );
     let speed = if (speed - 1.0).abs() < 1e-12 {
         "real time".to_owned()

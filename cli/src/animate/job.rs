@@ -116,16 +116,17 @@ pub fn sample(
 /// # Errors
 /// The file could not be drawn or written.
 pub fn write(model: &Model, tr: &Trajectory, req: &Request) -> Result<Written, AnimateError> {
-    let film = Film::new(model, tr, req.speed, req.size, title(model, req.speed)).ok_or_else(|| {
-        InputError::new(
-            "model",
-            format!(
-                "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
+    let film =
+        Film::new(model, tr, req.speed, req.size, title(model, req.speed)).ok_or_else(|| {
+            InputError::new(
+                "model",
+                format!(
+                    "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
                  alpha)",
-                model.spec().name()
-            ),
-        )
-    })?;
+                    model.spec().name()
+                ),
+            )
+        })?;
     let path = &req.output;
     let draw = |message: String| AnimateError::Draw {
         path: path.clone(),

@@ -90,12 +90,7 @@ pub fn write_bifurcation(out: &Path, d: &Data) -> Result<(), WriteError> {
     let (fig8, fig10, over_phi) = std::thread::scope(|scope| {
         let fig8: Vec<_> = T_SETS
             .map(|t| {
-                scope.spawn(move || {
-                    (
-                        format!("T_set = {t}"),
-                        branch(active(t), "mu0", 0.0, 1.0),
-                    )
-                })
+                scope.spawn(move || (format!("T_set = {t}"), branch(active(t), "mu0", 0.0, 1.0)))
             })
             .into_iter()
             .collect();

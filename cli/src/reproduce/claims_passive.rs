@@ -261,8 +261,8 @@ pub fn large_mu0(s: &mut String, d: &Data) {
 
 #[cfg(test)]
 mod tests {
-    use super::painleve_mu0;
     use super::super::models::Table1;
+    use super::painleve_mu0;
 
     /// Table 1: `(2 * 0.5 + 3 (1 - cos 30 deg)) / (3 sin 30 deg) = (1 + 0.401924) / 1.5`
     /// (the 0.402 of the paper's text under Eq. 11); the inputs are exact to f64, so 1e-12.

@@ -77,7 +77,11 @@ fn convergence(cfg: &SimConfig) -> Result<Vec<[f64; 3]>, WriteError> {
         let mut qds = vec![Vector::from([0.0, 0.0, w0, w0])];
         qds.extend(w.steps.iter().map(|s| s.qd_plus));
         for qd in qds {
-            let d: Vec<f64> = qd.iter().zip(eq.qd_plus.iter()).map(|(a, b)| a - b).collect();
+            let d: Vec<f64> = qd
+                .iter()
+                .zip(eq.qd_plus.iter())
+                .map(|(a, b)| a - b)
+                .collect();
             let norm = d.iter().map(|v| v * v).sum::<f64>().sqrt();
             convergence.push([norm, d[0], d[2]]);
         }
@@ -108,7 +112,12 @@ pub fn collect() -> Result<Data, WriteError> {
     let omegas = |mu0: f64| -> Result<Vec<(f64, Walk)>, WriteError> {
         OMEGAS
             .iter()
-            .map(|&w0| Ok((w0, walk_from(&active(mu0, 0.3)?, &cfg, w0, &limits(30, false))?)))
+            .map(|&w0| {
+                Ok((
+                    w0,
+                    walk_from(&active(mu0, 0.3)?, &cfg, w0, &limits(30, false))?,
+                ))
+            })
             .collect()
     };
     let omega_series = [omegas(0.0)?, omegas(0.4)?];
@@ -183,7 +192,12 @@ pub fn collect() -> Result<Data, WriteError> {
     } = sweeps;
     let sticks = [0.2, 0.5]
         .iter()
-        .map(|&mu0| Ok((mu0, walk_from(&passive(mu0, 0.2)?, &cfg, 0.5, &limits(6, true))?)))
+        .map(|&mu0| {
+            Ok((
+                mu0,
+                walk_from(&passive(mu0, 0.2)?, &cfg, 0.5, &limits(6, true))?,
+            ))
+        })
         .collect::<Result<_, WriteError>>()?;
     let step_lengths = [0.2, 0.3, 0.4, 0.5]
         .iter()

@@ -90,7 +90,9 @@ impl PassiveModels {
     /// The passive wheel cannot be set up (a defect of the shipped files).
     pub fn new() -> Result<PassiveModels, WriteError> {
         let over = |(from, to, step): (f64, f64, f64)| {
-            grid(&PHIS, &mu0_grid(from, to, step), |phi, mu0| passive(mu0, phi))
+            grid(&PHIS, &mu0_grid(from, to, step), |phi, mu0| {
+                passive(mu0, phi)
+            })
         };
         let (from, to, step) = INERTIA_MU0;
         Ok(PassiveModels {

@@ -39,7 +39,12 @@ fn continue_chains() -> Vec<(bool, Vec<ContinuationPoint>)> {
                     &cfg,
                 )
             } else {
-                continuation(|phi, mu0| passive(mu0, phi).ok(), &[chain], &passive_grid, &cfg)
+                continuation(
+                    |phi, mu0| passive(mu0, phi).ok(),
+                    &[chain],
+                    &passive_grid,
+                    &cfg,
+                )
             };
             (is_active, pts)
         })

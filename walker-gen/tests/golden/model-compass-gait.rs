@@ -1056,7 +1056,7 @@ pub fn impact_double_rows_checked(
 #[must_use]
 pub fn events(p: &Prepared, x: F, z: F, th_st: F, th_sw: F) -> [F; 2] {
     let (t0, t1) = sin_cos(th_st);
-    [th_sw - p.k10 + th_st, p.k6 * x + p.k7 * z + t1 * p.k8 + t0 * p.k9]
+    [p.k10 - th_sw - th_st, p.k6 * x + p.k7 * z + t1 * p.k8 + t0 * p.k9]
 }
 
 /// Checked variant of [`events`]: the same value, or why it would not be finite.
@@ -1180,6 +1180,145 @@ pub fn relabel_checked(
     KernelError::output("qd1", out[5])?;
     KernelError::output("qd2", out[6])?;
     KernelError::output("qd3", out[7])?;
+    Ok(out)
+}
+
+/// Partial derivatives of the relabelled coordinates and velocities by the coordinates and the
+/// post-impact velocities.
+///
+/// Paper: Eqs. 12-16, model file.
+///
+/// Arguments: `th_st`, `th_sw`, `th_std`, `th_swd`; parameters through `p` from [`prepare`].
+/// Returns, row-major, `[[J00, J01, J02, J03, J04, J05, J06, J07], [J10, J11, J12, J13, J14, J15, J16, J17], [J20, J21, J22, J23, J24, J25, J26, J27], [J30, J31, J32, J33, J34, J35, J36, J37], [J40, J41, J42, J43, J44, J45, J46, J47], [J50, J51, J52, J53, J54, J55, J56, J57], [J60, J61, J62, J63, J64, J65, J66, J67], [J70, J71, J72, J73, J74, J75, J76, J77]]`.
+///
+/// Operations per call: 10 mul, 4 neg, 2 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`relabel_jacobian_checked`]
+/// rejects non-finite arguments and outputs.
+#[inline]
+#[must_use]
+pub fn relabel_jacobian(
+    p: &Prepared,
+    th_st: F,
+    th_sw: F,
+    th_std: F,
+    th_swd: F,
+) -> [[F; 8]; 8] {
+    let (t0, t1) = sin_cos(th_st);
+    let (t2, t3) = sin_cos(th_sw);
+    let t4 = t2 * p.k11;
+    let t5 = t1 * p.k11;
+    let t6 = -(t3 * p.k11);
+    let t7 = th_std * p.k11;
+    let t8 = th_swd * p.k11;
+    let t9 = -(t0 * p.k11);
+    [
+        [1.0_f64, 0.0_f64, t5, t6, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
+        [0.0_f64, 1.0_f64, t9, t4, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
+        [0.0_f64, 0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
+        [0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
+        [0.0_f64, 0.0_f64, -(t0 * t7), t2 * t8, 1.0_f64, 0.0_f64, t5, t6],
+        [0.0_f64, 0.0_f64, -(t1 * t7), t3 * t8, 0.0_f64, 1.0_f64, t9, t4],
+        [0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 1.0_f64],
+        [0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64],
+    ]
+}
+
+/// Checked variant of [`relabel_jacobian`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 68
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th_st`, `th_sw`,
+/// `th_std`, `th_swd`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming
+/// the first output (in the order `J00`, `J01`, `J02`, `J03`, `J04`, `J05`, `J06`, `J07`, `J10`,
+/// `J11`, `J12`, `J13`, `J14`, `J15`, `J16`, `J17`, `J20`, `J21`, `J22`, `J23`, `J24`, `J25`,
+/// `J26`, `J27`, `J30`, `J31`, `J32`, `J33`, `J34`, `J35`, `J36`, `J37`, `J40`, `J41`, `J42`,
+/// `J43`, `J44`, `J45`, `J46`, `J47`, `J50`, `J51`, `J52`, `J53`, `J54`, `J55`, `J56`, `J57`,
+/// `J60`, `J61`, `J62`, `J63`, `J64`, `J65`, `J66`, `J67`, `J70`, `J71`, `J72`, `J73`, `J74`,
+/// `J75`, `J76`, `J77`) that is NaN or infinite, for example where a denominator vanishes or a
+/// parameter given to [`prepare`] is not finite.
+#[inline]
+pub fn relabel_jacobian_checked(
+    p: &Prepared,
+    th_st: F,
+    th_sw: F,
+    th_std: F,
+    th_swd: F,
+) -> Result<[[F; 8]; 8], KernelError> {
+    KernelError::argument("th_st", th_st)?;
+    KernelError::argument("th_sw", th_sw)?;
+    KernelError::argument("th_std", th_std)?;
+    KernelError::argument("th_swd", th_swd)?;
+    let out = relabel_jacobian(p, th_st, th_sw, th_std, th_swd);
+    KernelError::output("J00", out[0][0])?;
+    KernelError::output("J01", out[0][1])?;
+    KernelError::output("J02", out[0][2])?;
+    KernelError::output("J03", out[0][3])?;
+    KernelError::output("J04", out[0][4])?;
+    KernelError::output("J05", out[0][5])?;
+    KernelError::output("J06", out[0][6])?;
+    KernelError::output("J07", out[0][7])?;
+    KernelError::output("J10", out[1][0])?;
+    KernelError::output("J11", out[1][1])?;
+    KernelError::output("J12", out[1][2])?;
+    KernelError::output("J13", out[1][3])?;
+    KernelError::output("J14", out[1][4])?;
+    KernelError::output("J15", out[1][5])?;
+    KernelError::output("J16", out[1][6])?;
+    KernelError::output("J17", out[1][7])?;
+    KernelError::output("J20", out[2][0])?;
+    KernelError::output("J21", out[2][1])?;
+    KernelError::output("J22", out[2][2])?;
+    KernelError::output("J23", out[2][3])?;
+    KernelError::output("J24", out[2][4])?;
+    KernelError::output("J25", out[2][5])?;
+    KernelError::output("J26", out[2][6])?;
+    KernelError::output("J27", out[2][7])?;
+    KernelError::output("J30", out[3][0])?;
+    KernelError::output("J31", out[3][1])?;
+    KernelError::output("J32", out[3][2])?;
+    KernelError::output("J33", out[3][3])?;
+    KernelError::output("J34", out[3][4])?;
+    KernelError::output("J35", out[3][5])?;
+    KernelError::output("J36", out[3][6])?;
+    KernelError::output("J37", out[3][7])?;
+    KernelError::output("J40", out[4][0])?;
+    KernelError::output("J41", out[4][1])?;
+    KernelError::output("J42", out[4][2])?;
+    KernelError::output("J43", out[4][3])?;
+    KernelError::output("J44", out[4][4])?;
+    KernelError::output("J45", out[4][5])?;
+    KernelError::output("J46", out[4][6])?;
+    KernelError::output("J47", out[4][7])?;
+    KernelError::output("J50", out[5][0])?;
+    KernelError::output("J51", out[5][1])?;
+    KernelError::output("J52", out[5][2])?;
+    KernelError::output("J53", out[5][3])?;
+    KernelError::output("J54", out[5][4])?;
+    KernelError::output("J55", out[5][5])?;
+    KernelError::output("J56", out[5][6])?;
+    KernelError::output("J57", out[5][7])?;
+    KernelError::output("J60", out[6][0])?;
+    KernelError::output("J61", out[6][1])?;
+    KernelError::output("J62", out[6][2])?;
+    KernelError::output("J63", out[6][3])?;
+    KernelError::output("J64", out[6][4])?;
+    KernelError::output("J65", out[6][5])?;
+    KernelError::output("J66", out[6][6])?;
+    KernelError::output("J67", out[6][7])?;
+    KernelError::output("J70", out[7][0])?;
+    KernelError::output("J71", out[7][1])?;
+    KernelError::output("J72", out[7][2])?;
+    KernelError::output("J73", out[7][3])?;
+    KernelError::output("J74", out[7][4])?;
+    KernelError::output("J75", out[7][5])?;
+    KernelError::output("J76", out[7][6])?;
+    KernelError::output("J77", out[7][7])?;
     Ok(out)
 }
 
