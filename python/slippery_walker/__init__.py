@@ -1,15 +1,24 @@
 """Limit-cycle walkers on slippery ground (Asano, Kikuchi, Shibata), with a Rust core.
 
-The functions take keyword arguments with the meaning of the ``walker`` command line's flags
-and return NumPy arrays:
+Any planar walker of a model file (``models/*.toml``, ``docs/model-format.md``) runs through
+one simulator; the paper's two walkers are the built-in scenes ``"active-level"`` and
+``"passive-slope"``. The functions take keyword arguments with the meaning of the ``walker``
+command line's flags and return NumPy arrays:
 
 - :func:`simulate` -- one walk: per-step descriptors ``T``, ``dx``, ``V``, ``p``, ``SR``,
   ``q_plus``, ``qd_plus``; with ``trajectory=True`` also the motion at exact times.
-- :func:`sweep` -- walks over a grid of ``mu0`` for chains of ``t_set`` (active walker) or
-  ``phi`` (passive wheel), procedures (P1a)-(P5a) and (P1b)-(P5b).
+- :func:`sweep` -- walks over a grid of one parameter (``mu0`` by default) for chains of
+  ``t_set`` or ``phi``, procedures (P1a)-(P5a) and (P1b)-(P5b).
 - :func:`walk_points` -- independent walks at the points of a parameter grid (one process);
   :func:`slippery_walker.dask.grid_sweep` runs the same on a Dask cluster.
 - :func:`fixed_point` -- the limit cycle and its Floquet multipliers.
+- :func:`describe` -- a walker's parameters, state components, inputs and start.
+
+Every function takes the walker as ``scene=`` (a built-in name or a scene file) or ``model=``
+(a model file; one that is not shipped is derived when the call starts), its run-time
+parameters by keyword (``mu0``, ``c``, ``t_set``, ``phi``) or by name (``set={name: value}``),
+and, where a walk starts, ``omega0`` (the paper's start parameter) and ``init={name: value}``
+(components of the start by name, e.g. ``{"th1d": 0.7}``).
 
 Bad input raises :class:`ValueError` naming the argument and its valid range. A walker failure
 (lift-off, falling, ...) is a result: ``status`` names it and ``failure`` holds its details.
@@ -19,8 +28,9 @@ Long runs release the GIL; sweeps and grids can be interrupted with Ctrl-C.
 from __future__ import annotations
 
 import json
+import os
 from dataclasses import dataclass, field
-from typing import Any, Dict, Iterable, Mapping, Optional, Sequence, Union
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -34,40 +44,86 @@ MAX_STEPS: int = _core.MAX_STEPS
 
 __all__ = [
     "FixedPoint",
+    "ModelInfo",
+    "Parameter",
     "Sweep",
     "Walk",
     "__version__",
+    "describe",
     "fixed_point",
     "simulate",
     "sweep",
     "walk_points",
 ]
 
+Path = Union[str, "os.PathLike[str]"]
+"""A file's path: a string or a path-like object."""
 
-def _arr(values: Iterable[float], width: int = 0) -> np.ndarray:
+Values = Optional[Mapping[str, float]]
+"""Values by name (``set``, ``init``): a dict of numbers, or None for none."""
+
+
+def _arr(values: Iterable[float], width: Optional[int] = None) -> np.ndarray:
     a = np.asarray(values, dtype=np.float64)
-    return a.reshape(-1, width) if width else a
+    return a if width is None else a.reshape(-1, width)
 
 
 def _failure(text: Optional[str]) -> Optional[Dict[str, Any]]:
     return None if text is None else json.loads(text)
 
 
+def _path(arg: str, p: Optional[Path]) -> Optional[str]:
+    if p is None:
+        return None
+    try:
+        return os.fspath(p)
+    except TypeError:
+        raise ValueError(f"invalid {arg}: {p!r}: must be a name or a file path") from None
+
+
+def _pairs(arg: str, values: Values) -> List[Tuple[str, float]]:
+    """``values`` as ``(name, value)`` pairs in the caller's order, each value a number."""
+    if values is None:
+        return []
+    if not isinstance(values, Mapping):
+        raise ValueError(f"invalid {arg}: must be a dict of names to numbers")
+    out = []
+    for k, v in values.items():
+        if not isinstance(k, str):
+            raise ValueError(f"invalid {arg}: {k!r}: the keys must be names (str)")
+        try:
+            x = float(v)
+        except (TypeError, ValueError):
+            raise ValueError(f"invalid {arg}['{k}']: {v!r}: must be a number") from None
+        out.append((k, x))
+    return out
+
+
+def _walker(scene: Optional[Path], model: Optional[Path], set: Values) -> Dict[str, Any]:
+    """The walker's keyword arguments of the core functions."""
+    return dict(scene=_path("scene", scene), model=_path("model", model),
+                set=_pairs("set", set))
+
+
 @dataclass(frozen=True)
 class Walk:
     """One walk: its outcome and one row per completed step.
 
-    ``status`` is ``"ok"`` or the failure's name (``"lift-off"``, ``"fell-backward"``, ...);
-    ``failure`` is the command line's JSON object of the failure as a dict (``kind``,
-    ``step``, ``t``, ``state``, ...) or None. Per-step arrays (one row per step): ``T`` (s),
-    ``dx`` (m), ``V`` (m/s), ``p`` (W) and ``SR`` (NaN for the passive wheel, which has no
-    input), ``q_plus`` ``[x, z, th1, th2]`` and ``qd_plus`` ``[xd, zd, th1d, th2d]`` after each
-    impact (shape ``(steps, 4)``).
+    ``status`` is ``"ok"`` or the failure's name (``"lift-off"``, ``"fell-backward"``, a fall
+    named in the model file, ...); ``failure`` is the command line's JSON object of the failure
+    as a dict (``kind``, ``step``, ``t``, ``state``, ...) or None. Per-step arrays (one row per
+    step): ``T`` (s), ``dx`` (m), ``V`` (m/s), ``p`` (W) and ``SR`` (NaN for a walker without
+    inputs, such as the passive wheel, or a model that does not report them), ``q_plus`` and
+    ``qd_plus`` after each impact (shape ``(steps, n)`` for a model with ``n`` coordinates: 4
+    for the paper's walkers, ``[x, z, th1, th2]`` and ``[xd, zd, th1d, th2d]``).
+    ``state_names`` names the ``2 n`` state components (the coordinates, then their velocities),
+    ``input_names`` the inputs.
 
     With ``trajectory=True``: ``times`` (s since the start of the walk, exactly ``k * dt``),
-    ``states`` (shape ``(frames, 8)``, ``[x, z, th1, th2, xd, zd, th1d, th2d]`` in the stance
-    leg's coordinates), ``frame_steps`` (the step of each frame), ``end_time`` (the last
-    impact or the failure) and ``truncated`` (``max_frames`` was reached).
+    ``states`` (shape ``(frames, 2 n)``, in the order of ``state_names``, in the stance leg's
+    coordinates), ``u`` (the inputs, shape ``(frames, m)`` in the order of ``input_names``),
+    ``frame_steps`` (the step of each frame), ``end_time`` (the last impact or the failure)
+    and ``truncated`` (``max_frames`` was reached).
     """
 
     status: str
@@ -84,6 +140,9 @@ class Walk:
     frame_steps: Optional[np.ndarray] = None
     end_time: Optional[float] = None
     truncated: bool = False
+    state_names: Tuple[str, ...] = ()
+    input_names: Tuple[str, ...] = ()
+    u: Optional[np.ndarray] = None
 
     @property
     def ok(self) -> bool:
@@ -97,11 +156,16 @@ class Walk:
 
 
 def _walk(d: Mapping[str, Any]) -> Walk:
+    names = tuple(d["state_names"])
+    inputs = tuple(d["input_names"])
+    n = len(names) // 2
     extra: Dict[str, Any] = {}
     if "times" in d:
+        frames = len(d["times"])
         extra = dict(
             times=_arr(d["times"]),
-            states=_arr(d["states"], 8),
+            states=_arr(d["states"]).reshape(frames, 2 * n),
+            u=_arr(d["u"]).reshape(frames, len(inputs)),
             frame_steps=np.asarray(d["frame_steps"], dtype=np.int64),
             end_time=d["end_time"],
             truncated=d["truncated"],
@@ -114,15 +178,20 @@ def _walk(d: Mapping[str, Any]) -> Walk:
         V=_arr(d["V"]),
         p=_arr(d["p"]),
         SR=_arr(d["SR"]),
-        q_plus=_arr(d["q_plus"], 4),
-        qd_plus=_arr(d["qd_plus"], 4),
+        q_plus=_arr(d["q_plus"], n),
+        qd_plus=_arr(d["qd_plus"], n),
+        state_names=names,
+        input_names=inputs,
         **extra,
     )
 
 
 def simulate(
     *,
-    scene: str = "active-level",
+    scene: Optional[Path] = None,
+    model: Optional[Path] = None,
+    set: Values = None,
+    init: Values = None,
     mu0: Optional[float] = None,
     t_set: Optional[float] = None,
     omega0: Optional[float] = None,
@@ -142,13 +211,24 @@ def simulate(
     """Simulate one walk, as ``walker simulate --json``.
 
     Args:
-        scene: ``"active-level"``, ``"passive-slope"`` or the path of a scene ``.toml``.
-        mu0: friction coefficient ``mu0`` (>= 0; default: the scene's).
-        t_set: ramp duration ``T_set`` (s, > 0; active walker).
-        omega0: initial angular velocity (rad/s; default: the scene's).
-        phi: slope angle (rad, in [0, pi/2); passive wheel; 0 for the active walker).
-        c: sharpness of the friction law ``mu = -mu0 tanh(c xd)`` (s/m, > 0).
-        friction: ``"tanh"`` (Eqs. 26, 37) or ``"coulomb"`` (Eq. 25); default: the scene's.
+        scene: ``"active-level"`` (the default), ``"passive-slope"`` or the path of a scene
+            ``.toml`` (a model scene, or the paper's scene format).
+        model: instead of ``scene``, the path of a model file (``docs/model-format.md``) with
+            its defaults; the shipped models run compiled kernels, any other file is derived
+            when the call starts.
+        set: any run-time parameter of the model by name, ``{"K_P": 10.0}``, applied after the
+            keywords below; each checked against the range its model file gives.
+        init: start from these values of coordinates or velocities instead of the model's
+            start, ``{"th1d": 0.7}`` (names in :attr:`Walk.state_names`).
+        mu0: friction coefficient ``mu0`` (the model's friction parameter; default: the
+            scene's).
+        t_set: ramp duration ``T_set`` (s; the active walker).
+        omega0: initial angular velocity (rad/s; the paper's start parameter: an error for a
+            model without one, which takes ``init``).
+        phi: slope angle (rad; the model's slope; an error on a level floor).
+        c: sharpness of the friction law ``mu = -mu0 tanh(c xd)`` (s/m).
+        friction: ``"none"``, ``"tanh"`` (Eqs. 26, 37) or ``"coulomb"`` (Eq. 25); default: the
+            scene's.
         impact: ``"frictionless"`` (the paper's) or ``"coulomb"``; default: the scene's.
         method: ``"dop853"`` or ``"rodas4"`` (stiff friction, large ``mu0 c``).
         rtol, atol: integrator tolerances, in (0, 1) (default 1e-10 and 1e-12; 1e-8 and 1e-10
@@ -163,11 +243,12 @@ def simulate(
         The :class:`Walk`; a failure is its ``status``, not an exception.
 
     Raises:
-        ValueError: an argument out of its range (the message names it and the range).
+        ValueError: an argument out of its range (the message names it and the range; a key
+            of ``set`` or ``init`` as ``set['name']``).
     """
     d = _core.simulate(
-        scene=scene, mu0=mu0, t_set=t_set, omega0=omega0, phi=phi, c=c,
-        friction=friction, impact=impact, method=method, rtol=rtol, atol=atol,
+        **_walker(scene, model, set), init=_pairs("init", init), mu0=mu0, t_set=t_set, omega0=omega0, phi=phi,
+        c=c, friction=friction, impact=impact, method=method, rtol=rtol, atol=atol,
         duration=duration, max_steps=max_steps,
         trajectory_dt=dt if trajectory else None, max_frames=max_frames,
     )
@@ -178,14 +259,20 @@ def simulate(
 class Sweep:
     """Walks over a grid, one row per walk (a column each, all of the same length).
 
-    ``chain`` (``T_set`` or ``phi``; only for :func:`sweep`), ``mu0``, ``steps`` (completed
-    steps), ``status`` (``"ok"``, ``"periodic"`` or the failure's name), ``periodic``,
-    ``failure`` (dicts or None) and the last step's ``T``, ``dx``, ``V``, ``p``, ``SR``
-    (NaN where there is no such value: no completed step, or the passive wheel's ``p`` and
-    ``SR``), ``q_plus`` and ``qd_plus`` (shape ``(rows, 4)``).
+    For :func:`sweep`: ``chain`` (the chain's value of ``chain_param``, ``T_set`` or the
+    slope; NaN for a sweep without chains) and the swept values under the swept parameter's
+    name (``param``, ``"mu0"`` by default); for :func:`walk_points`: the grid's columns. Then
+    ``steps`` (completed steps), ``status`` (``"ok"``, ``"periodic"`` or the failure's name),
+    ``periodic``, ``failure`` (dicts or None) and the last step's ``T``, ``dx``, ``V``, ``p``,
+    ``SR`` (NaN where there is no such value: no completed step, or ``p`` and ``SR`` of a walker
+    without inputs), ``q_plus`` and ``qd_plus`` (shape ``(rows, n)``, named by
+    ``state_names``).
     """
 
     columns: Dict[str, Any] = field(default_factory=dict)
+    state_names: Tuple[str, ...] = ("x", "z", "th1", "th2", "xd", "zd", "th1d", "th2d")
+    param: Optional[str] = None
+    chain_param: Optional[str] = None
 
     def __getitem__(self, name: str) -> Any:
         return self.columns[name]
@@ -194,24 +281,22 @@ class Sweep:
         return len(self.columns["status"])
 
     def to_pandas(self) -> Any:
-        """The rows as a pandas DataFrame (``q_plus``/``qd_plus`` split into ``x_plus``,
-        ``z_plus``, ``th1_plus``, ``th2_plus``, ``xd_plus``, ... columns; ``failure`` as the
-        failure's kind name or None)."""
+        """The rows as a pandas DataFrame (``q_plus``/``qd_plus`` split into a column per
+        state component, ``<name>_plus``: ``x_plus``, ..., ``th2d_plus`` for the paper's
+        walkers; ``failure`` left out: ``status`` names it)."""
         import pandas as pd
 
-        return pd.DataFrame(_flat_columns(self.columns))
+        return pd.DataFrame(_flat_columns(self.columns, self.state_names))
 
 
-_Q = ("x", "z", "th1", "th2")
-
-
-def _flat_columns(cols: Mapping[str, Any]) -> Dict[str, Any]:
+def _flat_columns(cols: Mapping[str, Any], names: Sequence[str]) -> Dict[str, Any]:
+    n = len(names) // 2
     out: Dict[str, Any] = {}
     for k, v in cols.items():
         if k == "q_plus":
-            out.update({f"{n}_plus": v[:, i] for i, n in enumerate(_Q)})
+            out.update({f"{s}_plus": v[:, i] for i, s in enumerate(names[:n])})
         elif k == "qd_plus":
-            out.update({f"{n}d_plus": v[:, i] for i, n in enumerate(_Q)})
+            out.update({f"{s}_plus": v[:, i] for i, s in enumerate(names[n:])})
         elif k == "failure":
             continue
         else:
@@ -219,31 +304,50 @@ def _flat_columns(cols: Mapping[str, Any]) -> Dict[str, Any]:
     return out
 
 
-def _rows(d: Mapping[str, Any]) -> Dict[str, Any]:
-    cols: Dict[str, Any] = {}
-    for k in ("chain", "mu0"):
-        if k in d:
-            cols[k] = _arr(d[k])
+def _rows(d: Mapping[str, Any], first: Mapping[str, Any]) -> Sweep:
+    """The :class:`Sweep` of the core's rows ``d``, after the columns ``first``."""
+    names = tuple(d["state_names"])
+    n = len(names) // 2
+    cols: Dict[str, Any] = dict(first)
     cols["steps"] = np.asarray(d["steps"], dtype=np.int64)
     cols["status"] = np.asarray(d["status"], dtype=object)
     cols["periodic"] = np.asarray(d["periodic"], dtype=bool)
     cols["failure"] = [_failure(f) for f in d["failure"]]
     for k in ("T", "dx", "V", "p", "SR"):
         cols[k] = _arr(d[k])
-    cols["q_plus"] = _arr(d["q_plus"], 4)
-    cols["qd_plus"] = _arr(d["qd_plus"], 4)
-    return cols
+    cols["q_plus"] = _arr(d["q_plus"], n)
+    cols["qd_plus"] = _arr(d["qd_plus"], n)
+    return Sweep(cols, state_names=names, param=d.get("param"),
+                 chain_param=d.get("chain_param"))
+
+
+def _alias(name: str, value: Optional[float], paper: str, paper_value: Optional[float]
+           ) -> Tuple[str, float]:
+    """One end or the step of a sweep's range, given as ``name`` or as its paper's name."""
+    if value is not None and paper_value is not None:
+        raise ValueError(f"invalid {paper}: give either {name} or {paper}, not both")
+    if value is None and paper_value is None:
+        raise TypeError(f"sweep() missing required keyword argument: '{name}' (or '{paper}')")
+    return (name, value) if value is not None else (paper, paper_value)  # type: ignore
 
 
 def sweep(
     *,
-    scene: str = "active-level",
-    mu0_from: float,
-    mu0_to: float,
-    mu0_step: float,
+    scene: Optional[Path] = None,
+    model: Optional[Path] = None,
+    param: Optional[str] = None,
+    from_: Optional[float] = None,
+    to: Optional[float] = None,
+    step: Optional[float] = None,
+    mu0_from: Optional[float] = None,
+    mu0_to: Optional[float] = None,
+    mu0_step: Optional[float] = None,
     t_set: Union[float, Sequence[float], None] = None,
     phi: Union[float, Sequence[float], None] = None,
     restart: bool = False,
+    set: Values = None,
+    init: Values = None,
+    omega0: Optional[float] = None,
     c: Optional[float] = None,
     friction: Optional[str] = None,
     impact: Optional[str] = None,
@@ -254,29 +358,42 @@ def sweep(
     max_steps: int = 1000,
     until_periodic: Optional[float] = None,
 ) -> Sweep:
-    """Sweep ``mu0`` from ``mu0_from`` to ``mu0_to`` by ``mu0_step``, as ``walker sweep --json``.
+    """Sweep the run-time parameter ``param`` from ``from_`` to ``to`` by ``step``, as
+    ``walker sweep --json``.
 
-    Each chain (a ``t_set`` value for the active walker, a ``phi`` value for the passive wheel;
-    default: the scene's) walks every ``mu0`` for ``duration`` seconds (at most ``max_steps``
-    steps), starting from the previous ``mu0``'s last post-impact state (from the initial
-    condition after a failure, or always with ``restart=True``). Chains run in parallel.
+    ``param`` is any run-time parameter of the model (default: its friction coefficient,
+    ``mu0``); ``mu0_from``, ``mu0_to`` and ``mu0_step`` are the paper's names of ``from_``,
+    ``to`` and ``step`` (either name, not both). Each chain (a ``t_set`` value or a ``phi``
+    value; default: one chain at the scene's ``T_set``, else its slope) walks every value for
+    ``duration`` seconds (at most ``max_steps`` steps), starting from the previous value's last
+    post-impact state (from the start after a failure, or always with ``restart=True``). The
+    start is the model's (``omega0``, ``init`` as in :func:`simulate`). Chains run in parallel.
     ``until_periodic`` (in (0, 1)) stops a walk once its gait is periodic to that tolerance.
     At most 64 chains and 100000 points. Other arguments as in :func:`simulate`.
 
     Returns:
-        A :class:`Sweep`, one row per (chain, mu0), chains one after another.
+        A :class:`Sweep`, one row per (chain, value), chains one after another; the values
+        are the column named by the parameter (``s["mu0"]``).
 
     Raises:
-        ValueError: an argument out of its range (the message names it and the range).
-        KeyboardInterrupt: Ctrl-C (seen between chunks of a few ``mu0`` values).
+        ValueError: an argument out of its range (the message names it and the range; a value
+            of the range outside the parameter's range is named by the end it lies at).
+        KeyboardInterrupt: Ctrl-C (seen between chunks of a few values).
     """
-    d = _core.sweep(
-        scene=scene, mu0_from=mu0_from, mu0_to=mu0_to, mu0_step=mu0_step,
-        t_set=_list(t_set), phi=_list(phi), restart=restart, c=c, friction=friction,
-        impact=impact, method=method, rtol=rtol, atol=atol, duration=duration,
-        max_steps=max_steps, until_periodic=until_periodic,
+    names = (
+        _alias("from_", from_, "mu0_from", mu0_from),
+        _alias("to", to, "mu0_to", mu0_to),
+        _alias("step", step, "mu0_step", mu0_step),
     )
-    return Sweep(_rows(d))
+    d = _core.sweep(
+        **_walker(scene, model, set), init=_pairs("init", init), param=param,
+        from_=names[0][1], to=names[1][1], step=names[2][1],
+        range_names=tuple(n for n, _ in names),
+        t_set=_list(t_set), phi=_list(phi), restart=restart, omega0=omega0, c=c,
+        friction=friction, impact=impact, method=method, rtol=rtol, atol=atol,
+        duration=duration, max_steps=max_steps, until_periodic=until_periodic,
+    )
+    return _rows(d, {"chain": _arr(d["chain"]), d["param"]: _arr(d["value"])})
 
 
 def _list(x: Union[float, Sequence[float], None]) -> list:
@@ -286,13 +403,16 @@ def _list(x: Union[float, Sequence[float], None]) -> list:
 
 
 GRID_COLUMNS = ("mu0", "c", "t_set", "phi", "omega0")
-"""The parameters a grid point may set (the columns of a grid)."""
+"""The keyword columns of a grid (besides any parameter of the model by its name)."""
 
 
 def walk_points(
     grid: Any,
     *,
-    scene: str = "active-level",
+    scene: Optional[Path] = None,
+    model: Optional[Path] = None,
+    set: Values = None,
+    init: Values = None,
     friction: Optional[str] = None,
     impact: Optional[str] = None,
     method: str = "dop853",
@@ -306,8 +426,12 @@ def walk_points(
     parameters, and return one row per point with its outcome and last step.
 
     Args:
-        grid: a dict of equal-length arrays or a pandas DataFrame whose columns are among
-            ``mu0``, ``c``, ``t_set``, ``phi``, ``omega0`` (missing ones: the scene's values).
+        grid: a dict of equal-length arrays or a pandas DataFrame whose columns are keywords
+            of :func:`simulate` (``mu0``, ``c``, ``t_set``, ``phi``, ``omega0``) or the names
+            of any parameters of the model (``K_P``, ``m1``, ...); missing ones: the scene's
+            values, or those of ``set``.
+        set: values for every point, applied before the point's own.
+        init: the start of every point, as in :func:`simulate`.
         duration: walk each point for this long (s, > 0; None: no limit).
         Other arguments as in :func:`simulate` and :func:`sweep`.
 
@@ -321,11 +445,11 @@ def walk_points(
     """
     cols = _grid_columns(grid)
     d = _core.walk_points(
-        scene=scene, grid=cols, friction=friction, impact=impact, method=method, rtol=rtol,
-        atol=atol, duration=duration, max_steps=max_steps, until_periodic=until_periodic,
+        **_walker(scene, model, set), init=_pairs("init", init), grid=list(cols.items()), friction=friction,
+        impact=impact, method=method, rtol=rtol, atol=atol, duration=duration,
+        max_steps=max_steps, until_periodic=until_periodic,
     )
-    rows = _rows(d)
-    return Sweep({**{k: np.asarray(v, dtype=np.float64) for k, v in cols.items()}, **rows})
+    return _rows(d, {k: np.asarray(v, dtype=np.float64) for k, v in cols.items()})
 
 
 def _grid_columns(grid: Any) -> Dict[str, list]:
@@ -353,10 +477,11 @@ class FixedPoint:
 
     ``status`` is ``"converged"``, ``"family"`` (a family of cycles, multiplier 1 structural),
     ``"not-converged"``, ``"invalid-gait"`` or ``"failed"`` (with ``reason``). Where a cycle
-    was found: ``state_plus`` (the post-impact state, 8 values), ``T``, ``V``, ``dx``,
-    ``multipliers`` (complex, of the reduced map in ``xd+``, ``th1d+``), ``residual``,
-    ``iterations``, ``failure`` (a failure of the walk on the cycle, or None). ``json`` is the
-    command line's whole JSON object.
+    was found: ``state_plus`` (the post-impact state, ``2 n`` values named by
+    ``state_names``), ``T``, ``V``, ``dx``, ``multipliers`` (complex, of the map reduced to the
+    Poincare section's free coordinates, named by ``section``: ``("xd", "th1d")`` for the
+    paper's walkers), ``residual``, ``iterations``, ``failure`` (the name of a failure of the
+    walk on the cycle, or None). ``json`` is the command line's whole JSON object.
     """
 
     status: str
@@ -370,11 +495,16 @@ class FixedPoint:
     residual: Optional[float] = None
     iterations: Optional[int] = None
     failure: Optional[Dict[str, Any]] = None
+    section: Tuple[str, ...] = ()
+    state_names: Tuple[str, ...] = ()
 
 
 def fixed_point(
     *,
-    scene: str = "active-level",
+    scene: Optional[Path] = None,
+    model: Optional[Path] = None,
+    set: Values = None,
+    init: Values = None,
     mu0: Optional[float] = None,
     t_set: Optional[float] = None,
     omega0: Optional[float] = None,
@@ -388,30 +518,94 @@ def fixed_point(
 ) -> FixedPoint:
     """Find the limit cycle (fixed point of the Poincare map) and its Floquet multipliers.
 
-    ``omega0`` (> 0) is the initial angular velocity of the warm-up walk; the other arguments
-    as in :func:`simulate`. A search that fails is a result (``status == "failed"``).
+    The search starts with a warm-up walk from the model's start: ``omega0`` (> 0; the
+    paper's walkers) and ``init`` change it as in :func:`simulate`; the other arguments as in
+    :func:`simulate`. A search that fails is a result (``status == "failed"``).
 
     Raises:
         ValueError: an argument out of its range (the message names it and the range).
     """
-    j = json.loads(
-        _core.fixed_point(
-            scene=scene, mu0=mu0, t_set=t_set, omega0=omega0, phi=phi, c=c,
-            friction=friction, impact=impact, method=method, rtol=rtol, atol=atol,
-        )
+    text, names = _core.fixed_point(
+        **_walker(scene, model, set), init=_pairs("init", init), mu0=mu0, t_set=t_set, omega0=omega0, phi=phi,
+        c=c, friction=friction, impact=impact, method=method, rtol=rtol, atol=atol,
     )
+    j = json.loads(text)
+    names = tuple(names)
     if j.get("status") == "failed" and "state_plus" not in j:
-        return FixedPoint(status="failed", json=j, reason=j.get("reason"))
+        return FixedPoint(status="failed", json=j, state_names=names, reason=j.get("reason"))
     mult = np.array([complex(m["re"], m["im"]) for m in j.get("multipliers", [])])
     return FixedPoint(
         status=j["status"],
         json=j,
+        state_names=names,
         state_plus=_arr(j["state_plus"]),
         T=j["T"],
         V=j["V"],
         dx=j["dx"],
         multipliers=mult,
+        section=tuple(j["section"]),
         residual=j["residual"],
         iterations=j["iterations"],
         failure=j.get("failure"),
+    )
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A parameter of a model: its value, ``unit``, valid ``range`` (as its model file writes
+    it, ``"(0, inf)"``), ``doc``, and whether it belongs to the ``start`` (the paper's
+    ``omega0``) rather than the dynamics."""
+
+    value: float
+    unit: str
+    range: str
+    doc: str
+    start: bool
+
+
+@dataclass(frozen=True)
+class ModelInfo:
+    """A walker as :func:`describe` reports it: its ``model`` (name) and ``title``, the
+    ``scene``'s name, its ``friction`` and ``impact`` laws, its ``parameters`` by name (in the
+    model file's order, with the values of the scene and ``set``), ``state_names`` (what
+    ``init`` takes), ``input_names`` and ``start`` (the state a walk starts from)."""
+
+    model: str
+    scene: str
+    title: Optional[str]
+    friction: str
+    impact: str
+    parameters: Dict[str, Parameter]
+    state_names: Tuple[str, ...]
+    input_names: Tuple[str, ...]
+    start: np.ndarray
+
+
+def describe(
+    *,
+    scene: Optional[Path] = None,
+    model: Optional[Path] = None,
+    set: Values = None,
+    friction: Optional[str] = None,
+    impact: Optional[str] = None,
+) -> ModelInfo:
+    """What a scene or a model file offers: its parameters (the names ``set``, a sweep's
+    ``param`` and a grid's columns take), its state components (the names ``init`` takes),
+    its inputs and its start. Arguments as in :func:`simulate`.
+
+    Raises:
+        ValueError: a bad argument (the message names it).
+    """
+    d = _core.describe(**_walker(scene, model, set), friction=friction, impact=impact)
+    return ModelInfo(
+        model=d["model"],
+        scene=d["scene"],
+        title=d["title"],
+        friction=d["friction"],
+        impact=d["impact"],
+        parameters={name: Parameter(value, unit, rng, doc, start)
+                    for name, value, unit, rng, doc, start in d["parameters"]},
+        state_names=tuple(d["state_names"]),
+        input_names=tuple(d["input_names"]),
+        start=_arr(d["start"]),
     )

@@ -1,17 +1,22 @@
 """Type stubs of the extension module ``slippery_walker._core`` (the Rust core, PyO3).
 
 The public, documented functions are those of ``slippery_walker``; these return plain dicts
-of lists that the package turns into NumPy arrays. Every argument is keyword-only.
+of lists that the package turns into NumPy arrays. Every argument is keyword-only. ``set`` and
+``init`` are ``(name, value)`` pairs in the caller's order; ``scene`` and ``model`` are paths
+or names (at most one of them; neither: the scene ``active-level``).
 """
 
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Optional, Tuple
 
 __version__: str
 MAX_STEPS: int
 
 def simulate(
     *,
-    scene: str,
+    scene: Optional[str],
+    model: Optional[str],
+    set: List[Tuple[str, float]],
+    init: List[Tuple[str, float]],
     mu0: Optional[float],
     t_set: Optional[float],
     omega0: Optional[float],
@@ -29,13 +34,19 @@ def simulate(
 ) -> Dict[str, Any]: ...
 def sweep(
     *,
-    scene: str,
-    mu0_from: float,
-    mu0_to: float,
-    mu0_step: float,
+    scene: Optional[str],
+    model: Optional[str],
+    set: List[Tuple[str, float]],
+    init: List[Tuple[str, float]],
+    param: Optional[str],
+    from_: float,
+    to: float,
+    step: float,
+    range_names: Tuple[str, str, str],
     t_set: List[float],
     phi: List[float],
     restart: bool,
+    omega0: Optional[float],
     c: Optional[float],
     friction: Optional[str],
     impact: Optional[str],
@@ -48,8 +59,11 @@ def sweep(
 ) -> Dict[str, Any]: ...
 def walk_points(
     *,
-    scene: str,
-    grid: Dict[str, List[float]],
+    scene: Optional[str],
+    model: Optional[str],
+    set: List[Tuple[str, float]],
+    init: List[Tuple[str, float]],
+    grid: List[Tuple[str, List[float]]],
     friction: Optional[str],
     impact: Optional[str],
     method: str,
@@ -61,7 +75,10 @@ def walk_points(
 ) -> Dict[str, Any]: ...
 def fixed_point(
     *,
-    scene: str,
+    scene: Optional[str],
+    model: Optional[str],
+    set: List[Tuple[str, float]],
+    init: List[Tuple[str, float]],
     mu0: Optional[float],
     t_set: Optional[float],
     omega0: Optional[float],
@@ -72,4 +89,12 @@ def fixed_point(
     method: str,
     rtol: Optional[float],
     atol: Optional[float],
-) -> str: ...
+) -> Tuple[str, List[str]]: ...
+def describe(
+    *,
+    scene: Optional[str],
+    model: Optional[str],
+    set: List[Tuple[str, float]],
+    friction: Optional[str],
+    impact: Optional[str],
+) -> Dict[str, Any]: ...

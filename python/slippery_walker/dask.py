@@ -9,7 +9,8 @@ Works with any ``dask.distributed`` client: a ``LocalCluster``, a ``dask_jobqueu
 
 from __future__ import annotations
 
-from typing import Any, Dict, List, Optional
+import os
+from typing import Any, Dict, List, Mapping, Optional
 
 import numpy as np
 
@@ -23,12 +24,24 @@ def _walk_chunk(cols: Dict[str, list], options: Dict[str, Any]) -> Any:
     return _sw.walk_points(cols, **options).to_pandas()
 
 
+def _absolute(arg: str, p: Optional[_sw.Path]) -> Optional[str]:
+    """A file's absolute path (a worker may run in another directory); a built-in scene's
+    name as it is."""
+    path = _sw._path(arg, p)
+    if path is None or not path.endswith(".toml"):
+        return path
+    return os.path.abspath(path)
+
+
 def grid_sweep(
     client: Any,
     grid: Any,
     *,
     chunk_size: Optional[int] = None,
-    scene: str = "active-level",
+    scene: Optional[_sw.Path] = None,
+    model: Optional[_sw.Path] = None,
+    set: Optional[Mapping[str, float]] = None,
+    init: Optional[Mapping[str, float]] = None,
     friction: Optional[str] = None,
     impact: Optional[str] = None,
     method: str = "dop853",
@@ -42,8 +55,12 @@ def grid_sweep(
 
     Args:
         client: a ``dask.distributed.Client``.
-        grid: a dict of equal-length arrays or a pandas DataFrame whose columns are among
-            ``mu0``, ``c``, ``t_set``, ``phi``, ``omega0`` (missing ones: the scene's values).
+        grid: a dict of equal-length arrays or a pandas DataFrame whose columns are keywords
+            (``mu0``, ``c``, ``t_set``, ``phi``, ``omega0``) or parameters of the model by name
+            (missing ones: the scene's values, or those of ``set``).
+        scene, model: the walker, as in :func:`slippery_walker.simulate`. A file (a scene
+            ``.toml`` or a model) is sent to the workers as its absolute path: they must see
+            the same file system (a shared one on a cluster).
         chunk_size: points per task (>= 1; default: the points split into four tasks per
             worker thread, at least 16 points each).
         Other arguments as in :func:`slippery_walker.walk_points`.
@@ -60,7 +77,8 @@ def grid_sweep(
     import pandas as pd
 
     cols = _sw._grid_columns(grid)
-    kwargs = dict(scene=scene, friction=friction, impact=impact, method=method, rtol=rtol,
+    kwargs = dict(scene=_absolute("scene", scene), model=_absolute("model", model), set=set, init=init,
+                  friction=friction, impact=impact, method=method, rtol=rtol,
                   atol=atol, duration=duration, max_steps=max_steps,
                   until_periodic=until_periodic)
     # Check every point without walking (no steps): a bad value is a ValueError here.

@@ -1,17 +1,18 @@
 //! Input errors of the Python module: which keyword argument was wrong and what it accepts.
-//! They become `ValueError` at the boundary; the library's parameter errors
-//! ([`walker::setup::SetupError`]) are named by the keyword that sets the parameter
-//! (`t_set` for `T_set`) with the range of the parameter table (`walker_scene::Param`).
+//! They become `ValueError` at the boundary. The library's parameter errors are named by the
+//! keyword that sets the parameter (`t_set` for `T_set`) with the range its model file gives;
+//! a model file's own errors are named `model`, those of a scene `scene`, as the command line
+//! names them by its flags (`cli/src/input.rs`).
 
 use pyo3::PyErr;
 use pyo3::exceptions::PyValueError;
+use walker::model::{NoKernels, ParamError};
 use walker::setup::SetupError;
-use walker_scene::Param;
 
 /// A bad argument: its keyword and what is valid.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ArgError {
-    /// The keyword argument (or grid column).
+    /// The keyword argument, a key of `set`/`init` (`set['K_P']`), or a grid column.
     pub arg: String,
     /// The rejected value and what is accepted.
     pub message: String,
@@ -36,6 +37,15 @@ impl ArgError {
     pub fn out_of_range(arg: &str, value: impl std::fmt::Display, must_be: &str) -> Self {
         ArgError::new(arg, format!("{value}: must be {must_be}"))
     }
+
+    /// The same error named `arg` instead (a grid column, a key of `set`).
+    #[must_use]
+    pub fn named(self, arg: &str) -> Self {
+        ArgError {
+            arg: arg.to_owned(),
+            ..self
+        }
+    }
 }
 
 impl From<ArgError> for PyErr {
@@ -44,23 +54,58 @@ impl From<ArgError> for PyErr {
     }
 }
 
-/// The keyword argument that sets `param` (`t_set` for `T_set`), else the parameter's scene
-/// name.
+/// The keyword argument that sets the parameter (or the library's flag name) `name`: `t_set`
+/// for `T_set` (and the library's `t-set`), else the name itself (a parameter without a keyword
+/// of its own is set with `set={name: value}`).
 #[must_use]
-pub fn keyword(param: Param) -> &'static str {
-    match param {
-        Param::TSet => "t_set",
-        other => other.name(),
+pub fn keyword(name: &str) -> &str {
+    match name {
+        "T_set" | "t-set" => "t_set",
+        other => other,
+    }
+}
+
+impl From<ParamError> for ArgError {
+    /// Named by the keyword of the parameter, with the valid range of its model file.
+    fn from(e: ParamError) -> Self {
+        match &e {
+            ParamError::OutOfRange { name, value, range } => {
+                ArgError::out_of_range(keyword(name), value, &format!("in {range}"))
+            }
+            ParamError::Unknown { name, .. } => ArgError::new(keyword(name), e.to_string()),
+        }
     }
 }
 
 impl From<SetupError> for ArgError {
-    /// Named by the keyword of the parameter the error is about, else `scene`.
+    /// Named by the keyword of the parameter the error is about; a model file's errors by
+    /// `model`; anything else by `scene`.
     fn from(e: SetupError) -> Self {
-        if let SetupError::OutOfRange { param, value } = e {
-            return ArgError::out_of_range(keyword(param), value, param.valid_range());
+        match e {
+            SetupError::Param(p) => p.into(),
+            SetupError::NoKernels(k) => k.into(),
+            SetupError::Model(_) | SetupError::Spec(_) | SetupError::NotCompiled { .. } => {
+                ArgError::new("model", e.to_string())
+            }
+            // The library's message starts with its flag name (`t-set: model ...`); the
+            // keyword is the argument here.
+            SetupError::NoRole { flag, model, role } => {
+                ArgError::new(keyword(flag), format!("model `{model}` has no {role}"))
+            }
+            other => ArgError::new(other.param().map_or("scene", keyword), other.to_string()),
         }
-        ArgError::new(e.param().map_or("scene", keyword), e.to_string())
+    }
+}
+
+impl From<NoKernels> for ArgError {
+    /// Named `friction` (a law the model does not list or has no kernels for) or `model` (its
+    /// run-time derivation failed).
+    fn from(e: NoKernels) -> Self {
+        let arg = match e {
+            NoKernels::FrictionLaw { .. } | NoKernels::NotCompiled { .. } => "friction",
+            NoKernels::Source { .. } => "model",
+        };
+        ArgError::new(arg, e.to_string())
     }
 }
 
@@ -81,17 +126,25 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_parameter_out_of_range_is_named_by_its_keyword_with_the_tables_range() {
-        let e = ArgError::from(SetupError::OutOfRange {
-            param: Param::TSet,
+    fn a_parameter_out_of_range_is_named_by_its_keyword_with_the_model_files_range() {
+        let e = ArgError::from(ParamError::OutOfRange {
+            name: "T_set".into(),
             value: -1.0,
+            range: "(0, inf)".into(),
         });
-        assert_eq!(e.arg, "t_set");
-        assert!(e.message.contains(Param::TSet.valid_range()), "{e}");
+        assert_eq!(e.to_string(), "invalid t_set: -1: must be in (0, inf)");
     }
 
     #[test]
     fn a_slope_for_the_level_walker_is_named_phi() {
-        assert_eq!(ArgError::from(SetupError::SlopeForLevelWalker).arg, "phi");
+        let e = SetupError::NoRole {
+            flag: "phi",
+            model: "paper-active".into(),
+            role: "slope (its floor is level)",
+        };
+        assert_eq!(
+            ArgError::from(e).to_string(),
+            "invalid phi: model `paper-active` has no slope (its floor is level)"
+        );
     }
 }

@@ -3,22 +3,26 @@
 
 use pyo3::prelude::*;
 use walker::poincare::{FixedPointOptions, fixed_point as search};
-use walker::setup::Overrides;
 
-use crate::error::check;
 use crate::options;
+use crate::walker_args::{self, overrides};
 
-/// Search the limit cycle and return the command line's JSON report as a string (`{"status",
-/// "state_plus", "T", "V", ..}`, or `{"status": "failed", "reason"}`).
+/// Search the limit cycle from the start (the warm-up walk's) and return the command line's
+/// JSON report as a string (`{"status", "state_plus", "T", "V", "section", ..}`, or
+/// `{"status": "failed", "reason"}`), with the names of the model's state components.
 ///
 /// # Errors
 /// `ValueError` naming a bad argument and its valid range.
 #[pyfunction]
-#[pyo3(signature = (*, scene, mu0, t_set, omega0, phi, c, friction, impact, method, rtol, atol))]
+#[pyo3(signature = (*, scene, model, set, init, mu0, t_set, omega0, phi, c, friction, impact,
+    method, rtol, atol))]
 #[allow(clippy::too_many_arguments)]
 pub fn fixed_point(
     py: Python<'_>,
-    scene: &str,
+    scene: Option<&str>,
+    model: Option<&str>,
+    set: Vec<(String, f64)>,
+    init: Vec<(String, f64)>,
     mu0: Option<f64>,
     t_set: Option<f64>,
     omega0: Option<f64>,
@@ -29,28 +33,25 @@ pub fn fixed_point(
     method: &str,
     rtol: Option<f64>,
     atol: Option<f64>,
-) -> PyResult<String> {
-    let ov = Overrides {
-        mu0,
-        c,
-        t_set,
-        phi,
-        friction: options::friction(friction)?,
-        impact: options::impact(impact)?,
-    };
-    let setup = options::setup(scene, &ov)?;
+) -> PyResult<(String, Vec<String>)> {
+    let ov = overrides(mu0, c, t_set, phi, friction, impact)?;
+    let mut setup = walker_args::setup(scene, model, &ov, &set)?;
+    walker_args::set_omega0(&mut setup, omega0, |w| w > 0.0, "finite and > 0")?;
     let cfg = options::config(method, rtol, atol)?;
-    let model = setup.model();
-    let mut opts = FixedPointOptions::for_model(&model);
-    if let Some(w) = omega0 {
-        opts.omega0 = check("omega0", w, w > 0.0, "finite and > 0")?;
-    }
-    let result = py.detach(|| search(&model, &cfg, &opts));
-    let json = match result {
-        Ok(fp) => serde_json::to_string(&fp).unwrap_or_else(|e| {
-            serde_json::json!({ "status": "failed", "reason": e.to_string() }).to_string()
-        }),
-        Err(e) => serde_json::json!({ "status": "failed", "reason": e.to_string() }).to_string(),
+    let model = walker_args::model(&setup)?;
+    let opts = FixedPointOptions {
+        start: walker_args::start(&model, &init)?,
+        ..FixedPointOptions::for_model(&model)
     };
-    Ok(json)
+    // The report is made inside, so that the (large) error never leaves the closure.
+    let json = py.detach(|| {
+        let failed = |reason: String| serde_json::json!({ "status": "failed", "reason": reason });
+        match search(&model, &cfg, &opts) {
+            Ok(fp) => {
+                serde_json::to_string(&fp).unwrap_or_else(|e| failed(e.to_string()).to_string())
+            }
+            Err(e) => failed(e.to_string()).to_string(),
+        }
+    });
+    Ok((json, model.spec().state_names()))
 }

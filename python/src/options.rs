@@ -1,13 +1,11 @@
 //! The keyword arguments shared by the functions, checked as the `walker` command line checks
-//! its flags: the scene with its parameter overrides (validated by
-//! [`walker::setup::Setup::resolve`] against the parameter table), the friction and impact
-//! laws, the integrator and its tolerances, and the limits of a walk.
+//! its flags: the friction and impact laws, the integrator and its tolerances, and the limits
+//! of a walk. The walker itself (`scene=` or `model=`, its parameters and its start) is
+//! `walker_args.rs`.
 
-use walker::model::FrictionLaw;
+use walker::model::{Friction, ImpactLaw};
 use walker::ode::Method;
-use walker::setup::{Overrides, Setup};
 use walker::sim::{SimConfig, WalkLimits};
-use walker_scene::ImpactLaw;
 
 use crate::error::{ArgError, check};
 
@@ -15,21 +13,20 @@ use crate::error::{ArgError, check};
 /// of a call. The same bound as the command line's `--max-steps`.
 pub const MAX_STEPS: usize = 1_000_000;
 
-/// The longest scene file read (bytes), as the command line's: a scene is a few hundred bytes.
-pub const MAX_SCENE_BYTES: u64 = 1 << 20;
-
-/// The friction law named `name` (`"tanh"` or `"coulomb"`), `None` for the scene's.
+/// The friction law named `name` (`"none"`, `"tanh"` or `"coulomb"`, as the command line's
+/// `--friction`), `None` for the scene's.
 ///
 /// # Errors
 /// Another name.
-pub fn friction(name: Option<&str>) -> Result<Option<FrictionLaw>, ArgError> {
+pub fn friction(name: Option<&str>) -> Result<Option<Friction>, ArgError> {
     match name {
         None => Ok(None),
-        Some("tanh") => Ok(Some(FrictionLaw::Tanh)),
-        Some("coulomb") => Ok(Some(FrictionLaw::Coulomb)),
+        Some("none") => Ok(Some(Friction::None)),
+        Some("tanh") => Ok(Some(Friction::Tanh)),
+        Some("coulomb") => Ok(Some(Friction::Coulomb)),
         Some(other) => Err(ArgError::new(
             "friction",
-            format!("{other:?}: must be \"tanh\" or \"coulomb\""),
+            format!("{other:?}: must be \"none\", \"tanh\" or \"coulomb\""),
         )),
     }
 }
@@ -78,26 +75,6 @@ pub fn config(method: &str, rtol: Option<f64>, atol: Option<f64>) -> Result<SimC
         atol: atol.map_or(Ok(base.atol), |x| tol("atol", x))?,
         ..base
     })
-}
-
-/// The scene `scene` (`"active-level"`, `"passive-slope"` or the path of a scene `.toml`) with
-/// the overrides, every parameter checked against its range. A scene file must be a regular
-/// file of at most [`MAX_SCENE_BYTES`].
-///
-/// # Errors
-/// The scene is unknown, unreadable or invalid, or a parameter is out of its range.
-pub fn setup(scene: &str, ov: &Overrides) -> Result<Setup, ArgError> {
-    // A file that cannot be inspected is left to the scene reader, which names it.
-    if scene.ends_with(".toml")
-        && let Ok(meta) = std::fs::metadata(scene)
-        && (!meta.is_file() || meta.len() > MAX_SCENE_BYTES)
-    {
-        return Err(ArgError::new(
-            "scene",
-            format!("{scene}: must be a regular file of at most {MAX_SCENE_BYTES} bytes"),
-        ));
-    }
-    Ok(Setup::resolve(scene, ov)?)
 }
 
 /// `n` given as `arg` if it is in `[lo, hi]` (a Python int: negative ones are named here, not

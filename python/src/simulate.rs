@@ -1,18 +1,18 @@
-//! `simulate(...)`: one walk from the scene's initial condition, as `walker simulate`, with its
-//! per-step descriptors and, on request, the motion sampled at exact times
+//! `simulate(...)`: one walk from the model's start, as `walker simulate`, with its per-step
+//! descriptors and, on request, the motion sampled at exact times
 //! ([`walker::sim::trajectory`]).
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use walker::setup::Overrides;
 use walker::sim::{trajectory, walk};
 
 use crate::error::check;
 use crate::options;
 use crate::table::steps_dict;
+use crate::walker_args::{self, overrides};
 
-/// The most frames a trajectory may have (`max_frames`): a frame is nine numbers, so this
-/// bounds the memory of a call as [`options::MAX_STEPS`] bounds the steps.
+/// The most frames a trajectory may have (`max_frames`): a frame is a few dozen numbers, so
+/// this bounds the memory of a call as [`options::MAX_STEPS`] bounds the steps.
 pub const MAX_FRAMES: usize = 1_000_000;
 
 /// Simulate one walk (see the Python docstring of `slippery_walker.simulate`).
@@ -20,12 +20,15 @@ pub const MAX_FRAMES: usize = 1_000_000;
 /// # Errors
 /// `ValueError` naming a bad argument and its valid range; a walker failure is a result.
 #[pyfunction]
-#[pyo3(signature = (*, scene, mu0, t_set, omega0, phi, c, friction, impact, method, rtol, atol,
-    duration, max_steps, trajectory_dt, max_frames))]
+#[pyo3(signature = (*, scene, model, set, init, mu0, t_set, omega0, phi, c, friction, impact,
+    method, rtol, atol, duration, max_steps, trajectory_dt, max_frames))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate<'py>(
     py: Python<'py>,
-    scene: &str,
+    scene: Option<&str>,
+    model: Option<&str>,
+    set: Vec<(String, f64)>,
+    init: Vec<(String, f64)>,
     mu0: Option<f64>,
     t_set: Option<f64>,
     omega0: Option<f64>,
@@ -41,40 +44,38 @@ pub fn simulate<'py>(
     trajectory_dt: Option<f64>,
     max_frames: i64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let ov = Overrides {
-        mu0,
-        c,
-        t_set,
-        phi,
-        friction: options::friction(friction)?,
-        impact: options::impact(impact)?,
-    };
-    let setup = options::setup(scene, &ov)?;
+    let ov = overrides(mu0, c, t_set, phi, friction, impact)?;
+    let mut setup = walker_args::setup(scene, model, &ov, &set)?;
+    walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
     let cfg = options::config(method, rtol, atol)?;
     let limits = options::limits(duration, max_steps, None)?;
-    let model = setup.model();
-    let w0 = check(
-        "omega0",
-        omega0.unwrap_or_else(|| model.default_omega0()),
-        true,
-        "finite",
-    )?;
-    let initial = model.initial_state(w0);
+    let model = walker_args::model(&setup)?;
+    let start = walker_args::start(&model, &init)?;
     let Some(dt) = trajectory_dt else {
-        let w = py.detach(|| walk(&model, &cfg, initial, &limits));
-        return steps_dict(py, &w);
+        let w = py.detach(|| walk(&model, &cfg, &start, &limits));
+        return steps_dict(py, &model, &w);
     };
     check("dt", dt, dt > 0.0, "finite and > 0")?;
     let max_frames = options::count("max_frames", max_frames, 1, MAX_FRAMES)?;
-    let tr = py.detach(|| trajectory(&model, &cfg, initial, &limits, dt, max_frames));
-    let d = steps_dict(py, &tr.walk)?;
+    let tr = py.detach(|| trajectory(&model, &cfg, &start, &limits, dt, max_frames));
+    let d = steps_dict(py, &model, &tr.walk)?;
     d.set_item(
         "times",
         tr.frames.iter().map(|f| f.time).collect::<Vec<_>>(),
     )?;
     d.set_item(
         "states",
-        tr.frames.iter().flat_map(|f| f.state).collect::<Vec<_>>(),
+        tr.frames
+            .iter()
+            .flat_map(|f| f.state.iter().copied())
+            .collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "u",
+        tr.frames
+            .iter()
+            .flat_map(|f| f.u.iter().copied())
+            .collect::<Vec<_>>(),
     )?;
     d.set_item(
         "frame_steps",

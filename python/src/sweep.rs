@@ -1,23 +1,26 @@
-//! `sweep(...)`: walks over a grid of `mu0` for one or more chains (`T_set` for the active
-//! walker, `phi` for the passive wheel), procedures (P1a)-(P5a) and (P1b)-(P5b), with the
-//! command line's checks and results: without `restart` each `mu0` starts from the previous
-//! `mu0`'s last post-impact state moved to the origin (from the initial condition after a
-//! failure), as `walker::sweep::sweep_chains`; with `restart` every point starts from the
-//! initial condition. The work runs in chunks of `mu0` values (chains in parallel), so that
-//! Ctrl-C is seen between chunks.
+//! `sweep(...)`: walks over a grid of one run-time parameter (`mu0` by default: procedures
+//! (P1a)-(P5a) and (P1b)-(P5b)) for one or more chains (`T_set` or the slope `phi`), with the
+//! command line's checks and results (`walker sweep`, `cli/src/run.rs`): without `restart` each
+//! value starts from the previous value's last post-impact state moved to the origin (from the
+//! start after a failure), as `walker::sweep::sweep_chains`; with `restart` every point starts
+//! from the start. Every point's model is built before any walk (a value out of its range is an
+//! input error). The work runs in chunks of values (chains in parallel), so that Ctrl-C is seen
+//! between chunks.
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
-use walker::model::{Kind, Model, Runtime};
-use walker::setup::{self, Overrides, Setup};
+use walker::model::Model;
+use walker::setup::Setup;
 use walker::sim::{SimConfig, WalkLimits, walk};
 use walker::sweep::mu0_grid;
+use walker::vector::Vector;
 
 use crate::chunks::in_chunks;
 use crate::error::{ArgError, check};
 use crate::options;
-use crate::table::{Outcome, Rows};
+use crate::table::{Outcome, RESULT_COLUMNS, Rows, names_dict};
+use crate::walker_args::{self, overrides};
 
 /// The most chains a sweep may have, as the command line's.
 pub const MAX_SWEEP_CHAINS: usize = 64;
@@ -25,78 +28,105 @@ pub const MAX_SWEEP_CHAINS: usize = 64;
 /// The most points a sweep may have in all, as the command line's.
 pub const MAX_SWEEP_POINTS: usize = 100_000;
 
-/// `mu0` values walked per chain between two checks for Ctrl-C.
+/// Values walked per chain between two checks for Ctrl-C.
 const CHUNK: usize = 4;
 
-/// A chain of a sweep on its way along the `mu0` grid.
+/// A chain of a sweep on its way along the grid.
 struct Chain {
-    value: f64,
-    initial: [f64; 8],
-    state: [f64; 8],
+    /// The state the next value starts from (without `restart`).
+    state: Vector,
     points: Vec<Outcome>,
 }
 
-/// The model of chain value `c` at `mu0`.
-fn make(setup: &Setup, c: f64, mu0: f64) -> Model {
-    let base = setup.runtime;
-    let r = if setup.kind == Kind::ActiveLevel {
-        Runtime {
-            t_set: c,
-            mu0,
-            ..base
-        }
-    } else {
-        Runtime {
-            phi: c,
-            mu0,
-            ..base
-        }
-    };
-    setup.model_with(r)
-}
-
-/// Walk `chain` over `mu0s`, each from the previous steady state (procedure P4a) or, with
-/// `restart`, from the initial condition.
+/// Walk `chain` through the models of consecutive values, each from the previous steady state
+/// moved to the origin (procedure P4a; from `start` after a failure) or, with `restart`, from
+/// `start`: what `walker::sweep::sweep_chains` does for one chain.
 fn advance(
-    setup: &Setup,
+    models: &[Model],
     cfg: &SimConfig,
     limits: &WalkLimits,
     restart: bool,
+    start: &Vector,
     chain: &mut Chain,
-    mu0s: &[f64],
 ) {
-    for &mu0 in mu0s {
-        let start = if restart { chain.initial } else { chain.state };
-        let w = walk(&make(setup, chain.value, mu0), cfg, start, limits);
+    for model in models {
+        let from = if restart { start } else { &chain.state };
+        let w = walk(model, cfg, from, limits);
         chain.state = match (&w.failure, w.last_state()) {
             (None, Some(mut s)) => {
                 s[0] = 0.0;
                 s[1] = 0.0;
                 s
             }
-            _ => chain.initial,
+            _ => *start,
         };
         chain.points.push(Outcome::of(w));
     }
 }
 
-/// Run a sweep and return its rows (`chain`, `mu0`, then [`Rows`]' columns).
+/// The names a caller gave the range's three values (`from_`, `to`, `step`, or the paper's
+/// `mu0_from`, `mu0_to`, `mu0_step`): errors about them name them so.
+#[derive(Clone, Debug, FromPyObject)]
+pub struct RangeNames(pub String, pub String, pub String);
+
+/// The chain parameter and its values: `t_set` chains `T_set`, `phi` the slope; neither, as
+/// the command line: `T_set` where the model has one (Fig. 8), else its slope (Fig. 10), else
+/// one chain without a parameter (its value NaN).
+fn chains(
+    setup: &Setup,
+    t_set: Vec<f64>,
+    phi: Vec<f64>,
+) -> Result<(Option<String>, &'static str, Vec<f64>), ArgError> {
+    let spec = setup.walker.spec();
+    let name_of = |i: usize| spec.model.parameters[i].name.name.clone();
+    match (t_set.is_empty(), phi.is_empty()) {
+        (false, false) => Err(ArgError::new(
+            "phi",
+            "give either t_set or phi values: they chain the sweep",
+        )),
+        (false, true) => Ok((Some("T_set".to_owned()), "t_set", t_set)),
+        (true, false) => {
+            let slope = spec.slope.ok_or_else(|| {
+                ArgError::new(
+                    "phi",
+                    format!("model `{}` has no slope (its floor is level)", spec.name()),
+                )
+            })?;
+            Ok((Some(name_of(slope)), "phi", phi))
+        }
+        (true, true) => {
+            let default = spec.parameter("T_set").or(spec.slope).map(name_of);
+            let value = default.as_deref().and_then(|n| setup.params.get(n));
+            Ok((default, "chain", vec![value.unwrap_or(f64::NAN)]))
+        }
+    }
+}
+
+/// Run a sweep and return its rows (`chain`, `value`, then [`Rows`]' columns), the swept
+/// parameter's name (`param`), the chain's (`chain_param`, or None) and the model's names.
 ///
 /// # Errors
 /// `ValueError` naming a bad argument and its valid range.
 #[pyfunction]
-#[pyo3(signature = (*, scene, mu0_from, mu0_to, mu0_step, t_set, phi, restart, c, friction,
-    impact, method, rtol, atol, duration, max_steps, until_periodic))]
+#[pyo3(signature = (*, scene, model, set, init, param, from_, to, step, range_names, t_set,
+    phi, restart, omega0, c, friction, impact, method, rtol, atol, duration, max_steps,
+    until_periodic))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep<'py>(
     py: Python<'py>,
-    scene: &str,
-    mu0_from: f64,
-    mu0_to: f64,
-    mu0_step: f64,
+    scene: Option<&str>,
+    model: Option<&str>,
+    set: Vec<(String, f64)>,
+    init: Vec<(String, f64)>,
+    param: Option<String>,
+    from_: f64,
+    to: f64,
+    step: f64,
+    range_names: RangeNames,
     t_set: Vec<f64>,
     phi: Vec<f64>,
     restart: bool,
+    omega0: Option<f64>,
     c: Option<f64>,
     friction: Option<&str>,
     impact: Option<&str>,
@@ -107,109 +137,121 @@ pub fn sweep<'py>(
     max_steps: i64,
     until_periodic: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let ov = Overrides {
-        mu0: Some(mu0_from.max(0.0)),
-        c,
-        t_set: t_set.first().copied(),
-        phi: phi.first().copied(),
-        friction: options::friction(friction)?,
-        impact: options::impact(impact)?,
-    };
-    let setup = options::setup(scene, &ov)?;
+    let RangeNames(from_name, to_name, step_name) = &range_names;
+    let ov = overrides(None, c, None, None, friction, impact)?;
+    let mut setup = walker_args::setup(scene, model, &ov, &set)?;
+    walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
     let cfg = options::config(method, rtol, atol)?;
     let limits = options::limits(Some(duration), max_steps, until_periodic)?;
-    check("mu0_from", mu0_from, mu0_from >= 0.0, "finite and >= 0")?;
+    check(from_name, from_, true, "finite")?;
     check(
-        "mu0_to",
-        mu0_to,
-        mu0_to >= mu0_from,
-        "finite and >= mu0_from",
+        to_name,
+        to,
+        to >= from_,
+        &format!("finite and >= {from_name}"),
     )?;
-    check("mu0_step", mu0_step, mu0_step > 0.0, "finite and > 0")?;
-    let active = setup.kind == Kind::ActiveLevel;
-    let (chain_arg, chains) = if active {
-        ("t_set", t_set)
-    } else {
-        ("phi", phi)
-    };
-    if chains.len() > MAX_SWEEP_CHAINS {
+    check(step_name, step, step > 0.0, "finite and > 0")?;
+    let spec = std::sync::Arc::clone(setup.walker.spec());
+    let param = param.unwrap_or_else(|| {
+        spec.mu0.map_or_else(
+            || "mu0".to_owned(),
+            |i| spec.model.parameters[i].name.name.clone(),
+        )
+    });
+    setup
+        .params
+        .index(&param)
+        .map_err(|e| ArgError::new("param", e.to_string()))?;
+    if RESULT_COLUMNS.contains(&param.as_str()) {
+        return Err(ArgError::new(
+            "param",
+            format!("{param:?} is the name of a result column; it cannot be swept here"),
+        )
+        .into());
+    }
+    let (chain_param, chain_arg, values) = chains(&setup, t_set, phi)?;
+    if values.len() > MAX_SWEEP_CHAINS {
         return Err(ArgError::new(
             chain_arg,
-            format!("{} values: at most {MAX_SWEEP_CHAINS} chains", chains.len()),
+            format!("{} values: at most {MAX_SWEEP_CHAINS} chains", values.len()),
         )
         .into());
     }
     // Count the points before making them, as the command line does (`mu0_grid`'s count).
-    let per_chain = ((mu0_to - mu0_from) / mu0_step + 1e-9).floor() + 1.0;
-    let total = per_chain * chains.len().max(1) as f64;
+    let per_chain = ((to - from_) / step + 1e-9).floor() + 1.0;
+    let total = per_chain * values.len() as f64;
     if total > MAX_SWEEP_POINTS as f64 {
         return Err(ArgError::new(
-            "mu0_step",
-            format!(
-                "{mu0_step:e} gives {total:.3e} points; at most {MAX_SWEEP_POINTS} points in all"
-            ),
+            step_name,
+            format!("{step:e} gives {total:.3e} points; at most {MAX_SWEEP_POINTS} points in all"),
         )
         .into());
     }
-    let grid = mu0_grid(mu0_from, mu0_to, mu0_step);
-    let base = setup.runtime;
-    let values = if chains.is_empty() {
-        vec![if active { base.t_set } else { base.phi }]
-    } else {
-        chains
-    };
-    let mut state: Vec<Chain> = Vec::with_capacity(values.len());
+    let grid = mu0_grid(from_, to, step);
+    let base_model = walker_args::model(&setup)?;
+    let start = walker_args::start(&base_model, &init)?;
+    // Every point's model, built before any walk: a value out of its range or kernels that
+    // cannot be prepared are input errors.
+    let mut models: Vec<Vec<Model>> = Vec::with_capacity(values.len());
     for &value in &values {
-        let r = if active {
-            Runtime {
-                t_set: value,
-                ..base
-            }
-        } else {
-            Runtime { phi: value, ..base }
-        };
-        setup::validate(&setup.physical, &r).map_err(ArgError::from)?;
-        let m = make(&setup, value, 0.0);
-        let initial = m.initial_state(m.default_omega0());
-        state.push(Chain {
-            value,
-            initial,
-            state: initial,
-            points: Vec::with_capacity(grid.len()),
-        });
+        let mut base = setup.params.clone();
+        if let Some(name) = &chain_param {
+            base.set(name, value)
+                .map_err(|e| ArgError::from(e).named(chain_arg))?;
+        }
+        let mut row = Vec::with_capacity(grid.len());
+        for &v in &grid {
+            let params = base.with(&param, v).map_err(|e| {
+                let arg = if v == from_ { from_name } else { to_name };
+                ArgError::new(arg, e.to_string())
+            })?;
+            row.push(setup.model_with(&params).map_err(ArgError::from)?);
+        }
+        models.push(row);
     }
+    let mut state: Vec<Chain> = values
+        .iter()
+        .map(|_| Chain {
+            state: start,
+            points: Vec::with_capacity(grid.len()),
+        })
+        .collect();
     in_chunks(py, &mut state, grid.len(), CHUNK, |chains, range| {
-        chains
-            .par_iter_mut()
-            .for_each(|ch| advance(&setup, &cfg, &limits, restart, ch, &grid[range.clone()]));
+        chains.par_iter_mut().zip(&models).for_each(|(ch, row)| {
+            advance(&row[range.clone()], &cfg, &limits, restart, &start, ch);
+        });
     })?;
-    let mut rows = Rows::default();
-    let (mut chain_col, mut mu0_col) = (Vec::new(), Vec::new());
-    for ch in &state {
-        for (o, &mu0) in ch.points.iter().zip(&grid) {
-            chain_col.push(ch.value);
-            mu0_col.push(mu0);
+    let mut rows = Rows::new(spec.n);
+    let (mut chain_col, mut value_col) = (Vec::new(), Vec::new());
+    for (ch, &c) in state.iter().zip(&values) {
+        for (o, &v) in ch.points.iter().zip(&grid) {
+            chain_col.push(c);
+            value_col.push(v);
             rows.push(o);
         }
     }
     let d = rows.into_dict(py)?;
     d.set_item("chain", chain_col)?;
-    d.set_item("mu0", mu0_col)?;
+    d.set_item("value", value_col)?;
+    d.set_item("param", &param)?;
+    d.set_item("chain_param", chain_param)?;
+    names_dict(&d, &spec)?;
     Ok(d)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use walker::setup::Overrides;
     use walker::sweep::sweep_chains;
 
     /// The chunked sweep walks exactly what `walker::sweep::sweep_chains` (the command line's
     /// sweep) walks, in both modes, across chunk boundaries and through failures: `T_set = 0.2`
     /// lifts off for `mu0 <= 0.4` over 5 s walks and walks from `mu0 = 0.5` on (measured), so the
-    /// continuation's reset to the initial condition after a failure is exercised.
+    /// continuation's reset to the start after a failure is exercised.
     #[test]
     fn chunked_chains_equal_the_librarys_sweep_with_and_without_restart() {
-        let setup = Setup::active_level();
+        let setup = walker_args::setup(None, None, &Overrides::default(), &[]).expect("scene");
         let cfg = SimConfig::default();
         let limits = WalkLimits {
             max_steps: 1000,
@@ -219,30 +261,35 @@ mod tests {
         };
         let grid = mu0_grid(0.0, 1.0, 0.1);
         let chains = [0.2, 0.3];
-        let initial = |c: f64| {
-            let m = make(&setup, c, 0.0);
-            m.initial_state(m.default_omega0())
+        let make = |c: f64, mu0: f64| {
+            let p = setup
+                .params
+                .with("T_set", c)
+                .and_then(|p| p.with("mu0", mu0));
+            setup
+                .model_with(&p.expect("in range"))
+                .expect("compiled kernels")
         };
+        let start = make(0.3, 0.4).start_state();
         for restart in [false, true] {
             let want = sweep_chains(
                 &chains,
-                |c, mu0| make(&setup, c, mu0),
+                make,
                 &cfg,
                 &grid,
-                initial,
+                |_| start,
                 &limits,
                 restart,
                 &|| {},
             );
             for (&value, want) in chains.iter().zip(&want) {
+                let models: Vec<Model> = grid.iter().map(|&v| make(value, v)).collect();
                 let mut ch = Chain {
-                    value,
-                    initial: initial(value),
-                    state: initial(value),
+                    state: start,
                     points: Vec::new(),
                 };
-                for part in grid.chunks(CHUNK) {
-                    advance(&setup, &cfg, &limits, restart, &mut ch, part);
+                for part in models.chunks(CHUNK) {
+                    advance(part, &cfg, &limits, restart, &start, &mut ch);
                 }
                 let got: Vec<_> = ch
                     .points

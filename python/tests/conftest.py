@@ -10,6 +10,9 @@ from pathlib import Path
 
 DATA = Path(__file__).parent / "data"
 
+MODELS = Path(__file__).resolve().parents[2] / "models"
+"""The shipped model files (``models/*.toml`` of the repository)."""
+
 
 def cli_json(name: str):
     """The command line's JSON output kept as ``data/<name>.json``."""

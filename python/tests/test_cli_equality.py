@@ -8,7 +8,7 @@ decimal that reads back to the same double (serde_json), so parsing it gives tho
 
 import numpy as np
 import slippery_walker as sw
-from conftest import cli_json
+from conftest import MODELS, cli_json
 
 
 def assert_steps_equal(walk, steps):
@@ -59,9 +59,10 @@ def sweep_rows_of_cli(cli):
 def assert_sweep_equal(s, cli):
     rows = sweep_rows_of_cli(cli)
     assert len(s) == len(rows)
+    assert {ch["param"] for ch in cli["chains"]} == {s.chain_param}
     for k, (value, p) in enumerate(rows):
         assert s["chain"][k] == value
-        assert s["mu0"][k] == p["mu0"]
+        assert s[s.param][k] == p[s.param]
         assert s["steps"][k] == p["steps"]
         assert s["periodic"][k] == p["periodic"]
         assert s["failure"][k] == p["failure"]
@@ -84,14 +85,45 @@ def test_sweep_restarting_every_point_equals_the_cli():
     assert_sweep_equal(s, cli)
 
 
-def test_fixed_point_equals_the_cli():
-    cli = cli_json("fixed_point_active")
-    fp = sw.fixed_point(mu0=0.4)
+def test_sweep_of_another_parameter_equals_the_cli():
+    cli = cli_json("sweep_m2")
+    s = sw.sweep(param="m2", from_=0.8, to=1.2, step=0.2, t_set=0.3, duration=3)
+    assert s.param == "m2"
+    assert_sweep_equal(s, cli)
+
+
+def assert_fixed_point_equal(fp, cli):
     assert fp.json == cli
     assert fp.status == cli["status"]
     assert fp.T == cli["T"] and fp.V == cli["V"]
     assert fp.state_plus.tolist() == cli["state_plus"]
     assert fp.multipliers.tolist() == [complex(m["re"], m["im"]) for m in cli["multipliers"]]
+    assert list(fp.section) == cli["section"]
+
+
+def test_fixed_point_equals_the_cli():
+    assert_fixed_point_equal(sw.fixed_point(mu0=0.4), cli_json("fixed_point_active"))
+
+
+def test_fixed_point_of_a_model_file_equals_the_cli():
+    fp = sw.fixed_point(model=MODELS / "compass-gait.toml", friction="coulomb",
+                        impact="frictionless")
+    assert_fixed_point_equal(fp, cli_json("fixed_point_compass_gait"))
+
+
+def test_simulate_from_a_start_given_by_init_equals_the_cli():
+    cli = cli_json("simulate_init")
+    w = sw.simulate(init={"th1d": 0.7, "th2d": 0.9}, max_steps=3)
+    assert (w.status, w.failure) == (cli["status"], cli["failure"])
+    assert_steps_equal(w, cli["steps"])
+
+
+def test_simulate_of_a_model_file_equals_the_cli():
+    cli = cli_json("simulate_compass_gait")
+    w = sw.simulate(model=MODELS / "compass-gait.toml", friction="coulomb",
+                    impact="frictionless", max_steps=5)
+    assert (w.status, w.failure) == (cli["status"], cli["failure"])
+    assert_steps_equal(w, cli["steps"])
 
 
 def test_a_grid_point_is_the_walk_of_simulate_with_its_parameters():

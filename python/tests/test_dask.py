@@ -5,6 +5,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import slippery_walker as sw
+from conftest import MODELS
 from dask.distributed import Client, LocalCluster
 from slippery_walker.dask import grid_sweep
 
@@ -43,3 +44,16 @@ def test_grid_sweep_takes_a_dict_and_keeps_failures_as_rows(client):
 def test_grid_sweep_checks_every_point_before_sending_work(client):
     with pytest.raises(ValueError, match=r"^invalid t_set: -1: .*\(grid row 2\)"):
         grid_sweep(client, {"t_set": [0.3, 0.3, -1.0]})
+
+
+def test_grid_sweep_of_a_model_file_that_is_not_shipped_equals_one_process(client, tmp_path):
+    # A copy of the compass gait is not compiled in: every worker derives it (walker-load).
+    copy = tmp_path / "compass-gait-copy.toml"
+    copy.write_text((MODELS / "compass-gait.toml").read_text() + "\n# a copy\n")
+    g = {"phi": [0.04, 0.045, 0.05, 0.055], "mu0": [0.5, 0.6, 0.7, 0.8]}
+    kw = dict(model=copy, friction="coulomb", impact="frictionless", duration=2.0)
+    dist = grid_sweep(client, g, chunk_size=2, **kw)
+    local = sw.walk_points(g, **kw).to_pandas()
+    pd.testing.assert_frame_equal(dist, local, check_exact=True)
+    assert "th_swd_plus" in dist.columns
+    assert (dist["status"] == "ok").any()

@@ -1,0 +1,255 @@
+//! The walker of a call, given as the command line gives it (`cli/src/run.rs`): `scene=` (a
+//! built-in name or a scene file) or `model=` (a model file, with its defaults; one that is not
+//! a shipped model is derived when the call starts, by `walker-load`), the parameter keywords
+//! (`mu0`, `c`, `t_set`, `phi`, by their roles in the model), `set={name: value}` for any
+//! run-time parameter, `omega0` (the paper's start parameter) and `init={name: value}` for
+//! components of the start.
+
+use std::path::Path;
+
+use walker::model::{Model, Spec};
+use walker::setup::{Overrides, Setup, SetupError};
+use walker::vector::Vector;
+
+use crate::error::{ArgError, check};
+use crate::options;
+
+/// The longest scene or model file read (bytes), as the command line's: a scene is a few
+/// hundred bytes, the largest shipped model a dozen kilobytes.
+pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+
+/// The scene of a call that names neither a scene nor a model.
+pub const DEFAULT_SCENE: &str = "active-level";
+
+/// Checks that the file `path` given as `arg` can be inspected and is a regular file of at
+/// most [`MAX_SCENE_BYTES`] (not a device or a pipe, which could be read without end).
+fn check_file(arg: &str, path: &Path) -> Result<(), ArgError> {
+    let meta = std::fs::metadata(path)
+        .map_err(|e| ArgError::new(arg, format!("cannot read {}: {e}", path.display())))?;
+    if !meta.is_file() || meta.len() > MAX_SCENE_BYTES {
+        return Err(ArgError::new(
+            arg,
+            format!(
+                "{}: must be a regular file of at most {MAX_SCENE_BYTES} bytes",
+                path.display()
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The overrides of the keyword arguments: the parameters by role, and the laws by name.
+///
+/// # Errors
+/// An unknown friction or impact law.
+pub fn overrides(
+    mu0: Option<f64>,
+    c: Option<f64>,
+    t_set: Option<f64>,
+    phi: Option<f64>,
+    friction: Option<&str>,
+    impact: Option<&str>,
+) -> Result<Overrides, ArgError> {
+    Ok(Overrides {
+        mu0,
+        c,
+        t_set,
+        phi,
+        set: Vec::new(),
+        friction: options::friction(friction)?,
+        impact: options::impact(impact)?,
+    })
+}
+
+/// The argument `set['name']`, as errors about a key of `set` name it.
+#[must_use]
+pub fn set_key(name: &str) -> String {
+    format!("set['{name}']")
+}
+
+/// The argument `init['name']`, as errors about a key of `init` name it.
+#[must_use]
+pub fn init_key(name: &str) -> String {
+    format!("init['{name}']")
+}
+
+/// The setup of `scene` or `model` (neither: [`DEFAULT_SCENE`]) with the overrides `ov`, then
+/// every `(name, value)` of `set` in order, each checked against the range its model file
+/// gives.
+///
+/// # Errors
+/// Both `scene` and `model`; a file that is not a regular file or too long; an unknown or
+/// invalid scene; an invalid model file or one that cannot be derived; an override or a key of
+/// `set` that is unknown or out of its range (named `set['name']`).
+pub fn setup(
+    scene: Option<&str>,
+    model: Option<&str>,
+    ov: &Overrides,
+    set: &[(String, f64)],
+) -> Result<Setup, ArgError> {
+    let runtime = walker_load::runtime_source();
+    let mut setup = match (scene, model) {
+        (Some(_), Some(_)) => {
+            return Err(ArgError::new(
+                "model",
+                "give either scene= or model=, not both",
+            ));
+        }
+        (None, Some(path)) => {
+            let path = Path::new(path);
+            check_file("model", path)?;
+            Setup::from_model_file(path, ov, Some(&runtime)).map_err(|e| match e {
+                // The model file could not be read: it is the `model` argument, not a scene.
+                SetupError::ModelScene(_) => ArgError::new("model", e.to_string()),
+                e => ArgError::from(e),
+            })?
+        }
+        (scene, None) => {
+            let scene = scene.unwrap_or(DEFAULT_SCENE);
+            if scene.ends_with(".toml") {
+                check_file("scene", Path::new(scene))?;
+            }
+            Setup::resolve(scene, ov, Some(&runtime))?
+        }
+    };
+    for (name, value) in set {
+        setup
+            .set(name, *value)
+            .map_err(|e| ArgError::from(e).named(&set_key(name)))?;
+    }
+    Ok(setup)
+}
+
+/// Sets the paper's initial angular velocity `omega0` (a parameter of the start) where the
+/// keyword gives it, as the command line's `--omega0`.
+///
+/// # Errors
+/// Not finite, not `ok`, out of its range, or the model has no start parameter `omega0`.
+pub fn set_omega0(
+    setup: &mut Setup,
+    omega0: Option<f64>,
+    ok: impl Fn(f64) -> bool,
+    must_be: &str,
+) -> Result<(), ArgError> {
+    if let Some(w) = omega0 {
+        check("omega0", w, ok(w), must_be)?;
+        let spec = setup.walker.spec();
+        if spec.parameter("omega0").is_none() {
+            return Err(ArgError::new(
+                "omega0",
+                format!(
+                    "model `{}` has no start parameter omega0; use init={{name: value}}",
+                    spec.name()
+                ),
+            ));
+        }
+        setup.set("omega0", w)?;
+    }
+    Ok(())
+}
+
+/// The model of `setup`.
+///
+/// # Errors
+/// Its friction law has no kernels (named `friction`), or its run-time derivation failed
+/// (`model`).
+pub fn model(setup: &Setup) -> Result<Model, ArgError> {
+    Ok(setup.model()?)
+}
+
+/// The index in the state of each `(name, value)` of `init`, checked against the model
+/// `spec`: a coordinate or a velocity by name, and a finite value.
+///
+/// # Errors
+/// An unknown component (named `init['name']`, listing the model's), or a value that is not
+/// finite.
+pub fn check_init(spec: &Spec, init: &[(String, f64)]) -> Result<Vec<usize>, ArgError> {
+    init.iter()
+        .map(|(name, v)| {
+            let key = init_key(name);
+            let i = spec.state_index(name).ok_or_else(|| {
+                ArgError::new(
+                    &key,
+                    format!(
+                        "not a coordinate or velocity of model `{}`; they are: {}",
+                        spec.name(),
+                        spec.state_names().join(", ")
+                    ),
+                )
+            })?;
+            check(&key, *v, true, "finite")?;
+            Ok(i)
+        })
+        .collect()
+}
+
+/// The start of a walk: the model's `[start]` with the components of `init` (a coordinate or a
+/// velocity by name) replaced, as the command line's `--init`.
+///
+/// # Errors
+/// As [`check_init`].
+pub fn start(model: &Model, init: &[(String, f64)]) -> Result<Vector, ArgError> {
+    let mut s = model.start_state();
+    for (i, (_, v)) in check_init(model.spec(), init)?.into_iter().zip(init) {
+        s[i] = *v;
+    }
+    Ok(s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn active() -> Setup {
+        setup(None, None, &Overrides::default(), &[]).expect("the default scene")
+    }
+
+    #[test]
+    fn a_key_of_set_out_of_its_range_is_named_with_the_model_files_range() {
+        let e = setup(None, None, &Overrides::default(), &[("K_P".into(), -1.0)])
+            .expect_err("K_P >= 0");
+        assert_eq!(e.arg, "set['K_P']");
+        assert!(e.message.starts_with("-1: must be in ["), "{e}");
+    }
+
+    #[test]
+    fn an_unknown_key_of_set_lists_the_models_parameters() {
+        let e = setup(
+            None,
+            None,
+            &Overrides::default(),
+            &[("gravity".into(), 9.8)],
+        )
+        .expect_err("no such parameter");
+        assert_eq!(e.arg, "set['gravity']");
+        assert!(e.message.contains("T_set"), "{e}");
+    }
+
+    #[test]
+    fn init_replaces_one_component_of_the_models_start() {
+        let s = active();
+        let m = model(&s).expect("model");
+        let plain = m.start_state();
+        let got = start(&m, &[("th1d".into(), 0.7)]).expect("th1d is a velocity");
+        let i = m.spec().state_index("th1d").expect("th1d");
+        for k in 0..plain.len() {
+            assert_eq!(got[k], if k == i { 0.7 } else { plain[k] }, "component {k}");
+        }
+        let e = start(&m, &[("th9".into(), 0.0)]).expect_err("unknown");
+        assert_eq!(e.arg, "init['th9']");
+        let e = start(&m, &[("th1".into(), f64::NAN)]).expect_err("not finite");
+        assert_eq!(e.arg, "init['th1']");
+    }
+
+    #[test]
+    fn scene_and_model_together_are_refused_naming_model() {
+        let e = setup(
+            Some("active-level"),
+            Some("models/paper-active.toml"),
+            &Overrides::default(),
+            &[],
+        )
+        .expect_err("both");
+        assert_eq!(e.arg, "model");
+    }
+}
