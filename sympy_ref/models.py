@@ -43,9 +43,12 @@ Derivation (conventions of docs/kernels.md, generalised to n coordinates and p i
   bodies' masses.
 * Jacobians (only where the closed forms are derived and the model has at most `JAC_MAX_N`
   coordinates): sympy's derivatives of the closed forms, `d qdd / d (q, qd, mu)` of the sliding
-  stance (no inputs), `d qdd_cl / d (q, qd, mu, v)` of the closed loop, `d qd+ / d (q, qd)` of the
-  impact; checked against complex-step derivatives (step `1e-40`, at 70 digits) of the numeric
-  route (`checks.jacobians_vs_complex_step`, which must be below 1e-40).
+  stance (no inputs), `d [qdd_cl; u_cl] / d (q, qd, mu, v)` of the closed loop, `d qd+ / d (q, qd)`
+  of the impact; checked against complex-step derivatives (step `1e-40`, at 70 digits) of the
+  numeric route (`checks.jacobians_vs_complex_step`, which must be below 1e-40).  For every
+  model, sympy's derivatives by `(q, qd)` of the maps that need no solve: the relabelling
+  `[q'; qd']` (qd the post-impact velocities), the outputs and rates `[y; H qd]`, the input
+  rates `S^T qd`.
 
 Evaluation: the numeric route applies the formulas above with mpmath linear algebra to the
 symbolic `M, h, S, J, J_mu, J_s, J_I, H, Hdot qd` evaluated at the sample, at 50 and at 70
@@ -83,8 +86,9 @@ impact: `coulomb_qdl_i`, `coulomb_v_t`, `coulomb_v_n`, `coulomb_v_r`, `coulomb_W
 trajectory at `t`: `ydes_k`, `yddes_k`, `ydddes_k`, and Eq. 32's `vpd_k`
 (`ydddes + K_D (yddes - yd) + K_P (ydes - y)`); `guard` (the strike guard) and
 `fall_<name>` (each fall's guard or point distance); with inputs `w_k`; `total_mass`; the
-Jacobians `accel_jac_i_j`, `cl_jac_i_j`, `impact_jac_i_j` (column j over q, qd, then mu, then
-v).  `impact` rows: strike, then locks; `impact_ds` rows: strike, rear foot, then locks.  New
+Jacobians `accel_jac_i_j`, `cl_jac_i_j` (rows: qdd, then u), `impact_jac_i_j` (column j over
+q, qd, then mu, then v), `relabel_jac_i_j`, `yrates_jac_i_j` (rows: y, then the rates),
+`w_jac_i_j` (column j over q, qd).  `impact` rows: strike, then locks; `impact_ds` rows: strike, rear foot, then locks.  New
 outputs are appended after the old ones (and sampled from the same random stream), so adding
 them leaves every existing value unchanged.
 
@@ -367,9 +371,27 @@ def jacobian_vars(m: Model):
 def jacobians(m: Model, d: Derived):
     """The Jacobians by sympy's differentiation of the closed forms (sin/cos form, chain rule
     through sin and cos of the angles): `accel_jac` of the sliding `qdd` (no inputs), `cl_jac` of
-    the closed loop's `qdd`, `impact_jac` of `qd+`."""
-    of = {"accel_jac": "qdd", "cl_jac": "qdd_cl", "impact_jac": "impact_qdp"}
-    return {k: d.closed[of[k]].jacobian(v) for k, v in jacobian_vars(m).items()}
+    the closed loop's `[qdd; u]`, `impact_jac` of `qd+`."""
+    of = {"accel_jac": ["qdd"], "cl_jac": ["qdd_cl", "u_cl"], "impact_jac": ["impact_qdp"]}
+    return {k: sp.Matrix.vstack(*[d.closed[e] for e in of[k]]).jacobian(v)
+            for k, v in jacobian_vars(m).items()}
+
+
+def kinematic_jacobians(m: Model, d: Derived):
+    """The Jacobians by (q, qd) of the maps that need no solve, differentiated symbolically for
+    every model: `relabel_jac` of the relabelling `[q'; qd']` (the striking point becomes the
+    stance foot, `qd' = dq'/dq qd` with qd the post-impact velocities), `yrates_jac` of the
+    outputs and their rates `[y; H qd]`, `w_jac` of the input rates `S^T qd`."""
+    x = sp.Matrix(m.q + m.qd)
+    qv = sp.Matrix(m.qd)
+    after = sp.Matrix([m.relabel.get(i, s) for i, s in enumerate(m.q)])
+    after[0], after[1] = m.points[m.strike_point]
+    out = {"relabel_jac": sp.Matrix.vstack(after, after.jacobian(sp.Matrix(m.q)) * qv)}
+    if m.outputs:
+        out["yrates_jac"] = sp.Matrix.vstack(d.y, d.H * qv)
+    if m.inputs:
+        out["w_jac"] = d.S.T * qv
+    return {k: e.jacobian(x) for k, e in out.items()}
 
 
 def trig_standins(m: Model):
@@ -490,6 +512,7 @@ class Numeric:
         aux = [m.sym.setdefault(o[2], sp.Symbol(o[2], real=True)) for o in m.outputs]
         self.jac = {k: sp.lambdify(self.args + aux, e, modules="mpmath", cse=True)
                     for k, e in d.jacobians.items()}
+        self.kin_jac = {k: L(e) for k, e in kinematic_jacobians(m, d).items()}
         qv = sp.Matrix(m.qd)
         pts = {}
         for nm, (px, pz) in m.points.items():
@@ -611,12 +634,14 @@ class Numeric:
         v = [mp.mpf(x) for x in s["v"]]
         for k, f in self.jac.items():
             put(k, mp.matrix(f(*a, *v)))
+        for k, f in self.kin_jac.items():
+            put(k, mp.matrix(f(*a)))
         return out
 
     def maps(self, a, v):
         """The maps the Jacobians differentiate, by the numeric route at the argument list `a`
         (complex entries allowed, for complex-step derivatives): the sliding `qdd` (no inputs) or
-        the closed loop's `qdd` at `v`, and the impact's `qd+`."""
+        the closed loop's `[qdd; u]` at `v`, and the impact's `qd+`."""
         m = self.m
         n = len(m.q)
         E = lambda k: mp.matrix(self.f[k](*a))
@@ -634,7 +659,9 @@ class Numeric:
             Y = mp.eye(n) - Jh.T * (1 / den) * J * Minv
             A = H * Minv * Y * S
             B = H * Minv * Y * h - Hdqd
-            out["cl_jac"] = slide(S * mp.lu_solve(A, mp.matrix(v) + B) - h)
+            u = mp.lu_solve(A, mp.matrix(v) + B)
+            qdd = slide(S * u - h)
+            out["cl_jac"] = mp.matrix(list(qdd) + list(u))
         else:
             out["accel_jac"] = slide(-h)
         JI = E("JI")
@@ -665,7 +692,7 @@ class Numeric:
                 aa, vv = list(a), list(v)
                 (aa if which == "a" else vv)[i] += mp.mpc(0, step)
                 col = self.maps(aa, vv)[k]
-                for r in range(n):
+                for r in range(col.rows):
                     out[f"{k}_{r}_{j}"] = mp.im(col[r]) / step
         return out
 

@@ -1,8 +1,11 @@
 //! Generates the kernels of every model file in `models/` (exact Coulomb friction, so that a
 //! test realises any `mu` as `-mu0 sigma`), and for each a small adapter that calls a kernel by
 //! name with its arguments by name: the model tests then run the same checks over every model
-//! without knowing any model's signatures. Also writes the same adapters for the simulator's
-//! scenes as `walker` compiles them (`walker::kernels`; no kernel is generated here for them).
+//! without knowing any model's signatures. Also generates the hand-derived paper scenes of
+//! `walker/scenes/` (from `walker_gen::lower::derive`, the paper's Eqs. 2-46 written out by hand
+//! in `derive/src/mechanics`) with the same adapters: the simulator runs on the model files now,
+//! and these scenes stay under test as the independent derivation the model files' kernels are
+//! compared against.
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -72,8 +75,10 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// The scenes `walker/build.rs` compiles into `walker::kernels` (the same list).
-const WALKER_SCENES: [&str; 6] = [
+/// The hand-derived paper scenes of `walker/scenes/` generated here: the paper's two setups
+/// with Table 1 fixed, the same structures with every parameter at run time, and both under
+/// exact Coulomb friction with stick-slip.
+const SCENES: [&str; 6] = [
     "active-level",
     "passive-slope",
     "general-level",
@@ -82,30 +87,33 @@ const WALKER_SCENES: [&str; 6] = [
     "general-slope-coulomb",
 ];
 
-/// `scenes.rs`: per scene of [`WALKER_SCENES`], an adapter that calls the kernels of
-/// `walker::kernels::<scene>` by name, lowered from one derivation (as `walker/build.rs` does).
+/// `scene_<name>.rs` per scene of [`SCENES`], lowered from one derivation, and `scenes.rs`: per
+/// scene a module that includes its kernels and an adapter that calls them by name.
 fn scenes(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../walker/scenes");
     let derivation = walker_gen::lower::derive()?;
     let mut modules = String::new();
     let mut index = String::from(
-        "/// The simulator's scenes as `walker` compiles them: name and kernels called by name.\n\
+        "/// The hand-derived paper scenes: name and kernels called by name.\n\
          pub const SCENES: &[GeneratedModel] = &[\n",
     );
-    for name in WALKER_SCENES {
+    for name in SCENES {
         let path = dir.join(format!("{name}.toml"));
         println!("cargo:rerun-if-changed={}", path.display());
-        let scene = Config::new().scene_file(&path).load_scene()?;
-        let module = walker_gen::lower::lower(&derivation, &scene)?;
+        let mut config = Config::new();
+        // Unchecked kernels only, as for the model files.
+        config.scene_file(&path).checked(false);
+        let module = walker_gen::lower::lower(&derivation, &config.load_scene()?)?;
         let ident = name.replace('-', "_");
+        let source = walker_gen::emit(&module, &config.options())?;
+        std::fs::write(out.join(format!("scene_{ident}.rs")), source)?;
         let (arms, outputs) = adapter(&module);
         let _ = write!(
             modules,
-            "/// The kernels of `walker/scenes/{name}.toml` as compiled into \
-             `walker::kernels::{ident}`.\n\
+            "/// The kernels of `walker/scenes/{name}.toml`, generated from the hand derivation.\n\
              #[allow(clippy::all, clippy::pedantic, missing_docs, reason = \"generated\")]\n\
              pub mod {ident} {{\n\
-             use walker::kernels::{ident}::*;\n\
+             include!(concat!(env!(\"OUT_DIR\"), \"/scene_{ident}.rs\"));\n\
              /// Calls kernel `kernel` with parameters and arguments by name; `None` for a \
              kernel the scene does not have.\n\
              pub fn call(kernel: &str, param: &dyn Fn(&str) -> f64, arg: &dyn Fn(&str) -> f64) \

@@ -22,7 +22,7 @@ use std::time::Instant;
 use common::{Input, inputs};
 use nalgebra::Vector4;
 use serde_json::Value;
-use walker::kernels::{
+use walker_tests::scenes::{
     active_level as al, general_level as gl, general_slope as gs, passive_slope as ps,
 };
 use walker_tests::{EPS, Phys, mu_law, xd_for_mu};

@@ -13,7 +13,7 @@ use std::time::Duration;
 use common::{C, Input, MU0, inputs};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use nalgebra::Vector4;
-use walker::kernels::{
+use walker_tests::scenes::{
     active_level as al, general_level as gl, general_slope as gs, passive_slope as ps,
 };
 use walker_tests::{Phys, mu_law};

@@ -1,4 +1,4 @@
-//! Verification suite of the generated kernels (`walker::kernels::*`).
+//! Verification suite of the generated kernels (the paper scenes and every model file).
 //!
 //! This crate holds a *generic* implementation of the walker's dynamics written directly from
 //! the paper (Asano, Kikuchi, Shibata, Sections 2-3 and 5.1) with `nalgebra`: the matrices

@@ -144,29 +144,30 @@ pub fn samples(model: &Model) -> Vec<Sample> {
     out
 }
 
-/// The reference's name for output `name` of kernel `kernel` (`cols`: the columns of the
-/// control's `A`, the model's inputs); `None` for the matrices the reference does not list
+/// The reference's name for output `name` of kernel `kernel` of a model with `inputs` inputs
+/// (the columns of the control's `A` and the rows of the input rates' Jacobian); `None` for the matrices the reference does not list
 /// (`S`, `J_I`, `H`, the drift), which the generic linear-algebra tests check through the
 /// solves built from them. Every shipped model has fewer than ten coordinates, inputs and
-/// outputs, so a matrix entry's index pair is two digits, except a Jacobian's column (up to
-/// `2n + 1 + m`): its first digit is the row, the rest the column.
+/// outputs, so a matrix entry's index pair is two digits, except a Jacobian's: its row (up to
+/// `2n`) is its first digit, or the digits before `_` past ten rows, its column (up to
+/// `2n + 1 + m`) the rest.
 #[must_use]
-pub fn reference_name(kernel: &str, name: &str, cols: usize) -> Option<String> {
+pub fn reference_name(kernel: &str, name: &str, inputs: usize) -> Option<String> {
     let index = |prefix: &str| name.strip_prefix(prefix).map(str::to_owned);
     // `A{i}{j}` for a matrix with more than one row and column, `A{k}` otherwise.
     let matrix = |prefix: &str, to: &str| {
         let digits = index(prefix)?;
-        Some(if cols > 1 && digits.len() == 2 {
+        Some(if inputs > 1 && digits.len() == 2 {
             let (i, j) = digits.split_at(1);
             format!("{to}_{i}_{j}")
         } else {
             format!("{to}_{digits}_0")
         })
     };
-    // `J{i}{j}`: row i (one digit), column j (the rest).
+    // `J{i}{j}`: row i (one digit), column j (the rest); `J{i}_{j}` past ten rows.
     let jacobian = |to: &str| {
         let digits = index("J")?;
-        let (i, j) = digits.split_at(1);
+        let (i, j) = digits.split_once('_').unwrap_or_else(|| digits.split_at(1));
         Some(format!("{to}_{i}_{j}"))
     };
     Some(match (kernel, name) {
@@ -211,6 +212,11 @@ pub fn reference_name(kernel: &str, name: &str, cols: usize) -> Option<String> {
         ("accel_jacobian", _) => jacobian("accel_jac")?,
         ("closed_loop_jacobian", _) => jacobian("cl_jac")?,
         ("impact_jacobian", _) => jacobian("impact_jac")?,
+        ("relabel_jacobian", _) => jacobian("relabel_jac")?,
+        ("output_rates_jacobian", _) => jacobian("yrates_jac")?,
+        // One input: one row, whose entries are `J{j}`.
+        ("input_rates_jacobian", _) if inputs == 1 => format!("w_jac_0_{}", index("J")?),
+        ("input_rates_jacobian", _) => jacobian("w_jac")?,
         ("points", _) => {
             let (axis, point) = name.split_once('_')?;
             format!("{point}_{axis}")

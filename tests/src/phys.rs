@@ -1,8 +1,6 @@
 //! The physical parameters of a test case ([`Phys`]), Table 1's values, and the generated
 //! kernels prepared at them.
 
-use walker::params::{Physical, Runtime, by_name};
-
 /// Physical parameters (docs/kernels.md, "Parameters"). `phi = 0` is the level floor.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Phys {
@@ -24,6 +22,17 @@ pub struct Phys {
     pub phi: f64,
 }
 
+/// The run-time settings of a scene's kernels: the friction law and the controller.
+#[derive(Debug, Clone, Copy)]
+struct Runtime {
+    mu0: f64,
+    c: f64,
+    t_set: f64,
+    k_p: f64,
+    k_d: f64,
+    phi: f64,
+}
+
 /// Runtime parameters with every value NaN: a kernel's `Params` that read one not set on
 /// purpose would turn the kernels' outputs NaN, and the tests using them would fail.
 const UNSET: Runtime = Runtime {
@@ -36,24 +45,27 @@ const UNSET: Runtime = Runtime {
 };
 
 impl Phys {
-    /// These parameters as the simulator's [`Physical`] (`phi` is a runtime parameter there).
-    fn physical(&self) -> Physical {
-        Physical {
-            m1: self.m1,
-            m2: self.m2,
-            l: self.l,
-            i1: self.i1,
-            i2: self.i2,
-            g: self.g,
-            alpha: self.alpha,
-        }
-    }
-
     /// The value of a parameter by its vocabulary name (`m1`, `I1`, `T_set`, ...) at these
-    /// physical parameters and `runtime`, for a generated `Params::from_fn`.
-    fn by_name(&self, runtime: Runtime) -> impl FnMut(&'static str) -> f64 {
-        let physical = self.physical();
-        move |name| by_name(&physical, &runtime, name)
+    /// physical parameters and `runtime`, for a generated `Params::from_fn`; NaN for a name
+    /// that is not a parameter (so that a misspelt one poisons every output).
+    fn by_name(&self, rt: Runtime) -> impl FnMut(&'static str) -> f64 {
+        let p = *self;
+        move |name| match name {
+            "m1" => p.m1,
+            "m2" => p.m2,
+            "l" => p.l,
+            "I1" => p.i1,
+            "I2" => p.i2,
+            "g" => p.g,
+            "alpha" => p.alpha,
+            "mu0" => rt.mu0,
+            "c" => rt.c,
+            "T_set" => rt.t_set,
+            "K_P" => rt.k_p,
+            "K_D" => rt.k_d,
+            "phi" => rt.phi,
+            _ => f64::NAN,
+        }
     }
 
     /// The `general_level` kernels prepared at these parameters, the tanh law `(mu0, c)` and the
@@ -63,8 +75,8 @@ impl Phys {
         &self,
         (mu0, c): (f64, f64),
         (t_set, k_p, k_d): (f64, f64, f64),
-    ) -> walker::kernels::general_level::Prepared {
-        use walker::kernels::general_level as gl;
+    ) -> crate::scenes::general_level::Prepared {
+        use crate::scenes::general_level as gl;
         gl::prepare(&gl::Params::from_fn(self.by_name(Runtime {
             mu0,
             c,
@@ -77,8 +89,8 @@ impl Phys {
 
     /// The `general_slope` kernels prepared at these parameters and the tanh law `(mu0, c)`.
     #[must_use]
-    pub fn slope_kernels(&self, (mu0, c): (f64, f64)) -> walker::kernels::general_slope::Prepared {
-        use walker::kernels::general_slope as gs;
+    pub fn slope_kernels(&self, (mu0, c): (f64, f64)) -> crate::scenes::general_slope::Prepared {
+        use crate::scenes::general_slope as gs;
         gs::prepare(&gs::Params::from_fn(self.by_name(Runtime {
             mu0,
             c,
@@ -94,8 +106,8 @@ impl Phys {
         &self,
         mu0: f64,
         (t_set, k_p, k_d): (f64, f64, f64),
-    ) -> walker::kernels::general_level_coulomb::Prepared {
-        use walker::kernels::general_level_coulomb as glc;
+    ) -> crate::scenes::general_level_coulomb::Prepared {
+        use crate::scenes::general_level_coulomb as glc;
         glc::prepare(&glc::Params::from_fn(self.by_name(Runtime {
             mu0,
             t_set,
@@ -111,8 +123,8 @@ impl Phys {
     pub fn slope_coulomb_kernels(
         &self,
         mu0: f64,
-    ) -> walker::kernels::general_slope_coulomb::Prepared {
-        use walker::kernels::general_slope_coulomb as gsc;
+    ) -> crate::scenes::general_slope_coulomb::Prepared {
+        use crate::scenes::general_slope_coulomb as gsc;
         gsc::prepare(&gsc::Params::from_fn(self.by_name(Runtime {
             mu0,
             phi: self.phi,

@@ -26,8 +26,8 @@
 use nalgebra::Vector4;
 use proptest::prelude::*;
 use serde_json::Value;
-use walker::kernels::{general_level_coulomb as glc, general_slope_coulomb as gsc};
 use walker::model::{ImpactRegime, Ingredients, Slide, in_regime, plastic_coulomb, rear_test};
+use walker_tests::scenes::{general_level_coulomb as glc, general_slope_coulomb as gsc};
 use walker_tests::{EPS, Phys, cases};
 
 /// See the module documentation.
@@ -57,7 +57,13 @@ fn ingredients(p: &Phys, slope: bool, th1: f64, qd: Vector4<f64>) -> Ingredients
             w2,
         )
     };
-    Ingredients::from_kernel(out)
+    Ingredients::from_kernel(4, &out)
+}
+
+/// `qd+ = qd_L + R Lambda` of the paper's walker (four coordinates).
+fn velocity(ing: &Ingredients, lambda: [f64; 2]) -> [f64; 4] {
+    let v = ing.velocity(lambda);
+    [v[0], v[1], v[2], v[3]]
 }
 
 /// The regime's name in the reference file.
@@ -175,7 +181,7 @@ fn check_case(c: &Value) -> Result<f64, String> {
     for (i, r) in c["impulse"].as_array().unwrap().iter().enumerate() {
         cmp(&format!("Lambda[{i}]"), lam[i], parse(r), iscale)?;
     }
-    let qp = ing.velocity(lam);
+    let qp = velocity(&ing, lam);
     for (i, r) in c["qd_plus"].as_array().unwrap().iter().enumerate() {
         cmp(&format!("qd+[{i}]"), qp[i], parse(r), vscale)?;
     }
@@ -356,12 +362,12 @@ fn check_properties(
         }
     };
     let kappa = condition(&ing, mu0, regime);
-    let qp = ing.velocity(lam);
+    let qp = velocity(&ing, lam);
     // Absolute-value magnitude of qd+ = qdl + R Lambda, the impulse error amplified by kappa.
     let dq: Vec<f64> = (0..4)
         .map(|i| {
             ing.qdl[i].abs()
-                + (ing.r[i][0].abs() * lam[0].abs() + ing.r[i][1].abs() * lam[1].abs())
+                + (ing.r[2 * i].abs() * lam[0].abs() + ing.r[2 * i + 1].abs() * lam[1].abs())
                     * (1.0 + kappa)
         })
         .collect();
@@ -444,7 +450,7 @@ fn check_frictionless(
         "Lambda_t = {} at mu0 = 0",
         lam[0]
     );
-    let qp = ing.velocity(lam);
+    let qp = velocity(&ing, lam);
     let rear = rear_test(&ing, 0.0, lam, regime);
     let [a, b, c, d] = [qd[0], qd[1], qd[2], qd[3]];
     let (map, rear_ref, rows, rear_rows) = if slope {

@@ -8,7 +8,7 @@
 
 use nalgebra::Vector4;
 use proptest::prelude::*;
-use walker::kernels::{general_level as gl, general_slope as gs};
+use walker_tests::scenes::{general_level as gl, general_slope as gs};
 use walker_tests::{EPS, Phys, cases};
 
 const C: f64 = 256.0;

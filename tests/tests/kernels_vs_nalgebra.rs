@@ -43,7 +43,7 @@
 use nalgebra::Vector4;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
-use walker::kernels::{
+use walker_tests::scenes::{
     general_level as gl, general_level_coulomb as glc, general_slope as gs,
     general_slope_coulomb as gsc,
 };

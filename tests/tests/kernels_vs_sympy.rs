@@ -57,7 +57,7 @@ use std::fmt::Write as _;
 
 use nalgebra::Vector4;
 use serde_json::Value;
-use walker::kernels::{
+use walker_tests::scenes::{
     general_level as gl, general_level_coulomb as glc, general_slope as gs,
     general_slope_coulomb as gsc,
 };

@@ -63,11 +63,6 @@ fn check(model_name: &str) -> (usize, usize) {
         }
         for k in &d.kernels {
             let p = if k.name == "relabel" { &p_after } else { &p };
-            let cols = if k.name == "control" {
-                model.inputs.len()
-            } else {
-                1
-            };
             let forms = [
                 ("closed form", k.eval_closed(p), 1e-10),
                 ("staged form", k.eval_staged(p), 1e-10),
@@ -76,7 +71,7 @@ fn check(model_name: &str) -> (usize, usize) {
             for (form, values, tol) in forms {
                 let Some(values) = values else { continue };
                 for ((name, r), got) in k.outputs.iter().zip(values) {
-                    let Some(key) = reference_name(k.name, name, cols) else {
+                    let Some(key) = reference_name(k.name, name, model.inputs.len()) else {
                         continue;
                     };
                     let got = got * reference_factor(&model, &sample, name);

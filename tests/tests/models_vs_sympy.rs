@@ -42,13 +42,8 @@ fn every_generated_model_kernel_agrees_with_sympy() {
                     (m.call)(kernel, &value, &value).unwrap()
                 };
                 assert_eq!(got.len(), names.len(), "{}: {kernel}", m.name);
-                let cols = if *kernel == "control" {
-                    model.inputs.len()
-                } else {
-                    1
-                };
                 for (name, got) in names.iter().zip(got) {
-                    let Some(key) = reference_name(kernel, name, cols) else {
+                    let Some(key) = reference_name(kernel, name, model.inputs.len()) else {
                         continue;
                     };
                     let got = got * reference_factor(&model, &sample, name);

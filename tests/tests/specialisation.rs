@@ -12,7 +12,7 @@
 #![allow(clippy::unwrap_used, reason = "test code")]
 
 use nalgebra::Vector4;
-use walker::kernels::{
+use walker_tests::scenes::{
     active_level as al, general_level as gl, general_slope as gs, passive_slope as ps,
 };
 use walker_tests::{EPS, Phys};

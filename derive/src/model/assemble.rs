@@ -6,14 +6,19 @@ use crate::matrix::Matrix;
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Sym, SymKind, Symbols};
 
-/// The entries of `m` as outputs `prefix{i}{j}` (a matrix) or `prefix{k}` (a row or column).
+/// The entries of `m` as outputs `prefix{i}{j}` (a matrix; `prefix{i}_{j}` past ten rows) or
+/// `prefix{k}` (a row or column).
 pub(super) fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
     let c = m.cols();
     m.entries()
         .iter()
         .enumerate()
         .map(|(k, r)| {
-            let name = if m.rows() > 1 && c > 1 {
+            // Row and column run together while the row has one digit (every shipped model's
+            // matrices); past ten rows an underscore parts them (`J1_11` is not `J11_1`).
+            let name = if m.rows() > 10 && c > 1 {
+                format!("{prefix}{}_{}", k / c, k % c)
+            } else if m.rows() > 1 && c > 1 {
                 format!("{prefix}{}{}", k / c, k % c)
             } else {
                 format!("{prefix}{k}")
