@@ -6,7 +6,8 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use walker::model::{Model, Runtime};
+use walker::model::Model;
+use walker::setup::Setup;
 use walker::sim::{SimConfig, Trajectory, WalkLimits, trajectory};
 
 fn walker(args: &[&str]) -> Output {
@@ -42,23 +43,18 @@ fn animate(out: &Path, args: &[&str]) -> serde_json::Value {
 /// The active walker of Fig. 5 (`mu0 = 0.4`, `T_set = 0.3`, `omega0 = 0.8`), sampled as
 /// `walker animate --steps 2 --fps 20` samples it (dt = 1/20 s at speed 1).
 fn fig5_two_steps() -> (Model, Trajectory) {
-    let m = Model::active_level(Runtime {
-        mu0: 0.4,
-        t_set: 0.3,
-        ..Runtime::default()
-    });
+    let m = Setup::active_level()
+        .and_then(|s| s.with("mu0", 0.4)?.with("T_set", 0.3))
+        .and_then(|s| Ok(s.model()?))
+        .expect("the built-in scene active-level");
     let limits = WalkLimits {
         max_steps: 2,
         ..WalkLimits::default()
     };
-    let tr = trajectory(
-        &m,
-        &SimConfig::default(),
-        m.initial_state(0.8),
-        &limits,
-        0.05,
-        3000,
-    );
+    let start = m
+        .start_state_with("omega0", 0.8)
+        .expect("omega0 is a start parameter");
+    let tr = trajectory(&m, &SimConfig::default(), &start, &limits, 0.05, 3000);
     (m, tr)
 }
 
@@ -135,7 +131,8 @@ fn the_svg_parses_with_one_keyframe_per_frame_on_every_moving_part() {
 /// The drawn walker at each frame is the simulated one at that frame's time: the drawn foot is
 /// the state's `(x, z)`, the drawn hub is `(x + l sin th1, z + l cos th1)`, the drawn stance
 /// spoke ends at the foot and the drawn fore spoke (the hub's translation and the wheel's
-/// rotation applied to the spoke) at the generated `fore_foot` kernel's fore foot. The SVG writes metres and degrees with 4 decimals
+/// rotation applied to the spoke) at the fore foot of the model's `points` kernel (the point
+/// `fore_foot` of `models/paper-active.toml`). The SVG writes metres and degrees with 4 decimals
 /// (rounding by at most 5e-5); a point built from the rounded hub, the rounded spoke end and
 /// the rounded angle (5e-5 deg is 9e-7 rad, times l = 1) is within 1.1e-4 of the exact one, so
 /// 2e-4 bounds the difference while a frame off by one (dt = 0.05 s at about 0.5 m/s, 2.5 cm)
@@ -154,9 +151,15 @@ fn the_drawn_foot_hub_and_fore_foot_are_the_simulated_ones_at_the_frame_times() 
     // The spokes in the wheel's own frame, `M0 0L x z` each; the wheel turns on by one spoke a
     // step, so the fore leg of step `s` is spoke `s + 1` of the drawing.
     let body: Vec<(f64, f64)> = spokes.split("M0 0L").skip(1).map(pair).collect();
+    let fore = model
+        .spec()
+        .points()
+        .position(|p| p == "fore_foot")
+        .expect("the model has a fore foot");
+    let mut points = vec![0.0; 2 * model.spec().points().count()];
     let tol = 2e-4;
     for (i, f) in tr.frames.iter().enumerate() {
-        let [x, z, th1, _, xd, zd, th1d, _] = f.state;
+        let (x, z, th1) = (f.state[0], f.state[1], f.state[2]);
         let foot = pair(feet[i]);
         assert!(
             (foot.0 - x).abs() < tol && (foot.1 - z).abs() < tol,
@@ -179,7 +182,8 @@ fn the_drawn_foot_hub_and_fore_foot_are_the_simulated_ones_at_the_frame_times() 
             "frame {i}"
         );
         let drawn = end(f.step + 1);
-        let ff = model.fore_foot(x, z, th1, xd, zd, th1d);
+        model.points(&f.state[..4], &mut points);
+        let ff = [points[2 * fore], points[2 * fore + 1]];
         assert!((drawn.0 - ff[0]).abs() < tol, "frame {i}: {drawn:?} {ff:?}");
         assert!((drawn.1 - ff[1]).abs() < tol, "frame {i}: {drawn:?} {ff:?}");
     }

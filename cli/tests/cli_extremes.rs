@@ -44,12 +44,14 @@ const SIMULATE: Command = Command {
     variants: VARIANTS,
 };
 
+/// The sweep's range by its flags' own names (`--mu0-from`, `--mu0-to`, `--mu0-step` are
+/// aliases; a refusal names the flag, `invalid from:`).
 const SWEEP: Command = Command {
     name: "sweep",
     defaults: &[
-        ("mu0-from", "0.4"),
-        ("mu0-to", "0.4"),
-        ("mu0-step", "0.1"),
+        ("from", "0.4"),
+        ("to", "0.4"),
+        ("step", "0.1"),
         ("max-steps", "2"),
         ("duration", "1"),
     ],
@@ -78,7 +80,7 @@ struct Row {
     /// Values at the edges of this flag's range (just inside and just outside).
     edges: &'static [&'static str],
     /// Other flags given the same value, where the flag's range depends on them
-    /// (`--mu0-to` must be at least `--mu0-from`).
+    /// (`--to` must be at least `--from`).
     same: &'static [&'static str],
     /// Defaults of the command replaced for this row.
     set: &'static [(&'static str, &'static str)],
@@ -128,16 +130,16 @@ const ROWS: &[Row] = &[
     row(SWEEP, "atol", UNIT),
     // A one-point grid at the value itself.
     Row {
-        same: &["mu0-to"],
-        ..row(SWEEP, "mu0-from", NONE)
+        same: &["to"],
+        ..row(SWEEP, "from", NONE)
     },
     // The grid `0, value` (two points).
     Row {
-        same: &["mu0-step"],
-        set: &[("mu0-from", "0")],
-        ..row(SWEEP, "mu0-to", NONE)
+        same: &["step"],
+        set: &[("from", "0")],
+        ..row(SWEEP, "to", NONE)
     },
-    row(SWEEP, "mu0-step", NONE),
+    row(SWEEP, "step", NONE),
     row(SWEEP, "t-set", NONE),
     row(SWEEP, "phi", SLOPE),
     row(SWEEP, "duration", NONE),

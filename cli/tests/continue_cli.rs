@@ -100,10 +100,11 @@ fn mu0_zero_ends_the_branch_on_a_labelled_family() {
 #[test]
 fn bad_input_exits_2_naming_the_flag_and_its_range() {
     for (args, flag, says) in [
+        // The valid range of `mu0` as its model file writes it.
         (
             vec!["--param", "mu0", "--from", "-0.1", "--to", "1"],
             "from",
-            "finite and >= 0",
+            "must be in [0, inf)",
         ),
         (
             vec!["--param", "mu0", "--from", "0.5", "--to", "0.5"],
@@ -120,17 +121,19 @@ fn bad_input_exits_2_naming_the_flag_and_its_range() {
             "param",
             "unknown parameter",
         ),
+        // The active walker's model file has no slope parameter.
         (
             vec!["--param", "phi", "--from", "0", "--to", "0.1"],
             "param",
-            "not a parameter of this walker",
+            "unknown parameter \"phi\" of model `paper-active`",
         ),
+        // A value of `--set` out of its range is named by the parameter's flag, with the range.
         (
             vec![
                 "--param", "mu0", "--from", "0.1", "--to", "0.2", "--set", "T_set=-1",
             ],
-            "set",
-            "T_set=-1",
+            "t-set",
+            "-1: must be in (0, inf)",
         ),
         (
             vec![

@@ -1,8 +1,8 @@
 //! Continuation in mu0: CSV without NaN and a stability summary.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
-use walker::model::{Model, Runtime};
 use walker::poincare::continuation;
+use walker::setup::Setup;
 use walker::sim::SimConfig;
 use walker_cli::report::{continuation_csv, stability_summary};
 
@@ -10,11 +10,10 @@ use walker_cli::report::{continuation_csv, stability_summary};
 fn continuation_in_mu0_for_the_active_walker() {
     let pts = continuation(
         |t_set, mu0| {
-            Model::active_level(Runtime {
-                mu0,
-                t_set,
-                ..Runtime::default()
-            })
+            let setup = Setup::active_level()
+                .and_then(|s| s.with("mu0", mu0)?.with("T_set", t_set))
+                .unwrap();
+            Some(setup.model().unwrap())
         },
         &[0.3],
         &[0.0, 0.3, 0.4, 0.5],

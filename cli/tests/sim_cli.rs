@@ -158,7 +158,8 @@ fn bad_input_exits_2_naming_the_field() {
                 "--mu0-step",
                 "0",
             ],
-            "mu0-step",
+            // `--mu0-step` is an alias of `--step`, which the message names.
+            "invalid step:",
         ),
         (
             &[

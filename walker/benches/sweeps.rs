@@ -20,8 +20,9 @@ mod common;
 use std::time::Instant;
 
 use common::{median, rel};
-use walker::model::{Model, Runtime};
+use walker::model::Model;
 use walker::ode::Method;
+use walker::setup::Setup;
 use walker::sim::{SimConfig, WalkLimits};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
 
@@ -33,6 +34,15 @@ const REF_TOL: f64 = 1e-12;
 enum Fig {
     Fig8,
     Fig10,
+}
+
+/// The built-in scene `scene` with `params` set by name.
+fn model(scene: &str, params: &[(&str, f64)]) -> Model {
+    let mut setup = Setup::built_in(scene).expect("a built-in scene");
+    for &(name, value) in params {
+        setup.set(name, value).expect("a parameter in its range");
+    }
+    setup.model().expect("the scene's kernels are compiled in")
 }
 
 /// The chains of a figure: `T_set` (Fig. 8) or `phi` (Fig. 10).
@@ -67,21 +77,13 @@ fn run_on(fig: Fig, tol: f64, on: &[f64], periodic: bool) -> Vec<Vec<SweepPoint>
             let grid = mu0_grid(0.0, 1.0, 0.01);
             sweep_chains(
                 on,
-                |t_set, mu0| {
-                    Model::active_level(Runtime {
-                        mu0,
-                        t_set,
-                        ..Runtime::default()
-                    })
-                },
+                |t_set, mu0| model("active-level", &[("mu0", mu0), ("T_set", t_set)]),
                 &cfg,
                 &grid,
                 |t_set| {
-                    Model::active_level(Runtime {
-                        t_set,
-                        ..Runtime::default()
-                    })
-                    .initial_state(0.8)
+                    model("active-level", &[("T_set", t_set)])
+                        .start_state_with("omega0", 0.8)
+                        .expect("omega0 is a start parameter")
                 },
                 &limits,
                 false,
@@ -90,22 +92,13 @@ fn run_on(fig: Fig, tol: f64, on: &[f64], periodic: bool) -> Vec<Vec<SweepPoint>
         }
         Fig::Fig10 => {
             let grid = mu0_grid(0.0, 0.7, 0.01);
-            let make = |phi: f64, mu0: f64| {
-                Model::passive_slope(Runtime {
-                    mu0,
-                    phi,
-                    ..Runtime::default()
-                })
-            };
+            let make = |phi: f64, mu0: f64| model("passive-slope", &[("mu0", mu0), ("phi", phi)]);
             sweep_chains(
                 on,
                 make,
                 &cfg,
                 &grid,
-                |phi| {
-                    let m = make(phi, 0.0);
-                    m.initial_state(m.default_omega0())
-                },
+                |phi| make(phi, 0.0).start_state(),
                 &limits,
                 false,
                 &|| {},

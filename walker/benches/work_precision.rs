@@ -22,51 +22,61 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use common::{Curve, Panel, median, rel, rel_norm, svg_loglog, time_reps};
-use walker::model::{Model, Runtime};
+use walker::model::Model;
 use walker::ode::Method;
+use walker::setup::Setup;
 use walker::sim::{SimConfig, Walk, WalkLimits, walk_with_stats};
+use walker::vector::Vector;
 
 const STEPS: usize = 10;
 
 struct Case {
     name: &'static str,
     model: Model,
-    initial: [f64; 8],
+    initial: Vector,
+}
+
+/// The built-in scene `scene` with `params` set by name.
+fn model(scene: &str, params: &[(&str, f64)]) -> Model {
+    let mut setup = Setup::built_in(scene).expect("a built-in scene");
+    for &(name, value) in params {
+        setup.set(name, value).expect("a parameter in its range");
+    }
+    setup.model().expect("the scene's kernels are compiled in")
+}
+
+/// The model's start with the initial angular velocity `omega0`.
+fn start(m: &Model, omega0: f64) -> Vector {
+    m.start_state_with("omega0", omega0)
+        .expect("omega0 is a start parameter")
 }
 
 fn cases() -> Vec<Case> {
     let mut v = Vec::new();
     for mu0 in [0.0, 0.4, 1.0] {
-        let m = Model::active_level(Runtime {
-            mu0,
-            c: 100.0,
-            t_set: 0.3,
-            ..Runtime::default()
-        });
+        let m = model(
+            "active-level",
+            &[("mu0", mu0), ("c", 100.0), ("T_set", 0.3)],
+        );
         v.push(Case {
             name: match mu0 {
                 0.0 => "active mu0=0",
                 0.4 => "active mu0=0.4",
                 _ => "active mu0=1.0",
             },
-            initial: m.initial_state(0.8),
+            initial: start(&m, 0.8),
             model: m,
         });
     }
     for mu0 in [0.2, 0.5] {
-        let m = Model::passive_slope(Runtime {
-            mu0,
-            c: 100.0,
-            phi: 0.2,
-            ..Runtime::default()
-        });
+        let m = model("passive-slope", &[("mu0", mu0), ("c", 100.0), ("phi", 0.2)]);
         v.push(Case {
             name: if mu0 == 0.2 {
                 "passive phi=0.2 mu0=0.2"
             } else {
                 "passive phi=0.2 mu0=0.5"
             },
-            initial: m.initial_state(m.default_omega0()),
+            initial: m.start_state(),
             model: m,
         });
     }
@@ -101,8 +111,10 @@ fn errors(w: &Walk, r: &Walk) -> (f64, f64) {
         .map(|(a, b)| rel(a.period, b.period).max(rel(a.dx, b.dx)))
         .fold(0.0, f64::max);
     let (sa, sb) = (
-        w.last_state().unwrap_or([f64::NAN; 8]),
-        r.last_state().unwrap_or([0.0; 8]),
+        w.last_state()
+            .unwrap_or_else(|| Vector::from_slice(&[f64::NAN; 8])),
+        r.last_state()
+            .unwrap_or_else(|| Vector::from_slice(&[0.0; 8])),
     );
     (d, rel_norm(&sa, &sb))
 }
@@ -127,12 +139,24 @@ fn main() {
     let mut panels = Vec::new();
     for case in cases() {
         let lim = limits();
-        let (reference, _) =
-            walk_with_stats(&case.model, &cfg(Method::Dop853, 1e-14), case.initial, &lim);
-        let (c13, _) =
-            walk_with_stats(&case.model, &cfg(Method::Dop853, 1e-13), case.initial, &lim);
-        let (d13, _) =
-            walk_with_stats(&case.model, &cfg(Method::Dopri5, 1e-13), case.initial, &lim);
+        let (reference, _) = walk_with_stats(
+            &case.model,
+            &cfg(Method::Dop853, 1e-14),
+            &case.initial,
+            &lim,
+        );
+        let (c13, _) = walk_with_stats(
+            &case.model,
+            &cfg(Method::Dop853, 1e-13),
+            &case.initial,
+            &lim,
+        );
+        let (d13, _) = walk_with_stats(
+            &case.model,
+            &cfg(Method::Dopri5, 1e-13),
+            &case.initial,
+            &lim,
+        );
         let (a1, a2) = (errors(&c13, &reference), errors(&d13, &reference));
         let line = format!(
             "{}: reference DOP853 1e-14, {} steps{}; DOP853 1e-13 agrees to {:.1e} (desc) / {:.1e} (state), DOPRI5 1e-13 to {:.1e} / {:.1e}",
@@ -156,9 +180,9 @@ fn main() {
             let mut pts = Vec::new();
             for &tol in &tols {
                 let c = cfg(method, tol);
-                let (w, st) = walk_with_stats(&case.model, &c, case.initial, &lim);
+                let (w, st) = walk_with_stats(&case.model, &c, &case.initial, &lim);
                 let mut t = time_reps(
-                    || walk_with_stats(&case.model, &c, case.initial, &lim),
+                    || walk_with_stats(&case.model, &c, &case.initial, &lim),
                     3,
                     25,
                     0.15,

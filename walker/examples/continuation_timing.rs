@@ -27,13 +27,12 @@ use std::time::Instant;
 use nalgebra::DMatrix;
 
 use walker::continuation::{
-    Branch, ContinuationOptions, GaitProblem, LabelKind, MapValue, PaperWalker, ProblemError,
-    Stability, continuation,
+    Branch, ContinuationOptions, GaitProblem, LabelKind, MapValue, ProblemError, Stability,
+    WalkerProblem, continuation,
 };
 use walker::setup::Setup;
 use walker::sim::{SimConfig, WalkLimits};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
-use walker_scene::Param;
 
 /// Which figure.
 #[derive(Clone, Copy)]
@@ -56,18 +55,13 @@ impl Fig {
         }
     }
     fn setup(self, chain: f64) -> Setup {
-        match self {
-            Fig::Fig8 => {
-                let mut s = Setup::active_level();
-                s.runtime.t_set = chain;
-                s
-            }
-            Fig::Fig10 => {
-                let mut s = Setup::passive_slope();
-                s.runtime.phi = chain;
-                s
-            }
-        }
+        let (scene, param) = match self {
+            Fig::Fig8 => ("active-level", "T_set"),
+            Fig::Fig10 => ("passive-slope", "phi"),
+        };
+        Setup::built_in(scene)
+            .and_then(|s| s.with(param, chain))
+            .expect("a built-in scene and a chain value in its range")
     }
 }
 
@@ -82,8 +76,7 @@ fn branches(fig: Fig, user: &[f64]) -> Vec<Option<Branch>> {
             .map(|c| {
                 let opts = &opts;
                 scope.spawn(move || {
-                    let w =
-                        PaperWalker::new(fig.setup(c), Param::Mu0, SimConfig::default()).ok()?;
+                    let w = WalkerProblem::new(fig.setup(c), "mu0", SimConfig::default()).ok()?;
                     continuation(&w, 0.0, fig.mu0_max(), opts).ok()
                 })
             })
@@ -105,9 +98,10 @@ fn sweep(fig: Fig, periodic: bool) -> Vec<Vec<SweepPoint>> {
     };
     let grid = mu0_grid(0.0, fig.mu0_max(), 0.01);
     let make = |c: f64, mu0: f64| {
-        let mut s = fig.setup(c);
-        s.runtime.mu0 = mu0;
-        s.model()
+        fig.setup(c)
+            .with("mu0", mu0)
+            .and_then(|s| Ok(s.model()?))
+            .expect("the sweep's models are compiled in")
     };
     sweep_chains(
         &fig.chains(),
@@ -116,11 +110,12 @@ fn sweep(fig: Fig, periodic: bool) -> Vec<Vec<SweepPoint>> {
         &grid,
         |c| {
             let m = make(c, 0.0);
-            m.initial_state(if matches!(fig, Fig::Fig8) {
-                0.8
+            if matches!(fig, Fig::Fig8) {
+                m.start_state_with("omega0", 0.8)
+                    .expect("omega0 is a start parameter")
             } else {
-                m.default_omega0()
-            })
+                m.start_state()
+            }
         },
         &limits,
         // Fig. 10 starts every `mu0` from (P2b), as `walker reproduce` does: continued from
@@ -179,7 +174,7 @@ impl Tally {
 
 /// A walker that counts and times what continuation asks of it.
 struct Counted {
-    inner: PaperWalker,
+    inner: WalkerProblem,
     map: Tally,
     image: Tally,
     jacobian: Tally,
@@ -225,7 +220,7 @@ impl GaitProblem for Counted {
 fn profile() {
     for fig in [Fig::Fig8, Fig::Fig10] {
         for c in fig.chains() {
-            let Ok(inner) = PaperWalker::new(fig.setup(c), Param::Mu0, SimConfig::default()) else {
+            let Ok(inner) = WalkerProblem::new(fig.setup(c), "mu0", SimConfig::default()) else {
                 continue;
             };
             let w = Counted {
@@ -324,7 +319,7 @@ fn dump(dir: &str) {
         max_step: 0.05,
         ..ContinuationOptions::default()
     };
-    let mut jobs: Vec<(String, Setup, Param, f64, f64, ContinuationOptions)> = Vec::new();
+    let mut jobs: Vec<(String, Setup, &str, f64, f64, ContinuationOptions)> = Vec::new();
     // Points placed at every 0.01 of mu0 compare two versions at the same parameters.
     let placed = |fig: Fig| ContinuationOptions {
         user_points: mu0_grid(0.0, fig.mu0_max(), 0.01),
@@ -338,31 +333,30 @@ fn dump(dir: &str) {
         (Fig::Fig10, "fig10_placed_phi", &placed(Fig::Fig10)),
     ] {
         for c in fig.chains() {
-            let mut s = fig.setup(c);
-            s.runtime.mu0 = 0.0;
+            let s = fig.setup(c).with("mu0", 0.0).expect("mu0 = 0 is in range");
             jobs.push((
                 format!("{name}{c}"),
                 s,
-                Param::Mu0,
+                "mu0",
                 0.0,
                 fig.mu0_max(),
                 opts.clone(),
             ));
         }
     }
-    let mut s = Setup::passive_slope();
-    s.runtime.phi = 0.2;
-    s.runtime.mu0 = 0.5;
+    let s = Setup::passive_slope()
+        .and_then(|s| s.with("phi", 0.2)?.with("mu0", 0.5))
+        .expect("the built-in scene passive-slope");
     jobs.push((
         "fig10_over_phi".into(),
         s,
-        Param::Phi,
+        "phi",
         0.05,
         0.3,
         reproduce.clone(),
     ));
     for (name, setup, param, from, to, opts) in jobs {
-        let text = PaperWalker::new(setup, param, SimConfig::default())
+        let text = WalkerProblem::new(setup, param, SimConfig::default())
             .map_err(|e| e.to_string())
             .and_then(|w| continuation(&w, from, to, &opts).map_err(|e| e.to_string()))
             .map_or_else(|e| format!("error: {e}\n"), |b| dump_branch(&b));
@@ -416,7 +410,7 @@ fn main() {
         for (b, chain) in branches(fig, &user).iter().zip(&long) {
             let Some(b) = b else { continue };
             for p in b.labelled(LabelKind::UserPoint) {
-                let Some(s) = chain.iter().find(|s| (s.mu0 - p.parameter).abs() < 1e-9) else {
+                let Some(s) = chain.iter().find(|s| (s.value - p.parameter).abs() < 1e-9) else {
                     continue;
                 };
                 let Some(last) = s.last.filter(|_| s.failure.is_none()) else {

@@ -12,7 +12,12 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let duration: f64 = args.next().and_then(|a| a.parse().ok()).unwrap_or(20.0);
     let repeats: usize = args.next().and_then(|a| a.parse().ok()).unwrap_or(50);
-    let model = Setup::active_level().model();
+    let model = Setup::active_level()
+        .and_then(|s| Ok(s.model()?))
+        .expect("the built-in scene active-level");
+    let s0 = model
+        .start_state_with("omega0", 0.8)
+        .expect("omega0 is a start parameter");
     let limits = WalkLimits {
         duration,
         ..WalkLimits::default()
@@ -20,12 +25,7 @@ fn main() {
     let mut times: Vec<f64> = (0..repeats.max(1))
         .map(|_| {
             let start = Instant::now();
-            let w = walk(
-                &model,
-                &SimConfig::default(),
-                model.initial_state(0.8),
-                &limits,
-            );
+            let w = walk(&model, &SimConfig::default(), &s0, &limits);
             std::hint::black_box(&w);
             start.elapsed().as_secs_f64()
         })

@@ -4,26 +4,25 @@
 //! passive wheel's branch over the slope against the rimless wheel's closed form.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
-use walker::continuation::{
-    Branch, ContinuationError, ContinuationOptions, EndReason, GaitProblem, LabelKind, PaperWalker,
-    Stability, continuation,
-};
-use walker::model::{FrictionLaw, ImpactLaw};
-use walker::setup::Setup;
-use walker::sim::{SimConfig, WalkLimits, trajectory, walk};
-use walker_scene::Param;
+mod common;
 
-fn active(t_set: f64, param: Param) -> PaperWalker {
-    let mut setup = Setup::active_level();
-    setup.runtime.t_set = t_set;
-    PaperWalker::new(setup, param, SimConfig::default()).unwrap()
+use common::start;
+use walker::continuation::{
+    Branch, ContinuationError, ContinuationOptions, EndReason, GaitProblem, LabelKind, Stability,
+    WalkerProblem, continuation,
+};
+use walker::model::{Friction, ImpactLaw};
+use walker::poincare::Section;
+use walker::sim::{SimConfig, WalkLimits, trajectory, walk};
+
+fn active(t_set: f64, param: &str) -> WalkerProblem {
+    let setup = common::setup("active-level", &[("T_set", t_set)]);
+    WalkerProblem::new(setup, param, SimConfig::default()).unwrap()
 }
 
-fn passive(phi: f64, mu0: f64, param: Param) -> PaperWalker {
-    let mut setup = Setup::passive_slope();
-    setup.runtime.phi = phi;
-    setup.runtime.mu0 = mu0;
-    PaperWalker::new(setup, param, SimConfig::default()).unwrap()
+fn passive(phi: f64, mu0: f64, param: &str) -> WalkerProblem {
+    let setup = common::setup("passive-slope", &[("phi", phi), ("mu0", mu0)]);
+    WalkerProblem::new(setup, param, SimConfig::default()).unwrap()
 }
 
 #[test]
@@ -33,9 +32,9 @@ fn the_corrector_jacobians_match_central_differences_of_the_map() {
     // its inputs to about 1e-13) divided by h: 1e-8. So 1e-6 of the matrix's size bounds both
     // with a margin of 100.
     for (w, r, p) in [
-        (active(0.3, Param::Mu0), [0.0, 2.0], 0.4),
-        (passive(0.15, 0.5, Param::Mu0), [0.05, 3.0], 0.5),
-        (active(0.3, Param::TSet), [0.01, 2.0], 0.3),
+        (active(0.3, "mu0"), [0.0, 2.0], 0.4),
+        (passive(0.15, 0.5, "mu0"), [0.05, 3.0], 0.5),
+        (active(0.3, "T_set"), [0.01, 2.0], 0.3),
     ] {
         let h = 1e-5;
         let j = w.jacobian(&r, p).unwrap();
@@ -75,20 +74,20 @@ fn the_corrector_jacobians_match_central_differences_of_the_map() {
 }
 
 /// The steady gait of the paper's protocol: 100 s of walking from `omega0 = 0.8` (P3a, P3b).
-fn steady(w: &PaperWalker, p: f64) -> walker::sim::StepResult {
-    let model = w.model_at(p);
+fn steady(w: &WalkerProblem, p: f64) -> walker::sim::StepResult {
+    let model = w.model_at(p).unwrap();
     let limits = WalkLimits {
         max_steps: usize::MAX,
         duration: 100.0,
         ..WalkLimits::default()
     };
-    let walked = walk(&model, w.config(), model.initial_state(0.8), &limits);
+    let walked = walk(&model, w.config(), &start(&model, 0.8), &limits);
     assert!(walked.failure.is_none(), "{p}: {:?}", walked.failure);
     *walked.steps.last().unwrap()
 }
 
 /// Compare the branch's user points with the simulated steady gaits.
-fn agrees_with_simulation(w: &PaperWalker, b: &Branch, ps: &[f64]) {
+fn agrees_with_simulation(w: &WalkerProblem, b: &Branch, ps: &[f64]) {
     let uz: Vec<_> = b.labelled(LabelKind::UserPoint).collect();
     assert_eq!(uz.len(), ps.len(), "{:?}", b.special().collect::<Vec<_>>());
     for (pt, &p) in uz.iter().zip(ps) {
@@ -115,7 +114,7 @@ fn agrees_with_simulation(w: &PaperWalker, b: &Branch, ps: &[f64]) {
 #[test]
 fn fig8_branches_agree_with_the_simulated_steady_gaits() {
     for t_set in [0.3, 0.4] {
-        let w = active(t_set, Param::Mu0);
+        let w = active(t_set, "mu0");
         let ps = [0.1, 0.4, 0.8];
         let opts = ContinuationOptions {
             user_points: ps.to_vec(),
@@ -133,20 +132,20 @@ fn fig10_branches_agree_with_the_simulated_steady_gaits_over_mu0_and_over_phi() 
         user_points: ps.to_vec(),
         ..ContinuationOptions::default()
     };
-    let w = passive(0.15, 0.4, Param::Mu0);
+    let w = passive(0.15, 0.4, "mu0");
     agrees_with_simulation(&w, &continuation(&w, 0.25, 0.7, &opts).unwrap(), &ps);
     let ps = [0.12, 0.18];
     let opts = ContinuationOptions {
         user_points: ps.to_vec(),
         ..ContinuationOptions::default()
     };
-    let w = passive(0.15, 0.5, Param::Phi);
+    let w = passive(0.15, 0.5, "phi");
     agrees_with_simulation(&w, &continuation(&w, 0.1, 0.2, &opts).unwrap(), &ps);
 }
 
 #[test]
 fn the_lift_off_boundary_of_t_set_0_2_is_where_the_normal_force_dips_below_zero() {
-    let w = active(0.2, Param::Mu0);
+    let w = active(0.2, "mu0");
     let b = continuation(&w, 0.3, 0.7, &ContinuationOptions::default()).unwrap();
     let lo: Vec<_> = b.labelled(LabelKind::LiftOff).collect();
     assert_eq!(lo.len(), 1);
@@ -174,13 +173,13 @@ fn the_lift_off_boundary_of_t_set_0_2_is_where_the_normal_force_dips_below_zero(
         };
         let b2 = continuation(&w, p - 0.05, p + 0.05, &opts).unwrap();
         let pt = b2.labelled(LabelKind::UserPoint).next().unwrap();
-        let model = w.model_at(p);
-        let s = walker::poincare::embed(&model, [pt.state[0], pt.state[1]]);
+        let model = w.model_at(p).unwrap();
+        let s = Section::of(&model).embed(&[pt.state[0], pt.state[1]]);
         let one = WalkLimits {
             max_steps: 1,
             ..WalkLimits::default()
         };
-        let tr = trajectory(&model, w.config(), s, &one, 1e-5, 1_000_000);
+        let tr = trajectory(&model, w.config(), &s, &one, 1e-5, 1_000_000);
         let sampled = tr
             .frames
             .iter()
@@ -195,7 +194,7 @@ fn the_lift_off_boundary_of_t_set_0_2_is_where_the_normal_force_dips_below_zero(
 
 #[test]
 fn mu0_zero_ends_the_branch_on_the_family_of_cycles() {
-    let w = active(0.3, Param::Mu0);
+    let w = active(0.3, "mu0");
     let b = continuation(&w, 0.0, 0.2, &ContinuationOptions::default()).unwrap();
     assert_eq!(b.ends[0], EndReason::Family);
     let first = &b.points[0];
@@ -226,9 +225,8 @@ fn mu0_zero_ends_the_branch_on_the_family_of_cycles() {
     );
     assert_eq!(b.points[1].stability, Stability::Stable);
     // Continuing in T_set at mu0 = 0 finds a family everywhere: an error that says so.
-    let mut setup = Setup::active_level();
-    setup.runtime.mu0 = 0.0;
-    let w = PaperWalker::new(setup, Param::TSet, SimConfig::default()).unwrap();
+    let setup = common::setup("active-level", &[("mu0", 0.0)]);
+    let w = WalkerProblem::new(setup, "T_set", SimConfig::default()).unwrap();
     let e = continuation(&w, 0.25, 0.35, &ContinuationOptions::default()).unwrap_err();
     assert!(
         matches!(e, ContinuationError::FamilyEverywhere { .. }),
@@ -241,24 +239,23 @@ fn the_held_wheel_over_the_slope_is_the_rimless_wheel_closed_form() {
     // Exact Coulomb friction in stance and at the impact with mu0 = 3 hold the foot: McGeer's
     // rimless wheel (see `rimless_wheel.rs` for the derivation): w0 = eta w1 with
     // w1^2 = K 2 sin(phi) sin(alpha/2) / (1 - eta^2).
-    let mut setup = Setup::passive_slope();
-    setup.friction = FrictionLaw::Coulomb;
+    let mut setup = common::setup("passive-slope", &[("mu0", 3.0)]);
+    setup.friction = Friction::Coulomb;
     setup.impact = ImpactLaw::Coulomb;
-    setup.runtime.mu0 = 3.0;
-    let w = PaperWalker::new(setup.clone(), Param::Phi, SimConfig::default()).unwrap();
+    let w = WalkerProblem::new(setup.clone(), "phi", SimConfig::default()).unwrap();
     let ps = [0.08, 0.12];
     let opts = ContinuationOptions {
         user_points: ps.to_vec(),
         ..ContinuationOptions::default()
     };
     let b = continuation(&w, 0.06, 0.14, &opts).unwrap();
-    let p = setup.physical;
-    let m = p.m1 + p.m2;
-    let j = p.i1 + m * p.l * p.l;
-    let eta = (p.i1 + m * p.l * p.l * p.alpha.cos()) / j;
-    let k = 2.0 * m * p.g * p.l / j;
+    let p = |name: &str| setup.params.get(name).unwrap();
+    let (m, l, i1, g, alpha) = (p("m1") + p("m2"), p("l"), p("I1"), p("g"), p("alpha"));
+    let j = i1 + m * l * l;
+    let eta = (i1 + m * l * l * alpha.cos()) / j;
+    let k = 2.0 * m * g * l / j;
     for (pt, &phi) in b.labelled(LabelKind::UserPoint).zip(&ps) {
-        let w1 = (k * 2.0 * phi.sin() * (p.alpha / 2.0).sin() / (1.0 - eta * eta)).sqrt();
+        let w1 = (k * 2.0 * phi.sin() * (alpha / 2.0).sin() / (1.0 - eta * eta)).sqrt();
         // The walk-based map integrates to rtol 1e-10; the corrector stops at 1e-11 and the
         // multiplier eta^2 = 0.83 amplifies it by 1 / (1 - 0.83) = 6: 1e-9 as in
         // `rimless_wheel.rs`.

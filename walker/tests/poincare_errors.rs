@@ -3,22 +3,25 @@
 //! finite differences of a model without Jacobian kernels), and a warm-up walk that falls.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
-use walker::model::{Model, Physical, Runtime};
-use walker::poincare::{FixedPointError, FixedPointOptions, MapError, embed, fixed_point};
-use walker::poincare::{poincare_map, reduce};
+mod common;
+
+use common::start;
+use walker::model::Model;
+use walker::poincare::poincare_map;
+use walker::poincare::{FixedPointError, FixedPointOptions, MapError, Section, fixed_point};
 use walker::sim::SimConfig;
+use walker::vector::Vector;
+
+/// The active walker's friction and control settings.
+const RUNTIME: [(&str, f64); 2] = [("mu0", 0.4), ("T_set", 0.3)];
 
 fn active() -> Model {
-    Model::active_level(Runtime {
-        mu0: 0.4,
-        t_set: 0.3,
-        ..Runtime::default()
-    })
+    common::active(&RUNTIME)
 }
 
 /// A post-impact state near the Table 1 cycle.
-fn near_cycle(model: &Model) -> [f64; 8] {
-    embed(model, [0.55, 0.75])
+fn near_cycle(model: &Model) -> Vector {
+    Section::of(model).embed(&[0.55, 0.75])
 }
 
 #[test]
@@ -47,7 +50,7 @@ fn no_heel_strike_within_the_step_time_reports_that_time() {
 fn a_step_that_fails_in_the_finite_difference_map_is_named() {
     // Exact Coulomb friction has no Jacobian kernels: the map walks one step of the simulator,
     // and a failure of that step (here no heel strike within 0.01 s) keeps its name.
-    let model = Model::coulomb_level(Physical::TABLE1, active().runtime);
+    let model = common::active_coulomb(&RUNTIME);
     let cfg = SimConfig {
         max_step_time: 0.01,
         ..SimConfig::default()
@@ -64,7 +67,7 @@ fn a_step_that_fails_in_the_finite_difference_map_is_named() {
 fn a_warm_up_walk_that_fails_reports_the_failure_by_value() {
     let model = active();
     let opts = FixedPointOptions {
-        omega0: -1.0,
+        start: start(&model, -1.0),
         ..FixedPointOptions::for_model(&model)
     };
     let err = fixed_point(&model, &SimConfig::default(), &opts).unwrap_err();
@@ -84,7 +87,7 @@ fn the_map_error_passes_through_the_fixed_point_search() {
     let err = walker::poincare::newton(
         &model,
         &cfg,
-        reduce(&near_cycle(&model)),
+        &Section::of(&model).reduce(&near_cycle(&model)),
         &FixedPointOptions::for_model(&model),
     )
     .unwrap_err();

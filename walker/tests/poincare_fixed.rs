@@ -3,16 +3,15 @@
 //! (as the paper's Fig. 7), and the frictionless walker reports its family of cycles.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
-use walker::model::{Model, Runtime};
-use walker::poincare::{FixedPointOptions, Status, embed, fixed_point, poincare_map, reduce};
+mod common;
+
+use common::start;
+use walker::model::Model;
+use walker::poincare::{FixedPointOptions, Section, Status, fixed_point, poincare_map};
 use walker::sim::{SimConfig, WalkLimits, walk};
 
 fn active(mu0: f64, t_set: f64) -> Model {
-    Model::active_level(Runtime {
-        mu0,
-        t_set,
-        ..Runtime::default()
-    })
+    common::active(&[("mu0", mu0), ("T_set", t_set)])
 }
 
 #[test]
@@ -66,11 +65,12 @@ fn largest_multiplier_predicts_the_convergence_rate_of_walk() {
     let model = active(0.4, 0.3);
     let cfg = SimConfig::default();
     let fp = fixed_point(&model, &cfg, &FixedPointOptions::for_model(&model)).unwrap();
-    let star = reduce(&fp.state_plus);
+    let section = Section::of(&model);
+    let star = section.reduce(&fp.state_plus);
     let w = walk(
         &model,
         &cfg,
-        model.initial_state(0.8),
+        &start(&model, 0.8),
         &WalkLimits {
             max_steps: 200,
             ..WalkLimits::default()
@@ -81,7 +81,7 @@ fn largest_multiplier_predicts_the_convergence_rate_of_walk() {
         .steps
         .iter()
         .map(|s| {
-            let r = reduce(&s.state_plus());
+            let r = section.reduce(&s.state_plus());
             (r[0] - star[0]).hypot(r[1] - star[1])
         })
         .collect();
@@ -118,7 +118,7 @@ fn frictionless_walker_reports_the_structural_unit_multiplier() {
         &model,
         &cfg,
         &FixedPointOptions {
-            omega0: 0.6,
+            start: start(&model, 0.6),
             ..FixedPointOptions::for_model(&model)
         },
     )
@@ -134,17 +134,19 @@ fn frictionless_walker_reports_the_structural_unit_multiplier() {
 
 #[test]
 fn passive_wheel_has_a_fixed_point() {
-    let model = Model::passive_slope(Runtime {
-        mu0: 0.4,
-        phi: 0.15,
-        ..Runtime::default()
-    });
+    let model = common::passive(&[("mu0", 0.4), ("phi", 0.15)]);
     let cfg = SimConfig::default();
     let fp = fixed_point(&model, &cfg, &FixedPointOptions::for_model(&model)).unwrap();
     println!("{}", serde_json::to_string(&fp).unwrap());
     assert_eq!(fp.status, Status::Converged);
     assert!(fp.max_modulus() < 1.0);
-    let m = poincare_map(&model, &cfg, &embed(&model, reduce(&fp.state_plus))).unwrap();
+    let section = Section::of(&model);
+    let m = poincare_map(
+        &model,
+        &cfg,
+        &section.embed(&section.reduce(&fp.state_plus)),
+    )
+    .unwrap();
     for i in 0..8 {
         assert!((m.state_plus[i] - fp.state_plus[i]).abs() < 1e-10, "{i}");
     }

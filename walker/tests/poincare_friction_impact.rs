@@ -4,26 +4,18 @@
 //! agrees with central differences of the map itself.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
-use walker::model::{ImpactLaw, ImpactRegime, Model, Runtime, Slide};
+mod common;
+
+use walker::model::{ImpactLaw, ImpactRegime, Model, Slide};
 use walker::poincare::{FixedPointOptions, fixed_point, poincare_map};
 use walker::sim::SimConfig;
 
 fn passive(mu0: f64) -> Model {
-    Model::passive_slope(Runtime {
-        phi: 0.1,
-        mu0,
-        ..Runtime::default()
-    })
-    .with_impact_law(ImpactLaw::Coulomb)
+    common::passive(&[("phi", 0.1), ("mu0", mu0)]).with_impact_law(ImpactLaw::Coulomb)
 }
 
 fn active(mu0: f64) -> Model {
-    Model::active_level(Runtime {
-        mu0,
-        t_set: 0.3,
-        ..Runtime::default()
-    })
-    .with_impact_law(ImpactLaw::Coulomb)
+    common::active(&[("mu0", mu0), ("T_set", 0.3)]).with_impact_law(ImpactLaw::Coulomb)
 }
 
 /// Largest difference between the map's Jacobian and central differences of the map at its

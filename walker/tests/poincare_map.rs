@@ -3,9 +3,12 @@
 //! against the `fore_foot` kernel.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
-use walker::model::{Model, Runtime};
-use walker::poincare::{embed, poincare_map};
+mod common;
+
+use walker::model::Model;
+use walker::poincare::{Section, poincare_map};
 use walker::sim::SimConfig;
+use walker::vector::Vector;
 
 /// Tight tolerances for the finite differences: the map's integration noise (not smooth in the
 /// input, since the adaptive step sequence changes) is about `rtol`, and it enters the
@@ -23,7 +26,7 @@ fn tight() -> SimConfig {
 /// Step `h = 1e-6`: the truncation error is `h^2 |P'''| / 6 ~ 1e-12` and the rounding plus
 /// integration noise `~ 1e-13 / h = 1e-7` relative to the state (the state and the Jacobian are
 /// O(1)); the tolerance `1e-5 * |J|` (Frobenius) leaves two orders of margin over both.
-fn check_fd(model: &Model, s: [f64; 8]) -> f64 {
+fn check_fd(model: &Model, s: Vector) -> f64 {
     let cfg = tight();
     let m = poincare_map(model, &cfg, &s).unwrap();
     let norm = m
@@ -58,8 +61,8 @@ fn check_fd(model: &Model, s: [f64; 8]) -> f64 {
 }
 
 /// A state off the cycle and off the constraint manifold, so that every column is exercised.
-fn perturbed(model: &Model, r: [f64; 2]) -> [f64; 8] {
-    let mut s = embed(model, r);
+fn perturbed(model: &Model, r: [f64; 2]) -> Vector {
+    let mut s = Section::of(model).embed(&r);
     s[0] += 0.1;
     s[3] += 0.01;
     s[5] += 0.001;
@@ -69,47 +72,33 @@ fn perturbed(model: &Model, r: [f64; 2]) -> [f64; 8] {
 
 #[test]
 fn jacobian_matches_finite_differences_active_level() {
-    let model = Model::active_level(Runtime {
-        mu0: 0.4,
-        t_set: 0.3,
-        ..Runtime::default()
-    });
+    let model = common::active(&[("mu0", 0.4), ("T_set", 0.3)]);
     check_fd(&model, perturbed(&model, [0.1, 0.9]));
 }
 
 #[test]
 fn jacobian_matches_finite_differences_active_level_gains_frictionless() {
-    let model = Model::active_level(Runtime {
-        mu0: 0.0,
-        t_set: 0.3,
-        k_p: 20.0,
-        k_d: 5.0,
-        ..Runtime::default()
-    });
+    let model = common::active(&[("mu0", 0.0), ("T_set", 0.3), ("K_P", 20.0), ("K_D", 5.0)]);
     check_fd(&model, perturbed(&model, [0.6, 0.9]));
 }
 
 #[test]
 fn jacobian_matches_finite_differences_passive_slope() {
-    let model = Model::passive_slope(Runtime {
-        mu0: 0.2,
-        phi: 0.15,
-        ..Runtime::default()
-    });
+    let model = common::passive(&[("mu0", 0.2), ("phi", 0.15)]);
     check_fd(&model, perturbed(&model, [0.05, 0.9]));
 }
 
 #[test]
 fn map_agrees_with_one_step_of_walk() {
     use walker::sim::{WalkLimits, walk};
-    let model = Model::active_level(Runtime::default());
+    let model = common::active(&[("mu0", 0.4), ("T_set", 0.3)]);
     let cfg = SimConfig::default();
-    let s = embed(&model, [0.2, 0.9]);
+    let s = Section::of(&model).embed(&[0.2, 0.9]);
     let m = poincare_map(&model, &cfg, &s).unwrap();
     let w = walk(
         &model,
         &cfg,
-        s,
+        &s,
         &WalkLimits {
             max_steps: 1,
             ..WalkLimits::default()

@@ -21,7 +21,10 @@
 //! velocity that every sticking impact removes).
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
-use walker::model::{FrictionLaw, ImpactLaw, ImpactRegime, Physical};
+mod common;
+
+use common::start;
+use walker::model::{Friction, ImpactLaw, ImpactRegime};
 use walker::poincare::{FixedPointOptions, JacobianMethod, Status, fixed_point};
 use walker::setup::Setup;
 use walker::sim::{SimConfig, WalkLimits, walk};
@@ -34,12 +37,14 @@ struct Closed {
     multiplier: f64,
 }
 
-fn closed_form(p: &Physical, phi: f64) -> Closed {
-    let m = p.m1 + p.m2;
-    let j = p.i1 + m * p.l * p.l;
-    let eta = (p.i1 + m * p.l * p.l * p.alpha.cos()) / j;
-    let k = 2.0 * m * p.g * p.l / j;
-    let (th_a, th_b) = (phi - p.alpha / 2.0, phi + p.alpha / 2.0);
+/// The closed form for the physical parameters of `setup` on the slope `phi`.
+fn closed_form(setup: &Setup, phi: f64) -> Closed {
+    let p = |name: &str| setup.params.get(name).unwrap();
+    let (m, l, i1, g, alpha) = (p("m1") + p("m2"), p("l"), p("I1"), p("g"), p("alpha"));
+    let j = i1 + m * l * l;
+    let eta = (i1 + m * l * l * alpha.cos()) / j;
+    let k = 2.0 * m * g * l / j;
+    let (th_a, th_b) = (phi - alpha / 2.0, phi + alpha / 2.0);
     let w1 = (k * (th_a.cos() - th_b.cos()) / (1.0 - eta * eta)).sqrt();
     let w0 = eta * w1;
     // Composite Simpson on a smooth integrand (th1d >= w0 > 0): with 4000 intervals of
@@ -55,17 +60,15 @@ fn closed_form(p: &Physical, phi: f64) -> Closed {
     Closed {
         w0,
         period: sum * h / 3.0,
-        dx: 2.0 * p.l * (p.alpha / 2.0).sin(),
+        dx: 2.0 * l * (alpha / 2.0).sin(),
         multiplier: eta * eta,
     }
 }
 
 fn held_wheel(phi: f64, mu0: f64) -> Setup {
-    let mut setup = Setup::passive_slope();
-    setup.friction = FrictionLaw::Coulomb;
+    let mut setup = common::setup("passive-slope", &[("phi", phi), ("mu0", mu0)]);
+    setup.friction = Friction::Coulomb;
     setup.impact = ImpactLaw::Coulomb;
-    setup.runtime.phi = phi;
-    setup.runtime.mu0 = mu0;
     setup
 }
 
@@ -73,14 +76,14 @@ fn held_wheel(phi: f64, mu0: f64) -> Setup {
 fn the_held_passive_wheel_is_the_classic_rimless_wheel() {
     for phi in [0.05, 0.1, 0.2] {
         let setup = held_wheel(phi, 3.0);
-        let model = setup.model();
+        let model = common::model(&setup);
         let fp = fixed_point(
             &model,
             &SimConfig::default(),
             &FixedPointOptions::for_model(&model),
         )
         .unwrap();
-        let c = closed_form(&setup.physical, phi);
+        let c = closed_form(&setup, phi);
         assert_eq!(fp.status, Status::Converged, "phi = {phi}: {fp:?}");
         assert_eq!(fp.impact, ImpactRegime::Stick, "phi = {phi}");
         assert_eq!(fp.jacobian_method, JacobianMethod::FiniteDifferences);
@@ -133,26 +136,16 @@ fn with_the_papers_frictionless_impact_the_held_wheel_cannot_walk() {
     };
     let mut setup = held_wheel(0.1, 3.0);
     setup.impact = ImpactLaw::Frictionless;
-    let model = setup.model();
-    let w = walk(
-        &model,
-        &SimConfig::default(),
-        model.initial_state(0.5),
-        &limits,
-    );
+    let model = common::model(&setup);
+    let w = walk(&model, &SimConfig::default(), &start(&model, 0.5), &limits);
     let failure = w.failure.expect("the frictionless impact fails");
     assert_eq!((failure.name(), failure.step), ("contact-inconsistent", 1));
     assert!(
         failure.state[4] > 0.5,
         "the new foot slides forward: {failure:?}"
     );
-    let model = held_wheel(0.1, 3.0).model();
-    let w = walk(
-        &model,
-        &SimConfig::default(),
-        model.initial_state(0.5),
-        &limits,
-    );
+    let model = common::model(&held_wheel(0.1, 3.0));
+    let w = walk(&model, &SimConfig::default(), &start(&model, 0.5), &limits);
     assert!(
         w.failure.is_none() && w.steps.len() == 20,
         "{:?}",

@@ -4,7 +4,10 @@
 //! Eq. 23 (`docs/equations.md`, `lambda_level`), not from the kernels the simulator reads.
 #![allow(clippy::panic, reason = "tests report failures by panicking")]
 
-use walker::model::{Contact, FrictionLaw, Model, Physical, Runtime, Slide};
+mod common;
+
+use common::{start, table1, table1_total_mass};
+use walker::model::{Contact, FrictionLaw, Model, Slide};
 use walker::sim::{Failure, FailureKind, SimConfig, WalkLimits, walk};
 
 /// At most two steps and one second of walking (as the CLI's fuzz test runs them).
@@ -19,18 +22,18 @@ fn limits() -> WalkLimits {
 /// The denominator of Eq. 23 on level ground with Table 1, `I1 + m_t l^2 (sin th1 - mu cos th1)
 /// sin th1`, at the friction coefficient `mu`.
 fn denominator(th1: f64, mu: f64) -> f64 {
-    let t = Physical::TABLE1;
+    let l = table1("l");
     let (s, c) = th1.sin_cos();
-    t.i1 + t.total_mass() * t.l * t.l * (s - mu * c) * s
+    table1("I1") + table1_total_mass() * l * l * (s - mu * c) * s
 }
 
 /// The body weight `m_t g` of Table 1.
 fn weight() -> f64 {
-    Physical::TABLE1.total_mass() * Physical::TABLE1.g
+    table1_total_mass() * table1("g")
 }
 
 /// The walk's failure, or a test failure naming `what`.
-fn failure_of(model: &Model, start: [f64; 8], what: &str) -> Failure {
+fn failure_of(model: &Model, start: &[f64], what: &str) -> Failure {
     let w = walk(model, &SimConfig::default(), start, &limits());
     w.failure
         .unwrap_or_else(|| panic!("{what}: {} steps and no failure", w.steps.len()))
@@ -46,19 +49,16 @@ fn failure_of(model: &Model, start: [f64; 8], what: &str) -> Failure {
 /// `lambda-denominator-zero`.
 #[test]
 fn a_huge_control_input_is_a_huge_numerator_not_a_pole() {
-    let mu0 = Runtime::default().mu0;
+    let mu0 = 0.4;
     for t_set in [1e-4, 1e-5, 1e-8, 1e-20, 1e-50, 1e-100] {
-        let rt = Runtime {
-            t_set,
-            ..Runtime::default()
-        };
+        let rt = [("mu0", mu0), ("T_set", t_set)];
         for model in [
-            Model::active_level(rt),
-            Model::general_level(Physical::TABLE1, rt),
-            Model::coulomb_level(Physical::TABLE1, rt),
+            common::active(&rt),
+            common::active_run_time(&rt),
+            common::active_coulomb(&rt),
         ] {
             let what = format!("T_set = {t_set:e}, {:?}", model.friction_law());
-            let f = failure_of(&model, model.initial_state(0.8), &what);
+            let f = failure_of(&model, &start(&model, 0.8), &what);
             let FailureKind::LambdaNumeratorHuge { lambda, u } = f.kind else {
                 panic!("{what}: {f:?}");
             };
@@ -109,13 +109,16 @@ fn a_huge_control_input_is_a_huge_numerator_not_a_pole() {
 #[test]
 fn a_huge_spin_is_a_huge_numerator_not_a_pole() {
     for omega0 in [1e5, 1e8, 1e12, 1e150] {
+        // The walkers of the paper's Table 1 with `mu0 = 0.4` (the passive wheel on level
+        // ground, `phi = 0`: a regular denominator at `th1 = 0`), not the built-in scenes'
+        // `phi = 0.2`, `mu0 = 0.2`.
         for model in [
-            Model::active_level(Runtime::default()),
-            Model::passive_slope(Runtime::default()),
+            common::active(&[("mu0", 0.4)]),
+            common::passive(&[("mu0", 0.4), ("phi", 0.0)]),
         ] {
-            let what = format!("omega0 = {omega0:e}, {:?}", model.kind());
-            let start = model.initial_state(omega0);
-            let f = failure_of(&model, start, &what);
+            let what = format!("omega0 = {omega0:e}, {}", model.spec().name());
+            let start = start(&model, omega0);
+            let f = failure_of(&model, &start, &what);
             assert_eq!((f.step, f.t, f.state), (0, 0.0, start), "{what}");
             let FailureKind::LambdaNumeratorHuge { lambda, u } = f.kind else {
                 panic!("{what}: {f:?}");
@@ -143,16 +146,9 @@ fn a_huge_spin_is_a_huge_numerator_not_a_pole() {
 /// far from the edge.
 #[test]
 fn a_pole_is_named_only_where_the_denominator_of_eq23_vanishes() {
-    let ph = Physical::TABLE1;
+    let i1 = table1("I1");
     for mu0 in [0.9, 1.0, 2.0] {
-        let model = Model::general_slope(
-            ph,
-            Runtime {
-                mu0,
-                phi: 0.0,
-                ..Runtime::default()
-            },
-        );
+        let model = common::passive_run_time(&[("mu0", mu0), ("phi", 0.0)]);
         let th_star = first_zero(mu0);
         assert!(denominator(th_star, mu0).abs() < 1e-12, "mu0 = {mu0}");
         for (rel, omegas, pole) in [
@@ -164,13 +160,13 @@ fn a_pole_is_named_only_where_the_denominator_of_eq23_vanishes() {
         ] {
             let th1 = angle_of(mu0, rel, th_star);
             assert!(
-                (denominator(th1, mu0) / (rel * ph.i1) - 1.0).abs() < 1e-3,
+                (denominator(th1, mu0) / (rel * i1) - 1.0).abs() < 1e-3,
                 "mu0 = {mu0}, rel = {rel:e}"
             );
             for &omega in omegas {
                 let what = format!("mu0 = {mu0}, D = {rel:e} I1, omega = {omega:e}");
                 let start = [0.0, 0.0, th1, 0.0, -1.0, 0.0, omega, omega];
-                let f = failure_of(&model, start, &what);
+                let f = failure_of(&model, &start, &what);
                 assert_eq!((f.step, f.t), (0, 0.0), "{what}: {f:?}");
                 if pole {
                     assert!(
@@ -192,8 +188,8 @@ fn a_pole_is_named_only_where_the_denominator_of_eq23_vanishes() {
 /// of Eq. 23 times `2 / (m_t l^2)`, Table 1) by bisection between 0 and the angle `atan(mu0) /
 /// 2` where its left side is largest.
 fn first_zero(mu0: f64) -> f64 {
-    let ph = Physical::TABLE1;
-    let k = 1.0 + 2.0 * ph.i1 / (ph.total_mass() * ph.l * ph.l);
+    let l = table1("l");
+    let k = 1.0 + 2.0 * table1("I1") / (table1_total_mass() * l * l);
     bisect(0.0, 0.5 * mu0.atan(), |th| {
         (2.0 * th).cos() + mu0 * (2.0 * th).sin() - k
     })
@@ -203,7 +199,7 @@ fn first_zero(mu0: f64) -> f64 {
 /// `I1` at 0 to 0 at `th_star`: its derivative `m_t l^2 (sin 2 th1 - mu0 cos 2 th1)` is
 /// negative below `atan(mu0) / 2`).
 fn angle_of(mu0: f64, rel: f64, th_star: f64) -> f64 {
-    let i1 = Physical::TABLE1.i1;
+    let i1 = table1("I1");
     bisect(0.0, th_star, |th| denominator(th, mu0) - rel * i1)
 }
 

@@ -1,21 +1,20 @@
 //! Exact Coulomb friction (Eq. 25) with stick-slip: the hybrid contact logic against physics
 //! that holds without it.
 
-use walker::model::{Contact, Model, Physical, Runtime};
+mod common;
+
+use common::{start, table1};
+use walker::model::{Contact, Model};
 use walker::ode::Method;
 use walker::sim::{SimConfig, StepResult, Walk, WalkLimits, ground_reaction, walk};
 
-fn runtime(mu0: f64, c: f64) -> Runtime {
-    Runtime {
-        mu0,
-        c,
-        t_set: 0.3,
-        ..Runtime::default()
-    }
+/// The active walker's friction and control settings (`K_P = K_D = 0`).
+fn runtime(mu0: f64, c: f64) -> [(&'static str, f64); 3] {
+    [("mu0", mu0), ("c", c), ("T_set", 0.3)]
 }
 
 fn coulomb(mu0: f64) -> Model {
-    Model::coulomb_level(Physical::TABLE1, runtime(mu0, 100.0))
+    common::active_coulomb(&runtime(mu0, 100.0))
 }
 
 fn walk_n(m: &Model, cfg: &SimConfig, n: usize, record: bool) -> Walk {
@@ -24,7 +23,7 @@ fn walk_n(m: &Model, cfg: &SimConfig, n: usize, record: bool) -> Walk {
         record,
         ..WalkLimits::default()
     };
-    let w = walk(m, cfg, m.initial_state(0.8), &limits);
+    let w = walk(m, cfg, &start(m, 0.8), &limits);
     assert_eq!(w.steps.len(), n, "{:?}", w.failure);
     w
 }
@@ -51,7 +50,7 @@ fn the_tanh_law_converges_to_coulomb_as_its_sharpness_grows() {
     };
     let mut prev = f64::INFINITY;
     for c in [1e2, 1e3, 1e4] {
-        let m = Model::general_level(Physical::TABLE1, runtime(0.4, c));
+        let m = common::active_run_time(&runtime(0.4, c));
         let s = last(&walk_n(&m, &stiff, steps, false));
         let diff = [
             (s.period - exact.period) / exact.period,
@@ -125,7 +124,7 @@ fn a_stuck_foot_stays_put_within_the_friction_cone() {
 #[test]
 fn strong_friction_gives_nearly_the_non_slipping_step_length() {
     let s = last(&walk_n(&coulomb(0.9), &SimConfig::default(), 20, false));
-    let chord = 2.0 * Physical::TABLE1.l * (Physical::TABLE1.alpha / 2.0).sin();
+    let chord = 2.0 * table1("l") * (table1("alpha") / 2.0).sin();
     assert!(
         s.dx > chord && s.dx - chord < 0.01,
         "dx = {} vs {chord}",
@@ -151,7 +150,7 @@ fn the_painleve_paradox_after_an_impact_is_named() {
         ..WalkLimits::default()
     };
     let m = coulomb(5.0);
-    let w = walk(&m, &SimConfig::default(), m.initial_state(0.8), &limits);
+    let w = walk(&m, &SimConfig::default(), &start(&m, 0.8), &limits);
     let f = w.failure.expect("fails");
     assert_eq!(f.name(), "contact-inconsistent", "{f:?}");
     assert_eq!(f.step, 1, "{f:?}");
@@ -162,7 +161,7 @@ fn the_painleve_paradox_after_an_impact_is_named() {
 #[test]
 fn without_friction_coulomb_is_the_frictionless_walker() {
     let a = last(&walk_n(&coulomb(0.0), &SimConfig::default(), 10, false));
-    let m = Model::general_level(Physical::TABLE1, runtime(0.0, 100.0));
+    let m = common::active_run_time(&runtime(0.0, 100.0));
     let b = last(&walk_n(&m, &SimConfig::default(), 10, false));
     assert_eq!(a.stuck_time, 0.0);
     for (x, y) in [(a.period, b.period), (a.dx, b.dx), (a.speed, b.speed)] {
@@ -175,18 +174,11 @@ fn without_friction_coulomb_is_the_frictionless_walker() {
 #[test]
 fn the_wheel_on_the_slope_sticks_within_the_cone() {
     let (phi, mu0) = (0.2, 0.5);
-    let m = Model::coulomb_slope(
-        Physical::TABLE1,
-        Runtime {
-            mu0,
-            phi,
-            ..Runtime::default()
-        },
-    );
+    let m = common::passive_coulomb(&[("mu0", mu0), ("phi", phi)]);
     let w = walk(
         &m,
         &SimConfig::default(),
-        m.initial_state(0.5),
+        &start(&m, 0.5),
         &WalkLimits {
             max_steps: 10,
             record: true,

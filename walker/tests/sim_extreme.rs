@@ -2,7 +2,9 @@
 //! happened: a stiff `tanh` law (`c` up to `1e300`) under the explicit method, and a ramp
 //! `T_set` so short that the desired trajectory overflows.
 
-use walker::model::{Model, Physical, Runtime};
+mod common;
+
+use common::start;
 use walker::ode::GaveUp;
 use walker::poincare::MapError;
 use walker::sim::{FailureKind, SimConfig, WalkLimits, walk, walk_with_stats};
@@ -27,12 +29,9 @@ fn limits() -> WalkLimits {
 #[test]
 fn a_stiff_tanh_law_ends_with_too_many_steps_within_a_bounded_work() {
     for c in [1e11, 1e12, 1e15, 1e20, 1e50, 1e300] {
-        let model = Model::active_level(Runtime {
-            c,
-            ..Runtime::default()
-        });
-        let start = model.initial_state(model.default_omega0());
-        let (w, stats) = walk_with_stats(&model, &SimConfig::default(), start, &limits());
+        let model = common::active(&[("c", c)]);
+        let start = model.start_state();
+        let (w, stats) = walk_with_stats(&model, &SimConfig::default(), &start, &limits());
         assert!(w.steps.is_empty(), "c = {c:e}: {} steps", w.steps.len());
         let too_many = FailureKind::Integrator {
             reason: GaveUp::TooManySteps,
@@ -65,12 +64,9 @@ fn a_stiff_tanh_law_under_rodas4_ends_within_a_bounded_work() {
         ..SimConfig::default()
     };
     for c in [1e12, 1e300] {
-        let model = Model::active_level(Runtime {
-            c,
-            ..Runtime::default()
-        });
-        let start = model.initial_state(model.default_omega0());
-        let (w, stats) = walk_with_stats(&model, &cfg, start, &limits());
+        let model = common::active(&[("c", c)]);
+        let start = model.start_state();
+        let (w, stats) = walk_with_stats(&model, &cfg, &start, &limits());
         assert!(
             w.failure.is_some() || !w.steps.is_empty(),
             "c = {c:e}: neither steps nor a failure"
@@ -87,17 +83,11 @@ fn a_stiff_tanh_law_under_rodas4_ends_within_a_bounded_work() {
 #[test]
 fn an_overflowing_ramp_is_non_finite_not_a_pole() {
     for t_set in [1e-300, 1e-200, 1e-160] {
-        let runtime = Runtime {
-            t_set,
-            ..Runtime::default()
-        };
-        for model in [
-            Model::active_level(runtime),
-            Model::coulomb_level(Physical::TABLE1, runtime),
-        ] {
-            assert!(!model.desired(0.0).iter().all(|v| v.is_finite()));
-            let start = model.initial_state(model.default_omega0());
-            let w = walk(&model, &SimConfig::default(), start, &limits());
+        let runtime = [("T_set", t_set)];
+        for model in [common::active(&runtime), common::active_coulomb(&runtime)] {
+            assert!(!model.desired(0, 0.0).iter().all(|v| v.is_finite()));
+            let start = model.start_state();
+            let w = walk(&model, &SimConfig::default(), &start, &limits());
             assert_eq!(
                 w.failure,
                 Some(FailureKind::NonFinite.at(0, 0.0, start)),
@@ -115,11 +105,8 @@ fn an_overflowing_ramp_is_non_finite_not_a_pole() {
 #[test]
 fn the_poincare_map_of_a_stiff_tanh_law_ends_with_too_many_steps() {
     for c in [1e12, 1e300] {
-        let model = Model::active_level(Runtime {
-            c,
-            ..Runtime::default()
-        });
-        let start = model.initial_state(model.default_omega0());
+        let model = common::active(&[("c", c)]);
+        let start = model.start_state();
         let err = walker::poincare::poincare_map(&model, &SimConfig::default(), &start);
         let t = match err {
             Err(MapError::Integrator {
@@ -139,17 +126,19 @@ fn the_poincare_map_of_a_stiff_tanh_law_ends_with_too_many_steps() {
 #[test]
 fn an_overflowing_spin_under_coulomb_friction_is_non_finite() {
     for omega0 in [1e300, -1e300, f64::MAX] {
+        // The walkers of the paper's Table 1 with `mu0 = 0.4` (the passive wheel on level
+        // ground, `phi = 0`), not the built-in scenes' `phi = 0.2`, `mu0 = 0.2`.
         for model in [
-            Model::coulomb_level(Physical::TABLE1, Runtime::default()),
-            Model::coulomb_slope(Physical::TABLE1, Runtime::default()),
+            common::active_coulomb(&[("mu0", 0.4)]),
+            common::passive_coulomb(&[("mu0", 0.4), ("phi", 0.0)]),
         ] {
-            let start = model.initial_state(omega0);
-            let w = walk(&model, &SimConfig::default(), start, &limits());
+            let start = start(&model, omega0);
+            let w = walk(&model, &SimConfig::default(), &start, &limits());
             assert_eq!(
                 w.failure,
                 Some(FailureKind::NonFinite.at(0, 0.0, start)),
-                "omega0 = {omega0:e}, {:?}",
-                model.kind()
+                "omega0 = {omega0:e}, {}",
+                model.spec().name()
             );
         }
     }

@@ -2,7 +2,8 @@
 //! struct variants: `kind`, `step`, `t`, `state` and the kind's own data (users' scripts read
 //! them). The one change: `ImpactAtStart` now has a `t` (0). `LambdaNumeratorHuge` (a blown-up
 //! `lambda` with a regular denominator, named `LambdaDenominatorZero` before) is new, with its
-//! `lambda` and `u`.
+//! `lambda` and `u`. Since the simulator is model-generic, the paper's `FellBackward { th1 }` is
+//! one of the model's falls, `Fall { name: "fell-backward", doc }` (the angle is in `state`).
 
 use std::collections::BTreeSet;
 
@@ -13,7 +14,16 @@ use walker::sim::{Failure, FailureKind};
 const STATE: [f64; 8] = [0.5, 0.0, -0.2, 0.1, 1.0, 0.0, 2.0, -1.5];
 
 fn json_of(kind: FailureKind) -> Value {
-    serde_json::to_value(kind.at(3, 0.25, STATE)).expect("a failure serialises")
+    serde_json::to_value(kind.at(3, 0.25, STATE.into())).expect("a failure serialises")
+}
+
+/// The paper's wheel rolling back onto its rear spoke: the fall `fell-backward` of
+/// `models/paper-active.toml` and `models/paper-passive.toml`.
+fn fell_backward() -> FailureKind {
+    FailureKind::Fall {
+        name: "fell-backward".to_owned(),
+        doc: "the wheel rolled back onto its rear spoke".to_owned(),
+    }
 }
 
 fn keys(v: &Value) -> BTreeSet<&str> {
@@ -64,11 +74,7 @@ fn every_kind() -> Vec<(FailureKind, &'static str, &'static [&'static str])> {
             "LambdaNumeratorHuge",
             &["lambda", "u"],
         ),
-        (
-            FailureKind::FellBackward { th1: -0.2 },
-            "FellBackward",
-            &["th1"],
-        ),
+        (fell_backward(), "Fall", &["name", "doc"]),
         (FailureKind::ImpactAtStart, "ImpactAtStart", &[]),
         (FailureKind::NoImpact, "NoImpact", &[]),
         (FailureKind::NonFinite, "NonFinite", &[]),
@@ -106,9 +112,13 @@ fn a_failure_s_own_data_keeps_its_values() {
         (v["normal"].clone(), v["tangential"].clone()),
         (json!(2.0), json!(-3.0))
     );
+    let v = json_of(fell_backward());
     assert_eq!(
-        json_of(FailureKind::FellBackward { th1: -0.2 })["th1"],
-        -0.2
+        (v["name"].clone(), v["doc"].clone()),
+        (
+            json!("fell-backward"),
+            json!("the wheel rolled back onto its rear spoke")
+        )
     );
     // A non-finite lambda is written as null, as serde_json writes every non-finite number.
     let v = json_of(FailureKind::LambdaDenominatorZero { lambda: f64::NAN });
@@ -136,9 +146,9 @@ fn integrator_reasons_serialise_as_their_old_strings() {
 
 #[test]
 fn failure_names_are_the_cli_s_kebab_case_names() {
-    let names: Vec<&str> = every_kind()
+    let names: Vec<String> = every_kind()
         .into_iter()
-        .map(|(kind, _, _)| Failure::name(&kind.at(0, 0.0, STATE)))
+        .map(|(kind, _, _)| Failure::name(&kind.at(0, 0.0, STATE.into())).to_owned())
         .collect();
     assert_eq!(
         names,

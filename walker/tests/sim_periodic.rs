@@ -1,7 +1,10 @@
 //! `WalkLimits::periodic`: a walk that stops once its gait is periodic reports the descriptors
 //! the full walk ends with, to within the stop's tolerance.
 
-use walker::model::{Model, Runtime};
+mod common;
+
+use common::start;
+use walker::model::Model;
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 
 fn walk_100s(model: &Model, tol: f64, periodic: Option<f64>) -> Walk {
@@ -16,7 +19,7 @@ fn walk_100s(model: &Model, tol: f64, periodic: Option<f64>) -> Walk {
         periodic,
         ..WalkLimits::default()
     };
-    walk(model, &cfg, model.initial_state(0.8), &limits)
+    walk(model, &cfg, &start(model, 0.8), &limits)
 }
 
 /// The active walker at `mu0 = 0.4` converges slowly (Floquet multiplier 0.76, Fig. 7) and
@@ -27,10 +30,7 @@ fn walk_100s(model: &Model, tol: f64, periodic: Option<f64>) -> Walk {
 #[test]
 fn a_periodic_stop_keeps_the_descriptors_of_the_full_walk() {
     for mu0 in [0.4, 1.0] {
-        let model = Model::active_level(Runtime {
-            mu0,
-            ..Runtime::default()
-        });
+        let model = common::active(&[("mu0", mu0)]);
         let full = walk_100s(&model, 1e-11, None);
         let stopped = walk_100s(&model, 1e-11, Some(1e-10));
         assert!(full.failure.is_none() && stopped.failure.is_none());

@@ -9,7 +9,9 @@
 
 use std::path::PathBuf;
 
-use walker::model::{Model, Physical, Runtime};
+mod common;
+
+use common::table1;
 use walker::sim::{SimConfig, StepResult, WalkLimits, walk};
 
 fn load(name: &str) -> Option<serde_json::Value> {
@@ -67,15 +69,14 @@ fn one_active_step_matches_the_reference() {
     let r = load("step_active.json")
         .expect("tests/data/step_active.json is committed (sympy_ref/run.sh writes it)");
     let pr = &r["params"];
-    let m = Model::active_level(Runtime {
-        mu0: num(&pr["mu0"]),
-        c: num(&pr["c"]),
-        t_set: num(&pr["T_set"]),
-        k_p: 0.0,
-        k_d: 0.0,
-        phi: 0.0,
-    });
-    assert!((num(&pr["alpha"]) - Physical::TABLE1.alpha).abs() < 1e-15);
+    let m = common::active(&[
+        ("mu0", num(&pr["mu0"])),
+        ("c", num(&pr["c"])),
+        ("T_set", num(&pr["T_set"])),
+        ("K_P", 0.0),
+        ("K_D", 0.0),
+    ]);
+    assert!((num(&pr["alpha"]) - table1("alpha")).abs() < 1e-15);
     let mut s0 = [0.0; 8];
     s0[..4].copy_from_slice(&vec4(&r["q0"]));
     s0[4..].copy_from_slice(&vec4(&r["qd0"]));
@@ -83,7 +84,7 @@ fn one_active_step_matches_the_reference() {
         max_steps: 1,
         ..WalkLimits::default()
     };
-    let w = walk(&m, &SimConfig::default(), s0, &lim);
+    let w = walk(&m, &SimConfig::default(), &s0, &lim);
     assert_eq!(w.steps.len(), 1, "{:?}", w.failure);
     compare("active", &w.steps[0], &r);
 }
@@ -93,12 +94,11 @@ fn one_passive_step_matches_the_reference() {
     let r = load("step_passive.json")
         .expect("tests/data/step_passive.json is committed (sympy_ref/run.sh writes it)");
     let pr = &r["params"];
-    let m = Model::passive_slope(Runtime {
-        mu0: num(&pr["mu0"]),
-        c: num(&pr["c"]),
-        phi: num(&pr["phi"]),
-        ..Runtime::default()
-    });
+    let m = common::passive(&[
+        ("mu0", num(&pr["mu0"])),
+        ("c", num(&pr["c"])),
+        ("phi", num(&pr["phi"])),
+    ]);
     let mut s0 = [0.0; 8];
     s0[..4].copy_from_slice(&vec4(&r["q0"]));
     s0[4..].copy_from_slice(&vec4(&r["qd0"]));
@@ -106,7 +106,7 @@ fn one_passive_step_matches_the_reference() {
         max_steps: 1,
         ..WalkLimits::default()
     };
-    let w = walk(&m, &SimConfig::default(), s0, &lim);
+    let w = walk(&m, &SimConfig::default(), &s0, &lim);
     assert_eq!(w.steps.len(), 1, "{:?}", w.failure);
     compare("passive", &w.steps[0], &r);
 }

@@ -1,7 +1,9 @@
 //! Steps that cannot start: on their own heel-strike guard moving into the floor, or with
 //! velocities too large for `lambda` to be computed.
 
-use walker::model::{Model, Runtime};
+mod common;
+
+use common::{heel_strike_angle, start};
 use walker::sim::{Failure, FailureKind, SimConfig, WalkLimits, walk};
 
 /// The passive wheel started exactly at its heel-strike angle, rolling forward: the impact is
@@ -9,17 +11,15 @@ use walker::sim::{Failure, FailureKind, SimConfig, WalkLimits, walk};
 /// non-finite speed `dx / 0`).
 #[test]
 fn a_heel_strike_at_the_start_of_a_step_is_named() {
-    let model = Model::passive_slope(Runtime {
-        phi: 0.05,
-        ..Runtime::default()
-    });
-    let heel = model.heel_strike_angle();
+    // `mu0 = 0.4` (the active walker's value), not the built-in scene's 0.2.
+    let model = common::passive(&[("phi", 0.05), ("mu0", 0.4)]);
+    let heel = heel_strike_angle(&model);
     let start = [0.0, 0.0, heel, 0.0, 0.0, 0.0, 1e-6, 0.0];
     let limits = WalkLimits {
         max_steps: 1,
         ..WalkLimits::default()
     };
-    let w = walk(&model, &SimConfig::default(), start, &limits);
+    let w = walk(&model, &SimConfig::default(), &start, &limits);
     assert!(w.steps.is_empty());
     assert!(
         matches!(
@@ -45,12 +45,12 @@ fn an_overflowing_start_is_non_finite_and_a_pole_is_still_a_pole() {
         max_steps: 1,
         ..WalkLimits::default()
     };
-    let active = Model::active_level(Runtime::default());
+    let active = common::active(&[]);
     for omega0 in [1e308, -1e200, 1e160] {
         let w = walk(
             &active,
             &SimConfig::default(),
-            active.initial_state(omega0),
+            &start(&active, omega0),
             &limits,
         );
         assert!(
@@ -70,15 +70,11 @@ fn an_overflowing_start_is_non_finite_and_a_pole_is_still_a_pole() {
     // backwards): the denominator `2 I1 + 2 m_t l^2 sin th1 (sin th1 - mu cos th1)` of Eq. 23
     // vanishes at `th1 = 0.222781` (docs/stability.md), and the reaction there is huge at any
     // angular velocity, modest or overflowing.
-    let passive = Model::passive_slope(Runtime {
-        phi: 0.0,
-        mu0: 1.0,
-        ..Runtime::default()
-    });
+    let passive = common::passive(&[("phi", 0.0), ("mu0", 1.0)]);
     let th1 = bisect_pole(0.2, 0.25);
     for omega in [0.0, 1.0, 1e300] {
         let start = [0.0, 0.0, th1, 0.0, -1.0, 0.0, omega, omega];
-        let w = walk(&passive, &SimConfig::default(), start, &limits);
+        let w = walk(&passive, &SimConfig::default(), &start, &limits);
         assert!(
             matches!(
                 w.failure,

@@ -1,23 +1,20 @@
 //! The stiff integrator takes its Jacobian from the generated kernels.
 
-use walker::model::{Model, Runtime};
+mod common;
+
+use common::start;
 use walker::ode::Method;
 use walker::sim::{SimConfig, WalkLimits, walk_with_stats};
 
-/// With Table 1 the state Jacobian comes from `closed_loop_level_jacobian` (no finite-difference
-/// Jacobian is formed), and on a stiff friction law (`c = 1e4`, `mu0 = 1`) RODAS4 needs far
-/// fewer right-hand sides than DOP853 for the same steps, with the same step descriptors to the
-/// accuracy both were asked for. The input power `p` checks the Jacobian's row of the power
+/// With Table 1 the state Jacobian comes from the model's `closed_loop_jacobian` kernel (no
+/// finite-difference Jacobian is formed), and on a stiff friction law (`c = 1e4`, `mu0 = 1`)
+/// RODAS4 needs far fewer right-hand sides than DOP853 for the same steps, with the same step
+/// descriptors to the accuracy both were asked for. The input power `p` checks the Jacobian's row of the power
 /// quadrature: a Rosenbrock method is only as accurate as its Jacobian (with that row zero,
 /// RODAS4 does not even finish the walk: its error estimate of the quadrature stays too large).
 #[test]
 fn rodas4_uses_the_generated_jacobian_on_stiff_friction() {
-    let m = Model::active_level(Runtime {
-        mu0: 1.0,
-        c: 1e4,
-        t_set: 0.3,
-        ..Runtime::default()
-    });
+    let m = common::active(&[("mu0", 1.0), ("c", 1e4), ("T_set", 0.3)]);
     let limits = WalkLimits {
         max_steps: 2,
         ..WalkLimits::default()
@@ -31,8 +28,8 @@ fn rodas4_uses_the_generated_jacobian_on_stiff_friction() {
         method: Method::Rodas4,
         ..explicit
     };
-    let (a, sa) = walk_with_stats(&m, &explicit, m.initial_state(0.8), &limits);
-    let (b, sb) = walk_with_stats(&m, &stiff, m.initial_state(0.8), &limits);
+    let (a, sa) = walk_with_stats(&m, &explicit, &start(&m, 0.8), &limits);
+    let (b, sb) = walk_with_stats(&m, &stiff, &start(&m, 0.8), &limits);
     assert_eq!(a.steps.len(), 2, "{:?}", a.failure);
     assert_eq!(b.steps.len(), 2, "{:?}", b.failure);
     assert_eq!(sb.fd_jacobians, 0, "{sb:?}");
@@ -60,11 +57,7 @@ fn rodas4_uses_the_generated_jacobian_on_stiff_friction() {
 #[test]
 fn creeping_gaits_are_as_accurate_as_the_tolerance_at_impacts_and_power_kinks() {
     for (mu0, t_set) in [(0.85, 0.4), (1.0, 0.3), (0.6, 0.3)] {
-        let m = Model::active_level(Runtime {
-            mu0,
-            t_set,
-            ..Runtime::default()
-        });
+        let m = common::active(&[("mu0", mu0), ("T_set", t_set)]);
         let run = |tol: f64| {
             let cfg = SimConfig {
                 rtol: tol,
@@ -75,7 +68,7 @@ fn creeping_gaits_are_as_accurate_as_the_tolerance_at_impacts_and_power_kinks() 
                 max_steps: 5,
                 ..WalkLimits::default()
             };
-            walk_with_stats(&m, &cfg, m.initial_state(0.8), &limits).0
+            walk_with_stats(&m, &cfg, &start(&m, 0.8), &limits).0
         };
         let (loose, tight) = (run(1e-8), run(1e-12));
         assert_eq!(loose.steps.len(), 5, "{:?}", loose.failure);

@@ -4,25 +4,93 @@
 
 #![allow(clippy::unwrap_used, reason = "tests")]
 
-use walker::kernels::general_level;
-use walker::model::{Model, Physical, Runtime};
+mod common;
+
+use common::{start, table1};
+use walker::model::{Args, KernelId, Model};
 use walker::sim::{FailureKind, SimConfig, WalkLimits, walk};
 
-fn prepared(ph: &Physical, mu0: f64, c: f64) -> general_level::Prepared {
-    general_level::prepare(&general_level::Params {
-        m1: ph.m1,
-        m2: ph.m2,
-        l: ph.l,
-        i1: ph.i1,
-        i2: ph.i2,
-        g: ph.g,
-        alpha: ph.alpha,
-        mu0,
-        c,
-        t_set: 0.3,
-        k_p: 0.0,
-        k_d: 0.0,
-    })
+/// The physical parameters of the wheel (Table 1 and `g`), as these cases vary them.
+#[derive(Clone, Copy, Debug)]
+struct Physical {
+    m1: f64,
+    m2: f64,
+    l: f64,
+    i1: f64,
+    i2: f64,
+    g: f64,
+    alpha: f64,
+}
+
+impl Physical {
+    /// Table 1 with `g = 9.81`, as the built-in scenes fix it.
+    fn table1() -> Self {
+        Physical {
+            m1: table1("m1"),
+            m2: table1("m2"),
+            l: table1("l"),
+            i1: table1("I1"),
+            i2: table1("I2"),
+            g: table1("g"),
+            alpha: table1("alpha"),
+        }
+    }
+
+    /// `m_t = m1 + m2` (Eq. 2).
+    fn total_mass(&self) -> f64 {
+        self.m1 + self.m2
+    }
+
+    /// The parameters by name.
+    fn params(&self) -> [(&'static str, f64); 7] {
+        [
+            ("m1", self.m1),
+            ("m2", self.m2),
+            ("l", self.l),
+            ("I1", self.i1),
+            ("I2", self.i2),
+            ("g", self.g),
+            ("alpha", self.alpha),
+        ]
+    }
+}
+
+/// The active walker's kernels with every parameter at run time (the paper's `general_level`),
+/// the physical parameters `ph`, friction `mu0`, `c` and the paper's control settings.
+fn prepared(ph: &Physical, mu0: f64, c: f64) -> Model {
+    let mut params = ph.params().to_vec();
+    params.extend([
+        ("mu0", mu0),
+        ("c", c),
+        ("T_set", 0.3),
+        ("K_P", 0.0),
+        ("K_D", 0.0),
+    ]);
+    common::active_run_time(&params)
+}
+
+/// The frictionless impact (`impact`, the paper's `impact2_level`: fore-foot impulse, torso-lock
+/// impulse, then `qd+ = [xd, zd, th1d, th2d]`) at the stance angle `th1` with the velocities
+/// `xd, zd, th1d, th2d`.
+fn impact(p: &Model, th1: f64, qd: [f64; 4]) -> [f64; 6] {
+    let mut out = [0.0; 6];
+    let q = [0.0, 0.0, th1, 0.0];
+    p.kernels()
+        .eval(KernelId::Impact, &Args::state(&q, &qd), &mut out);
+    out
+}
+
+/// `lambda` of Eqs. 22-23 (the `lambda` kernel, the paper's `lambda_level`) at the stance angle
+/// `th1`, its rate `th1d`, the input `u` and the foot's velocity `xd`.
+fn lambda(p: &Model, th1: f64, th1d: f64, u: f64, xd: f64) -> f64 {
+    let mut out = [0.0; 1];
+    let (q, qd) = ([0.0, 0.0, th1, 0.0], [xd, 0.0, th1d, 0.0]);
+    let args = Args {
+        u: &[u],
+        ..Args::state(&q, &qd)
+    };
+    p.kernels().eval(KernelId::Lambda, &args, &mut out);
+    out[0]
 }
 
 /// The torso-lock impulse of `impact2_level` at the heel strike of a rigid rotation (`th1 =
@@ -56,7 +124,7 @@ fn fore_impulse_and_w_plus(ph: &Physical, w: f64) -> [f64; 2] {
 
 fn torso_impulse_kernel(ph: &Physical, w: f64) -> f64 {
     let p = prepared(ph, 0.0, 100.0);
-    general_level::impact2_level(&p, ph.alpha / 2.0, 0.0, 0.0, w, w)[1].abs()
+    impact(&p, ph.alpha / 2.0, [0.0, 0.0, w, w])[1].abs()
 }
 
 #[test]
@@ -64,7 +132,7 @@ fn small_and_large_alpha_impact_against_the_exact_closed_form() {
     for alpha in [1e-2, 1e-3, 1e-4, 1e-6, 0.5, 1.0, 2.0, 2.5] {
         let ph = Physical {
             alpha,
-            ..Physical::TABLE1
+            ..Physical::table1()
         };
         let exact = torso_impulse_reference(&ph, 1.0, false);
         let kernel = torso_impulse_kernel(&ph, 1.0);
@@ -79,7 +147,7 @@ fn small_and_large_alpha_impact_against_the_exact_closed_form() {
         );
         // The fore-foot impulse and w+ have no such cancellation.
         let p = prepared(&ph, 0.0, 100.0);
-        let out = general_level::impact2_level(&p, alpha / 2.0, 0.0, 0.0, 1.0, 1.0);
+        let out = impact(&p, alpha / 2.0, [0.0, 0.0, 1.0, 1.0]);
         let [foot, w_plus] = fore_impulse_and_w_plus(&ph, 1.0);
         assert!(
             ((out[0] - foot) / foot).abs() < 1e-13,
@@ -91,7 +159,7 @@ fn small_and_large_alpha_impact_against_the_exact_closed_form() {
     // The naive 1 - cos alpha loses digits: ~1e-8 relative error at alpha = 1e-4, all at 1e-8.
     let ph = Physical {
         alpha: 1e-8,
-        ..Physical::TABLE1
+        ..Physical::table1()
     };
     assert_eq!(torso_impulse_reference(&ph, 1.0, true), 0.0);
     assert!(torso_impulse_kernel(&ph, 1.0) > 0.0);
@@ -102,13 +170,13 @@ fn small_alpha_walk_gives_steps_or_a_named_failure() {
     for alpha in [1e-2, 1e-3, 1e-4] {
         let ph = Physical {
             alpha,
-            ..Physical::TABLE1
+            ..Physical::table1()
         };
-        let model = Model::general_level(ph, Runtime::default());
+        let model = prepared(&ph, 0.4, 100.0);
         let w = walk(
             &model,
             &SimConfig::default(),
-            model.initial_state(0.8),
+            &start(&model, 0.8),
             &WalkLimits {
                 max_steps: 3,
                 ..WalkLimits::default()
@@ -142,7 +210,7 @@ fn assert_no_nan(w: &walker::sim::Walk, case: &str) {
 #[test]
 fn extreme_mass_and_inertia_ratios_never_give_nan() {
     let ratios = [1e-6, 1e-3, 1.0, 1e3, 1e6];
-    let base = Physical::TABLE1;
+    let base = Physical::table1();
     for &r_m in &ratios {
         for &r_i1 in &ratios {
             for &r_i2 in &[1e-6, 1.0, 1e6] {
@@ -155,14 +223,14 @@ fn extreme_mass_and_inertia_ratios_never_give_nan() {
                     i2: r_i2 * i1,
                     ..base
                 };
-                let model = Model::general_level(ph, Runtime::default());
+                let model = prepared(&ph, 0.4, 100.0);
                 let w = walk(
                     &model,
                     &SimConfig {
                         max_step_time: 2.0,
                         ..SimConfig::default()
                     },
-                    model.initial_state(0.8),
+                    &start(&model, 0.8),
                     &WalkLimits {
                         max_steps: 3,
                         ..WalkLimits::default()
@@ -189,7 +257,7 @@ fn singular_angles(ph: &Physical, mu: f64) -> Option<[f64; 2]> {
 
 #[test]
 fn lambda_grows_without_bound_near_the_singular_denominator_and_the_walk_names_it() {
-    let ph = Physical::TABLE1;
+    let ph = Physical::table1();
     // |mu| must exceed sqrt((1 + 2 I1/(m_t l^2))^2 - 1) = 0.882 for Table 1.
     assert!(singular_angles(&ph, 0.85).is_none());
     let mu0 = 2.0;
@@ -198,8 +266,8 @@ fn lambda_grows_without_bound_near_the_singular_denominator_and_the_walk_names_i
     for th in singular_angles(&ph, mu0).unwrap() {
         let mut last = 0.0;
         for eps in [1e-2, 1e-4, 1e-6, 1e-8] {
-            let below = general_level::lambda_level(&p, th - eps, 1.0, 0.0, -1.0);
-            let above = general_level::lambda_level(&p, th + eps, 1.0, 0.0, -1.0);
+            let below = lambda(&p, th - eps, 1.0, 0.0, -1.0);
+            let above = lambda(&p, th + eps, 1.0, 0.0, -1.0);
             assert!(below.is_finite() && above.is_finite());
             // opposite signs on the two sides, magnitude ~ 1/eps
             assert!(below * above < 0.0, "th {th} eps {eps}: {below} {above}");
@@ -210,17 +278,17 @@ fn lambda_grows_without_bound_near_the_singular_denominator_and_the_walk_names_i
     // The passive wheel (u = 0; phi = 0 is level ground, so Eq. 23 holds) started next to the
     // singular angle, rolling towards it, reports the named failure. (The active walker's
     // control input moves the pole: its closed-loop lambda is finite there.)
-    let model = Model::general_slope(
-        ph,
-        Runtime {
-            mu0,
-            phi: 0.0,
-            ..Runtime::default()
-        },
-    );
+    let mut params = ph.params().to_vec();
+    params.extend([("mu0", mu0), ("phi", 0.0), ("c", 100.0)]);
+    let model = common::passive_run_time(&params);
     let th = singular_angles(&ph, mu0).unwrap()[0];
     let start = [0.0, 0.0, th - 1e-9, 0.0, -1.0, 0.0, 1.0, 1.0];
-    let w = walk(&model, &SimConfig::default(), start, &WalkLimits::default());
+    let w = walk(
+        &model,
+        &SimConfig::default(),
+        &start,
+        &WalkLimits::default(),
+    );
     assert!(
         matches!(
             w.failure.as_ref().map(|f| &f.kind),

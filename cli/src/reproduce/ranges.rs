@@ -65,11 +65,11 @@ mod tests {
 
     fn point(mu0: f64, failed: bool) -> SweepPoint {
         SweepPoint {
-            mu0,
+            value: mu0,
             steps: 0,
             last: None,
             previous: None,
-            failure: failed.then(|| FailureKind::NoImpact.at(0, 0.0, [0.0; 8])),
+            failure: failed.then(|| FailureKind::NoImpact.at(0, 0.0, [0.0; 8].into())),
             periodic: false,
         }
     }
@@ -95,7 +95,7 @@ mod tests {
     fn no_labelled_point_is_none_and_different_labels_are_different_runs() {
         let pts: Vec<SweepPoint> = (0..3).map(|k| point(0.1 * k as f64, false)).collect();
         assert_eq!(describe(&pts, failure), "none");
-        let by_parity = |p: &SweepPoint| Some(format!("{}", (p.mu0 * 10.0).round() as i32 % 2));
+        let by_parity = |p: &SweepPoint| Some(format!("{}", (p.value * 10.0).round() as i32 % 2));
         assert_eq!(runs(&pts, by_parity).len(), 3);
         assert_eq!(interval(0.1, 0.45), "mu0 in [0.10, 0.45]");
     }
@@ -103,7 +103,7 @@ mod tests {
     /// `Failure` is the library's type: the label is its CLI name.
     #[test]
     fn the_failure_label_is_the_failure_name() {
-        let f: Failure = FailureKind::NoImpact.at(0, 0.0, [0.0; 8]);
+        let f: Failure = FailureKind::NoImpact.at(0, 0.0, [0.0; 8].into());
         assert_eq!(failure(&point(0.0, true)).as_deref(), Some(f.name()));
     }
 }
