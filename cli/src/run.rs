@@ -303,7 +303,6 @@ pub fn sweep(
 
 /// Run `walker fixed-point` from `start` (the warm-up walk's start). A failed search is a
 /// result, not an input error.
-#[must_use]
 pub fn fixed_point_search(
     model: &Model,
     start: &Vector,

@@ -28,7 +28,6 @@ thread_local! {
 
 /// What [`walker::setup`] calls for a model file that is not compiled in: derives it once and
 /// gives its kernels for every friction law and parameter set.
-#[must_use]
 pub fn runtime_source() -> impl Fn(&Model) -> Result<Arc<dyn KernelSource>, String> + Sync {
     |model: &Model| {
         let source = Derived::new(model.clone())?;

@@ -7,7 +7,9 @@ mod common;
 
 use common::start;
 use walker::model::Model;
-use walker::poincare::{FixedPointOptions, Section, Status, fixed_point, poincare_map};
+use walker::poincare::{
+    FixedPointOptions, JacobianMethod, Section, Status, fixed_point, poincare_map,
+};
 use walker::sim::{SimConfig, WalkLimits, walk};
 
 fn active(mu0: f64, t_set: f64) -> Model {
@@ -21,6 +23,7 @@ fn newton_converges_for_table1_and_the_cycle_reproduces_itself() {
     let fp = fixed_point(&model, &cfg, &FixedPointOptions::for_model(&model)).unwrap();
     println!("{}", serde_json::to_string(&fp).unwrap());
     assert_eq!(fp.status, Status::Converged);
+    assert_eq!(fp.jacobian_method, JacobianMethod::Variational);
     let m = poincare_map(&model, &cfg, &fp.state_plus).unwrap();
     for i in 0..8 {
         assert!(

@@ -6,7 +6,7 @@
 mod common;
 
 use walker::model::Model;
-use walker::poincare::{Section, poincare_map};
+use walker::poincare::{JacobianMethod, Section, poincare_map};
 use walker::sim::SimConfig;
 use walker::vector::Vector;
 
@@ -29,6 +29,9 @@ fn tight() -> SimConfig {
 fn check_fd(model: &Model, s: Vector) -> f64 {
     let cfg = tight();
     let m = poincare_map(model, &cfg, &s).unwrap();
+    // The Jacobian under test is the variational one (the generated Jacobian kernels), not
+    // the finite-difference fallback this test would compare with itself.
+    assert_eq!(m.method, JacobianMethod::Variational);
     let norm = m
         .jacobian
         .iter()

@@ -8,6 +8,7 @@
 use std::collections::BTreeSet;
 
 use serde_json::{Value, json};
+use walker::model::Slide;
 use walker::ode::GaveUp;
 use walker::sim::{Failure, FailureKind};
 
@@ -78,6 +79,13 @@ fn every_kind() -> Vec<(FailureKind, &'static str, &'static [&'static str])> {
         (FailureKind::ImpactAtStart, "ImpactAtStart", &[]),
         (FailureKind::NoImpact, "NoImpact", &[]),
         (FailureKind::NonFinite, "NonFinite", &[]),
+        (
+            FailureKind::ImpactJam {
+                slip: Slide::Backward,
+            },
+            "ImpactJam",
+            &["slip"],
+        ),
         (
             FailureKind::Integrator {
                 reason: GaveUp::TooManySteps,
@@ -163,6 +171,7 @@ fn failure_names_are_the_cli_s_kebab_case_names() {
             "impact-at-start",
             "no-impact",
             "non-finite",
+            "impact-jam",
             "integrator",
         ]
     );

@@ -33,5 +33,5 @@ pub use kernels::{Args, KernelId, Kernels};
 pub use parameters::{ParamError, Parameters};
 pub use prepared::Model;
 pub use spec::{Spec, SpecError};
-pub use walker::{Compiled, KernelSource, NoKernels, Variant, Walker};
+pub use walker::{Compiled, KernelSource, NoKernels, Prepare, Variant, Walker};
 pub use walker_scene::{Friction, ImpactLaw};

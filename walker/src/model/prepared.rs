@@ -372,8 +372,8 @@ impl Model {
         self.eval(
             KernelId::Lambda,
             Args {
-                u: u,
-                sigma: sigma,
+                u,
+                sigma,
                 ..Args::state(q, qd)
             },
             &mut out,

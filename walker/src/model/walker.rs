@@ -8,7 +8,7 @@ use std::sync::Arc;
 use walker_scene::{Friction, ImpactLaw};
 
 use super::contact::FrictionLaw;
-use super::kernels::Kernels;
+use super::kernels::{KernelId, Kernels};
 use super::parameters::Parameters;
 use super::prepared::Model;
 use super::spec::Spec;
@@ -40,6 +40,16 @@ pub enum NoKernels {
         /// What would work.
         hint: String,
     },
+    /// The kernels lack one the friction or impact law needs (a source generated without it).
+    #[error("the kernels of model `{model}` have no `{kernel}`, which {why} needs")]
+    Missing {
+        /// The model.
+        model: String,
+        /// The missing kernel.
+        kernel: &'static str,
+        /// What needs it.
+        why: &'static str,
+    },
     /// A run-time source failed (its own message).
     #[error("model `{model}`: {message}")]
     Source {
@@ -60,6 +70,10 @@ pub trait KernelSource: Send + Sync {
     fn prepare(&self, law: Friction, params: &Parameters) -> Result<Arc<dyn Kernels>, NoKernels>;
 }
 
+/// A compiled variant's constructor: its kernels prepared at the run-time parameters given by
+/// name.
+pub type Prepare = fn(&dyn Fn(&str) -> f64) -> Arc<dyn Kernels>;
+
 /// One compiled variant of a model: its kernels generated for a friction law with some
 /// parameters fixed at generation (`walker/build.rs`).
 #[derive(Clone, Copy)]
@@ -69,7 +83,7 @@ pub struct Variant {
     /// The parameters substituted at generation, with their values.
     pub fixed: &'static [(&'static str, f64)],
     /// Prepares the kernels: the run-time parameters by name.
-    pub prepare: fn(&dyn Fn(&str) -> f64) -> Arc<dyn Kernels>,
+    pub prepare: Prepare,
 }
 
 /// The variants of a model compiled into this library.
@@ -211,6 +225,110 @@ impl Walker {
             }
         };
         let kernels = self.source.prepare(kernel_law, &params)?;
+        for (kernel, why) in self.required(friction, impact) {
+            if !kernels.has(kernel) {
+                return Err(NoKernels::Missing {
+                    model: self.spec.name().to_owned(),
+                    kernel: kernel.name(),
+                    why,
+                });
+            }
+        }
         Ok(Model::new(params, kernels, law).with_impact_law(impact))
+    }
+
+    /// The kernels a walk under `friction` and `impact` evaluates, each with what needs it
+    /// (the Jacobians are optional: without them the Poincare map differentiates numerically).
+    fn required(&self, friction: Friction, impact: ImpactLaw) -> Vec<(KernelId, &'static str)> {
+        let spec = &self.spec;
+        let mut need = vec![
+            (KernelId::Lambda, "the stance"),
+            (KernelId::Events, "the strike and the falls"),
+            (KernelId::Impact, "the impact"),
+            (KernelId::Relabel, "the impact"),
+        ];
+        if spec.is_actuated() {
+            need.push((KernelId::ClosedLoop, "the controlled stance"));
+            need.push((KernelId::InputRates, "the input power"));
+        } else {
+            need.push((KernelId::Accel, "the stance"));
+        }
+        if friction == Friction::Coulomb {
+            need.push((KernelId::Stick, "Coulomb friction's stick phase"));
+            if spec.is_actuated() {
+                need.push((KernelId::ClosedLoopStick, "Coulomb friction's stick phase"));
+            }
+        }
+        if impact == ImpactLaw::Coulomb {
+            need.push((KernelId::ImpactCoulomb, "the impact with Coulomb friction"));
+        }
+        if spec.double_support() {
+            need.push((KernelId::ImpactDouble, "the double-support test"));
+        }
+        need
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Args;
+    use crate::setup::Setup;
+
+    /// A source whose kernels lack `hidden`.
+    struct Without(Arc<dyn KernelSource>, KernelId);
+
+    struct Hidden(Arc<dyn Kernels>, KernelId);
+
+    impl Kernels for Hidden {
+        fn has(&self, k: KernelId) -> bool {
+            k != self.1 && self.0.has(k)
+        }
+        fn eval(&self, k: KernelId, args: &Args<'_>, out: &mut [f64]) {
+            self.0.eval(k, args, out);
+        }
+    }
+
+    impl KernelSource for Without {
+        fn prepare(&self, law: Friction, p: &Parameters) -> Result<Arc<dyn Kernels>, NoKernels> {
+            Ok(Arc::new(Hidden(self.0.prepare(law, p)?, self.1)))
+        }
+    }
+
+    #[test]
+    fn a_law_whose_kernel_is_missing_is_refused_by_name() {
+        let setup = Setup::active_level().unwrap();
+        let w = &setup.walker;
+        let params = setup.params.clone();
+        for (hidden, friction, impact) in [
+            (KernelId::ImpactCoulomb, Friction::Tanh, ImpactLaw::Coulomb),
+            (
+                KernelId::ClosedLoopStick,
+                Friction::Coulomb,
+                ImpactLaw::Frictionless,
+            ),
+            (KernelId::Stick, Friction::Coulomb, ImpactLaw::Frictionless),
+        ] {
+            let without = Walker::new(
+                w.spec().clone(),
+                Arc::new(Without(w.source.clone(), hidden)),
+            );
+            // With the kernel the model prepares; without it the error names the kernel.
+            assert!(w.model(&params, friction, impact).is_ok());
+            match without.model(&params, friction, impact) {
+                Err(NoKernels::Missing { kernel, .. }) => assert_eq!(kernel, hidden.name()),
+                other => panic!("{hidden:?}: {:?}", other.map(|_| ())),
+            }
+        }
+        // Stick is not needed by the tanh law.
+        let without = Walker::new(
+            w.spec().clone(),
+            Arc::new(Without(w.source.clone(), KernelId::Stick)),
+        );
+        assert!(
+            without
+                .model(&params, Friction::Tanh, ImpactLaw::Frictionless)
+                .is_ok()
+        );
     }
 }

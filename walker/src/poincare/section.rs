@@ -108,8 +108,9 @@ impl<'a> Section<'a> {
             }
         }
         let tphi = self.model.phi().tan();
-        for k in 0..self.dim() {
-            e[n + 1][k] = 0.0 - e[n][k] * tphi;
+        let (xd, rest) = e[n..].split_at_mut(1);
+        for (zd, xd) in rest[0].iter_mut().zip(&xd[0]) {
+            *zd = 0.0 - xd * tphi;
         }
         e
     }
