@@ -72,7 +72,7 @@ impl From<NoKernels> for InputError {
     fn from(e: NoKernels) -> Self {
         let field = match e {
             NoKernels::FrictionLaw { .. } | NoKernels::NotCompiled { .. } => "friction",
-            NoKernels::Source { .. } => "model",
+            NoKernels::Source { .. } | NoKernels::Missing { .. } => "model",
         };
         InputError::new(field, e.to_string())
     }

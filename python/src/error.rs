@@ -103,7 +103,7 @@ impl From<NoKernels> for ArgError {
     fn from(e: NoKernels) -> Self {
         let arg = match e {
             NoKernels::FrictionLaw { .. } | NoKernels::NotCompiled { .. } => "friction",
-            NoKernels::Source { .. } => "model",
+            NoKernels::Source { .. } | NoKernels::Missing { .. } => "model",
         };
         ArgError::new(arg, e.to_string())
     }
