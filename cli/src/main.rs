@@ -143,8 +143,6 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 (true, false) => Some(("phi", &phi[..])),
                 (true, true) => None,
             };
-            let model = run::model(&setup)?;
-            let start = model.start_state();
             let req = run::SweepRequest {
                 param: &param,
                 from,
@@ -153,7 +151,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 chains,
                 restart,
             };
-            let res = run::sweep(&setup, &start, &req, &limits, &common.config()?)?;
+            let res = run::sweep(&setup, &[], &req, &limits, &common.config()?)?;
             if common.json {
                 emit(&format!("{}\n", report::sweep_json(&res)))?;
             } else {

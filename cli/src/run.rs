@@ -1,11 +1,10 @@
 //! The commands' work between parsing and printing: validate what the library does not (the
 //! flags' own ranges), build the setup and the model, and call the library.
 
-use std::path::Path;
-
+use walker::model::InitError;
 use walker::model::Model;
 use walker::poincare::{FixedPoint, FixedPointError, FixedPointOptions, fixed_point};
-use walker::setup::{Overrides, Setup};
+use walker::setup::{Overrides, Setup, SetupError};
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 use walker::sweep::{mu0_grid, sweep_chains};
 use walker::vector::Vector;
@@ -27,35 +26,6 @@ pub const MAX_SWEEP_CHAINS: usize = 64;
 /// The most points a sweep may have in all (chains times swept values).
 pub const MAX_SWEEP_POINTS: usize = 100_000;
 
-/// The longest scene or model file read (bytes): a scene is a few hundred bytes, the largest
-/// shipped model a dozen kilobytes.
-pub const MAX_SCENE_BYTES: u64 = 1 << 20;
-
-/// Checks that the file `path` given as `field` is a regular file of at most
-/// [`MAX_SCENE_BYTES`] (not a device or a pipe, which could be read without end). A file that
-/// cannot be inspected is left to the reader, which names it.
-fn check_file(field: &str, path: &Path) -> Result<(), InputError> {
-    if let Ok(meta) = std::fs::metadata(path) {
-        if !meta.is_file() {
-            return Err(InputError::new(
-                field,
-                format!("{} is not a regular file", path.display()),
-            ));
-        }
-        if meta.len() > MAX_SCENE_BYTES {
-            return Err(InputError::new(
-                field,
-                format!(
-                    "{} has {} bytes; a {field} file has at most {MAX_SCENE_BYTES}",
-                    path.display(),
-                    meta.len()
-                ),
-            ));
-        }
-    }
-    Ok(())
-}
-
 /// The setup of `--scene` or `--model` with the overrides `ov`. A model file that is not one
 /// of the shipped models is derived here.
 ///
@@ -65,13 +35,9 @@ fn check_file(field: &str, path: &Path) -> Result<(), InputError> {
 pub fn setup(common: &Common, ov: &Overrides) -> Result<Setup, InputError> {
     let runtime = walker_load::runtime_source();
     if let Some(path) = &common.model {
-        check_file("model", path)?;
         return Ok(Setup::from_model_file(path, ov, Some(&runtime))?);
     }
     let scene = common.scene.as_deref().unwrap_or_default();
-    if scene.ends_with(".toml") {
-        check_file("scene", Path::new(scene))?;
-    }
     Ok(Setup::resolve(scene, ov, Some(&runtime))?)
 }
 
@@ -102,16 +68,12 @@ pub fn set_omega0(
 ) -> Result<(), InputError> {
     if let Some(w) = omega0 {
         check("omega0", w, ok(w), must_be)?;
-        if setup.walker.spec().parameter("omega0").is_none() {
-            return Err(InputError::new(
-                "omega0",
-                format!(
-                    "model `{}` has no start parameter omega0; use --init NAME=VALUE",
-                    setup.walker.spec().name()
-                ),
-            ));
-        }
-        setup.set("omega0", w)?;
+        setup.set_start("omega0", w).map_err(|e| match e {
+            SetupError::NoStartParameter { .. } => {
+                InputError::new("omega0", format!("{e}; use --init NAME=VALUE"))
+            }
+            e => e.into(),
+        })?;
     }
     Ok(())
 }
@@ -130,21 +92,12 @@ pub fn model(setup: &Setup) -> Result<Model, InputError> {
 /// # Errors
 /// A malformed pair, an unknown component, or a value that is not finite.
 pub fn start(model: &Model, init: &[String]) -> Result<Vector, InputError> {
-    let mut s = model.start_state();
-    for (name, v) in assignments("init", init)? {
-        let i = model.spec().state_index(&name).ok_or_else(|| {
-            InputError::new(
-                "init",
-                format!(
-                    "`{name}` is not a coordinate or velocity of model `{}`; they are: {}",
-                    model.spec().name(),
-                    model.spec().state_names().join(", ")
-                ),
-            )
-        })?;
-        s[i] = check("init", v, true, "finite")?;
-    }
-    Ok(s)
+    let pairs = assignments("init", init)?;
+    let components = model.spec().start_components(&pairs).map_err(|e| match e {
+        InitError::NotFinite { value, .. } => InputError::out_of_range("init", value, "finite"),
+        e => InputError::new("init", e.to_string()),
+    })?;
+    Ok(model.start_state_replacing(&components))
 }
 
 /// Run `walker simulate` from `start`.
@@ -181,19 +134,8 @@ pub struct SweepRequest<'a> {
     pub restart: bool,
 }
 
-/// The chain parameter of a sweep without `--t-set` or `--phi`: `T_set` where the model has
-/// one (the paper's active walker, Fig. 8), else its slope (the passive wheel, Fig. 10).
-fn default_chain(setup: &Setup) -> Option<(String, f64)> {
-    let spec = setup.walker.spec();
-    let name = spec
-        .parameter("T_set")
-        .or(spec.slope)
-        .map(|i| spec.model.parameters[i].name.name.clone())?;
-    let value = setup.params.get(&name)?;
-    Some((name, value))
-}
-
-/// Run `walker sweep` of `req.param` for each chain value.
+/// Run `walker sweep` of `req.param` for each chain value; a point that does not continue
+/// starts from its own model's `[start]` with the components `init` (index, value) replaced.
 ///
 /// # Errors
 /// A range flag is out of range, a chain value is invalid, more than [`MAX_SWEEP_CHAINS`]
@@ -201,7 +143,7 @@ fn default_chain(setup: &Setup) -> Option<(String, f64)> {
 /// point's model cannot be built.
 pub fn sweep(
     setup: &Setup,
-    start: &Vector,
+    init: &[(usize, f64)],
     req: &SweepRequest<'_>,
     limits: &WalkLimits,
     cfg: &SimConfig,
@@ -213,7 +155,7 @@ pub fn sweep(
     max_steps(limits.max_steps)?;
     let (chain_param, chain_values): (Option<String>, Vec<f64>) = match req.chains {
         Some((name, values)) if !values.is_empty() => (Some(name.to_owned()), values.to_vec()),
-        _ => match default_chain(setup) {
+        _ => match setup.default_chain() {
             Some((name, v)) => (Some(name), vec![v]),
             None => (None, vec![f64::NAN]),
         },
@@ -276,7 +218,7 @@ pub fn sweep(
         let (i, j) = index(c, v);
         models[i][j].clone()
     };
-    let initial = |_: f64| *start;
+    let initial = |m: &Model| m.start_state_replacing(init);
     let bar = Progress::new("sweep", chain_values.len() * grid.len());
     let res = sweep_chains(
         &chain_values,

@@ -109,7 +109,7 @@ pub fn walk_points<'py>(
     }
     let n = n.unwrap_or(0);
     // The same start for every point: its names are checked once, not per row.
-    walker_args::check_init(base.walker.spec(), &init)?;
+    let init = walker_args::check_init(base.walker.spec(), &init)?;
     let mut points: Vec<(Model, Vector)> = Vec::with_capacity(n);
     for k in 0..n {
         let row = |e: ArgError| ArgError::new(&e.arg, format!("{} (grid row {k})", e.message));
@@ -118,7 +118,7 @@ pub fn walk_points<'py>(
             set_column(&mut setup, name, col[k]).map_err(|e| row(e.named(name)))?;
         }
         let model = walker_args::model(&setup).map_err(row)?;
-        let start = walker_args::start(&model, &init).map_err(row)?;
+        let start = model.start_state_replacing(&init);
         points.push((model, start));
     }
     let mut outcomes: Vec<Outcome> = Vec::with_capacity(n);

@@ -12,8 +12,8 @@ use pyo3::types::PyDict;
 use rayon::prelude::*;
 use walker::model::Model;
 use walker::setup::Setup;
-use walker::sim::{SimConfig, WalkLimits, walk};
-use walker::sweep::mu0_grid;
+use walker::sim::{SimConfig, WalkLimits};
+use walker::sweep::{Carry, mu0_grid};
 use walker::vector::Vector;
 
 use crate::chunks::in_chunks;
@@ -33,33 +33,24 @@ const CHUNK: usize = 4;
 
 /// A chain of a sweep on its way along the grid.
 struct Chain {
-    /// The state the next value starts from (without `restart`).
-    state: Vector,
+    /// Where the next value starts.
+    carry: Carry,
     points: Vec<Outcome>,
 }
 
-/// Walk `chain` through the models of consecutive values, each from the previous steady state
-/// moved to the origin (procedure P4a; from `start` after a failure) or, with `restart`, from
-/// `start`: what `walker::sweep::sweep_chains` does for one chain.
+/// Walks `chain` through the models of consecutive values, as `walker::sweep::sweep_chains`
+/// walks one chain ([`Carry`]: each value from the previous steady state moved to the origin,
+/// from `initial(model)` at the first value, after a failure, and always with `restart`).
 fn advance(
     models: &[Model],
     cfg: &SimConfig,
     limits: &WalkLimits,
     restart: bool,
-    start: &Vector,
+    initial: &(dyn Fn(&Model) -> Vector + Sync),
     chain: &mut Chain,
 ) {
     for model in models {
-        let from = if restart { start } else { &chain.state };
-        let w = walk(model, cfg, from, limits);
-        chain.state = match (&w.failure, w.last_state()) {
-            (None, Some(mut s)) => {
-                s[0] = 0.0;
-                s[1] = 0.0;
-                s
-            }
-            _ => *start,
-        };
+        let w = chain.carry.walk(model, cfg, limits, restart, initial);
         chain.points.push(Outcome::of(w));
     }
 }
@@ -78,7 +69,6 @@ fn chains(
     phi: Vec<f64>,
 ) -> Result<(Option<String>, &'static str, Vec<f64>), ArgError> {
     let spec = setup.walker.spec();
-    let name_of = |i: usize| spec.model.parameters[i].name.name.clone();
     match (t_set.is_empty(), phi.is_empty()) {
         (false, false) => Err(ArgError::new(
             "phi",
@@ -92,13 +82,16 @@ fn chains(
                     format!("model `{}` has no slope (its floor is level)", spec.name()),
                 )
             })?;
-            Ok((Some(name_of(slope)), "phi", phi))
+            Ok((
+                Some(spec.model.parameters[slope].name.name.clone()),
+                "phi",
+                phi,
+            ))
         }
-        (true, true) => {
-            let default = spec.parameter("T_set").or(spec.slope).map(name_of);
-            let value = default.as_deref().and_then(|n| setup.params.get(n));
-            Ok((default, "chain", vec![value.unwrap_or(f64::NAN)]))
-        }
+        (true, true) => Ok(match setup.default_chain() {
+            Some((name, value)) => (Some(name), "chain", vec![value]),
+            None => (None, "chain", vec![f64::NAN]),
+        }),
     }
 }
 
@@ -188,8 +181,8 @@ pub fn sweep<'py>(
         .into());
     }
     let grid = mu0_grid(from_, to, step);
-    let base_model = walker_args::model(&setup)?;
-    let start = walker_args::start(&base_model, &init)?;
+    let init = walker_args::check_init(&spec, &init)?;
+    let initial = |m: &Model| m.start_state_replacing(&init);
     // Every point's model, built before any walk: a value out of its range or kernels that
     // cannot be prepared are input errors.
     let mut models: Vec<Vec<Model>> = Vec::with_capacity(values.len());
@@ -212,13 +205,13 @@ pub fn sweep<'py>(
     let mut state: Vec<Chain> = values
         .iter()
         .map(|_| Chain {
-            state: start,
+            carry: Carry::default(),
             points: Vec::with_capacity(grid.len()),
         })
         .collect();
     in_chunks(py, &mut state, grid.len(), CHUNK, |chains, range| {
         chains.par_iter_mut().zip(&models).for_each(|(ch, row)| {
-            advance(&row[range.clone()], &cfg, &limits, restart, &start, ch);
+            advance(&row[range.clone()], &cfg, &limits, restart, &initial, ch);
         });
     })?;
     let mut rows = Rows::new(spec.n);
@@ -285,11 +278,11 @@ mod tests {
             for (&value, want) in chains.iter().zip(&want) {
                 let models: Vec<Model> = grid.iter().map(|&v| make(value, v)).collect();
                 let mut ch = Chain {
-                    state: start,
+                    carry: Carry::default(),
                     points: Vec::new(),
                 };
                 for part in models.chunks(CHUNK) {
-                    advance(part, &cfg, &limits, restart, &start, &mut ch);
+                    advance(part, &cfg, &limits, restart, &|_| start, &mut ch);
                 }
                 let got: Vec<_> = ch
                     .points

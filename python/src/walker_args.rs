@@ -7,36 +7,15 @@
 
 use std::path::Path;
 
-use walker::model::{Model, Spec};
+use walker::model::{InitError, Model, Spec};
 use walker::setup::{Overrides, Setup, SetupError};
 use walker::vector::Vector;
 
 use crate::error::{ArgError, check};
 use crate::options;
 
-/// The longest scene or model file read (bytes), as the command line's: a scene is a few
-/// hundred bytes, the largest shipped model a dozen kilobytes.
-pub const MAX_SCENE_BYTES: u64 = 1 << 20;
-
 /// The scene of a call that names neither a scene nor a model.
 pub const DEFAULT_SCENE: &str = "active-level";
-
-/// Checks that the file `path` given as `arg` can be inspected and is a regular file of at
-/// most [`MAX_SCENE_BYTES`] (not a device or a pipe, which could be read without end).
-fn check_file(arg: &str, path: &Path) -> Result<(), ArgError> {
-    let meta = std::fs::metadata(path)
-        .map_err(|e| ArgError::new(arg, format!("cannot read {}: {e}", path.display())))?;
-    if !meta.is_file() || meta.len() > MAX_SCENE_BYTES {
-        return Err(ArgError::new(
-            arg,
-            format!(
-                "{}: must be a regular file of at most {MAX_SCENE_BYTES} bytes",
-                path.display()
-            ),
-        ));
-    }
-    Ok(())
-}
 
 /// The overrides of the keyword arguments: the parameters by role, and the laws by name.
 ///
@@ -95,22 +74,8 @@ pub fn setup(
                 "give either scene= or model=, not both",
             ));
         }
-        (None, Some(path)) => {
-            let path = Path::new(path);
-            check_file("model", path)?;
-            Setup::from_model_file(path, ov, Some(&runtime)).map_err(|e| match e {
-                // The model file could not be read: it is the `model` argument, not a scene.
-                SetupError::ModelScene(_) => ArgError::new("model", e.to_string()),
-                e => ArgError::from(e),
-            })?
-        }
-        (scene, None) => {
-            let scene = scene.unwrap_or(DEFAULT_SCENE);
-            if scene.ends_with(".toml") {
-                check_file("scene", Path::new(scene))?;
-            }
-            Setup::resolve(scene, ov, Some(&runtime))?
-        }
+        (None, Some(path)) => Setup::from_model_file(Path::new(path), ov, Some(&runtime))?,
+        (scene, None) => Setup::resolve(scene.unwrap_or(DEFAULT_SCENE), ov, Some(&runtime))?,
     };
     for (name, value) in set {
         setup
@@ -133,17 +98,12 @@ pub fn set_omega0(
 ) -> Result<(), ArgError> {
     if let Some(w) = omega0 {
         check("omega0", w, ok(w), must_be)?;
-        let spec = setup.walker.spec();
-        if spec.parameter("omega0").is_none() {
-            return Err(ArgError::new(
-                "omega0",
-                format!(
-                    "model `{}` has no start parameter omega0; use init={{name: value}}",
-                    spec.name()
-                ),
-            ));
-        }
-        setup.set("omega0", w)?;
+        setup.set_start("omega0", w).map_err(|e| match e {
+            SetupError::NoStartParameter { .. } => {
+                ArgError::new("omega0", format!("{e}; use init={{name: value}}"))
+            }
+            e => e.into(),
+        })?;
     }
     Ok(())
 }
@@ -157,30 +117,23 @@ pub fn model(setup: &Setup) -> Result<Model, ArgError> {
     Ok(setup.model()?)
 }
 
-/// The index in the state of each `(name, value)` of `init`, checked against the model
-/// `spec`: a coordinate or a velocity by name, and a finite value.
+/// The index in the state of each `(name, value)` of `init` with its value, checked against
+/// the model `spec`: a coordinate or a velocity by name, and a finite value.
 ///
 /// # Errors
 /// An unknown component (named `init['name']`, listing the model's), or a value that is not
 /// finite.
-pub fn check_init(spec: &Spec, init: &[(String, f64)]) -> Result<Vec<usize>, ArgError> {
-    init.iter()
-        .map(|(name, v)| {
-            let key = init_key(name);
-            let i = spec.state_index(name).ok_or_else(|| {
-                ArgError::new(
-                    &key,
-                    format!(
-                        "not a coordinate or velocity of model `{}`; they are: {}",
-                        spec.name(),
-                        spec.state_names().join(", ")
-                    ),
-                )
-            })?;
-            check(&key, *v, true, "finite")?;
-            Ok(i)
-        })
-        .collect()
+pub fn check_init(spec: &Spec, init: &[(String, f64)]) -> Result<Vec<(usize, f64)>, ArgError> {
+    spec.start_components(init).map_err(|e| {
+        let key = init_key(e.name());
+        match e {
+            InitError::NotFinite { value, .. } => ArgError::out_of_range(&key, value, "finite"),
+            InitError::Unknown { model, known, .. } => ArgError::new(
+                &key,
+                format!("not a coordinate or velocity of model `{model}`; they are: {known}"),
+            ),
+        }
+    })
 }
 
 /// The start of a walk: the model's `[start]` with the components of `init` (a coordinate or a
@@ -189,11 +142,7 @@ pub fn check_init(spec: &Spec, init: &[(String, f64)]) -> Result<Vec<usize>, Arg
 /// # Errors
 /// As [`check_init`].
 pub fn start(model: &Model, init: &[(String, f64)]) -> Result<Vector, ArgError> {
-    let mut s = model.start_state();
-    for (i, (_, v)) in check_init(model.spec(), init)?.into_iter().zip(init) {
-        s[i] = *v;
-    }
-    Ok(s)
+    Ok(model.start_state_replacing(&check_init(model.spec(), init)?))
 }
 
 #[cfg(test)]

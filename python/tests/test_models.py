@@ -12,13 +12,17 @@ from conftest import MODELS
 COMPASS = MODELS / "compass-gait.toml"
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "the model derivation emits no impact_coulomb kernel (derive/src/model/kernels.rs), so "
-    "every impact with Coulomb friction ends in impact-jam at step 0 (the command line too)"))
-def test_the_compass_gait_on_coulomb_friction_with_a_coulomb_impact_walks():
+def test_the_compass_gait_on_coulomb_friction_with_a_coulomb_impact_walks_its_cycle():
+    # mu0 = 5: the foot never slips, in the stance or at the impact, and the walk is the
+    # frictionless-floor compass gait started on its 3 degree cycle ([start]).
     w = sw.simulate(model=COMPASS, friction="coulomb", impact="coulomb", set={"mu0": 5},
                     max_steps=5)
     assert w.status == "ok" and w.steps == 5
+    # the stuck impact stops the new stance foot: xd+ = zd+ = 0 to rounding
+    np.testing.assert_allclose(w.qd_plus[:, :2], 0.0, rtol=0, atol=1e-12)
+    # the start is the cycle to about 1e-7 (models/compass-gait.toml), which the stable
+    # cycle (multipliers of modulus 0.58 and 0.13) keeps: every period within 1e-6 of the first
+    np.testing.assert_allclose(w.T, w.T[0], rtol=0, atol=1e-6)
 
 
 def test_the_compass_gait_walks_with_its_own_state_names_and_sizes():

@@ -80,9 +80,8 @@ fn run_on(fig: Fig, tol: f64, on: &[f64], periodic: bool) -> Vec<Vec<SweepPoint>
                 |t_set, mu0| model("active-level", &[("mu0", mu0), ("T_set", t_set)]),
                 &cfg,
                 &grid,
-                |t_set| {
-                    model("active-level", &[("T_set", t_set)])
-                        .start_state_with("omega0", 0.8)
+                |m: &Model| {
+                    m.start_state_with("omega0", 0.8)
                         .expect("omega0 is a start parameter")
                 },
                 &limits,
@@ -98,7 +97,7 @@ fn run_on(fig: Fig, tol: f64, on: &[f64], periodic: bool) -> Vec<Vec<SweepPoint>
                 make,
                 &cfg,
                 &grid,
-                |phi| make(phi, 0.0).start_state(),
+                Model::start_state,
                 &limits,
                 false,
                 &|| {},

@@ -30,6 +30,7 @@ use walker::continuation::{
     Branch, ContinuationOptions, GaitProblem, LabelKind, MapValue, ProblemError, Stability,
     WalkerProblem, continuation,
 };
+use walker::model::Model;
 use walker::setup::Setup;
 use walker::sim::{SimConfig, WalkLimits};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
@@ -108,8 +109,7 @@ fn sweep(fig: Fig, periodic: bool) -> Vec<Vec<SweepPoint>> {
         make,
         &SimConfig::default(),
         &grid,
-        |c| {
-            let m = make(c, 0.0);
+        |m: &Model| {
             if matches!(fig, Fig::Fig8) {
                 m.start_state_with("omega0", 0.8)
                     .expect("omega0 is a start parameter")

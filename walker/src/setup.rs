@@ -12,7 +12,7 @@
 //! when the model file is one of the shipped ones, byte for byte; otherwise from a
 //! [`RuntimeSource`] the caller gives (the `walker-load` crate derives the file at run time).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use walker_scene::model::Model as ModelFile;
@@ -39,6 +39,10 @@ const BUILT_IN: [(&str, &str); 2] = [
     ),
 ];
 
+/// The longest scene or model file read (bytes): a scene is a few hundred bytes, the largest
+/// shipped model a dozen kilobytes.
+pub const MAX_FILE_BYTES: u64 = 1 << 20;
+
 /// Derives a model file that is not compiled in and gives its kernels (the `walker-load`
 /// crate's), or says why it cannot.
 pub type RuntimeSource = dyn Fn(&ModelFile) -> Result<Arc<dyn KernelSource>, String> + Sync;
@@ -46,6 +50,25 @@ pub type RuntimeSource = dyn Fn(&ModelFile) -> Result<Arc<dyn KernelSource>, Str
 /// Why a scene, a model file or a parameter set cannot be simulated.
 #[derive(Debug, thiserror::Error)]
 pub enum SetupError {
+    /// A scene or model file cannot be read, is not a regular file (a device or a pipe could
+    /// be read without end), or is longer than [`MAX_FILE_BYTES`].
+    #[error("{what} file {}: {message}", path.display())]
+    File {
+        /// `"scene"` or `"model"`.
+        what: &'static str,
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        message: String,
+    },
+    /// A start parameter (`omega0`) that the model does not have.
+    #[error("model `{model}` has no start parameter {name}")]
+    NoStartParameter {
+        /// The model.
+        model: String,
+        /// The parameter asked for.
+        name: String,
+    },
     /// The scene is neither a built-in name nor a `.toml` file.
     #[error("unknown scene {0:?}; use active-level, passive-slope or a FILE.toml")]
     UnknownScene(String),
@@ -104,6 +127,8 @@ impl SetupError {
         match self {
             SetupError::Param(e) => Some(e.name()),
             SetupError::NoRole { flag, .. } => Some(flag),
+            SetupError::File { what, .. } => Some(what),
+            SetupError::NoStartParameter { name, .. } => Some(name),
             _ => None,
         }
     }
@@ -185,13 +210,34 @@ fn compiled_by_file(path: &str) -> Option<&'static Compiled> {
     MODELS.iter().find(|c| c.name == stem)
 }
 
-/// A model file's text, read with a limit of `max_bytes`.
+/// Checks that the `what` file (`"scene"` or `"model"`) at `path` is a regular file of at most
+/// [`MAX_FILE_BYTES`].
+fn check_file(what: &'static str, path: &Path) -> Result<(), SetupError> {
+    let error = |message: String| SetupError::File {
+        what,
+        path: path.to_path_buf(),
+        message,
+    };
+    let meta = std::fs::metadata(path).map_err(|e| error(format!("cannot be read: {e}")))?;
+    if !meta.is_file() {
+        return Err(error("is not a regular file".to_owned()));
+    }
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(error(format!(
+            "has {} bytes; at most {MAX_FILE_BYTES}",
+            meta.len()
+        )));
+    }
+    Ok(())
+}
+
+/// A model file's text, checked by [`check_file`] first.
 fn read_model(path: &Path) -> Result<String, SetupError> {
-    std::fs::read_to_string(path).map_err(|source| {
-        SetupError::ModelScene(ModelSceneError::Read {
-            path: path.to_path_buf(),
-            source,
-        })
+    check_file("model", path)?;
+    std::fs::read_to_string(path).map_err(|e| SetupError::File {
+        what: "model",
+        path: path.to_path_buf(),
+        message: format!("cannot be read: {e}"),
     })
 }
 
@@ -250,6 +296,7 @@ impl Setup {
             Setup::built_in(scene)?
         } else if scene.ends_with(".toml") {
             let path = Path::new(scene);
+            check_file("scene", path)?;
             if is_model_scene(path) {
                 Setup::from_model_scene(ModelSceneFile::from_file(path)?, runtime)?
             } else {
@@ -407,6 +454,39 @@ impl Setup {
         Ok(())
     }
 
+    /// Sets the start parameter `name` (the paper's `omega0`: a parameter of stage `start`,
+    /// which only the model's `[start]` reads).
+    ///
+    /// # Errors
+    /// The model has no start parameter `name`, or `value` is out of its range.
+    pub fn set_start(&mut self, name: &str, value: f64) -> Result<(), SetupError> {
+        let spec = self.walker.spec();
+        let is_start = spec
+            .parameter(name)
+            .is_some_and(|i| spec.model.parameters[i].stage == walker_scene::model::Stage::Start);
+        if !is_start {
+            return Err(SetupError::NoStartParameter {
+                model: spec.name().to_owned(),
+                name: name.to_owned(),
+            });
+        }
+        self.set(name, value)
+    }
+
+    /// The parameter whose values a sweep chains without a request: `T_set` where the model
+    /// has one (the paper's active walker, Fig. 8), else its slope (the passive wheel, Fig. 10),
+    /// with its value here; `None` for a level walker without `T_set`.
+    #[must_use]
+    pub fn default_chain(&self) -> Option<(String, f64)> {
+        let spec = self.walker.spec();
+        let name = spec
+            .parameter("T_set")
+            .or(spec.slope)
+            .map(|i| spec.model.parameters[i].name.name.clone())?;
+        let value = self.params.get(&name)?;
+        Some((name, value))
+    }
+
     /// The model to simulate, with the setup's parameters.
     ///
     /// # Errors
@@ -453,6 +533,43 @@ mod tests {
             p.with("m1", -3.0),
             Err(SetupError::Param(ParamError::OutOfRange { ref name, .. })) if name == "m1"
         ));
+    }
+
+    #[test]
+    fn a_file_that_is_not_a_regular_file_is_named_as_scene_or_model() {
+        let dir = std::env::temp_dir();
+        let e = Setup::from_model_file(&dir, &Overrides::default(), None).expect_err("a dir");
+        assert!(matches!(e, SetupError::File { what: "model", .. }), "{e}");
+        assert!(e.to_string().contains("is not a regular file"), "{e}");
+        assert_eq!(e.param(), Some("model"));
+        let missing = dir.join("no-such-scene-here.toml");
+        let e = Setup::resolve(&missing.display().to_string(), &Overrides::default(), None)
+            .expect_err("missing");
+        assert!(matches!(e, SetupError::File { what: "scene", .. }), "{e}");
+        assert!(e.to_string().contains("cannot be read"), "{e}");
+    }
+
+    #[test]
+    fn only_a_start_parameter_is_set_as_one() {
+        let mut a = Setup::active_level().expect("active-level");
+        a.set_start("omega0", 0.9)
+            .expect("paper-active's start parameter");
+        assert_eq!(a.params.get("omega0"), Some(0.9));
+        // mu0 is a parameter, but of the dynamics.
+        let e = a.set_start("mu0", 0.5).expect_err("not a start parameter");
+        assert!(matches!(e, SetupError::NoStartParameter { ref name, .. } if name == "mu0"));
+        assert!(matches!(
+            a.set_start("omega0", f64::INFINITY),
+            Err(SetupError::Param(ParamError::OutOfRange { .. }))
+        ));
+    }
+
+    #[test]
+    fn a_sweep_chains_t_set_else_the_slope() {
+        let a = Setup::active_level().expect("active-level");
+        assert_eq!(a.default_chain(), Some(("T_set".to_owned(), 0.3)));
+        let p = Setup::passive_slope().expect("passive-slope");
+        assert_eq!(p.default_chain(), Some(("phi".to_owned(), 0.2)));
     }
 
     #[test]

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::model::Model;
-use crate::sim::{Failure, SimConfig, StepResult, WalkLimits, walk};
+use crate::sim::{Failure, SimConfig, StepResult, Walk, WalkLimits, walk};
 use crate::vector::Vector;
 
 /// The outcome of one value of a sweep.
@@ -61,25 +61,53 @@ fn point(value: f64, walk: crate::sim::Walk) -> SweepPoint {
     }
 }
 
-/// Procedure (P4a): each value continues from the previous steady post-impact state (from
-/// `initial` after a failure).
+/// Where a chain's next value starts (procedure P4a): the previous value's steady post-impact
+/// state moved to the origin; at the first value, after a failure, and for every value of a
+/// restarted sweep, the start of the value's own model (`initial(model)`: the model's `[start]`
+/// at that value's parameters, with a caller's replaced components).
+#[derive(Clone, Debug, Default)]
+pub struct Carry {
+    state: Option<Vector>,
+}
+
+impl Carry {
+    /// Walks `model` from where the chain stands and moves the chain on.
+    pub fn walk(
+        &mut self,
+        model: &Model,
+        cfg: &SimConfig,
+        limits: &WalkLimits,
+        restart: bool,
+        initial: &(dyn Fn(&Model) -> Vector + Sync),
+    ) -> Walk {
+        let start = match self.state {
+            Some(s) if !restart => s,
+            _ => initial(model),
+        };
+        let w = walk(model, cfg, &start, limits);
+        self.state = match (&w.failure, w.last_state()) {
+            (None, Some(s)) => Some(moved_to_origin(s)),
+            _ => None,
+        };
+        w
+    }
+}
+
+/// Procedure (P4a): each value continues from the previous steady post-impact state (see
+/// [`Carry`]).
 fn continuation(
     make: impl Fn(f64) -> Model,
     cfg: &SimConfig,
     grid: &[f64],
-    initial: Vector,
+    initial: &(dyn Fn(&Model) -> Vector + Sync),
     limits: &WalkLimits,
     progress: &(dyn Fn() + Sync),
 ) -> Vec<SweepPoint> {
+    let mut carry = Carry::default();
     let mut out = Vec::with_capacity(grid.len());
-    let mut state = initial;
-    for &mu0 in grid {
-        let w = walk(&make(mu0), cfg, &state, limits);
-        state = match (&w.failure, w.last_state()) {
-            (None, Some(s)) => moved_to_origin(s),
-            _ => initial,
-        };
-        out.push(point(mu0, w));
+    for &value in grid {
+        let w = carry.walk(&make(value), cfg, limits, false, initial);
+        out.push(point(value, w));
         progress();
     }
     out
@@ -87,8 +115,9 @@ fn continuation(
 
 /// Several independent sweeps (one per entry of `chains`, for example one per `T_set`), run in
 /// parallel; `make(chain, value)` is the model of a point (the caller checks beforehand that
-/// every point's model can be built: see [`crate::setup::Setup::model_with`]); `progress` is
-/// called once per finished point (from any thread).
+/// every point's model can be built: see [`crate::setup::Setup::model_with`]), `initial(model)`
+/// a point's start where it does not continue (see [`Carry`]); `progress` is called once per
+/// finished point (from any thread).
 ///
 /// With `restart`, every `(chain, mu0)` point is independent and all of them share the rayon
 /// pool. Without, each chain is sequential (every `mu0` starts from the previous steady state),
@@ -101,7 +130,7 @@ pub fn sweep_chains<F>(
     make: F,
     cfg: &SimConfig,
     grid: &[f64],
-    initial: impl Fn(f64) -> Vector + Sync,
+    initial: impl Fn(&Model) -> Vector + Sync,
     limits: &WalkLimits,
     restart: bool,
     progress: &(dyn Fn() + Sync),
@@ -120,7 +149,8 @@ where
         let flat: Vec<SweepPoint> = pairs
             .par_iter()
             .map(|&(c, mu0)| {
-                let p = point(mu0, walk(&make(c, mu0), cfg, &initial(c), limits));
+                let model = make(c, mu0);
+                let p = point(mu0, walk(&model, cfg, &initial(&model), limits));
                 progress();
                 p
             })
@@ -136,7 +166,7 @@ where
             .iter()
             .map(|&c| {
                 scope.spawn(move || {
-                    continuation(|mu0| make(c, mu0), cfg, grid, initial(c), limits, progress)
+                    continuation(|mu0| make(c, mu0), cfg, grid, initial, limits, progress)
                 })
             })
             .collect();
@@ -145,4 +175,77 @@ where
             .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
             .collect()
     })
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used, reason = "tests")]
+mod tests {
+    use std::sync::Mutex;
+
+    use super::*;
+    use crate::setup::Setup;
+
+    /// A point that does not continue starts from its own model's start: the compass gait's
+    /// `[start]` puts the swing foot on the slope (`th_sw = 2 phi - th_st`), so a chain over
+    /// `phi` must not start every chain from one slope's start.
+    #[test]
+    fn every_chain_starts_from_its_own_models_start() {
+        let text = include_str!("../../models/compass-gait.toml");
+        let file = walker_scene::model::Model::from_toml(text, "compass-gait.toml").unwrap();
+        let walker = crate::setup::walker_of(file, text, None).unwrap();
+        let setup = Setup {
+            params: walker.defaults(),
+            walker,
+            name: "compass-gait".into(),
+            friction: walker_scene::Friction::Coulomb,
+            impact: walker_scene::ImpactLaw::Frictionless,
+            fixed: Vec::new(),
+        };
+        let make = |phi: f64, mu0: f64| {
+            let p = setup
+                .params
+                .with("phi", phi)
+                .and_then(|p| p.with("mu0", mu0));
+            setup.model_with(&p.unwrap()).unwrap()
+        };
+        let limits = WalkLimits {
+            max_steps: 1,
+            duration: f64::INFINITY,
+            record: false,
+            periodic: None,
+        };
+        let chains = [0.04, 0.06];
+        for restart in [false, true] {
+            let seen = Mutex::new(Vec::new());
+            let initial = |m: &Model| {
+                let s = m.start_state();
+                let phi = m.params().get("phi").unwrap();
+                seen.lock().unwrap().push((phi, s[2] + s[3]));
+                s
+            };
+            let cfg = SimConfig::default();
+            let res = sweep_chains(
+                &chains,
+                make,
+                &cfg,
+                &[5.0],
+                initial,
+                &limits,
+                restart,
+                &|| {},
+            );
+            // One step from each chain's start: both walk.
+            assert!(
+                res.iter()
+                    .all(|c| c[0].failure.is_none() && c[0].steps == 1)
+            );
+            let mut seen = seen.into_inner().unwrap();
+            seen.sort_by(|a, b| a.0.total_cmp(&b.0));
+            assert_eq!(seen.len(), 2);
+            for ((phi, feet), want) in seen.into_iter().zip(chains) {
+                assert_eq!(phi, want);
+                assert!((feet - 2.0 * want).abs() < 1e-15, "th_st + th_sw = {feet}");
+            }
+        }
+    }
 }

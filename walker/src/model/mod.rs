@@ -32,6 +32,6 @@ pub use impact::{ImpactResult, PostImpact};
 pub use kernels::{Args, KernelId, Kernels};
 pub use parameters::{ParamError, Parameters};
 pub use prepared::Model;
-pub use spec::{Spec, SpecError};
+pub use spec::{InitError, Spec, SpecError};
 pub use walker::{Compiled, KernelSource, NoKernels, Prepare, Variant, Walker};
 pub use walker_scene::{Friction, ImpactLaw};

@@ -639,6 +639,17 @@ impl Model {
         Ok(self.start_at(&self.params.with(name, value)?))
     }
 
+    /// The model's start with the components `(index, value)` replaced (from
+    /// [`Spec::start_components`]).
+    #[must_use]
+    pub fn start_state_replacing(&self, components: &[(usize, f64)]) -> Vector {
+        let mut s = self.start_state();
+        for &(i, v) in components {
+            s[i] = v;
+        }
+        s
+    }
+
     /// The parameters of the start (stage `start`: the paper's `omega0`), by name.
     pub fn start_parameters(&self) -> impl Iterator<Item = &str> {
         self.spec

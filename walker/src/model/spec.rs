@@ -32,6 +32,39 @@ pub enum SpecError {
     },
 }
 
+/// A component of the start, given by name (`--init NAME=VALUE`), that cannot be set.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum InitError {
+    /// The model has no coordinate or velocity of that name.
+    #[error("`{name}` is not a coordinate or velocity of model `{model}`; they are: {known}")]
+    Unknown {
+        /// The name given.
+        name: String,
+        /// The model's name.
+        model: String,
+        /// Its state's names, comma-separated.
+        known: String,
+    },
+    /// The value is not finite.
+    #[error("{name} = {value}: must be finite")]
+    NotFinite {
+        /// The component.
+        name: String,
+        /// The value given.
+        value: f64,
+    },
+}
+
+impl InitError {
+    /// The component the error is about.
+    #[must_use]
+    pub fn name(&self) -> &str {
+        match self {
+            InitError::Unknown { name, .. } | InitError::NotFinite { name, .. } => name,
+        }
+    }
+}
+
 /// A model file as the simulator reads it (shared by every [`super::Model`] built from it).
 #[derive(Debug)]
 pub struct Spec {
@@ -127,6 +160,30 @@ impl Spec {
     #[must_use]
     pub fn state_index(&self, name: &str) -> Option<usize> {
         self.state_names().iter().position(|s| s == name)
+    }
+
+    /// The components `(name, value)` of a start given by name, as indices in `[q, qd]` with
+    /// their values (apply them with [`super::Model::start_state_replacing`]).
+    ///
+    /// # Errors
+    /// A name that is not a coordinate or velocity, or a value that is not finite.
+    pub fn start_components(&self, init: &[(String, f64)]) -> Result<Vec<(usize, f64)>, InitError> {
+        init.iter()
+            .map(|(name, value)| {
+                let i = self.state_index(name).ok_or_else(|| InitError::Unknown {
+                    name: name.clone(),
+                    model: self.name().to_owned(),
+                    known: self.state_names().join(", "),
+                })?;
+                if !value.is_finite() {
+                    return Err(InitError::NotFinite {
+                        name: name.clone(),
+                        value: *value,
+                    });
+                }
+                Ok((i, *value))
+            })
+            .collect()
     }
 
     /// The names of the points, in the order of the `points` kernel.
