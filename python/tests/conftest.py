@@ -1,19 +1,62 @@
-"""Shared helpers of the Python tests: the command line's JSON outputs kept in ``data/``.
+"""Shared helpers of the Python tests: the command line's JSON outputs, made when a test asks.
 
-Each file in ``data/`` is the output of the ``walker`` command named in ``CLI_COMMANDS``, run
-from the repository root after ``cargo build --release -p walker-cli``; re-make them with
-``python/tests/make-cli-data.sh`` when the library's results change on purpose.
+``cli_json(name)`` runs the ``walker`` command named ``name`` in ``CLI_COMMANDS`` from the
+repository root (the binary built by ``cargo build -p walker-cli``, once per session) and
+returns its JSON: the module and the command line are compared on the same build of the
+library, never against outputs kept from an older one.
 """
 
+import functools
 import json
+import os
+import subprocess
 from pathlib import Path
 
-DATA = Path(__file__).parent / "data"
+ROOT = Path(__file__).resolve().parents[2]
 
-MODELS = Path(__file__).resolve().parents[2] / "models"
+MODELS = ROOT / "models"
 """The shipped model files (``models/*.toml`` of the repository)."""
+
+CLI_COMMANDS = {
+    "simulate_active": "simulate --scene active-level --mu0 0.4 --t-set 0.3 --omega0 0.8 "
+                       "--max-steps 5",
+    "simulate_fig14_fall": "simulate --scene passive-slope --mu0 0.19 --phi 0.10 --omega0 0.5 "
+                           "--max-steps 5",
+    "simulate_coulomb": "simulate --scene active-level --mu0 0.3 --impact coulomb "
+                        "--friction coulomb --max-steps 4",
+    "sweep_active": "sweep --scene active-level --mu0-from 0.1 --mu0-to 0.4 --mu0-step 0.1 "
+                    "--t-set 0.3 --t-set 0.4 --duration 5",
+    "sweep_passive_restart": "sweep --scene passive-slope --mu0-from 0.1 --mu0-to 0.3 "
+                             "--mu0-step 0.1 --phi 0.1 --restart --duration 5",
+    "fixed_point_active": "fixed-point --scene active-level --mu0 0.4",
+    "simulate_init": "simulate --scene active-level --init th1d=0.7 --init th2d=0.9 "
+                     "--max-steps 3",
+    "simulate_compass_gait": "simulate --model models/compass-gait.toml --friction coulomb "
+                             "--impact frictionless --max-steps 5",
+    "sweep_m2": "sweep --scene active-level --param m2 --from 0.8 --to 1.2 --step 0.2 "
+                "--t-set 0.3 --duration 3",
+    "fixed_point_compass_gait": "fixed-point --model models/compass-gait.toml "
+                                "--friction coulomb --impact frictionless",
+}
+"""The ``walker`` commands the module's results are compared with, by name."""
+
+
+@functools.cache
+def walker_binary() -> Path:
+    """The command line, built (or found up to date) by cargo in its default profile."""
+    subprocess.run(["cargo", "build", "--quiet", "-p", "walker-cli", "--bin", "walker"],
+                   cwd=ROOT, check=True)
+    target = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
+    return target / "debug" / "walker"
+
+
+@functools.cache
+def _cli_text(name: str) -> str:
+    run = subprocess.run([walker_binary(), *CLI_COMMANDS[name].split(), "--json"], cwd=ROOT,
+                         capture_output=True, text=True, check=True)
+    return run.stdout
 
 
 def cli_json(name: str):
-    """The command line's JSON output kept as ``data/<name>.json``."""
-    return json.loads((DATA / f"{name}.json").read_text())
+    """The JSON output of the ``walker`` command ``CLI_COMMANDS[name]``."""
+    return json.loads(_cli_text(name))
