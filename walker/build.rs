@@ -209,6 +209,7 @@ fn adapter(
 ) -> Result<String, String> {
     let mut arms = String::new();
     let mut has = Vec::new();
+    let mut stores = std::collections::BTreeMap::new();
     for k in &module.kernels {
         let args: Vec<String> = k
             .args
@@ -226,7 +227,9 @@ fn adapter(
             }
         };
         let _ = writeln!(arms, "            KernelId::{id} => {{ {store} }}");
+        stores.insert(k.name.clone(), store);
     }
+    let tracking = tracking(&stores, model.inputs.len());
     let fixed: Vec<String> = v.fixed.iter().map(|(n, x)| format!("{n} = {x}")).collect();
     Ok(format!(
         "/// `models/{model}.toml`, friction `{friction:?}`, fixed: {fixed}.\n\
@@ -240,7 +243,7 @@ fn adapter(
          #[allow(unreachable_patterns, reason = \"a kernel the variant does not have\")]\n\
          fn eval(&self, k: KernelId, a: &Args<'_>, out: &mut [f64]) {{\n\
          let p = &self.0;\n\
-         match k {{\n{arms}            _ => out.fill(f64::NAN),\n        }}\n    }}\n}}\n\
+         match k {{\n{arms}            _ => out.fill(f64::NAN),\n        }}\n    }}\n{tracking}}}\n\
          /// The kernels prepared for the run-time parameters by name.\n\
          pub fn prepare_kernels(value: &dyn Fn(&str) -> f64) -> std::sync::Arc<dyn Kernels> {{\n\
          std::sync::Arc::new(K(prepare(&Params::from_fn(|name| value(name)))))\n\
@@ -254,6 +257,39 @@ fn adapter(
         },
         has = has.join(" | "),
     ))
+}
+
+/// The adapter's `Kernels::tracking` for a model with `m > 0` inputs whose variant has the
+/// output and input rates and the closed loops (`stores`: each kernel's call storing into
+/// `out`): the same arithmetic as the trait's default, without its dispatch between the three
+/// calls; empty otherwise (the default).
+fn tracking(stores: &std::collections::BTreeMap<String, String>, m: usize) -> String {
+    let (Some(rates), Some(w)) = (stores.get("output_rates"), stores.get("input_rates")) else {
+        return String::new();
+    };
+    if m == 0 {
+        return String::new();
+    }
+    let arm = |kernel: &str| {
+        stores.get(kernel).map_or_else(String::new, |store| {
+            format!("            KernelId::{} => {{ {store} }}\n", camel(kernel))
+        })
+    };
+    format!(
+        "fn tracking(&self, k: KernelId, a: &Args<'_>, desired: &dyn Fn(usize) -> [f64; 3], gains: (f64, f64), out: &mut [f64], w: &mut [f64]) {{\n\
+         let p = &self.0;\n\
+         let mut r = [0.0; {two_m}];\n\
+         {{ let out = &mut r[..]; {rates} }}\n\
+         let mut v = [0.0; {m}];\n\
+         for i in 0..{m} {{ v[i] = crate::model::aux_input(desired(i), r[i], r[{m} + i], gains.0, gains.1); }}\n\
+         let a = &Args {{ v: &v, ..*a }};\n\
+         match k {{\n{cl}{cls}            _ => out.fill(f64::NAN),\n        }}\n\
+         {{ let out = w; {w} }}\n\
+         }}\n",
+        two_m = 2 * m,
+        cl = arm("closed_loop"),
+        cls = arm("closed_loop_stick"),
+    )
 }
 
 /// `closed_loop_stick` as `ClosedLoopStick`.

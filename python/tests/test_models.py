@@ -20,7 +20,7 @@ def test_the_compass_gait_on_coulomb_friction_with_a_coulomb_impact_walks_its_cy
     assert w.status == "ok" and w.steps == 5
     # the stuck impact stops the new stance foot: xd+ = zd+ = 0 to rounding
     np.testing.assert_allclose(w.qd_plus[:, :2], 0.0, rtol=0, atol=1e-12)
-    # the start is the cycle to about 1e-7 (models/compass-gait.toml), which the stable
+    # the start is the cycle to six digits (models/compass-gait.toml), which the stable
     # cycle (multipliers of modulus 0.58 and 0.13) keeps: every period within 1e-6 of the first
     np.testing.assert_allclose(w.T, w.T[0], rtol=0, atol=1e-6)
 

@@ -7,6 +7,9 @@
 //! auxiliary inputs), from which each implementation takes the ones its kernel reads; its
 //! outputs are written in the derivation's order, flattened row-major.
 
+use super::desired::aux_input;
+use crate::vector::MAX_COORDINATES;
+
 /// A model kernel (`docs/model-format.md`, "The kernels of a model").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum KernelId {
@@ -153,4 +156,41 @@ pub trait Kernels: Send + Sync {
     /// Evaluates kernel `k` at `args` into `out`, its outputs in the derivation's order
     /// (flattened row-major). A kernel the model does not have fills `out` with NaN.
     fn eval(&self, k: KernelId, args: &Args<'_>, out: &mut [f64]);
+
+    /// The controlled stance of a model with `m = w.len()` inputs, in one call: the outputs
+    /// and their rates `[y, ydot]` (`output_rates` at `args`), the auxiliary inputs
+    /// `v_i = ydd_d + K_D (yd_d - ydot_i) + K_P (y_d - y_i)` of Eq. 32 from `desired(i) =
+    /// [y_d, yd_d, ydd_d]` and `(K_P, K_D) = gains`, the closed loop `k` (`ClosedLoop` or
+    /// `ClosedLoopStick`) at those `v` into `out`, and the inputs' rates (`input_rates`) into
+    /// `w`.
+    ///
+    /// The default makes the three [`Kernels::eval`] calls; a compiled variant calls its
+    /// functions directly (the right-hand side of every actuated walk goes through here), with
+    /// the same arithmetic.
+    fn tracking(
+        &self,
+        k: KernelId,
+        args: &Args<'_>,
+        desired: &dyn Fn(usize) -> [f64; 3],
+        gains: (f64, f64),
+        out: &mut [f64],
+        w: &mut [f64],
+    ) {
+        let m = w.len();
+        let mut rates = [0.0; 2 * MAX_COORDINATES];
+        self.eval(KernelId::OutputRates, args, &mut rates[..2 * m]);
+        let mut v = [0.0; MAX_COORDINATES];
+        for (i, vi) in v[..m].iter_mut().enumerate() {
+            *vi = aux_input(desired(i), rates[i], rates[m + i], gains.0, gains.1);
+        }
+        self.eval(
+            k,
+            &Args {
+                v: &v[..m],
+                ..*args
+            },
+            out,
+        );
+        self.eval(KernelId::InputRates, args, w);
+    }
 }

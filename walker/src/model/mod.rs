@@ -7,8 +7,8 @@
 //! and `models/paper-passive.toml`.
 //!
 //! Files, imports one way: `spec.rs` (what the simulator reads from a model file),
-//! `parameters.rs` (values by name, checked against their ranges), `kernels.rs` (the kernel
-//! interface), `desired.rs` (the outputs' desired trajectories and Eq. 32), `contact.rs` (the
+//! `parameters.rs` (values by name, checked against their ranges), `desired.rs` (the outputs'
+//! desired trajectories and Eq. 32), `kernels.rs` (the kernel interface), `contact.rs` (the
 //! contact vocabulary), `friction_impact.rs` (the plastic impact with Coulomb friction at the
 //! striking foot), `impact.rs` (the impact's results), `prepared.rs` ([`Model`]), `walker.rs`
 //! ([`Walker`], [`KernelSource`], compiled variants).
@@ -31,7 +31,7 @@ pub use friction_impact::{
 pub use impact::{ImpactResult, PostImpact};
 pub use kernels::{Args, KernelId, Kernels};
 pub use parameters::{ParamError, Parameters};
-pub use prepared::Model;
+pub use prepared::{Model, power};
 pub use spec::{InitError, Spec, SpecError};
 pub use walker::{Compiled, KernelSource, NoKernels, Prepare, Variant, Walker};
 pub use walker_scene::{Friction, ImpactLaw};

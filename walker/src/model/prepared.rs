@@ -260,6 +260,20 @@ impl Model {
     /// whose ground forces follow the accelerations in `out`). The smooth law's kernels ignore
     /// `contact`; a Coulomb model given [`Contact::Smooth`] is treated as stuck.
     pub fn stance(&self, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
+        let mut w = [0.0; MAX_COORDINATES];
+        self.stance_and_rates(t, y, contact, out, &mut w[..self.inputs()]);
+    }
+
+    /// [`Model::stance`], and the inputs' rates `w = S^T qd` in `w` (`m` numbers: the power
+    /// `sum |u_i w_i|` the right-hand side integrates; empty for a passive walker).
+    pub fn stance_and_rates(
+        &self,
+        t: f64,
+        y: &[f64],
+        contact: Contact,
+        out: &mut [f64],
+        w: &mut [f64],
+    ) {
         let (n, m) = (self.n(), self.inputs());
         let (q, qd) = (&y[..n], &y[n..2 * n]);
         let stuck = self.friction == FrictionLaw::Coulomb && contact.sigma() == 0.0;
@@ -280,8 +294,6 @@ impl Model {
             );
             return;
         }
-        let mut v = [0.0; MAX_COORDINATES];
-        self.aux_inputs(t, y, &mut v[..m]);
         let (k, len) = if stuck {
             (KernelId::ClosedLoopStick, n + m + 2)
         } else {
@@ -289,10 +301,16 @@ impl Model {
         };
         let args = Args {
             sigma,
-            v: &v[..m],
             ..Args::state(q, qd)
         };
-        self.eval(k, args, &mut out[..len]);
+        self.kernels.tracking(
+            k,
+            &args,
+            &|i| self.desired(i, t),
+            self.gains,
+            &mut out[..len],
+            w,
+        );
     }
 
     /// The length a buffer for [`Model::stance`] needs: the accelerations, the inputs and the
@@ -325,24 +343,23 @@ impl Model {
         let mut w = [0.0; MAX_COORDINATES];
         let m = self.inputs();
         self.input_rates(y, &mut w[..m]);
-        let mut sum = 0.0;
-        for (wi, ui) in w[..m].iter().zip(u) {
-            sum += (wi * ui).abs();
-        }
-        sum
+        power(u, &w[..m])
     }
 
     /// The product of the inputs' powers `prod u_i w_i` at `(t, y)` in the contact `contact`:
     /// it changes sign where one of them does (a kink of the integrand `sum |u_i w_i|`).
     #[must_use]
     pub fn power_sign_function(&self, t: f64, y: &[f64], contact: Contact) -> f64 {
-        let u = self.control_input(t, y, contact);
+        let (n, m) = (self.n(), self.inputs());
+        if m == 0 {
+            return 1.0;
+        }
+        let mut out = [0.0; Model::STANCE_LEN];
         let mut w = [0.0; MAX_COORDINATES];
-        let m = self.inputs();
-        self.input_rates(y, &mut w[..m]);
+        self.stance_and_rates(t, y, contact, &mut out, &mut w[..m]);
         w[..m]
             .iter()
-            .zip(u.iter())
+            .zip(&out[n..n + m])
             .map(|(wi, ui)| wi * ui)
             .product()
     }
@@ -659,4 +676,14 @@ impl Model {
             .filter(|p| p.stage == Stage::Start)
             .map(|p| p.name.name.as_str())
     }
+}
+
+/// The integrand of the input power, `sum |u_i w_i|` over the inputs' values `u` and rates `w`.
+#[must_use]
+pub fn power(u: &[f64], w: &[f64]) -> f64 {
+    let mut sum = 0.0;
+    for (wi, ui) in w.iter().zip(u) {
+        sum += (wi * ui).abs();
+    }
+    sum
 }
