@@ -15,10 +15,10 @@ fn with_idle_coordinates(model: &str, idle: usize) -> String {
         .collect();
     // After the last coordinate: the first [[parameter]]; a section, if any, takes them free.
     let idle_names: String = (0..idle)
-        .map(|k| format!(", \"idle{k}\", \"idle{k}d\""))
+        .map(|k| format!("\"idle{k}\", \"idle{k}d\", "))
         .collect();
     text.replacen("[[parameter]]", &format!("{extra}[[parameter]]"), 1)
-        .replacen("\"th_swd\"]", &format!("\"th_swd\"{idle_names}]"), 1)
+        .replacen("\nfree = [", &format!("\nfree = [{idle_names}"), 1)
 }
 
 fn refusal(model: &str, idle: usize) -> String {

@@ -37,10 +37,17 @@ struct Closed {
     multiplier: f64,
 }
 
-/// The closed form for the physical parameters of `setup` on the slope `phi`.
+/// The closed form for the physical parameters of the paper's wheel `setup` on the slope
+/// `phi`.
 fn closed_form(setup: &Setup, phi: f64) -> Closed {
     let p = |name: &str| setup.params.get(name).unwrap();
     let (m, l, i1, g, alpha) = (p("m1") + p("m2"), p("l"), p("I1"), p("g"), p("alpha"));
+    rimless(m, l, i1, g, alpha, phi)
+}
+
+/// The closed form for a hub of mass `m` and inertia `i1`, spokes `l` at `alpha`, gravity `g`,
+/// slope `phi`.
+fn rimless(m: f64, l: f64, i1: f64, g: f64, alpha: f64, phi: f64) -> Closed {
     let j = i1 + m * l * l;
     let eta = (i1 + m * l * l * alpha.cos()) / j;
     let k = 2.0 * m * g * l / j;
@@ -121,6 +128,59 @@ fn the_held_passive_wheel_is_the_classic_rimless_wheel() {
             c.multiplier
         );
         assert!(fp.multipliers[1].modulus() < 1e-6, "{:?}", fp.multipliers);
+    }
+}
+
+/// `models/rimless-wheel.toml` (no torso: `I = m rg^2` about the hub) with its foot held.
+fn held_rimless_wheel(phi: f64) -> (Setup, walker::model::Model) {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/rimless-wheel.toml");
+    let ov = walker::setup::Overrides {
+        friction: Some(Friction::Coulomb),
+        impact: Some(ImpactLaw::Coulomb),
+        set: vec![("phi".into(), phi), ("mu0".into(), 3.0)],
+        ..walker::setup::Overrides::default()
+    };
+    let setup = Setup::from_model_file(&path, &ov, None).unwrap();
+    let model = setup.model().unwrap();
+    (setup, model)
+}
+
+#[test]
+fn the_rimless_wheel_model_walks_its_closed_form_gait() {
+    for phi in [0.05, 0.1, 0.2] {
+        let (setup, model) = held_rimless_wheel(phi);
+        let p = |name: &str| setup.params.get(name).unwrap();
+        let (m, rg) = (p("m"), p("rg"));
+        let c = rimless(m, p("l"), m * rg * rg, p("g"), p("alpha"), phi);
+        let cfg = SimConfig {
+            rtol: 1e-12,
+            atol: 1e-12,
+            ..SimConfig::default()
+        };
+        let fp = fixed_point(&model, &cfg, &FixedPointOptions::for_model(&model)).unwrap();
+        assert_eq!(fp.status, Status::Converged, "phi = {phi}: {fp:?}");
+        assert_eq!(fp.impact, ImpactRegime::Stick, "phi = {phi}");
+        // State [x, z, th, xd, zd, thd]; tolerances as for the paper's wheel above.
+        let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+        assert!(rel(fp.state_plus[5], c.w0) < 1e-9, "phi = {phi}: {fp:?}");
+        assert!(
+            rel(fp.period, c.period) < 1e-9,
+            "phi = {phi}: T {}",
+            fp.period
+        );
+        assert!(rel(fp.dx, c.dx) < 1e-12, "phi = {phi}: dx {}", fp.dx);
+        let lead = fp
+            .multipliers
+            .iter()
+            .max_by(|a, b| a.modulus().total_cmp(&b.modulus()))
+            .unwrap();
+        assert!(
+            lead.im == 0.0 && rel(lead.re, c.multiplier) < 1e-6,
+            "phi = {phi}: {:?} vs {}",
+            fp.multipliers,
+            c.multiplier
+        );
     }
 }
 
