@@ -1,14 +1,13 @@
 """Shared helpers of the Python tests: the command line's JSON outputs, made when a test asks.
 
 ``cli_json(name)`` runs the ``walker`` command named ``name`` in ``CLI_COMMANDS`` from the
-repository root (the binary built by ``cargo build -p walker-cli``, once per session) and
+repository root (the binary ``cargo test --workspace`` builds, found once per session) and
 returns its JSON: the module and the command line are compared on the same build of the
 library, never against outputs kept from an older one.
 """
 
 import functools
 import json
-import os
 import subprocess
 from pathlib import Path
 
@@ -43,11 +42,21 @@ CLI_COMMANDS = {
 
 @functools.cache
 def walker_binary() -> Path:
-    """The command line, built (or found up to date) by cargo in its default profile."""
-    subprocess.run(["cargo", "build", "--quiet", "-p", "walker-cli", "--bin", "walker"],
-                   cwd=ROOT, check=True)
-    target = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
-    return target / "debug" / "walker"
+    """The command line as ``cargo test --workspace`` builds it (for the CLI's own tests), found
+    through cargo's build messages: after ``cargo test`` this builds nothing (what ``.ci/run``
+    does), and on its own it builds what the Rust tests would."""
+    run = subprocess.run(["cargo", "test", "--workspace", "--no-run", "--quiet",
+                          "--message-format=json"], cwd=ROOT, check=True, capture_output=True,
+                         text=True)
+    for line in run.stdout.splitlines():
+        msg = json.loads(line)
+        target = msg.get("target", {})
+        # the program itself, not its unit tests' harness (also a `bin` artifact)
+        if (msg.get("reason") == "compiler-artifact" and target.get("name") == "walker"
+                and "bin" in target.get("kind", []) and msg.get("executable")
+                and not msg.get("profile", {}).get("test")):
+            return Path(msg["executable"])
+    raise RuntimeError("cargo built no `walker` binary")
 
 
 @functools.cache
