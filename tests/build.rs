@@ -48,25 +48,14 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             .checked(false);
         let module = config.module()?;
         std::fs::write(out.join(format!("model_{ident}.rs")), config.render()?)?;
-        let (arms, outputs) = adapter(&module);
-        let _ = write!(
-            modules,
-            "/// The kernels of `models/{name}.toml` (generated with Coulomb friction).\n\
-             #[allow(clippy::all, clippy::pedantic, missing_docs, reason = \"generated\")]\n\
-             pub mod {ident} {{\n\
-             include!(concat!(env!(\"OUT_DIR\"), \"/model_{ident}.rs\"));\n\
-             /// Calls kernel `kernel` with parameters and arguments by name; `None` for a \
-             kernel the model does not have.\n\
-             pub fn call(kernel: &str, param: &dyn Fn(&str) -> f64, arg: &dyn Fn(&str) -> f64) \
-             -> Option<Vec<f64>> {{\n\
-             let p = prepare(&Params::from_fn(|n| param(n)));\n\
-             Some(match kernel {{\n{arms}        _ => return None,\n    }})\n}}\n\
-             /// Every kernel and its output names.\n\
-             pub const KERNELS: &[(&str, &[&str])] = &[\n{outputs}];\n}}\n"
-        );
-        let _ = writeln!(
-            index,
-            "    GeneratedModel {{ name: \"{name}\", call: {ident}::call, kernels: {ident}::KERNELS }},"
+        let doc = format!("The kernels of `models/{name}.toml` (generated with Coulomb friction).");
+        entry(
+            &mut modules,
+            &mut index,
+            (&name, &ident),
+            &doc,
+            &format!("model_{ident}.rs"),
+            &module,
         );
     }
     index.push_str("];\n");
@@ -107,30 +96,53 @@ fn scenes(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
         let ident = name.replace('-', "_");
         let source = walker_gen::emit(&module, &config.options())?;
         std::fs::write(out.join(format!("scene_{ident}.rs")), source)?;
-        let (arms, outputs) = adapter(&module);
-        let _ = write!(
-            modules,
-            "/// The kernels of `walker/scenes/{name}.toml`, generated from the hand derivation.\n\
-             #[allow(clippy::all, clippy::pedantic, missing_docs, reason = \"generated\")]\n\
-             pub mod {ident} {{\n\
-             include!(concat!(env!(\"OUT_DIR\"), \"/scene_{ident}.rs\"));\n\
-             /// Calls kernel `kernel` with parameters and arguments by name; `None` for a \
-             kernel the scene does not have.\n\
-             pub fn call(kernel: &str, param: &dyn Fn(&str) -> f64, arg: &dyn Fn(&str) -> f64) \
-             -> Option<Vec<f64>> {{\n\
-             let p = prepare(&Params::from_fn(|n| param(n)));\n\
-             Some(match kernel {{\n{arms}        _ => return None,\n    }})\n}}\n\
-             /// Every kernel and its output names.\n\
-             pub const KERNELS: &[(&str, &[&str])] = &[\n{outputs}];\n}}\n"
+        let doc = format!(
+            "The kernels of `walker/scenes/{name}.toml`, generated from the hand derivation."
         );
-        let _ = writeln!(
-            index,
-            "    GeneratedModel {{ name: \"{name}\", call: {ident}::call, kernels: {ident}::KERNELS }},"
+        entry(
+            &mut modules,
+            &mut index,
+            (name, &ident),
+            &doc,
+            &format!("scene_{ident}.rs"),
+            &module,
         );
     }
     index.push_str("];\n");
     std::fs::write(out.join("scenes.rs"), modules + &index)?;
     Ok(())
+}
+
+/// Appends to `modules` the module `ident` (documented by `doc`) that includes the generated
+/// `file` and calls its kernels by name, and to `index` its `GeneratedModel` entry.
+fn entry(
+    modules: &mut String,
+    index: &mut String,
+    (name, ident): (&str, &str),
+    doc: &str,
+    file: &str,
+    module: &walker_gen::Module,
+) {
+    let (arms, outputs) = adapter(module);
+    let _ = write!(
+        modules,
+        "/// {doc}\n\
+         #[allow(clippy::all, clippy::pedantic, missing_docs, reason = \"generated\")]\n\
+         pub mod {ident} {{\n\
+         include!(concat!(env!(\"OUT_DIR\"), \"/{file}\"));\n\
+         /// Calls kernel `kernel` with parameters and arguments by name; `None` for a \
+         kernel it does not have.\n\
+         pub fn call(kernel: &str, param: &dyn Fn(&str) -> f64, arg: &dyn Fn(&str) -> f64) \
+         -> Option<Vec<f64>> {{\n\
+         let p = prepare(&Params::from_fn(|n| param(n)));\n\
+         Some(match kernel {{\n{arms}        _ => return None,\n    }})\n}}\n\
+         /// Every kernel and its output names.\n\
+         pub const KERNELS: &[(&str, &[&str])] = &[\n{outputs}];\n}}\n"
+    );
+    let _ = writeln!(
+        index,
+        "    GeneratedModel {{ name: \"{name}\", call: {ident}::call, kernels: {ident}::KERNELS }},"
+    );
 }
 
 /// The match arms that call each kernel of `module` by name, and its `KERNELS` entries.

@@ -41,13 +41,7 @@ impl ModelScene {
     /// The model with nothing fixed beyond its generation-stage parameters, and its first
     /// friction law other than `none` (or `none`).
     pub fn new(model: Model) -> ModelScene {
-        let friction = model
-            .stance
-            .friction
-            .iter()
-            .copied()
-            .find(|f| *f != Friction::None)
-            .unwrap_or(Friction::None);
+        let friction = model.stance.default_friction();
         ModelScene {
             model,
             fixed: BTreeMap::new(),

@@ -321,13 +321,7 @@ impl Setup {
     ) -> Result<Setup, SetupError> {
         let text = read_model(path)?;
         let model = ModelFile::from_toml(&text, &path.display().to_string())?;
-        let friction = model
-            .stance
-            .friction
-            .iter()
-            .copied()
-            .find(|f| *f != Friction::None)
-            .unwrap_or(Friction::None);
+        let friction = model.stance.default_friction();
         let impact = model.impact.law;
         let name = model.name.clone();
         let walker = walker_of(model, &text, runtime)?;
@@ -348,15 +342,9 @@ impl Setup {
         file: ModelSceneFile,
         runtime: Option<&RuntimeSource>,
     ) -> Result<Setup, SetupError> {
-        let friction = file.friction.unwrap_or_else(|| {
-            file.model
-                .stance
-                .friction
-                .iter()
-                .copied()
-                .find(|f| *f != Friction::None)
-                .unwrap_or(Friction::None)
-        });
+        let friction = file
+            .friction
+            .unwrap_or_else(|| file.model.stance.default_friction());
         let impact = file.impact.unwrap_or(file.model.impact.law);
         let name = file.name.clone().unwrap_or_else(|| file.model.name.clone());
         let walker = walker_of(file.model, &file.model_text, runtime)?;

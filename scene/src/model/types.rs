@@ -159,6 +159,19 @@ pub struct Stance {
     pub c: Option<Name>,
 }
 
+impl Stance {
+    /// The friction law a model runs by default: its first law other than `none` (`none` when
+    /// it lists no other).
+    #[must_use]
+    pub fn default_friction(&self) -> Friction {
+        self.friction
+            .iter()
+            .copied()
+            .find(|f| *f != Friction::None)
+            .unwrap_or(Friction::None)
+    }
+}
+
 /// The strike (`[strike]`).
 #[derive(Clone, Debug)]
 pub struct Strike {
