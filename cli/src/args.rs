@@ -324,6 +324,13 @@ pub enum Command {
         #[arg(long, default_value = "reproduce-out")]
         out: PathBuf,
     },
+    /// The shipped walkers on a slippery floor as mu0 falls: where they walk, how they fail
+    /// and why (figures, CSV data and checked claims).
+    Gallery {
+        /// Output directory.
+        #[arg(long, default_value = "gallery-out")]
+        out: PathBuf,
+    },
 }
 
 #[cfg(test)]

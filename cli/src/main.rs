@@ -1,5 +1,6 @@
 //! `walker`: simulate any model file's walker (the paper's walkers are built in), sweep its
-//! parameters, find and follow its limit cycles, and reproduce the paper's figures. The arguments are defined in [`walker_cli::args`]; this file dispatches
+//! parameters, find and follow its limit cycles, reproduce the paper's figures, and draw the gallery of the shipped
+//! walkers on a slippery floor. The arguments are defined in [`walker_cli::args`]; this file dispatches
 //! the commands and maps their errors to exit codes.
 //!
 //! Exit codes: 0 success (also for a walk that ends in a failure: that is a result), 2 invalid
@@ -12,7 +13,7 @@ use clap::Parser;
 use walker::sim::WalkLimits;
 use walker_cli::args::{Cli, Command, WalkFlags};
 use walker_cli::input::{InputError, duration as positive_duration, tolerance};
-use walker_cli::{animate, continue_cmd, report, reproduce, run};
+use walker_cli::{animate, continue_cmd, gallery, report, reproduce, run};
 
 /// Why a command did not finish, and its exit code.
 #[derive(Debug, thiserror::Error)]
@@ -265,6 +266,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
         }
         Command::Reproduce { out } => {
             let summary = reproduce::run(&out)?;
+            emit(&summary)?;
+        }
+        Command::Gallery { out } => {
+            let summary = gallery::run(&out)?;
             emit(&summary)?;
         }
     }

@@ -12,12 +12,16 @@ use super::data::Data;
 use super::error::WriteError;
 
 /// Write `contents` to `path`.
-fn write(path: &Path, contents: String) -> Result<(), WriteError> {
+///
+/// # Errors
+/// The file could not be written.
+pub fn write(path: &Path, contents: String) -> Result<(), WriteError> {
     fs::write(path, contents).map_err(WriteError::file(path))
 }
 
 /// A finite value in scientific notation with 12 digits, else an empty cell.
-fn fmt(v: Option<f64>) -> String {
+#[must_use]
+pub fn fmt(v: Option<f64>) -> String {
     v.filter(|x| x.is_finite())
         .map_or_else(String::new, |x| format!("{x:.12e}"))
 }

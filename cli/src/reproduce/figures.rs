@@ -23,6 +23,8 @@ pub fn fig(title: &str, x: &str, y: &str, series: Vec<Series>, markers: bool) ->
         series,
         markers,
         equal_axes: false,
+        legend: None,
+        y_range: None,
     }
 }
 

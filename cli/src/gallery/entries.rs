@@ -1,0 +1,81 @@
+//! The walkers of the gallery: each a shipped model (compiled into the `walker` library, so the
+//! job reads no file) and the slopes its sweeps chain over. Adding a shipped model to the
+//! gallery is one line of [`ENTRIES`]; it gets the claims every model gets
+//! ([`super::generic`]), and those of its own where [`super::summary`] names a module for it.
+
+use walker::compiled::MODELS;
+use walker::model::{Friction, ImpactLaw};
+use walker::setup::{Setup, walker_of};
+
+use crate::reproduce::WriteError;
+
+/// One walker of the gallery.
+#[derive(Clone, Copy, Debug)]
+pub struct Entry {
+    /// The shipped model's name (its file is `models/<name>.toml`).
+    pub model: &'static str,
+    /// Its name in the text (`compass gait`).
+    pub title: &'static str,
+    /// The slopes (rad) of the sweep's chains; empty, or a level walker: one chain at the
+    /// model's own floor.
+    pub slopes: &'static [f64],
+}
+
+impl Entry {
+    /// The model `model`, called `title` in the text, on the slopes `slopes`.
+    #[must_use]
+    pub const fn new(model: &'static str, title: &'static str, slopes: &'static [f64]) -> Entry {
+        Entry {
+            model,
+            title,
+            slopes,
+        }
+    }
+
+    /// The model file's path in the repository, for the text.
+    #[must_use]
+    pub fn path(&self) -> String {
+        format!("models/{}.toml", self.model)
+    }
+
+    /// The model as a scene of its own, its parameters at their defaults, under exact Coulomb
+    /// friction in stance and at the impact (each sweep sets its laws).
+    ///
+    /// # Errors
+    /// The model is not compiled in, or its file does not load (a defect of the shipped files).
+    pub fn setup(&self) -> Result<Setup, WriteError> {
+        let err = |e: &dyn std::fmt::Display| WriteError::Setup(format!("{}: {e}", self.model));
+        let c = MODELS
+            .iter()
+            .find(|c| c.name == self.model)
+            .ok_or_else(|| err(&"not a compiled model"))?;
+        let file =
+            walker_scene::model::Model::from_toml(c.source, &self.path()).map_err(|e| err(&e))?;
+        let walker = walker_of(file, c.source, None).map_err(|e| err(&e))?;
+        Ok(Setup {
+            params: walker.defaults(),
+            walker,
+            name: self.model.to_owned(),
+            friction: Friction::Coulomb,
+            impact: ImpactLaw::Coulomb,
+            fixed: Vec::new(),
+        })
+    }
+}
+
+/// Degrees to radians.
+const fn deg(d: f64) -> f64 {
+    d * std::f64::consts::PI / 180.0
+}
+
+/// The gallery's walkers, in the order of the summary. (`models/three-link.toml` does not walk
+/// today and is left out; `Entry::new("three-link", "three-link biped", &[])` adds it,
+/// with the generic claims.)
+pub const ENTRIES: &[Entry] = &[
+    Entry::new("rimless-wheel", "rimless wheel", &[0.10, 0.15, 0.20]),
+    Entry::new(
+        "compass-gait",
+        "compass gait",
+        &[deg(2.0), deg(3.0), deg(4.0)],
+    ),
+];
