@@ -276,12 +276,12 @@ fn tracking(stores: &std::collections::BTreeMap<String, String>, m: usize) -> St
         })
     };
     format!(
-        "fn tracking(&self, k: KernelId, a: &Args<'_>, desired: &dyn Fn(usize) -> [f64; 3], gains: (f64, f64), out: &mut [f64], w: &mut [f64]) {{\n\
+        "fn tracking(&self, k: KernelId, a: &Args<'_>, control: &crate::model::Tracking<'_>, out: &mut [f64], w: &mut [f64]) {{\n\
          let p = &self.0;\n\
          let mut r = [0.0; {two_m}];\n\
          {{ let out = &mut r[..]; {rates} }}\n\
          let mut v = [0.0; {m}];\n\
-         for i in 0..{m} {{ v[i] = crate::model::aux_input(desired(i), r[i], r[{m} + i], gains.0, gains.1); }}\n\
+         for i in 0..{m} {{ v[i] = control.aux_input(i, r[i], r[{m} + i]); }}\n\
          let a = &Args {{ v: &v, ..*a }};\n\
          match k {{\n{cl}{cls}            _ => out.fill(f64::NAN),\n        }}\n\
          {{ let out = w; {w} }}\n\

@@ -32,6 +32,7 @@ impl Desired {
     }
 
     /// `[y_d, yd_d, ydd_d]` at time `t` since the last impact.
+    #[inline]
     #[must_use]
     pub fn at(&self, t: f64) -> [f64; 3] {
         match self {
@@ -93,6 +94,7 @@ impl Ramp {
     /// `a = to - from`, `y_d = a s^3 (10 - 15 s + 6 s^2) + from`,
     /// `yd_d = (30 a / duration) s^2 (1 - s)^2`,
     /// `ydd_d = (60 a / duration^2) s (1 - s) (1 - 2 s)`; `[to, 0, 0]` from `duration` on.
+    #[inline]
     #[must_use]
     pub fn at(&self, t: f64) -> [f64; 3] {
         if t >= self.duration {
@@ -109,6 +111,7 @@ impl Ramp {
 }
 
 /// The auxiliary input `v = ydd_d + K_D (yd_d - ydot) + K_P (y_d - y)` (Eq. 32).
+#[inline]
 #[must_use]
 pub fn aux_input(desired: [f64; 3], y: f64, ydot: f64, k_p: f64, k_d: f64) -> f64 {
     desired[2] + k_d * (desired[1] - ydot) + k_p * (desired[0] - y)

@@ -7,7 +7,7 @@
 //! auxiliary inputs), from which each implementation takes the ones its kernel reads; its
 //! outputs are written in the derivation's order, flattened row-major.
 
-use super::desired::aux_input;
+use super::desired::{Desired, aux_input};
 use crate::vector::MAX_COORDINATES;
 
 /// A model kernel (`docs/model-format.md`, "The kernels of a model").
@@ -147,6 +147,34 @@ impl<'a> Args<'a> {
     }
 }
 
+/// What the output-following control tracks at one instant (Eq. 32): the desired trajectories
+/// (one per output), the time since the last impact and the gains.
+#[derive(Clone, Copy, Debug)]
+pub struct Tracking<'a> {
+    /// The desired trajectories `y_d`, in output order.
+    pub desired: &'a [Desired],
+    /// The time `t` since the last impact.
+    pub t: f64,
+    /// The gains `(K_P, K_D)`.
+    pub gains: (f64, f64),
+}
+
+impl Tracking<'_> {
+    /// The auxiliary input `v_i` of output `i` at its value `y` and rate `ydot`:
+    /// `ydd_d + K_D (yd_d - ydot) + K_P (y_d - y)` with `[y_d, yd_d, ydd_d] = desired[i](t)`.
+    #[inline]
+    #[must_use]
+    pub fn aux_input(&self, i: usize, y: f64, ydot: f64) -> f64 {
+        aux_input(
+            self.desired[i].at(self.t),
+            y,
+            ydot,
+            self.gains.0,
+            self.gains.1,
+        )
+    }
+}
+
 /// A model's kernels, prepared for one set of run-time parameters.
 pub trait Kernels: Send + Sync {
     /// Whether the model has kernel `k` (the control kernels need inputs, `impact_double` the
@@ -159,8 +187,8 @@ pub trait Kernels: Send + Sync {
 
     /// The controlled stance of a model with `m = w.len()` inputs, in one call: the outputs
     /// and their rates `[y, ydot]` (`output_rates` at `args`), the auxiliary inputs
-    /// `v_i = ydd_d + K_D (yd_d - ydot_i) + K_P (y_d - y_i)` of Eq. 32 from `desired(i) =
-    /// [y_d, yd_d, ydd_d]` and `(K_P, K_D) = gains`, the closed loop `k` (`ClosedLoop` or
+    /// `v_i = ydd_d + K_D (yd_d - ydot_i) + K_P (y_d - y_i)` of Eq. 32 from `control`
+    /// ([`Tracking::aux_input`]), the closed loop `k` (`ClosedLoop` or
     /// `ClosedLoopStick`) at those `v` into `out`, and the inputs' rates (`input_rates`) into
     /// `w`.
     ///
@@ -171,8 +199,7 @@ pub trait Kernels: Send + Sync {
         &self,
         k: KernelId,
         args: &Args<'_>,
-        desired: &dyn Fn(usize) -> [f64; 3],
-        gains: (f64, f64),
+        control: &Tracking<'_>,
         out: &mut [f64],
         w: &mut [f64],
     ) {
@@ -181,7 +208,7 @@ pub trait Kernels: Send + Sync {
         self.eval(KernelId::OutputRates, args, &mut rates[..2 * m]);
         let mut v = [0.0; MAX_COORDINATES];
         for (i, vi) in v[..m].iter_mut().enumerate() {
-            *vi = aux_input(desired(i), rates[i], rates[m + i], gains.0, gains.1);
+            *vi = control.aux_input(i, rates[i], rates[m + i]);
         }
         self.eval(
             k,

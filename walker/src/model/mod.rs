@@ -29,7 +29,7 @@ pub use friction_impact::{
     ImpactJam, ImpactRegime, Ingredients, in_regime, plastic_coulomb, rear_test,
 };
 pub use impact::{ImpactResult, PostImpact};
-pub use kernels::{Args, KernelId, Kernels};
+pub use kernels::{Args, KernelId, Kernels, Tracking};
 pub use parameters::{ParamError, Parameters};
 pub use prepared::{Model, power};
 pub use spec::{InitError, Spec, SpecError};

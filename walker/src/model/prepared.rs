@@ -14,7 +14,7 @@ use super::contact::{Contact, FrictionLaw, Reaction};
 use super::desired::{Desired, aux_input};
 use super::friction_impact::{ImpactJam, ImpactRegime, Ingredients, plastic_coulomb, rear_test};
 use super::impact::{ImpactResult, PostImpact};
-use super::kernels::{Args, KernelId, Kernels};
+use super::kernels::{Args, KernelId, Kernels, Tracking};
 use super::parameters::{ParamError, Parameters};
 use super::spec::Spec;
 use crate::vector::{MAX_COORDINATES, MAX_LEN, Vector};
@@ -306,8 +306,11 @@ impl Model {
         self.kernels.tracking(
             k,
             &args,
-            &|i| self.desired(i, t),
-            self.gains,
+            &Tracking {
+                desired: &self.desired,
+                t,
+                gains: self.gains,
+            },
             &mut out[..len],
             w,
         );

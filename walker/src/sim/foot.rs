@@ -2,7 +2,7 @@
 //! function (remembered where several users ask about the same point), and the choice of
 //! contact where a foot starts a stance phase or comes to rest under Coulomb friction.
 
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 
 use crate::model::{Contact, FrictionLaw, Model, Reaction, Slide};
 use crate::vector::Vector;
@@ -23,7 +23,21 @@ pub fn ground_reaction(model: &Model, t: f64, y: &[f64], contact: Contact) -> Re
 }
 
 /// A remembered value of a function of `(t, mechanical state, contact)`.
-type Memo<T> = Option<(f64, Vector, Contact, T)>;
+#[derive(Clone, Copy, Debug)]
+struct Memo<T> {
+    t: f64,
+    state: Vector,
+    contact: Contact,
+    value: T,
+}
+
+impl<T: Copy> Memo<T> {
+    /// The value remembered for `(t, y, contact)`, if it is this point (compared in place:
+    /// the memo is asked at every guard check, and copying it out costs more than the look).
+    fn at<const S: usize>(&self, t: f64, y: &[f64; S], contact: Contact) -> Option<T> {
+        (self.t == t && self.contact == contact && *self.state == y[..S - 1]).then_some(self.value)
+    }
+}
 
 /// The stance foot during one stance phase: the model, the current contact (it changes only
 /// between integration segments, at stick-slip transitions), and remembered values of what
@@ -33,10 +47,10 @@ pub(super) struct Foot<'a> {
     pub(super) model: &'a Model,
     contact: Cell<Contact>,
     /// The last ground reaction: the lift-off, blow-up and slip guards share it.
-    reaction: Cell<Memo<Reaction>>,
+    reaction: RefCell<Option<Memo<Reaction>>>,
     /// The last two values of the power's sign function (a step's start is the previous
     /// step's end, and the error test and the kink guard ask about the same ends).
-    power: Cell<[Memo<f64>; 2]>,
+    power: RefCell<[Option<Memo<f64>>; 2]>,
 }
 
 impl<'a> Foot<'a> {
@@ -45,8 +59,8 @@ impl<'a> Foot<'a> {
         Self {
             model,
             contact: Cell::new(contact),
-            reaction: Cell::new(None),
-            power: Cell::new([None; 2]),
+            reaction: RefCell::new(None),
+            power: RefCell::new([None; 2]),
         }
     }
 
@@ -62,33 +76,47 @@ impl<'a> Foot<'a> {
 
     /// The ground reaction at `(t, y)` in the current contact (remembered for one point).
     pub(super) fn reaction<const S: usize>(&self, t: f64, y: &[f64; S]) -> Reaction {
-        let (s, c) = (mech(y), self.contact());
-        if let Some((tm, sm, cm, r)) = self.reaction.get()
-            && (tm, sm, cm) == (t, s, c)
+        let contact = self.contact();
+        if let Some(r) = self
+            .reaction
+            .borrow()
+            .as_ref()
+            .and_then(|m| m.at(t, y, contact))
         {
             return r;
         }
-        let r = ground_reaction(self.model, t, y, c);
-        self.reaction.set(Some((t, s, c, r)));
-        r
+        let value = ground_reaction(self.model, t, y, contact);
+        *self.reaction.borrow_mut() = Some(Memo {
+            t,
+            state: mech(y),
+            contact,
+            value,
+        });
+        value
     }
 
     /// The power's sign function `prod u_i w_i` at `(t, y)` in the current contact (remembered
     /// for two points).
     pub(super) fn power<const S: usize>(&self, t: f64, y: &[f64; S]) -> f64 {
-        let (s, c) = (mech(y), self.contact());
-        let mut memo = self.power.get();
-        if let Some(&Some((_, _, _, g))) = memo
+        let contact = self.contact();
+        if let Some(g) = self
+            .power
+            .borrow()
             .iter()
-            .find(|m| m.is_some_and(|(tm, sm, cm, _)| (tm, sm, cm) == (t, s, c)))
+            .find_map(|m| m.as_ref().and_then(|m| m.at(t, y, contact)))
         {
             return g;
         }
-        let g = self.model.power_sign_function(t, y, c);
+        let value = self.model.power_sign_function(t, y, contact);
+        let mut memo = self.power.borrow_mut();
         memo[1] = memo[0];
-        memo[0] = Some((t, s, c, g));
-        self.power.set(memo);
-        g
+        memo[0] = Some(Memo {
+            t,
+            state: mech(y),
+            contact,
+            value,
+        });
+        value
     }
 
     /// Whether an input's power `u_i w_i` changes sign from `(t0, y0)` to `(t1, y1)` while the
