@@ -11,7 +11,7 @@ use walker_scene::ImpactLaw;
 use walker_scene::model::Stage;
 
 use super::contact::{Contact, FrictionLaw, Reaction};
-use super::desired::{Desired, aux_input};
+use super::desired::Desired;
 use super::friction_impact::{ImpactJam, ImpactRegime, Ingredients, plastic_coulomb, rear_test};
 use super::impact::{ImpactResult, PostImpact};
 use super::kernels::{Args, KernelId, Kernels, Tracking};
@@ -246,9 +246,18 @@ impl Model {
             Args::state(&y[..n], &y[n..2 * n]),
             &mut rates[..2 * m],
         );
-        let (k_p, k_d) = self.gains;
+        let control = self.tracking_at(t);
         for (i, vi) in v.iter_mut().enumerate().take(m) {
-            *vi = aux_input(self.desired(i, t), rates[i], rates[m + i], k_p, k_d);
+            *vi = control.aux_input(i, rates[i], rates[m + i]);
+        }
+    }
+
+    /// What the output-following control tracks at time `t` since the last impact.
+    fn tracking_at(&self, t: f64) -> Tracking<'_> {
+        Tracking {
+            desired: &self.desired,
+            t,
+            gains: self.gains,
         }
     }
 
@@ -303,17 +312,8 @@ impl Model {
             sigma,
             ..Args::state(q, qd)
         };
-        self.kernels.tracking(
-            k,
-            &args,
-            &Tracking {
-                desired: &self.desired,
-                t,
-                gains: self.gains,
-            },
-            &mut out[..len],
-            w,
-        );
+        self.kernels
+            .tracking(k, &args, &self.tracking_at(t), &mut out[..len], w);
     }
 
     /// The length a buffer for [`Model::stance`] needs: the accelerations, the inputs and the
