@@ -13,7 +13,7 @@
 //! [`RuntimeSource`] the caller gives (the `walker-load` crate derives the file at run time).
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use walker_scene::model::Model as ModelFile;
 use walker_scene::model::ModelError;
@@ -260,15 +260,29 @@ impl Setup {
         Setup::built_in("passive-slope")
     }
 
-    /// The built-in scene called `name`.
+    /// The built-in scene called `name`. The scene and its model file are parsed and checked
+    /// once per process and the result shared (a sweep builds a setup per grid point; parsing
+    /// both files each time cost about 0.5 ms and 30 KB apiece).
     ///
     /// # Errors
     /// An unknown name.
     pub fn built_in(name: &str) -> Result<Setup, SetupError> {
-        let (_, text) = BUILT_IN
+        static PARSED: [OnceLock<Setup>; BUILT_IN.len()] =
+            [const { OnceLock::new() }; BUILT_IN.len()];
+        let i = BUILT_IN
             .iter()
-            .find(|(n, _)| *n == name)
+            .position(|(n, _)| *n == name)
             .ok_or_else(|| SetupError::UnknownScene(name.to_owned()))?;
+        if let Some(setup) = PARSED[i].get() {
+            return Ok(setup.clone());
+        }
+        let setup = Setup::parse_built_in(i)?;
+        Ok(PARSED[i].get_or_init(|| setup).clone())
+    }
+
+    /// Parses and checks the built-in scene `BUILT_IN[i]` and its model file.
+    fn parse_built_in(i: usize) -> Result<Setup, SetupError> {
+        let (name, text) = BUILT_IN[i];
         let path = Path::new("models/scenes").join(format!("{name}.toml"));
         let file = ModelSceneFile::from_toml(text, &path, |model| {
             let c = compiled_by_file(model).ok_or_else(|| ModelSceneError::Invalid {
