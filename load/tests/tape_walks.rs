@@ -73,3 +73,55 @@ fn a_model_that_is_not_compiled_needs_the_run_time_source() {
     );
     let _ = std::fs::remove_file(copied);
 }
+
+/// `[impact] double_support = false` turns the test off: the walk must not end at the first
+/// heel strike (the impact then reports a zero rear impulse, which once read as the failure
+/// `double-support`), and where the test never fires it walks the shipped file's steps.
+#[test]
+fn a_model_without_the_double_support_test_walks() {
+    let text = std::fs::read_to_string(shipped("compass-gait")).expect("a shipped model");
+    let changed = text.replacen("double_support = true", "double_support = false", 1);
+    assert_ne!(text, changed, "compass-gait states its test");
+    let path = std::env::temp_dir().join(format!(
+        "walker-load-{}-no-double-support.toml",
+        std::process::id()
+    ));
+    std::fs::write(&path, changed).expect("a temporary file");
+    let walk_held = |path: &std::path::Path, runtime: bool| {
+        // Goswami's gait with the foot held: exact Coulomb friction in stance and at the
+        // impact, mu0 = 5; its rear foot leaves the floor at every heel strike.
+        let ov = Overrides {
+            friction: Some(Friction::Coulomb),
+            impact: Some(walker::model::ImpactLaw::Coulomb),
+            set: vec![("mu0".to_owned(), 5.0)],
+            ..Overrides::default()
+        };
+        let source = walker_load::runtime_source();
+        let setup = Setup::from_model_file(path, &ov, runtime.then_some(&source as &_))
+            .expect("the model sets up");
+        let model = setup.model().expect("kernels");
+        let limits = WalkLimits {
+            max_steps: 5,
+            ..WalkLimits::default()
+        };
+        walk(&model, &SimConfig::default(), &model.start_state(), &limits)
+    };
+    let with_test = walk_held(&shipped("compass-gait"), false);
+    let without = walk_held(&path, true);
+    let _ = std::fs::remove_file(&path);
+    assert!(with_test.failure.is_none(), "{:?}", with_test.failure);
+    assert!(without.failure.is_none(), "{:?}", without.failure);
+    assert_eq!(without.steps.len(), 5);
+    for (a, b) in with_test.steps.iter().zip(&without.steps) {
+        assert!(
+            a.rear_impulse < 0.0,
+            "the shipped test passes: {}",
+            a.rear_impulse
+        );
+        assert_eq!(b.rear_impulse, 0.0);
+        assert_eq!(
+            (a.period, &a.q_plus, &a.qd_plus),
+            (b.period, &b.q_plus, &b.qd_plus)
+        );
+    }
+}
