@@ -104,8 +104,8 @@ const fn deg(d: f64) -> f64 {
     d * std::f64::consts::PI / 180.0
 }
 
-/// The gallery's walkers, in the order of the summary. (`models/three-link.toml` is left out
-/// here; `Entry::new("three-link", "three-link biped", &[]).with_start(Start::Own)` adds it.)
+/// The gallery's walkers, in the order of the summary: the two passive walkers on three slopes
+/// each, and the three-link biped on its level floor from its own start.
 pub const ENTRIES: &[Entry] = &[
     Entry::new("rimless-wheel", "rimless wheel", &[0.10, 0.15, 0.20]),
     Entry::new(
@@ -113,4 +113,5 @@ pub const ENTRIES: &[Entry] = &[
         "compass gait",
         &[deg(2.0), deg(3.0), deg(4.0)],
     ),
+    Entry::new("three-link", "three-link biped", &[]).with_start(Start::Own),
 ];

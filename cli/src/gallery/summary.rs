@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use super::claims::{Claim, table, tally};
 use super::data::{DURATION, ModelRun};
 use super::generic::{self, outcomes};
-use super::{compass, rimless};
+use super::{compass, rimless, three_link};
 
 /// Every claim of `run`: the generic ones, then the model's own (a model without a module of
 /// its own has the generic ones only).
@@ -16,6 +16,7 @@ pub fn claims(run: &ModelRun) -> Vec<Claim> {
     c.extend(match run.entry.model {
         "rimless-wheel" => rimless::claims(run),
         "compass-gait" => compass::claims(run),
+        "three-link" => three_link::claims(run),
         _ => Vec::new(),
     });
     c
