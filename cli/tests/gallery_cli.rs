@@ -6,8 +6,9 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-/// The gallery's models (`cli/src/gallery/entries.rs`).
-const MODELS: [&str; 2] = ["rimless-wheel", "compass-gait"];
+/// The gallery's models (`cli/src/gallery/entries.rs`) and the chains (slopes) of each one's
+/// sweeps (the three-link biped is level: one chain).
+const MODELS: [(&str, usize); 3] = [("rimless-wheel", 3), ("compass-gait", 3), ("three-link", 1)];
 
 /// Each model's figures (each as `.png` and `.svg`), `{}` the model's name.
 const FIGURES: [&str; 3] = ["{}", "{}_sweep", "{}_friction"];
@@ -46,7 +47,7 @@ fn gallery_writes_every_file_and_every_claim_holds() {
         let len = std::fs::metadata(out.join(&name)).map_or(0, |m| m.len());
         assert!(len > 100, "{name}: {len} bytes");
     };
-    for m in MODELS {
+    for (m, _) in MODELS {
         for f in FIGURES {
             nonempty(format!("{}.png", f.replace("{}", m)));
             nonempty(format!("{}.svg", f.replace("{}", m)));
@@ -57,7 +58,7 @@ fn gallery_writes_every_file_and_every_claim_holds() {
     }
     let summary = std::fs::read_to_string(out.join("summary.txt")).expect("summary.txt");
     assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), summary.trim());
-    // Every claim holds, and there are claims of both models (generic and their own).
+    // Every claim holds, and there are claims of every model (generic and their own).
     let claims: Vec<&str> = summary.lines().filter(|l| l.starts_with("- [")).collect();
     assert!(claims.len() >= 20, "{} claims:\n{summary}", claims.len());
     for c in &claims {
@@ -73,14 +74,19 @@ fn gallery_writes_every_file_and_every_claim_holds() {
         "does the splits",
         "Painleve's paradox",
         "slides away",
+        "three-link biped, level, at its defaults",
+        "stable period-one gait with its foot held",
+        "W_nn/|W_tn|",
+        "the tanh law in stance",
+        "the paper's frictionless impact: it stops only",
     ] {
         assert!(summary.contains(needle), "missing {needle:?} in\n{summary}");
     }
     assert!(!summary.contains("NaN"), "{summary}");
-    // Every walk of every sweep is in the CSV: 4 laws, 3 slopes, mu0 0 to 1 by 0.02.
-    for m in MODELS {
+    // Every walk of every sweep is in the CSV: 4 laws, each chain, mu0 0 to 1 by 0.02.
+    for (m, chains) in MODELS {
         let csv = std::fs::read_to_string(out.join(format!("{m}_sweep.csv"))).expect("csv");
-        assert_eq!(csv.lines().count(), 1 + 4 * 3 * 51, "{m}_sweep.csv");
+        assert_eq!(csv.lines().count(), 1 + 4 * chains * 51, "{m}_sweep.csv");
     }
     readme_shows_the_gallery(&out, &summary);
 }
@@ -99,7 +105,7 @@ fn readme_shows_the_gallery(out: &std::path::Path, summary: &str) {
         section.contains("gallery --out"),
         "the section names the command"
     );
-    for m in MODELS {
+    for (m, _) in MODELS {
         let figure = format!("docs/figures/{m}.svg");
         assert!(
             section.contains(&format!("]({figure})")),

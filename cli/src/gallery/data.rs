@@ -2,9 +2,10 @@
 //! `mu0` sweeps under each of the [`LAWS`], collected into [`ModelRun`]s for the CSV files, the
 //! figures and the claims.
 //!
-//! Every `mu0` starts from the slope's held gait (its post-impact state) and walks
-//! [`DURATION`], stopped once periodic: each point is the walker in its held gait stepping onto
-//! a floor of that friction, independent of the sweep's order (`sweep_chains` with `restart`).
+//! Every `mu0` starts from the slope's held gait (its post-impact state; or the model's own
+//! start, on its gait, where the entry says so: [`Start`]) and walks [`DURATION`], stopped once
+//! periodic: each point is the walker in its gait stepping onto a floor of that friction,
+//! independent of the sweep's order (`sweep_chains` with `restart`).
 //! Continuing each `mu0` from the previous one's last state, as the paper's (P4a), would carry a
 //! walk that slides away or has not settled into the next `mu0` (the rimless wheel's lift-off
 //! at 0.30 on `phi = 0.2` in a continued sweep starts from such a state) and runs each slope's
@@ -15,7 +16,7 @@ use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
 use walker::vector::Vector;
 
-use super::entries::{ENTRIES, Entry};
+use super::entries::{ENTRIES, Entry, Start};
 use super::held::{Held, held};
 use super::laws::{LAWS, Laws};
 use super::outcome::Outcome;
@@ -85,14 +86,26 @@ impl ModelRun {
         self.sweeps.iter().find(|s| s.laws == laws)
     }
 
-    /// A walk of at most `steps` steps under `laws` at `mu0` on slope `i` from its held gait
-    /// (no time limit, not stopped when periodic), for a claim that needs more than a sweep's
-    /// last two steps; `None` where the slope has no held gait or the model cannot be built.
+    /// Where the walks of slope `i` start for the model `m` (of this entry, on that slope): the
+    /// held gait's post-impact state, or the model's own start ([`Start`]); `None` where the
+    /// entry starts from the held gait and the slope has none.
+    #[must_use]
+    pub fn start(&self, i: usize, m: &Model) -> Option<Vector> {
+        match self.entry.start {
+            Start::Held => self.slopes[i].held.as_ref().ok().map(|h| h.start),
+            Start::Own => Some(m.start_state()),
+        }
+    }
+
+    /// A walk of at most `steps` steps under `laws` at `mu0` on slope `i` from where its sweeps
+    /// start ([`ModelRun::start`]; no time limit, not stopped when periodic), for a claim that
+    /// needs more than a sweep's last two steps; `None` where there is no start or the model
+    /// cannot be built.
     #[must_use]
     pub fn walk(&self, i: usize, laws: Laws, mu0: f64, steps: usize) -> Option<Walk> {
-        let start = self.slopes[i].held.as_ref().ok()?.start;
         let setup = self.entry.setup().ok()?;
         let m = laws.model(&setup, self.slopes[i].phi, mu0).ok()?;
+        let start = self.start(i, &m)?;
         let limits = WalkLimits {
             max_steps: steps,
             ..WalkLimits::default()
@@ -154,11 +167,15 @@ fn run_model(entry: Entry, mu0s: &[f64], tick: &(dyn Fn() + Sync)) -> Result<Mod
             laws.model(&setup, phi, mu0)
                 .map_err(|e| WriteError::Setup(format!("{}: {e}", entry.model)))
         })?;
-        // A point starts from its slope's held gait, or the model's start where there is none.
+        // A point starts from its slope's held gait (the model's start where there is none),
+        // or from the model's own start where the entry says so.
         let initial = |m: &Model| {
             let phi = slope_param.as_deref().and_then(|n| m.params().get(n));
             let i = phis.iter().position(|&p| Some(p) == phi).unwrap_or(0);
-            starts[i].unwrap_or_else(|| m.start_state())
+            match entry.start {
+                Start::Held => starts[i].unwrap_or_else(|| m.start_state()),
+                Start::Own => m.start_state(),
+            }
         };
         let chains = sweep_chains(&phis, &make, &cfg, mu0s, initial, &limits, true, tick);
         sweeps.push(Sweep { laws, chains });

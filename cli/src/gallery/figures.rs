@@ -14,6 +14,7 @@ use walker::sim::StepResult;
 use walker::sweep::SweepPoint;
 
 use super::data::ModelRun;
+use super::entries::Start;
 use super::laws::LAWS;
 use super::outcome::Outcome;
 use crate::plot::{BLACK, Figure, Marker, Series, save_grid};
@@ -50,12 +51,37 @@ fn y_axis((bottom, top): (f64, f64), rows: usize, room: f64) -> (f64, f64) {
 /// fail, the failures in the order of [`failure_names`] from a pool.
 struct Shapes {
     failures: Vec<String>,
+    pool: Vec<Marker>,
 }
 
 /// Shapes for the failures, in turn.
 const FAILURE_SHAPES: [Marker; 3] = [Marker::Cross, Marker::Square, Marker::Diamond];
 
+/// The fixed shapes of the walks that did not fail and did not hold their foot, lent to the
+/// failures of a model whose figures have none of those walks (so that every failure has a
+/// shape of its own).
+const SPARE_SHAPES: [(Outcome, Marker); 3] = [
+    (Outcome::NotPeriodic, Marker::Triangle),
+    (Outcome::SlidesAway, Marker::Plus),
+    (Outcome::Slipping, Marker::Ring),
+];
+
 impl Shapes {
+    /// The shapes of a model whose figures show the outcomes `present`.
+    fn new(run: &ModelRun, present: &[Outcome]) -> Shapes {
+        let failures = failure_names(run, present);
+        let mut pool = FAILURE_SHAPES.to_vec();
+        if failures.len() > pool.len() {
+            pool.extend(
+                SPARE_SHAPES
+                    .iter()
+                    .filter(|(o, _)| !present.contains(o))
+                    .map(|(_, m)| *m),
+            );
+        }
+        Shapes { failures, pool }
+    }
+
     fn of(&self, o: &Outcome) -> Marker {
         match o {
             Outcome::Held => Marker::Circle,
@@ -64,7 +90,7 @@ impl Shapes {
             Outcome::SlidesAway => Marker::Plus,
             Outcome::Failed(name) => {
                 let k = self.failures.iter().position(|f| f == name).unwrap_or(0);
-                FAILURE_SHAPES[k % FAILURE_SHAPES.len()]
+                self.pool[k % self.pool.len()]
             }
         }
     }
@@ -138,7 +164,13 @@ struct Curve<'a> {
     points: &'a [SweepPoint],
 }
 
-/// The range of `key` over the gaits of `curves`, `(0, 1)` without any.
+/// A panel's gaits span at least this share of their value: a gait that does not change with
+/// `mu0` (a held gait: its stuck stance and sticking impact do not see it) is a level line in
+/// the middle of that range, not a panel of rounding.
+const MIN_SPAN: f64 = 0.01;
+
+/// The range of `key` over the gaits of `curves` (at least [`MIN_SPAN`] of its value wide),
+/// `(0, 1)` without any.
 fn gait_range(run: &ModelRun, curves: &[Curve<'_>], key: fn(&StepResult) -> f64) -> (f64, f64) {
     let (lo, hi) = curves
         .iter()
@@ -151,7 +183,15 @@ fn gait_range(run: &ModelRun, curves: &[Curve<'_>], key: fn(&StepResult) -> f64)
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
             (a.min(y), b.max(y))
         });
-    if lo.is_finite() { (lo, hi) } else { (0.0, 1.0) }
+    if !lo.is_finite() {
+        return (0.0, 1.0);
+    }
+    let (mid, half) = (0.5 * (lo + hi), 0.5 * MIN_SPAN * hi.abs().max(lo.abs()));
+    if hi - lo < 2.0 * half {
+        (mid - half, mid + half)
+    } else {
+        (lo, hi)
+    }
 }
 
 /// The series of one panel: each curve's gaits as a line with held and slipping markers, and
@@ -254,6 +294,14 @@ fn sweep_figure(run: &ModelRun, shapes: &Shapes, present: &[Outcome]) -> Vec<Fig
     panels
 }
 
+/// Where the walks of `run` start, for a title (`its held gait`).
+fn from(run: &ModelRun) -> &'static str {
+    match run.entry.start {
+        Start::Held => "its held gait",
+        Start::Own => "its own start",
+    }
+}
+
 /// The README's figure: `V` against `mu0` on the model's own slope, one curve per pair of laws.
 fn overview(run: &ModelRun, shapes: &Shapes, present: &[Outcome]) -> Figure {
     let i = run.nominal;
@@ -272,10 +320,15 @@ fn overview(run: &ModelRun, shapes: &Shapes, present: &[Outcome]) -> Figure {
     let range = gait_range(run, &curves, key);
     let mut series = panel_series(run, &curves, key, range, shapes, true);
     series.extend(shapes.legend(present));
-    let title = format!(
-        "The {} on {}: speed against mu0, from its held gait",
-        run.entry.title,
+    let floor = if run.slopes[i].phi.is_nan() {
+        "a level floor".to_owned()
+    } else {
         run.slope_label(i)
+    };
+    let title = format!(
+        "The {} on {floor}: speed against mu0, from {}",
+        run.entry.title,
+        from(run)
     );
     let mut f = fig(&title, "mu0", "V [m/s]", series, false);
     f.legend = Some(SeriesLabelPosition::UpperLeft);
@@ -322,14 +375,13 @@ fn friction(run: &ModelRun) -> Figure {
 /// A figure could not be drawn or written.
 pub fn write_figures(out: &Path, run: &ModelRun) -> Result<(), WriteError> {
     let present = outcomes(run);
-    let shapes = Shapes {
-        failures: failure_names(run, &present),
-    };
+    let shapes = Shapes::new(run, &present);
     let m = run.entry.model;
     let stem = out.join(format!("{m}_sweep"));
     let title = format!(
-        "The {}: steady T, V, dx against mu0, each mu0 from the held gait ({})",
+        "The {}: steady T, V, dx against mu0, each mu0 from {} ({})",
         run.entry.title,
+        from(run),
         run.entry.path()
     );
     save_grid(

@@ -7,7 +7,8 @@
 //!
 //! With the paper's frictionless impact the foot leaves the heel strike sliding; where the
 //! sliding friction makes the normal force's denominator vanish (Painleve's paradox) no contact
-//! is consistent at the start of the next stance ([`Painleve`]).
+//! is consistent at the start of the next stance ([`Painleve`]), unless that heel strike keeps
+//! the old stance foot on the floor and the walk ends there ([`Painleve::double_support`]).
 
 use walker::model::{Contact, ImpactRegime, Model, Slide, in_regime};
 use walker::setup::Setup;
@@ -42,6 +43,21 @@ pub struct Painleve {
     /// pole (its denominator is affine in `mu0`): above it, sliding is inconsistent; `None` if it
     /// has none (the friction only presses the foot on the floor).
     pub mu0: Option<f64>,
+    /// The frictionless heel strike's normal impulse on the new foot (N s).
+    pub normal_impulse: f64,
+    /// The old stance foot's impulse in the double-support test of that heel strike (N s;
+    /// [`walker::model::ImpactResult::rear_impulse`]): non-negative, the walker would stay in
+    /// double support and the simulator ends the walk at the strike.
+    pub rear_impulse: f64,
+}
+
+impl Painleve {
+    /// Whether the frictionless heel strike keeps the old stance foot on the floor (the
+    /// simulator's `double-support`): then no next stance begins, with its foot sliding or not.
+    #[must_use]
+    pub fn double_support(&self) -> bool {
+        self.rear_impulse >= 0.0
+    }
 }
 
 /// The held gait on one slope and the friction it needs.
@@ -56,6 +72,8 @@ pub struct Held {
     pub stance_ratio: f64,
     /// Where in the step it is largest (`t / T`).
     pub stance_at: f64,
+    /// The state `[q, qd]` right before the heel strike that ends the step.
+    pub pre: Vector,
     /// The striking foot's impulse `[Lambda_t, Lambda_n]` in the stick regime (N s; `t`
     /// forward, down the slope).
     pub impulse: [f64; 2],
@@ -156,6 +174,7 @@ pub fn held(setup: &Setup, phi: f64) -> Result<Held, String> {
         start,
         stance_ratio,
         stance_at,
+        pre,
         impulse: stick,
         profile,
         painleve: painleve(setup, phi, &pre)?,
@@ -197,10 +216,13 @@ fn painleve(setup: &Setup, phi: f64, pre: &Vector) -> Result<Painleve, String> {
     let post = m.reset(pre, &imp);
     let y = Vector::concat(&post.q_plus, &post.qd_plus);
     let xd = y[m.n()];
+    let (normal_impulse, rear_impulse) = (imp.foot_impulse[1], imp.rear_impulse);
     if xd == 0.0 {
         return Ok(Painleve {
             foot_velocity: 0.0,
             mu0: None,
+            normal_impulse,
+            rear_impulse,
         });
     }
     let at_1 = m.reaction(0.0, &y, Contact::Sliding(Slide::of(xd))).normal;
@@ -211,5 +233,7 @@ fn painleve(setup: &Setup, phi: f64, pre: &Vector) -> Result<Painleve, String> {
     Ok(Painleve {
         foot_velocity: xd,
         mu0: (mu0.is_finite() && mu0 > 0.0).then_some(mu0),
+        normal_impulse,
+        rear_impulse,
     })
 }

@@ -1,18 +1,19 @@
-//! `walker gallery`: the shipped walkers that walk (the rimless wheel and the compass gait) on a
-//! slippery floor as `mu0` falls, in the manner of the paper's Figs. 8 and 10: where they still
-//! walk, how they fail and why, as CSV files, figures and a table of claims that the run checks.
+//! `walker gallery`: the shipped walkers that walk (the rimless wheel, the compass gait and the
+//! three-link biped) on a slippery floor as `mu0` falls, in the manner of the paper's Figs. 8
+//! and 10: where they still walk, how they fail and why, as CSV files, figures and a table of
+//! claims that the run checks.
 //!
 //! One concept per file: the walkers and their slopes ([`entries`]), the contact laws
 //! ([`laws`]), the held gait and the friction it needs ([`held`]), the sweeps ([`data`]), what
 //! became of a walk ([`outcome`]), a claim and its verdict ([`claims`]), the claims every model
-//! gets ([`generic`]) and each model's own ([`rimless`], [`compass`]), the CSV files ([`csv`]),
-//! the figures ([`figures`]), the summary ([`mod@summary`]) and the whole job ([`job`]). The
-//! figures, CSV and error machinery are `walker reproduce`'s ([`crate::reproduce`],
-//! [`crate::plot`]).
+//! gets ([`generic`]) and each model's own ([`rimless`], [`compass`], [`three_link`]), the CSV
+//! files ([`csv`]), the figures ([`figures`]), the summary ([`mod@summary`]) and the whole job
+//! ([`job`]). The figures, CSV and error machinery are `walker reproduce`'s
+//! ([`crate::reproduce`], [`crate::plot`]).
 //!
-//! Imports run one way: [`job`] -> [`mod@summary`] -> [`generic`], [`rimless`], [`compass`] ->
-//! [`claims`]; those and [`figures`], [`csv`] -> [`data`] -> [`entries`], [`held`],
-//! [`outcome`], [`laws`] (and [`held`] -> [`laws`]).
+//! Imports run one way: [`job`] -> [`mod@summary`] -> [`generic`], [`rimless`], [`compass`],
+//! [`three_link`] -> [`claims`]; those and [`figures`], [`csv`] -> [`data`] -> [`entries`],
+//! [`held`], [`outcome`], [`laws`] (and [`held`] -> [`laws`]).
 
 pub mod claims;
 pub mod compass;
@@ -27,5 +28,6 @@ pub mod laws;
 pub mod outcome;
 pub mod rimless;
 pub mod summary;
+pub mod three_link;
 
 pub use job::run;

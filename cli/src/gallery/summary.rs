@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use super::claims::{Claim, table, tally};
 use super::data::{DURATION, ModelRun};
 use super::generic::{self, outcomes};
-use super::{compass, rimless};
+use super::{compass, rimless, three_link};
 
 /// Every claim of `run`: the generic ones, then the model's own (a model without a module of
 /// its own has the generic ones only).
@@ -16,6 +16,7 @@ pub fn claims(run: &ModelRun) -> Vec<Claim> {
     c.extend(match run.entry.model {
         "rimless-wheel" => rimless::claims(run),
         "compass-gait" => compass::claims(run),
+        "three-link" => three_link::claims(run),
         _ => Vec::new(),
     });
     c
@@ -23,7 +24,13 @@ pub fn claims(run: &ModelRun) -> Vec<Claim> {
 
 /// What was found for `run`: the held gaits and the sweeps' outcomes.
 fn findings(s: &mut String, run: &ModelRun) {
-    let _ = writeln!(s, "\n{} ({})", run.entry.title, run.entry.path());
+    let _ = writeln!(
+        s,
+        "\n{} ({}), each walk from {}",
+        run.entry.title,
+        run.entry.path(),
+        run.entry.start.phrase()
+    );
     for (i, slope) in run.slopes.iter().enumerate() {
         let label = run.slope_label(i);
         match &slope.held {
@@ -34,7 +41,7 @@ fn findings(s: &mut String, run: &ModelRun) {
                     "  held gait, {label}: T = {:.6} s, dx = {:.6} m, V = {:.6} m/s; needs \
                      |lambda_t/lambda_n| <= {:.4} (max at t = {:.2} T), |Lambda_t/Lambda_n| = \
                      {:.4} at the heel strike; a frictionless impact leaves the foot sliding at \
-                     {:+.4} m/s, inconsistent above mu0 = {}",
+                     {:+.4} m/s, inconsistent above mu0 = {}{}",
                     h.step.period,
                     h.step.dx,
                     h.step.speed,
@@ -42,7 +49,16 @@ fn findings(s: &mut String, run: &ModelRun) {
                     h.stance_at,
                     h.impact_ratio(),
                     pl.foot_velocity,
-                    pl.mu0.map_or_else(|| "-".to_owned(), |m| format!("{m:.4}"))
+                    pl.mu0.map_or_else(|| "-".to_owned(), |m| format!("{m:.4}")),
+                    if pl.double_support() {
+                        format!(
+                            ", but its normal impulse ({:.3e} N s) leaves the old foot on the \
+                             floor (test impulse {:+.3e} N s): double support",
+                            pl.normal_impulse, pl.rear_impulse
+                        )
+                    } else {
+                        String::new()
+                    }
                 );
             }
             Err(why) => {
@@ -73,7 +89,7 @@ pub fn summary(runs: &[ModelRun]) -> String {
     });
     let mut s = format!(
         "Gallery: where the shipped walkers still walk as mu0 falls, how they fail, and why\n\
-         (each mu0 from the slope's held gait, walked {DURATION} s or until periodic; mu0 from \
+         (each mu0 from the walker's gait, walked {DURATION} s or until periodic; mu0 from \
          {first} to {last} by {step:.2})\n"
     );
     let mut all = Vec::new();
