@@ -303,6 +303,19 @@ fn it_walks_down_to_the_friction_the_heel_strike_needs() {
     // And that is where walking starts: just above it the walker walks, just below it fails.
     assert!(walk_at(mu_star + 2e-5).failure.is_none());
     assert!(walk_at(mu_star - 2e-5).failure.is_some());
+    // The impulse a sticking strike draws is that ratio: the step's reported impulse at the
+    // defaults (the first stance holds the foot for every mu0 >= 0.49, so the strike's posture
+    // does not depend on mu0) has |Lambda_t| / Lambda_n = mu_star, to the bisection's 1e-5.
+    let [lt, ln] = walk_at(0.6).steps[0].foot_impulse;
+    assert!(
+        ln > 0.0 && lt < 0.0,
+        "backward on the forward-sliding foot: {lt} {ln}"
+    );
+    assert!(
+        (lt.abs() / ln - mu_star).abs() < 2e-5,
+        "{} vs {mu_star}",
+        lt.abs() / ln
+    );
 }
 
 #[test]
@@ -376,4 +389,11 @@ fn the_tanh_law_and_the_frictionless_impact_cannot_walk_it() {
     assert_eq!(w.steps.len(), 1);
     assert!(w.steps[0].qd_plus[0] > 2.5, "{:?}", w.steps[0]);
     assert_eq!(w.failure.unwrap().step, 1);
+    // The frictionless impact has no tangential impulse, and its normal one is tiny (the
+    // sticking impact's is 24.6 N s) and negative: with the outputs held the swing foot is
+    // rising at this 'strike' (v_n > 0), and the paper's map, which stops the normal velocity
+    // whatever its sign, pulls it onto the floor. That is why the model ramps y_legs from
+    // y_lift: its foot comes down.
+    let [lt, ln] = w.steps[0].foot_impulse;
+    assert!(lt == 0.0 && ln < 0.0 && ln > -0.01, "{lt} {ln}");
 }

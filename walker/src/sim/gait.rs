@@ -30,6 +30,11 @@ pub struct StepResult {
     pub qd_plus: Vector,
     /// The new stance foot's velocity normal to the floor right after the impact (should be 0).
     pub foot_normal_velocity: f64,
+    /// The striking foot's impulse `[Lambda_t, Lambda_n]` at the heel strike that ends the
+    /// step, along the floor's unit tangent (towards `+x`; down the slope) and unit normal
+    /// (N s): `Lambda_t = 0` under the paper's frictionless impact; under the impact with
+    /// friction `|Lambda_t| / Lambda_n` is the friction ratio the strike drew.
+    pub foot_impulse: [f64; 2],
     /// The rear-foot impulse of the double-support test (negative: the rear leg leaves).
     pub rear_impulse: f64,
     /// How the striking foot ended the impact (left out of the JSON for the paper's

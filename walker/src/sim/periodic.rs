@@ -51,6 +51,7 @@ mod tests {
                 q_plus: crate::vector::Vector::zeros(4),
                 qd_plus: crate::vector::Vector::zeros(4),
                 foot_normal_velocity: 0.0,
+                foot_impulse: [0.0; 2],
                 rear_impulse: 0.0,
                 impact: crate::model::ImpactRegime::Frictionless,
                 lambda_min: 0.0,

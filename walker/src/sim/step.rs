@@ -367,6 +367,8 @@ fn impact<const S: usize>(
         speed,
         p.unwrap_or(0.0),
         sr.unwrap_or(0.0),
+        imp.foot_impulse[0],
+        imp.foot_impulse[1],
         imp.rear_impulse,
     ];
     if !finite(&post.q_plus) || !finite(&post.qd_plus) || !finite(&all) {
@@ -381,6 +383,7 @@ fn impact<const S: usize>(
         q_plus: post.q_plus,
         qd_plus: post.qd_plus,
         foot_normal_velocity: post.foot_normal_velocity,
+        foot_impulse: imp.foot_impulse,
         rear_impulse: imp.rear_impulse,
         impact: imp.regime,
         lambda_min: strike.lambda_min,
