@@ -115,8 +115,10 @@ class Walk:
     step): ``T`` (s), ``dx`` (m), ``V`` (m/s), ``p`` (W) and ``SR`` (NaN for a walker without
     inputs, such as the passive wheel, or a model that does not report them), ``q_plus`` and
     ``qd_plus`` after each impact (shape ``(steps, n)`` for a model with ``n`` coordinates: 4
-    for the paper's walkers, ``[x, z, th1, th2]`` and ``[xd, zd, th1d, th2d]``).
-    ``state_names`` names the ``2 n`` state components (the coordinates, then their velocities),
+    for the paper's walkers, ``[x, z, th1, th2]`` and ``[xd, zd, th1d, th2d]``), and
+    ``foot_impulse``, the striking foot's impulse ``[Lambda_t, Lambda_n]`` (N s) at the heel
+    strike that ends each step (shape ``(steps, 2)``; ``Lambda_t = 0`` for the frictionless
+    impact). ``state_names`` names the ``2 n`` state components (the coordinates, then their velocities),
     ``input_names`` the inputs.
 
     With ``trajectory=True``: ``times`` (s since the start of the walk, exactly ``k * dt``),
@@ -135,6 +137,7 @@ class Walk:
     SR: np.ndarray
     q_plus: np.ndarray
     qd_plus: np.ndarray
+    foot_impulse: np.ndarray
     times: Optional[np.ndarray] = None
     states: Optional[np.ndarray] = None
     frame_steps: Optional[np.ndarray] = None
@@ -180,6 +183,7 @@ def _walk(d: Mapping[str, Any]) -> Walk:
         SR=_arr(d["SR"]),
         q_plus=_arr(d["q_plus"], n),
         qd_plus=_arr(d["qd_plus"], n),
+        foot_impulse=_arr(d["foot_impulse"], 2),
         state_names=names,
         input_names=inputs,
         **extra,

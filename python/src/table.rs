@@ -119,7 +119,8 @@ impl StepColumns {
 }
 
 /// A walk of `model` as a dict: `status`, `failure` (JSON or None), `periodic`, its per-step
-/// columns and the names of its state components and inputs.
+/// columns, each heel strike's `foot_impulse` `[Lambda_t, Lambda_n]` (two a step, row after
+/// row) and the names of its state components and inputs.
 ///
 /// # Errors
 /// A Python error while filling the dict.
@@ -138,6 +139,8 @@ pub fn steps_dict<'py>(
         cols.push(Some(s));
     }
     cols.fill(&d)?;
+    let impulses: Vec<f64> = walk.steps.iter().flat_map(|s| s.foot_impulse).collect();
+    d.set_item("foot_impulse", impulses)?;
     Ok(d)
 }
 

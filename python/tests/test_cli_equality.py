@@ -20,6 +20,7 @@ def assert_steps_equal(walk, steps):
         np.testing.assert_array_equal(getattr(walk, key), want, err_msg=key)
     assert walk.q_plus.tolist() == [s["q_plus"] for s in steps]
     assert walk.qd_plus.tolist() == [s["qd_plus"] for s in steps]
+    assert walk.foot_impulse.tolist() == [s["foot_impulse"] for s in steps]
 
 
 def test_simulate_equals_the_cli_fig5_walk():
