@@ -26,20 +26,31 @@ fn copy(name: &str) -> PathBuf {
     path
 }
 
+/// `steps` steps of the model file at `path` with the overrides `ov`, from its start; derived
+/// at run time if `runtime`, else compiled.
+fn walk_with(
+    path: &std::path::Path,
+    ov: &Overrides,
+    runtime: bool,
+    steps: usize,
+) -> walker::sim::Walk {
+    let source = walker_load::runtime_source();
+    let setup = Setup::from_model_file(path, ov, runtime.then_some(&source as &_))
+        .expect("the model sets up");
+    let model = setup.model().expect("kernels");
+    let limits = WalkLimits {
+        max_steps: steps,
+        ..WalkLimits::default()
+    };
+    walk(&model, &SimConfig::default(), &model.start_state(), &limits)
+}
+
 fn walk_of(path: &std::path::Path, friction: Friction, runtime: bool) -> walker::sim::Walk {
     let ov = Overrides {
         friction: Some(friction),
         ..Overrides::default()
     };
-    let source = walker_load::runtime_source();
-    let setup = Setup::from_model_file(path, &ov, runtime.then_some(&source as &_))
-        .expect("the model sets up");
-    let model = setup.model().expect("kernels");
-    let limits = WalkLimits {
-        max_steps: 3,
-        ..WalkLimits::default()
-    };
-    walk(&model, &SimConfig::default(), &model.start_state(), &limits)
+    walk_with(path, &ov, runtime, 3)
 }
 
 #[test]
@@ -87,25 +98,15 @@ fn a_model_without_the_double_support_test_walks() {
         std::process::id()
     ));
     std::fs::write(&path, changed).expect("a temporary file");
-    let walk_held = |path: &std::path::Path, runtime: bool| {
-        // Goswami's gait with the foot held: exact Coulomb friction in stance and at the
-        // impact, mu0 = 5; its rear foot leaves the floor at every heel strike.
-        let ov = Overrides {
-            friction: Some(Friction::Coulomb),
-            impact: Some(walker::model::ImpactLaw::Coulomb),
-            set: vec![("mu0".to_owned(), 5.0)],
-            ..Overrides::default()
-        };
-        let source = walker_load::runtime_source();
-        let setup = Setup::from_model_file(path, &ov, runtime.then_some(&source as &_))
-            .expect("the model sets up");
-        let model = setup.model().expect("kernels");
-        let limits = WalkLimits {
-            max_steps: 5,
-            ..WalkLimits::default()
-        };
-        walk(&model, &SimConfig::default(), &model.start_state(), &limits)
+    // Goswami's gait with the foot held: exact Coulomb friction in stance and at the impact,
+    // mu0 = 5; its rear foot leaves the floor at every heel strike.
+    let ov = Overrides {
+        friction: Some(Friction::Coulomb),
+        impact: Some(walker::model::ImpactLaw::Coulomb),
+        set: vec![("mu0".to_owned(), 5.0)],
+        ..Overrides::default()
     };
+    let walk_held = |path: &std::path::Path, runtime: bool| walk_with(path, &ov, runtime, 5);
     let with_test = walk_held(&shipped("compass-gait"), false);
     let without = walk_held(&path, true);
     let _ = std::fs::remove_file(&path);

@@ -73,6 +73,16 @@ fn gait(model: &Model) -> FixedPoint {
     fp
 }
 
+/// A walk of `model` from its start with the default integrator and limits.
+fn walk_from_start(model: &Model) -> Walk {
+    walk(
+        model,
+        &SimConfig::default(),
+        &model.start_state(),
+        &WalkLimits::default(),
+    )
+}
+
 /// `steps` steps of `model` from `start`, the motion recorded.
 fn recorded(model: &Model, cfg: &SimConfig, start: &[f64], steps: usize) -> Walk {
     let limits = WalkLimits {
@@ -326,12 +336,7 @@ fn the_tanh_law_and_the_frictionless_impact_cannot_walk_it() {
     // torso rate by 1e-7 rad/s (dv = K_D 1e-7), is huge with the foot sliding and ordinary
     // with the same state's foot stuck.
     let m = model(Some((Friction::Tanh, ImpactLaw::Coulomb)), &[("mu0", 1.0)]);
-    let w = walk(
-        &m,
-        &SimConfig::default(),
-        &m.start_state(),
-        &WalkLimits::default(),
-    );
+    let w = walk_from_start(&m);
     let f = w.failure.unwrap();
     assert_eq!(f.step, 0, "{f:?}");
     assert!(f.state[TH_ST] < 0.0, "before mid-stance: {f:?}");
@@ -365,12 +370,7 @@ fn the_tanh_law_and_the_frictionless_impact_cannot_walk_it() {
         Some((Friction::Coulomb, ImpactLaw::Frictionless)),
         &[("mu0", 1.0)],
     );
-    let w = walk(
-        &m,
-        &SimConfig::default(),
-        &m.start_state(),
-        &WalkLimits::default(),
-    );
+    let w = walk_from_start(&m);
     let f = w.failure.unwrap();
     assert_eq!((f.name(), f.step), ("double-support", 0), "{f:?}");
     // With the outputs held (y_lift = 0) the swing foot rises at the strike and the rear foot
@@ -380,12 +380,7 @@ fn the_tanh_law_and_the_frictionless_impact_cannot_walk_it() {
         Some((Friction::Coulomb, ImpactLaw::Frictionless)),
         &[("mu0", 1.0), ("y_lift", 0.0)],
     );
-    let w = walk(
-        &m,
-        &SimConfig::default(),
-        &m.start_state(),
-        &WalkLimits::default(),
-    );
+    let w = walk_from_start(&m);
     assert_eq!(w.steps.len(), 1);
     assert!(w.steps[0].qd_plus[0] > 2.5, "{:?}", w.steps[0]);
     assert_eq!(w.failure.unwrap().step, 1);

@@ -417,15 +417,7 @@ fn tanh(run: &ModelRun) -> Option<Claim> {
                 && creep < CREEPS
                 && sliding > SINGULAR * held;
         }
-        found.push(format!(
-            "{}: {}",
-            s.laws.label(),
-            describe(pts, |p| {
-                p.failure
-                    .as_ref()
-                    .map(|f| format!("{} in step {}", f.name(), f.step))
-            })
-        ));
+        found.push(format!("{}: {}", s.laws.label(), failures(pts)));
     }
     let (lo, hi) = span(ratios.iter().copied());
     let (tlo, thi) = span(
@@ -482,15 +474,7 @@ fn frictionless(run: &ModelRun) -> Option<Claim> {
                 _ => f.name() == "lift-off" && f.state[ix.th_st] < 0.0,
             }
         });
-        found.push(format!(
-            "{}: {}",
-            s.laws.label(),
-            describe(pts, |p| {
-                p.failure
-                    .as_ref()
-                    .map(|f| format!("{} in step {}", f.name(), f.step))
-            })
-        ));
+        found.push(format!("{}: {}", s.laws.label(), failures(pts)));
     }
     Some(Claim::new(
         format!(
@@ -533,4 +517,13 @@ pub fn claims(run: &ModelRun) -> Vec<Claim> {
             "three-link biped: the frictionless impact",
         ),
     ]
+}
+
+/// The failures of a sweep's points as ranges of `mu0` (`lift-off in step 0 for 0.02-0.14`).
+fn failures(pts: &[SweepPoint]) -> String {
+    describe(pts, |p| {
+        p.failure
+            .as_ref()
+            .map(|f| format!("{} in step {}", f.name(), f.step))
+    })
 }
