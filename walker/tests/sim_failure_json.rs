@@ -63,6 +63,13 @@ fn every_kind() -> Vec<(FailureKind, &'static str, &'static [&'static str])> {
             &["rear_impulse"],
         ),
         (
+            FailureKind::ImpactPulls {
+                normal_impulse: -1e-3,
+            },
+            "ImpactPulls",
+            &["normal_impulse"],
+        ),
+        (
             FailureKind::LambdaDenominatorZero { lambda: 1e9 },
             "LambdaDenominatorZero",
             &["lambda"],
@@ -165,6 +172,7 @@ fn failure_names_are_the_cli_s_kebab_case_names() {
             "contact-inconsistent",
             "impact-before-t-set",
             "double-support",
+            "impact-pulls",
             "lambda-denominator-zero",
             "lambda-numerator-huge",
             "fell-backward",

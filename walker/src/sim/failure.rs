@@ -67,6 +67,15 @@ pub enum FailureKind {
         /// friction at the impact, `walker::model::rear_test`).
         rear_impulse: f64,
     },
+    /// The heel strike's normal impulse `Lambda_n` is negative: the striking foot was not
+    /// approaching the floor (a kinematic strike guard, such as the three-link biped's
+    /// `beta - th_st`, can be met with the foot rising), and the impact map, which stops the
+    /// foot's normal velocity whatever its sign, would pull it onto the floor. No impact
+    /// happens there; `t` is the time of the strike and the state the pre-impact state.
+    ImpactPulls {
+        /// The normal impulse `Lambda_n` (N s, negative).
+        normal_impulse: f64,
+    },
     /// The impact with Coulomb friction at the striking foot has no rigid-body solution: while
     /// the foot slips, more normal impulse makes it approach the floor faster and the slip
     /// never stops (Painleve's paradox at an impact, `docs/impacts.md`); `t` is the time of the heel strike and the
@@ -131,6 +140,7 @@ impl FailureKind {
             FailureKind::ContactInconsistent { .. } => "contact-inconsistent",
             FailureKind::ImpactBeforeTSet { .. } => "impact-before-t-set",
             FailureKind::DoubleSupport { .. } => "double-support",
+            FailureKind::ImpactPulls { .. } => "impact-pulls",
             FailureKind::ImpactJam { .. } => "impact-jam",
             FailureKind::LambdaDenominatorZero { .. } => "lambda-denominator-zero",
             FailureKind::LambdaNumeratorHuge { .. } => "lambda-numerator-huge",

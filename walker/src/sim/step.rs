@@ -344,6 +344,10 @@ fn impact<const S: usize>(
     let imp = model
         .impact(&pre)
         .map_err(|jam| FailureKind::ImpactJam { slip: jam.slip }.at(step, te, pre))?;
+    if imp.foot_impulse[1] < 0.0 {
+        let normal_impulse = imp.foot_impulse[1];
+        return Err(FailureKind::ImpactPulls { normal_impulse }.at(step, te, pre));
+    }
     // The test applies where the model asks for it (`[impact] double_support`); a model without
     // it reports a zero impulse, which is no failure.
     if model.spec().double_support() && imp.rear_impulse >= 0.0 {
