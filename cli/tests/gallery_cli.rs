@@ -3,8 +3,12 @@
 //! claim of it holds; the README's gallery figures are the ones it draws, and their captions
 //! quote its numbers.
 
+mod common;
+
 use std::path::PathBuf;
 use std::process::Command;
+
+use common::decimals;
 
 /// The gallery's models (`cli/src/gallery/entries.rs`) and the chains (slopes) of each one's
 /// sweeps (the three-link biped is level: one chain).
@@ -15,23 +19,6 @@ const FIGURES: [&str; 3] = ["{}", "{}_sweep", "{}_friction"];
 
 /// Each model's CSV files.
 const CSVS: [&str; 3] = ["{}_sweep", "{}_held", "{}_friction"];
-
-/// The decimal numbers (`0.2742`, `1.35`; not integers) in `text`.
-fn decimals(text: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut current = String::new();
-    for c in text.chars().chain(std::iter::once(' ')) {
-        if c.is_ascii_digit() || (c == '.' && !current.is_empty() && !current.contains('.')) {
-            current.push(c);
-        } else {
-            if current.contains('.') && !current.ends_with('.') {
-                out.push(current.clone());
-            }
-            current.clear();
-        }
-    }
-    out
-}
 
 #[test]
 fn gallery_writes_every_file_and_every_claim_holds() {

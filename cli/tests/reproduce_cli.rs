@@ -2,8 +2,12 @@
 //! succeeds, writes a PNG and an SVG of every figure and the CSV data next to them, and prints
 //! the summary of the paper's claims that it also writes to `summary.txt`.
 
+mod common;
+
 use std::path::PathBuf;
 use std::process::Command;
+
+use common::decimals;
 
 /// Every figure `reproduce` draws (each as `.png` and `.svg`).
 const FIGURES: [&str; 21] = [
@@ -98,23 +102,6 @@ fn reproduce_writes_every_figure_its_data_and_the_summary() {
     assert!(flags.iter().all(|f| *f == "true" || *f == "false"));
     assert!(flags.contains(&"true") && flags.contains(&"false"));
     readme_quotes_the_summary(&summary);
-}
-
-/// The decimal numbers (`0.45`, `62.95`; not integers, not `1e-6`) in `text`.
-fn decimals(text: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut current = String::new();
-    for c in text.chars().chain(std::iter::once(' ')) {
-        if c.is_ascii_digit() || (c == '.' && !current.is_empty() && !current.contains('.')) {
-            current.push(c);
-        } else {
-            if current.contains('.') && !current.ends_with('.') {
-                out.push(current.clone());
-            }
-            current.clear();
-        }
-    }
-    out
 }
 
 /// The README's claims table is quoted from `summary.txt`, not typed by hand: every decimal
