@@ -1,11 +1,11 @@
 //! Generates the kernels of every model file in `models/` (exact Coulomb friction, so that a
 //! test realises any `mu` as `-mu0 sigma`), and for each a small adapter that calls a kernel by
 //! name with its arguments by name: the model tests then run the same checks over every model
-//! without knowing any model's signatures. Also generates the hand-derived paper scenes of
-//! `walker/scenes/` (from `walker_gen::lower::derive`, the paper's Eqs. 2-46 written out by hand
-//! in `derive/src/mechanics`) with the same adapters: the simulator runs on the model files now,
-//! and these scenes stay under test as the independent derivation the model files' kernels are
-//! compared against.
+//! without knowing any model's signatures. Also generates the paper's scenes of
+//! `walker/scenes/` (the paper's kernel catalogue, `walker_gen::lower::derive`: the quantities of
+//! `models/paper-*.toml` in the paper's notation, lowered by the scene path) with the same
+//! adapters, so that `walker-gen --scene` of a paper scene stays under the same tests as the
+//! model files' kernels, and the two lowerings are compared.
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -64,7 +64,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// The hand-derived paper scenes of `walker/scenes/` generated here: the paper's two setups
+/// The paper's scenes of `walker/scenes/` generated here: the paper's two setups
 /// with Table 1 fixed, the same structures with every parameter at run time, and both under
 /// exact Coulomb friction with stick-slip.
 const SCENES: [&str; 6] = [
@@ -83,7 +83,7 @@ fn scenes(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     let derivation = walker_gen::lower::derive()?;
     let mut modules = String::new();
     let mut index = String::from(
-        "/// The hand-derived paper scenes: name and kernels called by name.\n\
+        "/// The paper's scenes: name and kernels called by name.\n\
          pub const SCENES: &[GeneratedModel] = &[\n",
     );
     for name in SCENES {
@@ -97,7 +97,7 @@ fn scenes(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
         let source = walker_gen::emit(&module, &config.options())?;
         std::fs::write(out.join(format!("scene_{ident}.rs")), source)?;
         let doc = format!(
-            "The kernels of `walker/scenes/{name}.toml`, generated from the hand derivation."
+            "The kernels of `walker/scenes/{name}.toml`, generated from the paper's catalogue."
         );
         entry(
             &mut modules,

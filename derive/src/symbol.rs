@@ -15,9 +15,11 @@
 //! and multiple, so that differentiation follows the chain rule through `sin` and `cos` without
 //! a lookup; names, LaTeX and roles are the table's.
 //!
-//! The paper's walker (one derivation for its level and slope kernels) has its table in
-//! [`Symbols::paper`], and its symbols as constants ([`Sym::Th1`], [`BaseAngle::HalfAlpha`], ...)
-//! for the code that derives and documents that walker by hand.
+//! The paper's notation (one table for its level and slope kernels) is the table
+//! [`Symbols::paper`], with its symbols as constants ([`Sym::Th1`], [`BaseAngle::HalfAlpha`], ...)
+//! for the code that writes the paper's walker as the paper prints it: `crate::paper` (its
+//! quantities come from the model files and are renamed into this table by name),
+//! `docs/equations.md` and the errata tests.
 
 use crate::error::Error;
 

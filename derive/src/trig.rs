@@ -1,7 +1,10 @@
-//! Sines and cosines of integer combinations of base angles, by the addition formulas.
+//! Sines and cosines of integer combinations of base angles, by the addition formulas; and of
+//! integer combinations of angle symbols, as rational functions.
 
+use crate::error::{Error, Result};
 use crate::poly::Poly;
-use crate::symbol::{Atom, BaseAngle};
+use crate::ratfunc::RatFunc;
+use crate::symbol::{Atom, BaseAngle, Sym};
 
 /// `(sin(n b), cos(n b))` for an integer `n` and base angle `b`.
 pub fn sin_cos_multiple(angle: BaseAngle, n: i64) -> (Poly, Poly) {
@@ -29,6 +32,35 @@ pub fn sin_cos_combination(terms: &[(BaseAngle, i64)]) -> (Poly, Poly) {
         c = c_next;
     }
     (s, c)
+}
+
+/// The combination `sum n_k s_k` of angle symbols as one of base angles (`alpha = 2 (alpha/2)`).
+fn combination(angle: &[(Sym, i64)]) -> Result<Vec<(BaseAngle, i64)>> {
+    angle
+        .iter()
+        .map(|&(s, n)| {
+            let (base, k) = s.base_angle().ok_or_else(|| Error::UnsupportedAngle {
+                what: format!("symbol {} is not an angle", s.index()),
+            })?;
+            Ok((base, n * k))
+        })
+        .collect()
+}
+
+/// `sin(sum n_k s_k)` for angle symbols `s_k` and integers `n_k`.
+///
+/// # Errors
+/// A symbol that is not an angle.
+pub fn sin(angle: &[(Sym, i64)]) -> Result<RatFunc> {
+    Ok(sin_cos_combination(&combination(angle)?).0.into())
+}
+
+/// `cos(sum n_k s_k)` for angle symbols `s_k` and integers `n_k`.
+///
+/// # Errors
+/// A symbol that is not an angle.
+pub fn cos(angle: &[(Sym, i64)]) -> Result<RatFunc> {
+    Ok(sin_cos_combination(&combination(angle)?).1.into())
 }
 
 #[cfg(test)]

@@ -26,7 +26,7 @@ fn compass_gait_inertia_matrix_is_goswamis() {
     let l = &a + &b;
     let th_st = mech.syms.get("th_st").expect("th_st");
     let th_sw = mech.syms.get("th_sw").expect("th_sw");
-    let cos = walker_symbolic::mechanics::cos(&[(th_st, 1), (th_sw, -1)]).expect("cos");
+    let cos = walker_symbolic::paper::cos(&[(th_st, 1), (th_sw, -1)]).expect("cos");
     let (st, sw) = (2, 3);
     let want_sw_sw = &(&m * &b) * &b;
     let want_cross = -(&(&(&m * &l) * &b) * &cos);

@@ -39,8 +39,8 @@ fn without_the_double_support_test_the_coulomb_impact_keeps_the_old_stance_foots
     let s = |n: &str| RatFunc::sym(d.symbols.lookup(n).expect("symbol"));
     let phi = d.symbols.lookup("phi").expect("phi");
     let (sin, cos) = (
-        walker_symbolic::mechanics::sin(&[(phi, 1)]).expect("sin"),
-        walker_symbolic::mechanics::cos(&[(phi, 1)]).expect("cos"),
+        walker_symbolic::paper::sin(&[(phi, 1)]).expect("sin"),
+        walker_symbolic::paper::cos(&[(phi, 1)]).expect("cos"),
     );
     let want = &(&s("xd") * &sin) + &(&s("zd") * &cos);
     assert!(

@@ -1,14 +1,18 @@
-//! The paper's two walkers written as model files (`models/paper-active.toml`,
-//! `models/paper-passive.toml`) derive exactly the mechanics of the hand-written derivation:
-//! every entry of `M`, `h`, `S`, the stance quantities, the control terms, the stuck foot, the
-//! impact maps, the stuck closed loop, the Coulomb impact's ingredients and the Jacobians is the
-//! same rational function (compared exactly, after renaming the model's symbols into the paper's
-//! table by name).
+//! The paper's two walkers have two kernel catalogues: the model files' (`models/paper-*.toml`
+//! through [`ModelDerivation`], what the simulator runs) and the paper's
+//! ([`Derivation`], the kernels of `walker/scenes/` and of `docs/equations.md`, built from the
+//! same model files' quantities in the paper's notation). The two assemble their kernels by
+//! different code (arguments, output order, the Jacobians' variables, the staged forms); this
+//! file checks that they agree: the same arguments by name, and the same rational functions
+//! (compared exactly, after renaming the model's symbols into the paper's table by name).
+//! That the quantities themselves are the paper's is `paper.rs`'s business, equation by
+//! equation.
+//!
+//! [`ModelDerivation`]: walker_symbolic::model::ModelDerivation
 
 use walker_scene::model::Model;
 use walker_symbolic::Derivation;
 use walker_symbolic::matrix::Matrix;
-use walker_symbolic::model::{Mechanics, output_control, sliding, strike_impacts, stuck};
 use walker_symbolic::ratfunc::RatFunc;
 use walker_symbolic::symbol::{Atom, Sym, Symbols};
 
@@ -52,112 +56,7 @@ fn same(what: &str, got: &Matrix, want: &Matrix, rename: &impl Fn(usize) -> usiz
     }
 }
 
-fn one(r: &RatFunc) -> Matrix {
-    Matrix::column(vec![r.clone()])
-}
-
-#[test]
-fn the_active_model_file_derives_the_papers_level_mechanics_exactly() {
-    let model = load("paper-active");
-    let m = Mechanics::new(&model).expect("derives");
-    let d = Derivation::new().expect("paper derivation");
-    let r = renamer(&m.syms.table, &d.symbols);
-    same("M", &m.mass, &d.dynamics.mass, &r);
-    same("h", &m.bias, &d.dynamics.bias, &r);
-    same("S", &m.input_map, &d.dynamics.input_map, &r);
-    let s = sliding(&m).expect("stance");
-    same("lambda", &one(&s.lambda), &one(&d.level.lambda), &r);
-    same("Y", &s.projection, &d.level.projection, &r);
-    same("qdd", &s.accel, &d.level.accel, &r);
-    let c = output_control(&m, &model, &s.projection).expect("control");
-    same("A", &c.a, &one(&d.control.a), &r);
-    same("B", &c.b, &one(&d.control.b), &r);
-    let st = stuck(&m).expect("stuck");
-    same("lambda_s", &st.forces, &d.stick_level.forces, &r);
-    same("qdd_s", &st.accel, &d.stick_level.accel, &r);
-    let imp = strike_impacts(&m, &model).expect("impacts");
-    same("impact2 qd+", &imp.single.velocity, &d.impact2.velocity, &r);
-    same(
-        "impact2 lambda_I",
-        &imp.single.impulse,
-        &d.impact2.impulse,
-        &r,
-    );
-    let double = imp.double.expect("double-support test");
-    same("impact3 qd+", &double.velocity, &d.impact3.velocity, &r);
-    same("impact3 lambda_I", &double.impulse, &d.impact3.impulse, &r);
-    let energy = [m.kinetic.clone(), m.potential.clone()];
-    let want = [
-        d.dynamics.geometry.kinetic.clone(),
-        d.dynamics.geometry.potential.clone(),
-    ];
-    same(
-        "T, V",
-        &Matrix::column(energy.to_vec()),
-        &Matrix::column(want.to_vec()),
-        &r,
-    );
-    let fore = m.point("fore_foot").expect("fore foot");
-    same(
-        "fore foot",
-        &Matrix::column(fore.to_vec()),
-        &Matrix::column(d.dynamics.geometry.fore_foot.to_vec()),
-        &r,
-    );
-}
-
-#[test]
-fn the_passive_model_file_derives_the_papers_slope_mechanics_exactly() {
-    let model = load("paper-passive");
-    let m = Mechanics::new(&model).expect("derives");
-    let d = Derivation::new().expect("paper derivation");
-    let r = renamer(&m.syms.table, &d.symbols);
-    same("M", &m.mass, &d.dynamics.mass, &r);
-    same("h", &m.bias, &d.dynamics.bias, &r);
-    let u_zero = |x: &Matrix| {
-        x.try_map(|e| e.substitute(Atom::Sym(Sym::U), &RatFunc::zero()))
-            .expect("u = 0")
-    };
-    let s = sliding(&m).expect("stance");
-    same(
-        "lambda",
-        &one(&s.lambda),
-        &u_zero(&one(&d.slope.lambda)),
-        &r,
-    );
-    same("Y", &s.projection, &d.slope.projection, &r);
-    same("qdd", &s.accel, &u_zero(&d.slope.accel), &r);
-    let st = stuck(&m).expect("stuck");
-    same("lambda_s", &st.forces, &u_zero(&d.stick_slope.forces), &r);
-    let imp = strike_impacts(&m, &model).expect("impacts");
-    same(
-        "impact qd+",
-        &imp.single.velocity,
-        &d.impact_slope.velocity,
-        &r,
-    );
-    same(
-        "impact lambda_I",
-        &imp.single.impulse,
-        &d.impact_slope.impulse,
-        &r,
-    );
-    let double = imp.double.expect("double-support test");
-    same(
-        "impact2 qd+",
-        &double.velocity,
-        &d.impact2_slope.velocity,
-        &r,
-    );
-    same(
-        "impact2 lambda_I",
-        &double.impulse,
-        &d.impact2_slope.impulse,
-        &r,
-    );
-}
-
-/// The model file's kernels take the arguments of the hand-derived scene kernels they stand
+/// The model file's kernels take the arguments of the paper's scene kernels they stand
 /// for (by name, in order): in particular the closed loop computes `u` and does not take it.
 #[test]
 fn the_active_model_kernels_take_the_hand_derived_arguments() {
@@ -195,7 +94,7 @@ fn outputs_of(k: &walker_symbolic::Kernel) -> Matrix {
     Matrix::column(k.outputs.iter().map(|(_, r)| r.clone()).collect())
 }
 
-/// A kernel of the model file's derivation against the hand-derived one, output by output (the
+/// A kernel of the model file's derivation against the paper's, output by output (the
 /// names differ only where the model numbers what the paper's single input leaves plain: `u0`
 /// against `u`).
 fn same_kernel(
@@ -216,8 +115,8 @@ fn same_kernel(
 }
 
 /// A model Jacobian (`rows` rows over `[q, qdot, mu, v]` or `[q, qdot]`) against the
-/// hand-derived one over the paper's variables `theirs_vars`, on the `n = 4` rows of `qdd` or
-/// `qd+` that the hand derivation has (the closed loop's row of `u` is checked against SymPy in
+/// paper's over the paper's variables `theirs_vars`, on the `n = 4` rows of `qdd` or
+/// `qd+` that the paper's kernel has (the closed loop's row of `u` is checked against SymPy in
 /// `tests/tests/model_derivation.rs`): the columns of those variables equal exactly, every
 /// other column identically zero.
 fn same_jacobian(
@@ -283,7 +182,7 @@ fn the_model_files_derive_the_coulomb_impact_ingredients_exactly() {
         assert_eq!(
             names(d.kernel("impact_coulomb").expect("kernel")),
             names(paper.kernel(theirs).expect("kernel")),
-            "{model}: the hand-derived kernel's output names"
+            "{model}: the paper's kernel's output names"
         );
     }
 }

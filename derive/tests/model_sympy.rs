@@ -65,7 +65,7 @@ fn check(model_name: &str) -> usize {
         let vertical = scale.map_or(1.0, |phi| {
             let mut q = Point::zeros(&m.syms.table);
             q.set_sym(phi, num(&sample["params"][m.syms.table.name(phi)]));
-            walker_symbolic::mechanics::cos(&[(phi, 1)])
+            walker_symbolic::paper::cos(&[(phi, 1)])
                 .expect("cos")
                 .eval(&q)
         });

@@ -4,7 +4,7 @@
 //! one by semantic [`RatFunc`] equality (exact). Every printed closed form is also written out
 //! by hand in `f64` below (`paper_*` functions, straight from the paper's text, with std's
 //! `sin`/`cos`) and compared with the kernels evaluated in `f64` at random points, which checks
-//! the substitutions of the impact posture independently of `mechanics::at_impact_posture`.
+//! the substitutions of the impact posture independently of `paper::at_impact_posture`.
 //! Where the paper is wrong, the test asserts the derived form and says what is printed;
 //! `docs/errata.md` lists every such case with the name of its test.
 
@@ -13,7 +13,7 @@ mod common;
 use common::{Rng, cos1, derivation, div, out, s, sin1};
 
 use num_traits::ToPrimitive;
-use walker_symbolic::mechanics::{
+use walker_symbolic::paper::{
     self, Floor, cos, frac, int, sin, sin_half_alpha, tan_phi, total_inertia, total_mass,
 };
 use walker_symbolic::symbol::{Atom, BaseAngle, Point, Symbols, Valuation};
@@ -33,15 +33,15 @@ fn mul(a: &Matrix, b: &Matrix) -> Matrix {
 
 /// The paper's impact state on level ground: `th1 = alpha/2`, `zd- = 0`, `th2d- = th1d-`.
 fn at_level(r: &RatFunc) -> RatFunc {
-    let p = mechanics::at_impact_posture(r, Floor::Level).expect("posture");
-    mechanics::paper_pre_impact(&p, Floor::Level).expect("pre-impact")
+    let p = paper::at_impact_posture(r, Floor::Level).expect("posture");
+    paper::paper_pre_impact(&p, Floor::Level).expect("pre-impact")
 }
 
 /// The paper's impact state on the slope: `th1 = alpha/2 + phi`, `zd- = -xd- tan phi`,
 /// `th2d- = th1d-`.
 fn at_slope(r: &RatFunc) -> RatFunc {
-    let p = mechanics::at_impact_posture(r, Floor::Slope).expect("posture");
-    mechanics::paper_pre_impact(&p, Floor::Slope).expect("pre-impact")
+    let p = paper::at_impact_posture(r, Floor::Slope).expect("posture");
+    paper::paper_pre_impact(&p, Floor::Slope).expect("pre-impact")
 }
 
 /// `m_t l^2 (1 - cos alpha)`, the left side of Eqs. 11 and 46.
@@ -392,8 +392,8 @@ fn eq25_friction_must_oppose_sliding_energy_balance() {
     // (-mu0 tanh(c xd)) has this sign, Eq. 25 as printed (+mu0 sign(xd)) would feed energy in.
     let d = derivation();
     let energy = &out("energy", "T") + &out("energy", "V");
-    let mut rate = mechanics::time_derivative(&energy);
-    for (k, qdd) in mechanics::QDD_SYMS.iter().enumerate() {
+    let mut rate = paper::time_derivative(&energy);
+    for (k, qdd) in paper::QDD_SYMS.iter().enumerate() {
         rate = rate
             .substitute(Atom::Sym(*qdd), d.level.accel.get(k, 0))
             .expect("substitution");
@@ -548,8 +548,8 @@ fn the_staged_closed_loop_composes_to_its_definition_and_a_wrong_one_is_caught()
 
 #[test]
 fn yd_boundary_conditions_hold() {
-    mechanics::check_desired_output().expect("boundary conditions of y_d");
-    let [yd, ydd, yddd] = mechanics::desired_output().expect("y_d");
+    paper::check_desired_output().expect("boundary conditions of y_d");
+    let [yd, ydd, yddd] = paper::desired_output().expect("y_d");
     let t_set = s(Sym::TSet);
     let half = &s(Sym::Alpha) * &frac(1, 2);
     let at = |f: &RatFunc, t: &RatFunc| f.substitute(Atom::Sym(Sym::T), t).expect("subst");
@@ -582,10 +582,7 @@ fn eq03_fore_foot_velocity_and_eq07_12_jacobians() {
     let height = &(&z + &(&l * &cos1(Sym::Th1)))
         - &(&l * &cos(&[(Sym::Alpha, 1), (Sym::Th1, -1)]).expect("angle"));
     assert_eq!(out("fore_foot", "z_f"), height);
-    assert_eq!(
-        out("fore_foot", "zd_f"),
-        mechanics::time_derivative(&height)
-    );
+    assert_eq!(out("fore_foot", "zd_f"), paper::time_derivative(&height));
     // Eq. 7 (three rows) and Eq. 12 (rows 1 and 3), as printed.
     let row1 = vec![
         int(0),
@@ -615,7 +612,7 @@ fn eq08_09_from_the_printed_matrices() {
     // paper's M (Eq. 2) and J_I (Eq. 7): the same as the kernels, at any th1.
     let d = derivation();
     let m_inv = paper_mass_matrix().inverse("M").expect("regular");
-    let qd = Matrix::column(mechanics::QD_SYMS.iter().map(|x| s(*x)).collect());
+    let qd = Matrix::column(paper::QD_SYMS.iter().map(|x| s(*x)).collect());
     for (imp, kernel) in [(&d.impact3, "impact3_level"), (&d.impact2, "impact2_level")] {
         let j = &imp.jacobian;
         let x = mul(&mul(j, &m_inv), &j.transpose());
@@ -837,7 +834,7 @@ fn eq17_18_reset_on_level_ground() {
     // the new stance leg, the spoke at th1 - alpha, has th1+ = -alpha/2 (Eq. 18).
     let d = derivation();
     let g = &d.dynamics.geometry;
-    let posture = |r: &RatFunc| mechanics::at_impact_posture(r, Floor::Level).expect("posture");
+    let posture = |r: &RatFunc| paper::at_impact_posture(r, Floor::Level).expect("posture");
     let two_l_s = &(&int(2) * &s(Sym::L)) * &sin_half_alpha();
     assert_eq!(posture(&(&g.fore_foot[0] - &s(Sym::X))), two_l_s, "Eq. 17");
     assert_eq!(posture(&g.fore_foot[1]), s(Sym::Z), "z+ = z-");
@@ -937,8 +934,8 @@ fn eq37_38_slope_friction_dissipates() {
     //     dE/dt = mu lambda xd (1 + tan^2 phi) = mu lambda xd / cos^2 phi,
     // dissipative iff mu xd <= 0, which Eq. 37's -mu0 tanh(c xd / cos phi) is.
     let energy = &out("energy", "T") + &out("energy", "V");
-    let mut rate = mechanics::time_derivative(&energy);
-    for (k, qdd) in mechanics::QDD_SYMS.iter().enumerate() {
+    let mut rate = paper::time_derivative(&energy);
+    for (k, qdd) in paper::QDD_SYMS.iter().enumerate() {
         rate = rate
             .substitute(Atom::Sym(*qdd), &out("accel_slope", &format!("qdd{k}")))
             .expect("substitution");
@@ -994,7 +991,7 @@ fn eq42_slope_impact_row_and_the_vertical_impulse() {
     // With the printed row, lambda_I = -(J M^-1 J^T)^-1 J qd- is the kernel's impulse: the
     // kernels report the paper's (vertical) scaling.
     let m_inv = paper_mass_matrix().inverse("M").expect("regular");
-    let qd = Matrix::column(mechanics::QD_SYMS.iter().map(|x| s(*x)).collect());
+    let qd = Matrix::column(paper::QD_SYMS.iter().map(|x| s(*x)).collect());
     let x = mul(&mul(&row, &m_inv), &row.transpose())
         .scalar()
         .expect("1x1");
@@ -1035,7 +1032,7 @@ fn eq42_slope_impact_row_and_the_vertical_impulse() {
 fn eq43_45_reset_on_the_slope() {
     let d = derivation();
     let g = &d.dynamics.geometry;
-    let posture = |r: &RatFunc| mechanics::at_impact_posture(r, Floor::Slope).expect("posture");
+    let posture = |r: &RatFunc| paper::at_impact_posture(r, Floor::Slope).expect("posture");
     let (l, sh) = (s(Sym::L), sin_half_alpha());
     let two_l_s = &(&int(2) * &l) * &sh;
     let (sp, cp) = (
@@ -1354,10 +1351,10 @@ fn unknown_names_are_errors() {
     // miss is an error, not a fresh symbol.
     let table = Symbols::paper();
     for x in table.syms() {
-        assert_eq!(table.lookup(table.name(x)).map(mechanics::sym), Ok(s(x)));
+        assert_eq!(table.lookup(table.name(x)).map(paper::sym), Ok(s(x)));
     }
     assert_eq!(
-        table.lookup("m3").map(mechanics::sym),
+        table.lookup("m3").map(paper::sym),
         Err(Error::UnknownSymbol { name: "m3".into() })
     );
     assert!(matches!(

@@ -24,7 +24,7 @@ mod common;
 
 use common::{Rng, cos1, derivation, div, out, s, sin1};
 
-use walker_symbolic::mechanics::{self, int, total_mass};
+use walker_symbolic::paper::{self, int, total_mass};
 use walker_symbolic::symbol::{Atom, BaseAngle, Point, Symbols};
 use walker_symbolic::{RatFunc, Sym};
 
@@ -183,10 +183,10 @@ fn the_staged_stuck_closed_loop_composes_and_a_wrong_one_is_caught() {
 fn constraint_forces_do_no_work_while_stuck() {
     // With xd = zd = 0 the energy changes by the joint power only: dE/dt = u (th1d - th2d).
     let energy = &out("energy", "T") + &out("energy", "V");
-    let rate = mechanics::time_derivative(&energy);
+    let rate = paper::time_derivative(&energy);
     let at_rest_foot = |r: RatFunc, kernel: &str| {
         let mut r = r;
-        for (k, qdd) in mechanics::QDD_SYMS.iter().enumerate() {
+        for (k, qdd) in paper::QDD_SYMS.iter().enumerate() {
             r = r
                 .substitute(Atom::Sym(*qdd), &out(kernel, &format!("qdd{k}")))
                 .expect("subst");

@@ -1,11 +1,8 @@
-//! The derived quantities as named kernels: inputs and output expressions, in the order fixed
-//! by `docs/kernels.md`, for the code generator and the tests.
-//!
-//! `kernel` holds the kernel as data ([`Kernel`], [`Shape`], [`Staged`]); `derivation` builds
-//! the named kernels ([`Derivation`]) and uses `kernel`, not the other way round.
+//! The kernel as data: a named function of some symbols with its output expressions, in the
+//! order fixed by `docs/kernels.md`, for the code generator and the tests ([`Kernel`],
+//! [`Shape`], [`Staged`]). The model derivation ([`crate::model::ModelDerivation`]) and the
+//! paper's catalogue ([`crate::paper::Derivation`]) build them.
 
-mod derivation;
 mod kernel;
 
-pub use derivation::Derivation;
 pub use kernel::{Kernel, Shape, Staged, find_kernel};

@@ -6,8 +6,9 @@ use std::fmt::Write as _;
 use super::formula::{ratfunc, ratfunc_at_most};
 use super::label::{output_label, split_index};
 use crate::error::Result;
-use crate::kernels::{Derivation, Kernel, Shape};
-use crate::mechanics::{self, Floor};
+use crate::kernels::{Kernel, Shape};
+use crate::paper::Derivation;
+use crate::paper::{self, Floor};
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, BaseAngle, Sym};
 
@@ -141,7 +142,7 @@ fn kernel_section(out: &mut String, kernel: &Kernel) {
 }
 
 /// The paper's pre-impact state and posture applied to every output of an impact kernel. On
-/// level ground the torso is locked (`th2d = th1d`, [`mechanics::paper_pre_impact`]); on the
+/// level ground the torso is locked (`th2d = th1d`, [`paper::paper_pre_impact`]); on the
 /// slope the torso is passive and not locked (Section 5: it decouples from the wheel), so only
 /// the stance foot's constraint `zd = -xd tan phi` is substituted and `th2d` stays its own.
 fn at_paper_impact(kernel: &Kernel, floor: Floor) -> Result<Vec<RatFunc>> {
@@ -149,11 +150,11 @@ fn at_paper_impact(kernel: &Kernel, floor: Floor) -> Result<Vec<RatFunc>> {
         .outputs
         .iter()
         .map(|(_, r)| {
-            let r = mechanics::at_impact_posture(r, floor)?;
+            let r = paper::at_impact_posture(r, floor)?;
             match floor {
-                Floor::Level => mechanics::paper_pre_impact(&r, floor),
+                Floor::Level => paper::paper_pre_impact(&r, floor),
                 Floor::Slope => {
-                    let zd = -(&mechanics::sym(Sym::Xd) * &mechanics::tan_phi()?);
+                    let zd = -(&paper::sym(Sym::Xd) * &paper::tan_phi()?);
                     r.substitute(Atom::Sym(Sym::Zd), &zd)
                 }
             }
@@ -184,8 +185,8 @@ fn impact_closed_form(
 /// The rear-foot impulse of a double-support impact multiplied by `4 l sin(alpha/2)` and
 /// divided by `thdot_1^-`: the left minus the right side of the paper's condition.
 fn dls_margin(rear_impulse: &RatFunc, floor: Floor) -> Result<RatFunc> {
-    let scale = &(&mechanics::int(4) * &mechanics::sym(Sym::L)) * &mechanics::sin_half_alpha();
-    let margin = (rear_impulse * &scale).div(&mechanics::sym(Sym::Th1d))?;
+    let scale = &(&paper::int(4) * &paper::sym(Sym::L)) * &paper::sin_half_alpha();
+    let margin = (rear_impulse * &scale).div(&paper::sym(Sym::Th1d))?;
     Ok(match floor {
         Floor::Level => margin,
         // The kernel reports the vertical impulse: divide by cos phi for the normal one.

@@ -1,9 +1,9 @@
 //! Tests of the printer through its public entry points.
 
 use super::*;
-use crate::kernels::Derivation;
 use crate::matrix::Matrix;
-use crate::mechanics::{self, cos, frac, int, sin, sym};
+use crate::paper::Derivation;
+use crate::paper::{self, cos, frac, int, sin, sym};
 use crate::ratfunc::RatFunc;
 use crate::symbol::{BaseAngle, Sym};
 
@@ -40,7 +40,7 @@ fn constants_and_signs() {
 
 #[test]
 fn total_mass_is_abbreviated_by_division_and_by_substitution() {
-    let mt = mechanics::total_mass();
+    let mt = paper::total_mass();
     let l = s(Sym::L);
     // divisible: m_t^2 I_1 I_2 (det M)
     let det = &(&(&mt * &mt) * &s(Sym::I1)) * &s(Sym::I2);
@@ -52,14 +52,14 @@ fn total_mass_is_abbreviated_by_division_and_by_substitution() {
     let q = &s(Sym::M1) + &(&s(Sym::M2) * &l);
     assert_eq!(ratfunc(&q), "m_1 + m_2 l");
     // I_t
-    let it = mechanics::total_inertia();
+    let it = paper::total_inertia();
     assert_eq!(ratfunc(&(&int(2) * &it)), "2 I_t");
 }
 
 #[test]
 fn fraction_with_content_split_above_and_below() {
-    let it = mechanics::total_inertia();
-    let den = &(&int(4) * &s(Sym::L)) * &mechanics::sin_half_alpha();
+    let it = paper::total_inertia();
+    let den = &(&int(4) * &s(Sym::L)) * &paper::sin_half_alpha();
     let r = (&int(2) * &it).div(&den).expect("nonzero");
     assert_eq!(ratfunc(&r), "\\frac{I_t}{2 l \\sin\\frac{\\alpha}{2}}");
     let neg = r.neg();

@@ -1,6 +1,5 @@
 //! The ingredients of a model's impact with Coulomb friction at the striking point
-//! (`impact_coulomb`; `docs/impacts.md`), generalising the paper walker's
-//! [`crate::mechanics::coulomb_impact`] to any model.
+//! (`impact_coulomb`; `docs/impacts.md`; not in the paper).
 //!
 //! The model's locks (`[impact] locks`) are bilateral and frictionless, so they act first:
 //! `M_L^-1 = M^-1 - M^-1 J_L^T (J_L M^-1 J_L^T)^-1 J_L M^-1` is the inverse mass matrix
@@ -13,7 +12,7 @@
 //! stance foot's gap (`r`, for the double-support test; given for a model without that test
 //! too, whose simulator ignores it).
 //!
-//! Outputs, named as the hand-derived kernels': `qdl` (`qdot_L`), `v_t, v_n, v_r` (`J qdot_L`),
+//! Outputs, named as the paper's `impact_coulomb_level`: `qdl` (`qdot_L`), `v_t, v_n, v_r` (`J qdot_L`),
 //! the upper triangle of the Delassus matrix `W = J M_L^-1 J^T` over `(t, n, r)`, and
 //! `R = M_L^-1 [J_t; J_n]^T` (`n x 2`, row-major).
 

@@ -106,8 +106,8 @@ impl Mechanics {
             Some(name) => {
                 let phi = syms.get(&name.name)?;
                 Some((
-                    crate::mechanics::sin(&[(phi, 1)])?,
-                    crate::mechanics::cos(&[(phi, 1)])?,
+                    crate::trig::sin(&[(phi, 1)])?,
+                    crate::trig::cos(&[(phi, 1)])?,
                 ))
             }
         };

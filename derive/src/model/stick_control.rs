@@ -9,7 +9,7 @@
 //! control is recomputed for these dynamics, `u = A_s^-1 (v + B_s)` (Eq. 31 with the stuck
 //! `A_s`, `B_s`), so that `yddot = v` while the foot sticks; the kernel gives the stuck
 //! accelerations and the ground force with that `u`. The same as `A_s = H M^-1 Y_s S` with the
-//! stick projection `Y_s = I - J_s^T (J_s M^-1 J_s^T)^-1 J_s M^-1` (the hand-derived
+//! stick projection `Y_s = I - J_s^T (J_s M^-1 J_s^T)^-1 J_s M^-1` (the paper's
 //! `closed_loop_stick_level`), without `M^-1`.
 
 use walker_scene::model::Model;

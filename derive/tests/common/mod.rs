@@ -4,7 +4,7 @@
 
 use std::sync::OnceLock;
 
-use walker_symbolic::mechanics::{cos, sin, sym};
+use walker_symbolic::paper::{cos, sin, sym};
 use walker_symbolic::{Derivation, RatFunc, Sym};
 
 /// The derivation, made once per test binary.

@@ -1,12 +1,13 @@
-//! The building blocks of the derivation: the coordinate symbols `q`, `qdot`, `qddot`,
-//! constants, sines and cosines of angle combinations, the total time derivative along the
-//! motion, and the total mass and inertia.
+//! The paper's notation as expressions of its symbol table ([`Symbols::paper`]): the coordinate
+//! symbols `q`, `qdot`, `qddot`, constants, `sin(alpha/2)`, `tan(phi)`, the total time
+//! derivative along the motion, and the total mass `m_t` and inertia `I_t`.
+//!
+//! [`Symbols::paper`]: crate::symbol::Symbols::paper
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::poly::Q;
 use crate::ratfunc::RatFunc;
 use crate::symbol::{BaseAngle, Sym};
-use crate::trig::sin_cos_combination;
 
 /// The generalized coordinates `q = [x, z, th1, th2]` (Section 2.2).
 pub const Q_SYMS: [Sym; 4] = [Sym::X, Sym::Z, Sym::Th1, Sym::Th2];
@@ -28,28 +29,6 @@ pub fn int(n: i64) -> RatFunc {
 /// A rational constant `n / d`.
 pub fn frac(n: i64, d: i64) -> RatFunc {
     RatFunc::constant(Q::new(n.into(), d.into()))
-}
-
-fn combination(angle: &[(Sym, i64)]) -> Result<Vec<(BaseAngle, i64)>> {
-    angle
-        .iter()
-        .map(|&(s, n)| {
-            let (base, k) = s.base_angle().ok_or_else(|| Error::UnsupportedAngle {
-                what: format!("symbol {} is not an angle", s.index()),
-            })?;
-            Ok((base, n * k))
-        })
-        .collect()
-}
-
-/// `sin(sum n_k s_k)` for angle symbols `s_k` and integers `n_k`.
-pub fn sin(angle: &[(Sym, i64)]) -> Result<RatFunc> {
-    Ok(sin_cos_combination(&combination(angle)?).0.into())
-}
-
-/// `cos(sum n_k s_k)`.
-pub fn cos(angle: &[(Sym, i64)]) -> Result<RatFunc> {
-    Ok(sin_cos_combination(&combination(angle)?).1.into())
 }
 
 /// `sin(alpha / 2)`.

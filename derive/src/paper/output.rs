@@ -1,7 +1,7 @@
 //! The desired output `y_d(t)` of the control (Section 3.2) and the symbolic check of its
 //! boundary conditions.
 
-use super::terms::{frac, int, sym};
+use super::notation::{frac, int, sym};
 use crate::error::{Error, Result};
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, Sym};

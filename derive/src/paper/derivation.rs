@@ -1,10 +1,11 @@
-//! The [`Derivation`]: every symbolic object derived from the physics, and the named kernels
-//! built from them in the order fixed by `docs/kernels.md`.
+//! The [`Derivation`]: the paper's kernels, in the order fixed by `docs/kernels.md`, built from
+//! the quantities its model files derive ([`crate::paper::PaperQuantities`]).
 
-use super::kernel::{Kernel, Shape, Staged, find_kernel};
+use super::quantities::PaperQuantities;
 use crate::error::Result;
+use crate::kernels::{Kernel, Shape, Staged, find_kernel};
 use crate::matrix::Matrix;
-use crate::mechanics::{self, Floor, ImpactConstraint, sym};
+use crate::paper::{self, sym};
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, Sym, Symbols};
 
@@ -14,31 +15,31 @@ pub struct Derivation {
     /// The symbol table every expression of the derivation is written in.
     pub symbols: Symbols,
     /// `M`, `h`, `S` and the geometry.
-    pub dynamics: mechanics::Dynamics,
+    pub dynamics: paper::Dynamics,
     /// Stance phase on level ground.
-    pub level: mechanics::Stance,
+    pub level: paper::Stance,
     /// Stance phase on the slope.
-    pub slope: mechanics::Stance,
+    pub slope: paper::Stance,
     /// Control terms on level ground.
-    pub control: mechanics::Control,
+    pub control: paper::Control,
     /// Impact with three constraints (Eqs. 6-10).
-    pub impact3: mechanics::Impact,
+    pub impact3: paper::Impact,
     /// Impact with two constraints (Eqs. 12-16).
-    pub impact2: mechanics::Impact,
+    pub impact2: paper::Impact,
     /// Impact on the slope (Eqs. 39-42).
-    pub impact_slope: mechanics::Impact,
+    pub impact_slope: paper::Impact,
     /// Impact on the slope with the rear foot held (Eq. 46).
-    pub impact2_slope: mechanics::Impact,
+    pub impact2_slope: paper::Impact,
     /// Stick phase on level ground (the foot held; not in the paper).
-    pub stick_level: mechanics::Stick,
+    pub stick_level: paper::Stick,
     /// Stick phase on the slope (not in the paper).
-    pub stick_slope: mechanics::Stick,
+    pub stick_slope: paper::Stick,
     /// Control terms `A_s`, `B_s` of the stick phase on level ground.
-    pub stick_control: mechanics::Control,
+    pub stick_control: paper::Control,
     /// The level impact's ingredients for Coulomb friction at the fore foot (torso locked).
-    pub coulomb_level: mechanics::CoulombImpact,
+    pub coulomb_level: paper::CoulombImpact,
     /// The slope impact's ingredients for Coulomb friction at the fore foot.
-    pub coulomb_slope: mechanics::CoulombImpact,
+    pub coulomb_slope: paper::CoulombImpact,
     /// The kernels.
     pub kernels: Vec<Kernel>,
 }
@@ -70,7 +71,7 @@ const STICK_CONTROL_EQUATION: &str =
 /// The outputs of a Coulomb impact kernel: `qdl` (velocities after the torso lock), the
 /// contact velocities `v_t, v_n, v_r`, the upper triangle of the Delassus matrix over
 /// `(t, n, r)` and the response `R` (4x2).
-fn coulomb_outputs(c: &mechanics::CoulombImpact) -> Vec<(String, RatFunc)> {
+fn coulomb_outputs(c: &paper::CoulombImpact) -> Vec<(String, RatFunc)> {
     let mut o = named("qdl", &c.locked_velocity);
     let v = c.contact_velocity.entries();
     o.extend(
@@ -99,38 +100,42 @@ fn substitute_u_zero(m: &Matrix) -> Result<Matrix> {
 }
 
 impl Derivation {
-    /// Derives everything from the physics.
+    /// Derives the paper's walkers from their model files and builds the kernels.
+    ///
+    /// # Errors
+    /// A model file that does not derive, or a kernel that does not check against the table.
     pub fn new() -> Result<Derivation> {
         let symbols = Symbols::paper();
-        use ImpactConstraint::*;
-        let dynamics = mechanics::dynamics()?;
-        let level = mechanics::stance(&dynamics, Floor::Level)?;
-        let slope = mechanics::stance(&dynamics, Floor::Slope)?;
-        let control = mechanics::control(&dynamics, &level)?;
-        mechanics::check_desired_output()?;
-        let impact3 = mechanics::impact(&dynamics, Floor::Level, &[ForeFoot, RearFoot, TorsoLock])?;
-        let impact2 = mechanics::impact(&dynamics, Floor::Level, &[ForeFoot, TorsoLock])?;
-        let impact_slope = mechanics::impact(&dynamics, Floor::Slope, &[ForeFoot])?;
-        let impact2_slope = mechanics::impact(&dynamics, Floor::Slope, &[ForeFoot, RearFoot])?;
-        let stick_level = mechanics::stick(&dynamics, Floor::Level)?;
-        let stick_slope = mechanics::stick(&dynamics, Floor::Slope)?;
-        let stick_control = mechanics::stick_control(&dynamics, &stick_level)?;
-        let coulomb_level = mechanics::coulomb_impact(&dynamics, Floor::Level, true)?;
-        let coulomb_slope = mechanics::coulomb_impact(&dynamics, Floor::Slope, false)?;
+        let PaperQuantities {
+            dynamics,
+            level,
+            slope,
+            control,
+            impact3,
+            impact2,
+            impact_slope,
+            impact2_slope,
+            stick_level,
+            stick_slope,
+            stick_control,
+            coulomb_level,
+            coulomb_slope,
+        } = PaperQuantities::derive(&symbols)?;
+        paper::check_desired_output()?;
         let g = &dynamics.geometry;
         let impact_args = vec![Sym::Th1, Sym::Xd, Sym::Zd, Sym::Th1d, Sym::Th2d];
         // On the slope the paper scales foot impulses to their vertical component (Eq. 42 has
         // `tan phi, 1` where the unit normal has `sin phi, cos phi`): report them that way.
         let cos_phi = RatFunc::cos_of(crate::symbol::BaseAngle::Phi);
-        let vertical = |imp: &mechanics::Impact| imp.impulse.scale(&cos_phi);
-        let impact_outputs = |imp: &mechanics::Impact, impulse: Matrix| {
+        let vertical = |imp: &paper::Impact| imp.impulse.scale(&cos_phi);
+        let impact_outputs = |imp: &paper::Impact, impulse: Matrix| {
             let mut o = named("lambdaI", &impulse);
             o.extend(named("qdp", &imp.velocity));
             o
         };
         let fore_foot_vel = [
-            mechanics::time_derivative(&g.fore_foot[0]),
-            mechanics::time_derivative(&g.fore_foot[1]),
+            paper::time_derivative(&g.fore_foot[0]),
+            paper::time_derivative(&g.fore_foot[1]),
         ];
         // Closed loop (Eq. 27 with u from Eq. 31): with u = (v + B) / A the output obeys
         // yddot = v exactly, and the accelerations depend on (th1, th1d, mu, v) only.
