@@ -3,11 +3,9 @@
 //!
 //! The order: coordinates `q`, velocities `<q>d`, accelerations `<q>dd`, parameters in file
 //! order, inputs, `mu`, the outputs' auxiliary inputs, `t`. A symbol's position in
-//! [`Model::symbols`] is its index; the derivation interns by it.
+//! [`Model::symbols`](crate::model::Model::symbols) is its index; the derivation interns by it.
 
 use std::collections::HashMap;
-
-use crate::model::types::Model;
 
 /// What a symbol stands for.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
@@ -90,41 +88,5 @@ impl SymbolTable {
 
     pub(crate) fn get(&self, name: &str) -> Option<&Symbol> {
         self.index.get(name).and_then(|&i| self.symbols.get(i))
-    }
-}
-
-impl Model {
-    /// Every symbol, in canonical order.
-    #[must_use]
-    pub fn symbols(&self) -> &[Symbol] {
-        &self.symbols.symbols
-    }
-
-    /// The symbol of that name.
-    #[must_use]
-    pub fn symbol(&self, name: &str) -> Option<&Symbol> {
-        self.symbols.get(name)
-    }
-
-    /// The index of a symbol in [`Model::symbols`].
-    #[must_use]
-    pub fn symbol_index(&self, name: &str) -> Option<usize> {
-        self.symbols.index.get(name).copied()
-    }
-
-    /// Whether `name` is an angle symbol.
-    #[must_use]
-    pub fn is_angle(&self, name: &str) -> bool {
-        self.symbols.get(name).is_some_and(|s| s.angle)
-    }
-
-    /// The base-angle divisor of an angle symbol (2 for the paper's `alpha`, which appears as
-    /// `alpha/2`); `None` if `name` is not an angle.
-    #[must_use]
-    pub fn base_angle_divisor(&self, name: &str) -> Option<u64> {
-        self.symbols
-            .get(name)
-            .filter(|s| s.angle)
-            .map(|s| s.base_divisor)
     }
 }

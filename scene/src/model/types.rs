@@ -4,7 +4,7 @@
 use crate::model::error::Location;
 use crate::model::expr::{Expr, Span};
 use crate::model::interval::Interval;
-use crate::model::symbols::SymbolTable;
+use crate::model::symbols::{Symbol, SymbolTable};
 use crate::structure::{Friction, ImpactLaw};
 
 /// An expression of the file: its text, its tree, and where the text starts in the file.
@@ -395,4 +395,40 @@ pub struct Model {
     /// integrates to `T_set` (Section 4.2), where its output stops moving.
     pub power_until: Option<ModelExpr>,
     pub(crate) symbols: SymbolTable,
+}
+
+impl Model {
+    /// Every symbol, in canonical order.
+    #[must_use]
+    pub fn symbols(&self) -> &[Symbol] {
+        &self.symbols.symbols
+    }
+
+    /// The symbol of that name.
+    #[must_use]
+    pub fn symbol(&self, name: &str) -> Option<&Symbol> {
+        self.symbols.get(name)
+    }
+
+    /// The index of a symbol in [`Model::symbols`].
+    #[must_use]
+    pub fn symbol_index(&self, name: &str) -> Option<usize> {
+        self.symbols.index.get(name).copied()
+    }
+
+    /// Whether `name` is an angle symbol.
+    #[must_use]
+    pub fn is_angle(&self, name: &str) -> bool {
+        self.symbols.get(name).is_some_and(|s| s.angle)
+    }
+
+    /// The base-angle divisor of an angle symbol (2 for the paper's `alpha`, which appears as
+    /// `alpha/2`); `None` if `name` is not an angle.
+    #[must_use]
+    pub fn base_angle_divisor(&self, name: &str) -> Option<u64> {
+        self.symbols
+            .get(name)
+            .filter(|s| s.angle)
+            .map(|s| s.base_divisor)
+    }
 }
