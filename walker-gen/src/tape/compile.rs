@@ -15,9 +15,9 @@
 use std::collections::{BTreeMap, BTreeSet, HashMap, HashSet};
 
 use super::error::TapeError;
-use super::float::Funcs;
 use super::instr::{Code, Instr, Op, Reg};
 use super::program::Program;
+use super::select::Funcs;
 use crate::ir::{Graph, Node, NodeId};
 use crate::plan::{Block, Step};
 

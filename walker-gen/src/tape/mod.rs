@@ -59,11 +59,11 @@
 //!
 //! # Layout
 //!
-//! `instr.rs` (instruction set and interpreter loop), `float.rs` (which float function a node
-//! calls), `program.rs` (a compiled block, its register layout, running it), `compile.rs`
-//! (block to program, register reuse), `kernel.rs` ([`TapeKernel`], [`KernelIndex`]),
-//! `values.rs` ([`Prepared`], [`Scratch`]), `module.rs` ([`TapeModule`]), `error.rs`
-//! ([`TapeError`]).
+//! `float.rs` (the generated file's own `sin_cos` and `tanh`), `instr.rs` (instruction set and
+//! interpreter loop), `select.rs` (which float function a node calls), `program.rs` (a compiled
+//! block, its register layout, running it), `compile.rs` (block to program, register reuse),
+//! `kernel.rs` ([`TapeKernel`], [`KernelIndex`]), `values.rs` ([`Prepared`], [`Scratch`]),
+//! `module.rs` ([`TapeModule`]), `error.rs` ([`TapeError`]).
 
 mod compile;
 mod error;
@@ -72,6 +72,7 @@ mod instr;
 mod kernel;
 mod module;
 mod program;
+mod select;
 #[cfg(test)]
 mod tests;
 mod values;

@@ -6,9 +6,9 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use super::compile::{Leaf, compile};
 use super::error::TapeError;
-use super::float::Funcs;
 use super::kernel::{KernelIndex, TapeKernel};
 use super::program::Program;
+use super::select::Funcs;
 use super::values::{Prepared, Scratch};
 use crate::ir::{Module, Node, NodeId, ParamDecl};
 use crate::options::{EmitOptions, Float};
