@@ -20,7 +20,7 @@ use crate::sim::{SimConfig, WalkLimits, walk};
 use crate::vector::Vector;
 
 use super::error::MapError;
-use super::map::{JacobianMethod, MapResult};
+use super::result::{JacobianMethod, MapResult};
 
 /// A foot-relative post-impact state and the regime of the impact that led to it.
 #[derive(Clone, Copy)]

@@ -9,8 +9,9 @@ use crate::sim::{Failure, SimConfig, WalkLimits, walk};
 use crate::vector::Vector;
 
 use super::error::FixedPointError;
-use super::map::{JacobianMethod, MapResult, poincare_map};
+use super::map::poincare_map;
 use super::multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
+use super::result::{JacobianMethod, MapResult};
 use super::section::Section;
 use crate::model::ImpactRegime;
 

@@ -2,8 +2,6 @@
 //! variational equations appended ([`Variational`]), the saltation correction at the strike,
 //! and the Jacobians of the impact and of the relabelling.
 
-use serde::Serialize;
-
 use crate::jacobian::StanceJacobian;
 use crate::model::{Contact, ImpactRegime, KernelId, Model};
 use crate::ode::{
@@ -15,6 +13,7 @@ use crate::vector::{MAX_LEN, Vector};
 use super::error::MapError;
 use super::finite_difference::finite_difference_map;
 use super::impact_jacobian::coulomb_impact_jacobian;
+use super::result::{JacobianMethod, MapResult};
 
 /// Evaluates `$body` with `$na` set to the size `2n + (2n)^2` of the state with the
 /// variational equations, for the sizes of the models with Jacobian kernels (`n` from 3 to 5);
@@ -80,33 +79,6 @@ impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
         self.model.next_breakpoint(t)
     }
-}
-
-/// One evaluation of the Poincare map.
-#[derive(Clone, Debug, PartialEq)]
-pub struct MapResult {
-    /// The next post-impact state `[q, qd]`, measured from the new stance foot (`x = z = 0`).
-    pub state_plus: Vector,
-    /// The step period `T` (s).
-    pub period: f64,
-    /// The step length (Eq. 34; along the slope, Eq. 47) (m).
-    pub dx: f64,
-    /// `d state_plus_i / d state_j` (row `i`, column `j`).
-    pub jacobian: Vec<Vec<f64>>,
-    /// How the Jacobian was computed.
-    pub method: JacobianMethod,
-    /// How the striking foot ended the impact.
-    pub impact: ImpactRegime,
-}
-
-/// How the Poincare map's Jacobian is computed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum JacobianMethod {
-    /// Variational equations with the generated Jacobian kernels (the module documentation).
-    Variational,
-    /// Central differences of one simulated step ([`super::finite_difference`]).
-    FiniteDifferences,
 }
 
 /// The strike guard's gradient `d g / d [q, qd]` at the coordinates `q` (the model file's

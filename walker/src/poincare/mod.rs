@@ -56,11 +56,13 @@ mod fixed_point;
 mod impact_jacobian;
 mod map;
 mod multipliers;
+mod result;
 mod section;
 
 pub use continuation::{ContinuationPoint, continuation};
 pub use error::{FixedPointError, MapError};
 pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
-pub use map::{JacobianMethod, MapResult, poincare_map};
+pub use map::poincare_map;
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
+pub use result::{JacobianMethod, MapResult};
 pub use section::Section;

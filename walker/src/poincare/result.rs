@@ -1,0 +1,35 @@
+//! What one evaluation of the Poincare map gives ([`MapResult`]) and how its Jacobian was
+//! computed ([`JacobianMethod`]): the variational equations (`map.rs`) or central differences of
+//! a simulated step (`finite_difference.rs`).
+
+use serde::Serialize;
+
+use crate::model::ImpactRegime;
+use crate::vector::Vector;
+
+/// One evaluation of the Poincare map.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MapResult {
+    /// The next post-impact state `[q, qd]`, measured from the new stance foot (`x = z = 0`).
+    pub state_plus: Vector,
+    /// The step period `T` (s).
+    pub period: f64,
+    /// The step length (Eq. 34; along the slope, Eq. 47) (m).
+    pub dx: f64,
+    /// `d state_plus_i / d state_j` (row `i`, column `j`).
+    pub jacobian: Vec<Vec<f64>>,
+    /// How the Jacobian was computed.
+    pub method: JacobianMethod,
+    /// How the striking foot ended the impact.
+    pub impact: ImpactRegime,
+}
+
+/// How the Poincare map's Jacobian is computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum JacobianMethod {
+    /// Variational equations with the generated Jacobian kernels (the module documentation).
+    Variational,
+    /// Central differences of one simulated step ([`super::finite_difference`]).
+    FiniteDifferences,
+}
