@@ -200,9 +200,11 @@ pub fn equations_markdown(d: &Derivation) -> Result<String> {
     let mut out = String::new();
     out.push_str(
         "# Derived equations\n\n\
-         Generated from the derivation by `cargo run -p walker-symbolic --bin walker-equations --release`;\n\
-         do not edit by hand (`derive/tests/equations_doc.rs` fails when this file and the derivation\n\
-         differ). The paper's equations are checked one by one in [errata.md](errata.md); the kernel\n\
+         Derived from the paper's model files (`models/paper-active.toml`, `models/paper-passive.toml`)\n\
+         and written in the paper's notation by\n\
+         `cargo run -p walker-symbolic --bin walker-equations --release`; do not edit by hand\n\
+         (`derive/tests/equations_doc.rs` fails when this file and the derivation differ).\n\
+         The paper's equations are checked one by one in [errata.md](errata.md); the kernel\n\
          contract (names, inputs, conventions) is [kernels.md](kernels.md).\n\n\
          Notation, as the engine holds the expressions (canonical form, see `derive/src/poly.rs`):\n\n\
          - $m_t = m_1 + m_2$ and $I_t = I_1 + I_2$ where an expression is divisible by them or depends\n  \
