@@ -19,7 +19,7 @@ fn main() -> Result<(), walker_symbolic::Error> {
         );
     }
 
-    println!("lambda = {:?}", d.level.lambda);
+    println!("lambda = {:?}", d.quantities.level.lambda);
     println!("derivation of every kernel: {:.3} s", elapsed.as_secs_f64());
     Ok(())
 }

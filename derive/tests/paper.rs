@@ -203,7 +203,7 @@ fn eq02_mass_matrix_entry_by_entry() {
     for i in 0..4 {
         for j in 0..4 {
             assert_eq!(
-                d.dynamics.mass.get(i, j),
+                d.quantities.dynamics.mass.get(i, j),
                 paper.get(i, j),
                 "M[{i}][{j}] differs from Eq. 2"
             );
@@ -220,7 +220,7 @@ fn eq02_mass_matrix_entry_by_entry() {
         ];
         for (i, row) in want.iter().enumerate() {
             for (j, w) in row.iter().enumerate() {
-                close(d.dynamics.mass.get(i, j).eval(&a), *w, "Eq. 2");
+                close(d.quantities.dynamics.mass.get(i, j).eval(&a), *w, "Eq. 2");
             }
         }
     }
@@ -230,11 +230,11 @@ fn eq02_mass_matrix_entry_by_entry() {
 fn eq02_det_is_mt_squared_i1_i2_and_the_inverse_is_exact() {
     let d = derivation();
     let mt = total_mass();
-    let det = d.dynamics.mass.det().expect("square");
+    let det = d.quantities.dynamics.mass.det().expect("square");
     assert_eq!(det, &(&(&mt * &mt) * &s(Sym::I1)) * &s(Sym::I2));
-    let product = mul(&d.dynamics.mass, &d.dynamics.mass_inv);
+    let product = mul(&d.quantities.dynamics.mass, &d.quantities.dynamics.mass_inv);
     assert_eq!(product, Matrix::identity(4), "M M^-1 = I exactly");
-    let product = mul(&d.dynamics.mass_inv, &d.dynamics.mass);
+    let product = mul(&d.quantities.dynamics.mass_inv, &d.quantities.dynamics.mass);
     assert_eq!(product, Matrix::identity(4), "M^-1 M = I exactly");
 }
 
@@ -261,16 +261,23 @@ fn eq20_bias_has_a_fourth_entry_zero_and_s_is_as_printed() {
     let d = derivation();
     let paper = paper_bias();
     assert_eq!(
-        d.dynamics.bias.rows(),
+        d.quantities.dynamics.bias.rows(),
         4,
         "h is in R^4, Eq. 20 prints 3 rows"
     );
     for i in 0..4 {
-        assert_eq!(d.dynamics.bias.get(i, 0), paper.get(i, 0), "h[{i}]");
+        assert_eq!(
+            d.quantities.dynamics.bias.get(i, 0),
+            paper.get(i, 0),
+            "h[{i}]"
+        );
     }
-    assert!(d.dynamics.bias.get(3, 0).is_zero(), "the 4th entry is 0");
+    assert!(
+        d.quantities.dynamics.bias.get(3, 0).is_zero(),
+        "the 4th entry is 0"
+    );
     assert_eq!(
-        d.dynamics.input_map,
+        d.quantities.dynamics.input_map,
         Matrix::column(vec![int(0), int(0), int(1), int(-1)])
     );
     for p in points() {
@@ -283,7 +290,7 @@ fn eq20_bias_has_a_fourth_entry_zero_and_s_is_as_printed() {
             0.0,
         ];
         for (i, w) in want.iter().enumerate() {
-            close(d.dynamics.bias.get(i, 0).eval(&a), *w, "Eq. 20");
+            close(d.quantities.dynamics.bias.get(i, 0).eval(&a), *w, "Eq. 20");
         }
     }
 }
@@ -294,11 +301,11 @@ fn section5_torso_decouples_when_u_is_zero() {
     // passive RW": the 4th row and column of M are diag(I2) and h[3] = 0.
     let d = derivation();
     for k in 0..3 {
-        assert!(d.dynamics.mass.get(3, k).is_zero());
-        assert!(d.dynamics.mass.get(k, 3).is_zero());
+        assert!(d.quantities.dynamics.mass.get(3, k).is_zero());
+        assert!(d.quantities.dynamics.mass.get(k, 3).is_zero());
     }
-    assert_eq!(d.dynamics.mass.get(3, 3), &s(Sym::I2));
-    assert!(d.dynamics.bias.get(3, 0).is_zero());
+    assert_eq!(d.quantities.dynamics.mass.get(3, 3), &s(Sym::I2));
+    assert!(d.quantities.dynamics.bias.get(3, 0).is_zero());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -330,7 +337,7 @@ fn eq23_lambda_level_is_exactly_the_printed_fraction() {
     let lambda = out("lambda_level", "lambda");
     let paper = paper_lambda_eq23();
     assert_eq!(lambda, paper, "lambda_level == Eq. 23");
-    assert_eq!(lambda, derivation().level.lambda);
+    assert_eq!(lambda, derivation().quantities.level.lambda);
     // lambda times Eq. 23's denominator is Eq. 23's numerator.
     let (mt, l, g, i1, u, mu, th1d) = (
         total_mass(),
@@ -373,10 +380,10 @@ fn eq22_from_the_printed_matrices_gives_the_same_lambda() {
         .expect("1x1");
     let lambda = -div(&top, &bottom);
     assert_eq!(lambda, out("lambda_level", "lambda"));
-    assert_eq!(bottom, derivation().level.lambda_den);
+    assert_eq!(bottom, derivation().quantities.level.lambda_den);
     // The derived contact Jacobians are Eqs. 21 and 24.
-    assert_eq!(derivation().level.contact.jacobian, j);
-    assert_eq!(derivation().level.contact.friction, j_mu);
+    assert_eq!(derivation().quantities.level.contact.jacobian, j);
+    assert_eq!(derivation().quantities.level.contact.friction, j_mu);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -395,20 +402,20 @@ fn eq25_friction_must_oppose_sliding_energy_balance() {
     let mut rate = paper::time_derivative(&energy);
     for (k, qdd) in paper::QDD_SYMS.iter().enumerate() {
         rate = rate
-            .substitute(Atom::Sym(*qdd), d.level.accel.get(k, 0))
+            .substitute(Atom::Sym(*qdd), d.quantities.level.accel.get(k, 0))
             .expect("substitution");
     }
     let rate = rate
         .substitute(Atom::Sym(Sym::Zd), &RatFunc::zero())
         .expect("substitution");
     let joint_power = &s(Sym::U) * &(&s(Sym::Th1d) - &s(Sym::Th2d));
-    let friction_power = &(&s(Sym::Mu) * &d.level.lambda) * &s(Sym::Xd);
+    let friction_power = &(&s(Sym::Mu) * &d.quantities.level.lambda) * &s(Sym::Xd);
     assert_eq!(rate, &joint_power + &friction_power);
     // Numerically, with lambda > 0 and u = 0: Eq. 26 dissipates, the printed Eq. 25 does not.
     let (mu0, c) = (0.4, 100.0);
     for p in points() {
         let p = Pt { u: 0.0, ..p };
-        let lambda = p.eval(&d.level.lambda);
+        let lambda = p.eval(&d.quantities.level.lambda);
         if lambda <= 0.0 || p.xd.abs() < 1e-3 {
             continue;
         }
@@ -433,18 +440,18 @@ fn eq28_projection_identities() {
     // contact force direction), and Y^2 = Y. M^-1 Y is symmetric only without friction
     // (Jh = J); with mu != 0 it is not, the projection is oblique.
     let d = derivation();
-    let y = &d.level.projection;
-    let j = &d.level.contact.jacobian;
-    let jh = j.add(&d.level.contact.friction).expect("dims");
+    let y = &d.quantities.level.projection;
+    let j = &d.quantities.level.contact.jacobian;
+    let jh = j.add(&d.quantities.level.contact.friction).expect("dims");
     let zero_row = Matrix::zeros(1, 4);
     assert_eq!(
-        mul(&mul(j, &d.dynamics.mass_inv), y),
+        mul(&mul(j, &d.quantities.dynamics.mass_inv), y),
         zero_row,
         "J M^-1 Y = 0"
     );
     assert_eq!(mul(y, &jh.transpose()), Matrix::zeros(4, 1), "Y Jh^T = 0");
     assert_eq!(mul(y, y), *y, "Y^2 = Y");
-    let m_inv_y = mul(&d.dynamics.mass_inv, y);
+    let m_inv_y = mul(&d.quantities.dynamics.mass_inv, y);
     let no_friction = m_inv_y
         .try_map(|r| r.substitute(Atom::Sym(Sym::Mu), &RatFunc::zero()))
         .expect("substitution");
@@ -470,21 +477,22 @@ fn eq28_projection_identities() {
 fn eq27_m_qdd_equals_y_times_su_minus_h() {
     let d = derivation();
     let su_h = d
+        .quantities
         .dynamics
         .input_map
         .scale(&s(Sym::U))
-        .sub(&d.dynamics.bias)
+        .sub(&d.quantities.dynamics.bias)
         .expect("dims");
-    let lhs = mul(&d.dynamics.mass, &d.level.accel);
-    let rhs = mul(&d.level.projection, &su_h);
+    let lhs = mul(&d.quantities.dynamics.mass, &d.quantities.level.accel);
+    let rhs = mul(&d.quantities.level.projection, &su_h);
     assert_eq!(lhs, rhs, "M qdd = Y (S u - h)");
     // and the constraint: zdd = 0
-    assert!(d.level.accel.get(1, 0).is_zero());
+    assert!(d.quantities.level.accel.get(1, 0).is_zero());
     // the kernel is the same vector
     for k in 0..4 {
         assert_eq!(
             &out("accel_level", &format!("qdd{k}")),
-            d.level.accel.get(k, 0)
+            d.quantities.level.accel.get(k, 0)
         );
     }
 }
@@ -495,15 +503,23 @@ fn eq30_31_output_acceleration_is_a_u_minus_b() {
     let a = out("control_level", "A");
     let b = out("control_level", "B");
     // A and B as defined under Eq. 32.
-    let st = d.dynamics.input_map.transpose();
-    let st_minv_y = mul(&mul(&st, &d.dynamics.mass_inv), &d.level.projection);
+    let st = d.quantities.dynamics.input_map.transpose();
+    let st_minv_y = mul(
+        &mul(&st, &d.quantities.dynamics.mass_inv),
+        &d.quantities.level.projection,
+    );
     assert_eq!(
         a,
-        mul(&st_minv_y, &d.dynamics.input_map)
+        mul(&st_minv_y, &d.quantities.dynamics.input_map)
             .scalar()
             .expect("1x1")
     );
-    assert_eq!(b, mul(&st_minv_y, &d.dynamics.bias).scalar().expect("1x1"));
+    assert_eq!(
+        b,
+        mul(&st_minv_y, &d.quantities.dynamics.bias)
+            .scalar()
+            .expect("1x1")
+    );
     // Eq. 30: yddot = S^T qdd = A u - B.
     let ydd = &out("accel_level", "qdd2") - &out("accel_level", "qdd3");
     assert_eq!(ydd, &(&a * &s(Sym::U)) - &b);
@@ -594,14 +610,21 @@ fn eq03_fore_foot_velocity_and_eq07_12_jacobians() {
     let row2 = vec![int(0), int(1), int(0), int(0)];
     let row3 = vec![int(0), int(0), int(1), int(-1)];
     assert_eq!(
-        d.impact3.jacobian,
+        d.quantities.impact3.jacobian,
         mat(vec![row1.clone(), row2, row3.clone()]),
         "J_I of Eq. 7"
     );
-    assert_eq!(d.impact2.jacobian, mat(vec![row1, row3]), "J_I of Eq. 12");
+    assert_eq!(
+        d.quantities.impact2.jacobian,
+        mat(vec![row1, row3]),
+        "J_I of Eq. 12"
+    );
     // Eq. 12 says J_I in R^{2x3}; it is 2 x 4 (four generalized velocities).
     assert_eq!(
-        (d.impact2.jacobian.rows(), d.impact2.jacobian.cols()),
+        (
+            d.quantities.impact2.jacobian.rows(),
+            d.quantities.impact2.jacobian.cols()
+        ),
         (2, 4)
     );
 }
@@ -613,7 +636,10 @@ fn eq08_09_from_the_printed_matrices() {
     let d = derivation();
     let m_inv = paper_mass_matrix().inverse("M").expect("regular");
     let qd = Matrix::column(paper::QD_SYMS.iter().map(|x| s(*x)).collect());
-    for (imp, kernel) in [(&d.impact3, "impact3_level"), (&d.impact2, "impact2_level")] {
+    for (imp, kernel) in [
+        (&d.quantities.impact3, "impact3_level"),
+        (&d.quantities.impact2, "impact2_level"),
+    ] {
         let j = &imp.jacobian;
         let x = mul(&mul(j, &m_inv), &j.transpose());
         let x_inv = x.inverse("X_I").expect("regular");
@@ -833,7 +859,7 @@ fn eq17_18_reset_on_level_ground() {
     // The fore foot at the posture: x_f - x = 2 l sin(alpha/2), z_f = z (Eq. 17, z+- = 0), and
     // the new stance leg, the spoke at th1 - alpha, has th1+ = -alpha/2 (Eq. 18).
     let d = derivation();
-    let g = &d.dynamics.geometry;
+    let g = &d.quantities.dynamics.geometry;
     let posture = |r: &RatFunc| paper::at_impact_posture(r, Floor::Level).expect("posture");
     let two_l_s = &(&int(2) * &s(Sym::L)) * &sin_half_alpha();
     assert_eq!(posture(&(&g.fore_foot[0] - &s(Sym::X))), two_l_s, "Eq. 17");
@@ -879,12 +905,12 @@ fn eq36_38_slope_contact_is_the_printed_one_times_cos_phi() {
     let j = Matrix::row(vec![tp.clone(), int(1), int(0), int(0)]);
     let j_mu = Matrix::row(vec![mu.clone(), -(&mu * &tp), int(0), int(0)]);
     assert_eq!(
-        d.slope.contact.jacobian,
+        d.quantities.slope.contact.jacobian,
         j.scale(&cp),
         "Eq. 36 times cos(phi)"
     );
     assert_eq!(
-        d.slope.contact.friction,
+        d.quantities.slope.contact.friction,
         j_mu.scale(&cp),
         "Eq. 38 times cos(phi)"
     );
@@ -910,7 +936,8 @@ fn eq36_38_slope_contact_is_the_printed_one_times_cos_phi() {
     // the normal force is lambda / cos phi
     assert_eq!(
         div(&out("lambda_slope", "lambda"), &cp),
-        d.slope
+        d.quantities
+            .slope
             .normal_force
             .substitute(Atom::Sym(Sym::U), &RatFunc::zero())
             .expect("subst")
@@ -984,7 +1011,7 @@ fn eq42_slope_impact_row_and_the_vertical_impulse() {
     let cp = RatFunc::cos_of(BaseAngle::Phi);
     let row = Matrix::row(paper_slope_fore_row());
     assert_eq!(
-        d.impact_slope.jacobian,
+        d.quantities.impact_slope.jacobian,
         row.scale(&cp),
         "Eq. 42 times cos(phi)"
     );
@@ -1014,7 +1041,7 @@ fn eq42_slope_impact_row_and_the_vertical_impulse() {
         ];
         for (k, w) in row.iter().enumerate() {
             close(
-                p.eval(d.impact_slope.jacobian.get(0, k)) / p.phi.cos(),
+                p.eval(d.quantities.impact_slope.jacobian.get(0, k)) / p.phi.cos(),
                 *w,
                 "Eq. 42",
             );
@@ -1031,7 +1058,7 @@ fn eq42_slope_impact_row_and_the_vertical_impulse() {
 #[test]
 fn eq43_45_reset_on_the_slope() {
     let d = derivation();
-    let g = &d.dynamics.geometry;
+    let g = &d.quantities.dynamics.geometry;
     let posture = |r: &RatFunc| paper::at_impact_posture(r, Floor::Slope).expect("posture");
     let (l, sh) = (s(Sym::L), sin_half_alpha());
     let two_l_s = &(&int(2) * &l) * &sh;

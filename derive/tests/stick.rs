@@ -86,8 +86,8 @@ fn the_stick_constraint_jacobians_are_the_unit_tangent_and_normal() {
         vec![sp, cp, int(0), int(0)],
     ])
     .expect("rectangular");
-    assert_eq!(d.stick_level.jacobian, level);
-    assert_eq!(d.stick_slope.jacobian, slope);
+    assert_eq!(d.quantities.stick_level.jacobian, level);
+    assert_eq!(d.quantities.stick_slope.jacobian, slope);
 }
 
 #[test]
@@ -149,8 +149,8 @@ fn the_stuck_closed_loop_follows_yddot_equals_v() {
         &(&(&(&total_mass() * &s(Sym::G)) * &s(Sym::L)) * &sin1(Sym::Th1)),
         &inertia_about_foot(),
     );
-    assert_eq!(d.stick_control.a, a, "A_s");
-    assert_eq!(d.stick_control.b, b, "B_s");
+    assert_eq!(d.quantities.stick_control.a, a, "A_s");
+    assert_eq!(d.quantities.stick_control.b, b, "B_s");
     let u = div(&(&s(Sym::V) + &b), &a);
     assert_eq!(out(k, "u"), u, "u = (v + B_s) / A_s");
     // The rest is stick_level at that u.
@@ -281,9 +281,9 @@ fn when_the_friction_cannot_hold_the_foot_slides_against_lambda_t() {
             (Sym::U, if slope { 0.0 } else { rng.range(-5.0, 5.0) }),
         ];
         let (stick, accel, stance) = if slope {
-            ("stick_slope", "accel_slope", &d.slope)
+            ("stick_slope", "accel_slope", &d.quantities.slope)
         } else {
-            ("stick_level", "accel_level", &d.level)
+            ("stick_level", "accel_level", &d.quantities.level)
         };
         let v = atoms(&values);
         let lt = out(stick, "lambda_t").eval(&v);

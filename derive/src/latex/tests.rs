@@ -69,7 +69,7 @@ fn fraction_with_content_split_above_and_below() {
 #[test]
 fn grouping_recovers_eq_23() {
     let d = Derivation::new().expect("derivation");
-    let text = ratfunc(&d.level.lambda);
+    let text = ratfunc(&d.quantities.level.lambda);
     assert_eq!(
         text,
         "\\frac{m_t \\left(I_1 \\left(g - l \\dot{\\theta}_1^2 \\cos\\theta_1\\right) - l u \\sin\\theta_1\\right)}\
@@ -90,7 +90,7 @@ fn lowest_degree_term_leads_positive() {
     // -m_t (l thdot^2 cos - g) is printed m_t (g - l thdot^2 cos), as Eq. 20
     let d = Derivation::new().expect("derivation");
     assert_eq!(
-        ratfunc(d.dynamics.bias.get(1, 0)),
+        ratfunc(d.quantities.dynamics.bias.get(1, 0)),
         "m_t \\left(g - l \\dot{\\theta}_1^2 \\cos\\theta_1\\right)"
     );
 }
@@ -122,7 +122,7 @@ fn large_outputs_are_refused_by_the_bounded_printer() {
     let k = d.kernel("impact_slope_jacobian").expect("kernel");
     let (_, big) = &k.outputs[0];
     assert!(ratfunc_at_most(big, MAX_PRINTED_TERMS).is_none());
-    assert!(ratfunc_at_most(&d.level.lambda, MAX_PRINTED_TERMS).is_some());
+    assert!(ratfunc_at_most(&d.quantities.level.lambda, MAX_PRINTED_TERMS).is_some());
 }
 
 #[test]

@@ -8,7 +8,7 @@ use crate::symbol::{Sym, SymKind, Symbols};
 
 /// The entries of `m` as outputs `prefix{i}{j}` (a matrix; `prefix{i}_{j}` past ten rows) or
 /// `prefix{k}` (a row or column).
-pub(super) fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
+pub(crate) fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
     let c = m.cols();
     m.entries()
         .iter()

@@ -120,8 +120,9 @@ pub fn coulomb_impact(m: &Mechanics, model: &Model) -> Result<CoulombImpact> {
     })
 }
 
-/// The outputs of the closed form, in the kernel's order.
-fn outputs(c: &CoulombImpact) -> Vec<(String, RatFunc)> {
+/// The outputs of the closed form, in the kernel's order (also the paper's
+/// `impact_coulomb_level` and `impact_coulomb_slope`).
+pub(crate) fn coulomb_outputs(c: &CoulombImpact) -> Vec<(String, RatFunc)> {
     let mut o = named("qdl", &c.locked_velocity);
     o.extend(
         ["v_t", "v_n", "v_r"]
@@ -226,7 +227,15 @@ pub(super) fn impact_coulomb(
     let t = &*table;
     let k = if closed {
         let c = coulomb_impact(m, model)?;
-        kernel(t, "impact_coulomb", doc, eq, outputs(&c), Shape::Parts, &[])
+        kernel(
+            t,
+            "impact_coulomb",
+            doc,
+            eq,
+            coulomb_outputs(&c),
+            Shape::Parts,
+            &[],
+        )
     } else {
         let mut parts = names("qdl", n, 1);
         parts.extend(["v_t", "v_n", "v_r"].map(str::to_owned));

@@ -34,6 +34,8 @@ mod stick_control;
 mod structured;
 mod table;
 
+pub(crate) use assemble::named;
+pub(crate) use coulomb::coulomb_outputs;
 pub use coulomb::{CoulombImpact, CoulombRows, coulomb_impact, coulomb_rows};
 pub use kernels::{MAX_INVERSE_TERMS, ModelDerivation};
 pub use mechanics::{FloorGeometry, MAX_CLOSED_COORDINATES, Mechanics, time_derivative};

@@ -5,59 +5,20 @@ use super::quantities::PaperQuantities;
 use crate::error::Result;
 use crate::kernels::{Kernel, Shape, Staged, find_kernel};
 use crate::matrix::Matrix;
+use crate::model::{ImpactMap, coulomb_outputs, named};
 use crate::paper::{self, sym};
 use crate::ratfunc::RatFunc;
 use crate::symbol::{Atom, Sym, Symbols};
 
-/// Everything derived: the intermediate symbolic objects and the kernels.
+/// The paper's kernels and the quantities they are built from.
 #[derive(Clone, Debug)]
 pub struct Derivation {
-    /// The symbol table every expression of the derivation is written in.
+    /// The symbol table every expression of the derivation is written in: the paper's.
     pub symbols: Symbols,
-    /// `M`, `h`, `S` and the geometry.
-    pub dynamics: paper::Dynamics,
-    /// Stance phase on level ground.
-    pub level: paper::Stance,
-    /// Stance phase on the slope.
-    pub slope: paper::Stance,
-    /// Control terms on level ground.
-    pub control: paper::Control,
-    /// Impact with three constraints (Eqs. 6-10).
-    pub impact3: paper::Impact,
-    /// Impact with two constraints (Eqs. 12-16).
-    pub impact2: paper::Impact,
-    /// Impact on the slope (Eqs. 39-42).
-    pub impact_slope: paper::Impact,
-    /// Impact on the slope with the rear foot held (Eq. 46).
-    pub impact2_slope: paper::Impact,
-    /// Stick phase on level ground (the foot held; not in the paper).
-    pub stick_level: paper::Stick,
-    /// Stick phase on the slope (not in the paper).
-    pub stick_slope: paper::Stick,
-    /// Control terms `A_s`, `B_s` of the stick phase on level ground.
-    pub stick_control: paper::Control,
-    /// The level impact's ingredients for Coulomb friction at the fore foot (torso locked).
-    pub coulomb_level: paper::CoulombImpact,
-    /// The slope impact's ingredients for Coulomb friction at the fore foot.
-    pub coulomb_slope: paper::CoulombImpact,
+    /// `M`, `h`, `S`, the stance phases, the control terms and the impacts of both walkers.
+    pub quantities: PaperQuantities,
     /// The kernels.
     pub kernels: Vec<Kernel>,
-}
-
-fn named(prefix: &str, m: &Matrix) -> Vec<(String, RatFunc)> {
-    let entries = m.entries().iter().cloned();
-    if m.rows() > 1 && m.cols() > 1 {
-        let c = m.cols();
-        entries
-            .enumerate()
-            .map(|(k, r)| (format!("{prefix}{}{}", k / c, k % c), r))
-            .collect()
-    } else {
-        entries
-            .enumerate()
-            .map(|(k, r)| (format!("{prefix}{k}"), r))
-            .collect()
-    }
 }
 
 /// The equation reference of the stick kernels: the stick phase is not in the paper.
@@ -67,33 +28,6 @@ const STICK_EQUATION: &str =
 /// The equation reference of the stuck foot's closed loop.
 const STICK_CONTROL_EQUATION: &str =
     "stick phase, not in the paper; Eqs. 30-31 with both foot coordinates held";
-
-/// The outputs of a Coulomb impact kernel: `qdl` (velocities after the torso lock), the
-/// contact velocities `v_t, v_n, v_r`, the upper triangle of the Delassus matrix over
-/// `(t, n, r)` and the response `R` (4x2).
-fn coulomb_outputs(c: &paper::CoulombImpact) -> Vec<(String, RatFunc)> {
-    let mut o = named("qdl", &c.locked_velocity);
-    let v = c.contact_velocity.entries();
-    o.extend(
-        ["v_t", "v_n", "v_r"]
-            .iter()
-            .zip(v)
-            .map(|(n, r)| ((*n).to_owned(), r.clone())),
-    );
-    let w = &c.delassus;
-    for (name, i, j) in [
-        ("W_tt", 0, 0),
-        ("W_tn", 0, 1),
-        ("W_tr", 0, 2),
-        ("W_nn", 1, 1),
-        ("W_nr", 1, 2),
-        ("W_rr", 2, 2),
-    ] {
-        o.push((name.to_owned(), w.get(i, j).clone()));
-    }
-    o.extend(named("R", &c.response));
-    o
-}
 
 fn substitute_u_zero(m: &Matrix) -> Result<Matrix> {
     m.try_map(|r| r.substitute(Atom::Sym(Sym::U), &RatFunc::zero()))
@@ -106,29 +40,16 @@ impl Derivation {
     /// A model file that does not derive, or a kernel that does not check against the table.
     pub fn new() -> Result<Derivation> {
         let symbols = Symbols::paper();
-        let PaperQuantities {
-            dynamics,
-            level,
-            slope,
-            control,
-            impact3,
-            impact2,
-            impact_slope,
-            impact2_slope,
-            stick_level,
-            stick_slope,
-            stick_control,
-            coulomb_level,
-            coulomb_slope,
-        } = PaperQuantities::derive(&symbols)?;
+        let quantities = PaperQuantities::derive(&symbols)?;
+        let q = &quantities;
         paper::check_desired_output()?;
-        let g = &dynamics.geometry;
+        let g = &q.dynamics.geometry;
         let impact_args = vec![Sym::Th1, Sym::Xd, Sym::Zd, Sym::Th1d, Sym::Th2d];
         // On the slope the paper scales foot impulses to their vertical component (Eq. 42 has
         // `tan phi, 1` where the unit normal has `sin phi, cos phi`): report them that way.
         let cos_phi = RatFunc::cos_of(crate::symbol::BaseAngle::Phi);
-        let vertical = |imp: &paper::Impact| imp.impulse.scale(&cos_phi);
-        let impact_outputs = |imp: &paper::Impact, impulse: Matrix| {
+        let vertical = |imp: &ImpactMap| imp.impulse.scale(&cos_phi);
+        let impact_outputs = |imp: &ImpactMap, impulse: Matrix| {
             let mut o = named("lambdaI", &impulse);
             o.extend(named("qdp", &imp.velocity));
             o
@@ -139,48 +60,49 @@ impl Derivation {
         ];
         // Closed loop (Eq. 27 with u from Eq. 31): with u = (v + B) / A the output obeys
         // yddot = v exactly, and the accelerations depend on (th1, th1d, mu, v) only.
-        let u_closed = (&sym(Sym::V) + &control.b).div(&control.a)?;
-        let closed = level
+        let u_closed = (&sym(Sym::V) + &q.control.b).div(&q.control.a)?;
+        let closed = q
+            .level
             .accel
             .try_map(|r| r.substitute(Atom::Sym(Sym::U), &u_closed))?;
         let mut closed_outputs = named("qdd", &closed);
         closed_outputs.push(("u".into(), u_closed.clone()));
         let closed_jac =
             Matrix::jacobian(closed.entries(), &[Sym::Th1, Sym::Th1d, Sym::Mu, Sym::V]);
-        let slope_accel = substitute_u_zero(&slope.accel)?;
+        let slope_accel = substitute_u_zero(&q.slope.accel)?;
         let slope_jac = Matrix::jacobian(slope_accel.entries(), &[Sym::Th1, Sym::Th1d, Sym::Mu]);
         let impact_vars = [Sym::Th1, Sym::Xd, Sym::Zd, Sym::Th1d, Sym::Th2d];
         // Stick phase (not in the paper): qdd, then [lambda_t, lambda_n].
-        let mut level_stick_outputs = named("qdd", &stick_level.accel);
-        level_stick_outputs.push(("lambda_t".into(), stick_level.forces.get(0, 0).clone()));
-        level_stick_outputs.push(("lambda_n".into(), stick_level.forces.get(1, 0).clone()));
+        let mut level_stick_outputs = named("qdd", &q.stick_level.accel);
+        level_stick_outputs.push(("lambda_t".into(), q.stick_level.forces.get(0, 0).clone()));
+        level_stick_outputs.push(("lambda_n".into(), q.stick_level.forces.get(1, 0).clone()));
         // The stuck foot's closed loop: u = (v + B_s) / A_s (Eqs. 30-31 with Y_s), so that
         // yddot = v, then the stick accelerations and forces with that u.
-        let u_stick = (&sym(Sym::V) + &stick_control.b).div(&stick_control.a)?;
+        let u_stick = (&sym(Sym::V) + &q.stick_control.b).div(&q.stick_control.a)?;
         let with_u_stick = |r: &RatFunc| r.substitute(Atom::Sym(Sym::U), &u_stick);
-        let mut closed_stick_outputs = named("qdd", &stick_level.accel.try_map(with_u_stick)?);
+        let mut closed_stick_outputs = named("qdd", &q.stick_level.accel.try_map(with_u_stick)?);
         closed_stick_outputs.push(("u".into(), u_stick.clone()));
         closed_stick_outputs.push((
             "lambda_t".into(),
-            with_u_stick(stick_level.forces.get(0, 0))?,
+            with_u_stick(q.stick_level.forces.get(0, 0))?,
         ));
         closed_stick_outputs.push((
             "lambda_n".into(),
-            with_u_stick(stick_level.forces.get(1, 0))?,
+            with_u_stick(q.stick_level.forces.get(1, 0))?,
         ));
-        let slope_stick_forces = substitute_u_zero(&stick_slope.forces)?;
-        let mut slope_stick_outputs = named("qdd", &substitute_u_zero(&stick_slope.accel)?);
+        let slope_stick_forces = substitute_u_zero(&q.stick_slope.forces)?;
+        let mut slope_stick_outputs = named("qdd", &substitute_u_zero(&q.stick_slope.accel)?);
         slope_stick_outputs.push(("lambda_t".into(), slope_stick_forces.get(0, 0).clone()));
         slope_stick_outputs.push(("lambda_n".into(), slope_stick_forces.get(1, 0).clone()));
-        let impact2_jac = Matrix::jacobian(impact2.velocity.entries(), &impact_vars);
-        let impact_slope_jac = Matrix::jacobian(impact_slope.velocity.entries(), &impact_vars);
+        let impact2_jac = Matrix::jacobian(q.impact2.velocity.entries(), &impact_vars);
+        let impact_slope_jac = Matrix::jacobian(q.impact_slope.velocity.entries(), &impact_vars);
         let kernels = vec![
             Kernel {
                 name: "mass_matrix",
                 doc: "Inertia matrix M(q)",
                 equation: "Eq. 2",
                 args: vec![Sym::Th1],
-                outputs: named("M", &dynamics.mass),
+                outputs: named("M", &q.dynamics.mass),
                 shape: Shape::Matrix(4, 4),
                 staged: None,
                 solve: None,
@@ -191,7 +113,7 @@ impl Derivation {
                 doc: "Coriolis, centrifugal and gravity vector h(q, qdot)",
                 equation: "Eq. 20",
                 args: vec![Sym::Th1, Sym::Th1d],
-                outputs: named("h", &dynamics.bias),
+                outputs: named("h", &q.dynamics.bias),
                 shape: Shape::Vector(4),
                 staged: None,
                 solve: None,
@@ -202,7 +124,7 @@ impl Derivation {
                 doc: "Vertical ground reaction lambda on level ground",
                 equation: "Eqs. 22-23",
                 args: vec![Sym::Th1, Sym::Th1d, Sym::U, Sym::Mu],
-                outputs: vec![("lambda".into(), level.lambda.clone())],
+                outputs: vec![("lambda".into(), q.level.lambda.clone())],
                 shape: Shape::Scalar,
                 staged: None,
                 solve: None,
@@ -213,7 +135,7 @@ impl Derivation {
                 doc: "Projection Y(q, qdot) that eliminates lambda on level ground",
                 equation: "Eqs. 28-29",
                 args: vec![Sym::Th1, Sym::Mu],
-                outputs: named("Y", &level.projection),
+                outputs: named("Y", &q.level.projection),
                 shape: Shape::Matrix(4, 4),
                 staged: None,
                 solve: None,
@@ -225,8 +147,8 @@ impl Derivation {
                 equation: "Eqs. 30-31",
                 args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
                 outputs: vec![
-                    ("A".into(), control.a.clone()),
-                    ("B".into(), control.b.clone()),
+                    ("A".into(), q.control.a.clone()),
+                    ("B".into(), q.control.b.clone()),
                 ],
                 shape: Shape::Vector(2),
                 staged: None,
@@ -238,7 +160,7 @@ impl Derivation {
                 doc: "Accelerations qddot of the active walker on level ground",
                 equation: "Eq. 27",
                 args: vec![Sym::Th1, Sym::Th1d, Sym::U, Sym::Mu],
-                outputs: named("qdd", &level.accel),
+                outputs: named("qdd", &q.level.accel),
                 shape: Shape::Vector(4),
                 staged: None,
                 solve: None,
@@ -251,7 +173,7 @@ impl Derivation {
                 args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
                 outputs: vec![(
                     "lambda".into(),
-                    slope
+                    q.slope
                         .lambda
                         .substitute(Atom::Sym(Sym::U), &RatFunc::zero())?,
                 )],
@@ -265,7 +187,7 @@ impl Derivation {
                 doc: "Accelerations qddot of the passive wheel on the slope (u = 0)",
                 equation: "Eq. 27 with Eqs. 36, 38",
                 args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
-                outputs: named("qdd", &substitute_u_zero(&slope.accel)?),
+                outputs: named("qdd", &substitute_u_zero(&q.slope.accel)?),
                 shape: Shape::Vector(4),
                 staged: None,
                 solve: None,
@@ -276,7 +198,7 @@ impl Derivation {
                 doc: "Impulses and post-impact velocities with the fore foot, the rear foot and the torso lock",
                 equation: "Eqs. 6-10",
                 args: impact_args.clone(),
-                outputs: impact_outputs(&impact3, impact3.impulse.clone()),
+                outputs: impact_outputs(&q.impact3, q.impact3.impulse.clone()),
                 shape: Shape::Parts,
                 staged: None,
                 solve: None,
@@ -287,7 +209,7 @@ impl Derivation {
                 doc: "Impulses and post-impact velocities with the fore foot and the torso lock",
                 equation: "Eqs. 12-16",
                 args: impact_args.clone(),
-                outputs: impact_outputs(&impact2, impact2.impulse.clone()),
+                outputs: impact_outputs(&q.impact2, q.impact2.impulse.clone()),
                 shape: Shape::Parts,
                 staged: None,
                 solve: None,
@@ -298,7 +220,7 @@ impl Derivation {
                 doc: "Impulse and post-impact velocities of the passive wheel on the slope",
                 equation: "Eqs. 39-42",
                 args: impact_args.clone(),
-                outputs: impact_outputs(&impact_slope, vertical(&impact_slope)),
+                outputs: impact_outputs(&q.impact_slope, vertical(&q.impact_slope)),
                 shape: Shape::Parts,
                 staged: None,
                 solve: None,
@@ -309,7 +231,7 @@ impl Derivation {
                 doc: "Impulses and post-impact velocities on the slope with the rear foot held (double-support test)",
                 equation: "Eq. 46",
                 args: impact_args.clone(),
-                outputs: impact_outputs(&impact2_slope, vertical(&impact2_slope)),
+                outputs: impact_outputs(&q.impact2_slope, vertical(&q.impact2_slope)),
                 shape: Shape::Parts,
                 staged: None,
                 solve: None,
@@ -328,7 +250,8 @@ impl Derivation {
                 closed: true,
                 staged: Some(Staged {
                     locals: vec![(Sym::U, u_closed.clone())],
-                    outputs: level
+                    outputs: q
+                        .level
                         .accel
                         .entries()
                         .iter()
@@ -404,13 +327,14 @@ impl Derivation {
                 closed: true,
                 staged: Some(Staged {
                     locals: vec![(Sym::U, u_stick.clone())],
-                    outputs: stick_level
+                    outputs: q
+                        .stick_level
                         .accel
                         .entries()
                         .iter()
                         .cloned()
                         .chain([sym(Sym::U)])
-                        .chain(stick_level.forces.entries().iter().cloned())
+                        .chain(q.stick_level.forces.entries().iter().cloned())
                         .collect(),
                 }),
             },
@@ -430,7 +354,7 @@ impl Derivation {
                 doc: "Level impact with friction at the fore foot: `qdl` after the torso lock, `[v_t, v_n, v_r]`, Delassus `W`, response `R`",
                 equation: walker_scene::catalog::IMPACT_COULOMB_EQUATION,
                 args: impact_args.clone(),
-                outputs: coulomb_outputs(&coulomb_level),
+                outputs: coulomb_outputs(&q.coulomb_level),
                 shape: Shape::Parts,
                 staged: None,
                 solve: None,
@@ -441,7 +365,7 @@ impl Derivation {
                 doc: "Slope impact with friction at the fore foot: `qdl = qdot-`, `[v_t, v_n, v_r]`, Delassus `W`, response `R`",
                 equation: walker_scene::catalog::IMPACT_COULOMB_EQUATION,
                 args: impact_args.clone(),
-                outputs: coulomb_outputs(&coulomb_slope),
+                outputs: coulomb_outputs(&q.coulomb_slope),
                 shape: Shape::Parts,
                 staged: None,
                 solve: None,
@@ -483,19 +407,7 @@ impl Derivation {
         }
         Ok(Derivation {
             symbols,
-            dynamics,
-            level,
-            slope,
-            control,
-            impact3,
-            impact2,
-            impact_slope,
-            impact2_slope,
-            stick_level,
-            stick_slope,
-            stick_control,
-            coulomb_level,
-            coulomb_slope,
+            quantities,
             kernels,
         })
     }

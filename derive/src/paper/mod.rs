@@ -21,7 +21,6 @@ mod quantities;
 /// [`walker_scene::Floor`].
 pub use walker_scene::Floor;
 
-pub use crate::model::{CoulombImpact, ImpactMap as Impact, Stuck as Stick};
 pub use crate::trig::{cos, sin};
 pub use derivation::Derivation;
 pub use notation::{
