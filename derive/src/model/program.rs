@@ -169,13 +169,13 @@ impl<'a> Program<'a> {
     }
 
     /// `a^-1 b` for a small square matrix of locals that need not be symmetric (the control's
-    /// `A`): the adjugate over the determinant. Only for order at most [`MAX_SMALL_SOLVE`], where
+    /// `A`): the adjugate over the determinant. Only for order at most `MAX_SMALL_SOLVE`, where
     /// a cofactor has at most six products; the determinant vanishes exactly where `a` is
     /// singular, so no pivoting question arises (an elimination without pivoting could divide
     /// by a zero pivot of a regular matrix).
     ///
     /// # Errors
-    /// Order above [`MAX_SMALL_SOLVE`], or `a` singular identically.
+    /// Order above `MAX_SMALL_SOLVE`, or `a` singular identically.
     pub fn small_solve(&mut self, a: &Matrix, b: &Matrix, name: &str) -> Result<Matrix> {
         if a.rows() > MAX_SMALL_SOLVE {
             return Err(Error::CheckFailed {

@@ -540,7 +540,7 @@ impl Model {
     /// The impact map at the pre-impact state `s = [q, qd]` under the model's [`ImpactLaw`].
     /// Frictionless (the paper's): `impact`, with the test `impact_double` where the model asks
     /// for it. With Coulomb friction: `impact_coulomb` and Stronge's plastic impact
-    /// ([`super::friction_impact`]).
+    /// ([`plastic_coulomb`](crate::model::plastic_coulomb)).
     ///
     /// # Errors
     /// [`ImpactJam`]: the impact with friction has no rigid-body solution (never for the

@@ -119,7 +119,7 @@ fn guard_gradient(model: &Model, q: &[f64]) -> Vector {
 /// physical validity tests of [`crate::sim`] (lift-off, double support) are not applied here.
 /// Models without Jacobian kernels (exact Coulomb friction in stance, parameters at run time,
 /// models without closed forms) take one step of the simulator instead and their Jacobian by
-/// central differences ([`super::finite_difference`]).
+/// central differences (`poincare::finite_difference`).
 ///
 /// # Errors
 /// [`MapError`]: the step could not be taken.

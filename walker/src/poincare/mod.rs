@@ -39,8 +39,8 @@
 //! Newton's method therefore works in the two independent coordinates `r = (xd+, th1d+)` of the
 //! section restricted to the controller's invariant manifold `y = -alpha/2, ydot = 0`
 //! (active walker: `th1 = -alpha/2`, `th2 = 0`, `th2d = th1d`, `z = zd = 0`; passive wheel:
-//! `th1 = phi - alpha/2`, `th2 = th2d = 0`, `zd = -xd tan phi`), see [`embed`]. The reduced
-//! Jacobian `D P_r = Pi DP E` (`E` = [`embed_tangent`], `Pi` picks `xd`, `th1d`) has the gait's
+//! `th1 = phi - alpha/2`, `th2 = th2d = 0`, `zd = -xd tan phi`), see [`Section::embed`]. The reduced
+//! Jacobian `D P_r = Pi DP E` (`E` = [`Section::tangent`], `Pi` picks `xd`, `th1d`) has the gait's
 //! two Floquet multipliers; [`FixedPoint::full_multipliers`] lists all eight for reference.
 //!
 //! For `mu0 = 0` the horizontal momentum is conserved in stance and at the impacts (no horizontal

@@ -30,6 +30,6 @@ pub struct MapResult {
 pub enum JacobianMethod {
     /// Variational equations with the generated Jacobian kernels (the module documentation).
     Variational,
-    /// Central differences of one simulated step ([`super::finite_difference`]).
+    /// Central differences of one simulated step (`poincare::finite_difference`).
     FiniteDifferences,
 }
