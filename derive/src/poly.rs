@@ -474,8 +474,8 @@ mod tests {
 
     #[test]
     fn pythagoras_reduces_to_one() {
-        let sn = Poly::atom(Atom::Sin(BaseAngle::Th1));
-        let cs = Poly::atom(Atom::Cos(BaseAngle::Th1));
+        let sn = Poly::atom(Atom::Sin(BaseAngle::new(0)));
+        let cs = Poly::atom(Atom::Cos(BaseAngle::new(0)));
         assert_eq!(sn.mul(&sn).add(&cs.mul(&cs)), Poly::one());
         assert_eq!(cs.pow(4), Poly::one().sub(&sn.mul(&sn)).pow(2));
     }

@@ -67,10 +67,14 @@ pub fn cos(angle: &[(Sym, i64)]) -> Result<RatFunc> {
 mod tests {
     use super::*;
 
+    // Base angles by index, named as the paper's.
+    const TH1: BaseAngle = BaseAngle::new(0);
+    const HALF_ALPHA: BaseAngle = BaseAngle::new(2);
+
     #[test]
     fn one_minus_cos_alpha_is_twice_sin_squared_half() {
-        let (_, c) = sin_cos_multiple(BaseAngle::HalfAlpha, 2);
-        let s = Poly::atom(Atom::Sin(BaseAngle::HalfAlpha));
+        let (_, c) = sin_cos_multiple(HALF_ALPHA, 2);
+        let s = Poly::atom(Atom::Sin(HALF_ALPHA));
         assert_eq!(
             Poly::one().sub(&c),
             s.mul(&s)
@@ -81,9 +85,9 @@ mod tests {
     #[test]
     fn addition_formula_round_trip() {
         // sin(alpha - th1) cos(th1) + cos(alpha - th1) sin(th1) = sin(alpha)
-        let (s1, c1) = sin_cos_combination(&[(BaseAngle::HalfAlpha, 2), (BaseAngle::Th1, -1)]);
-        let (st, ct) = sin_cos_multiple(BaseAngle::Th1, 1);
-        let (sa, _) = sin_cos_multiple(BaseAngle::HalfAlpha, 2);
+        let (s1, c1) = sin_cos_combination(&[(HALF_ALPHA, 2), (TH1, -1)]);
+        let (st, ct) = sin_cos_multiple(TH1, 1);
+        let (sa, _) = sin_cos_multiple(HALF_ALPHA, 2);
         assert_eq!(s1.mul(&ct).add(&c1.mul(&st)), sa);
     }
 }

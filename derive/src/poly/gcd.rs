@@ -293,28 +293,34 @@ mod tests {
     use super::*;
     use crate::symbol::{Atom, Sym};
 
-    fn s(sym: Sym) -> Poly {
-        Poly::atom(Atom::Sym(sym))
+    fn s(index: u16) -> Poly {
+        Poly::atom(Atom::Sym(Sym::plain(index)))
     }
+
+    // Symbols by index, named as the paper's masses, inertia and leg length.
+    const M1: u16 = 12;
+    const M2: u16 = 13;
+    const L: u16 = 14;
+    const I1: u16 = 16;
 
     #[test]
     fn gcd_finds_common_factor() {
-        let m1 = s(Sym::M1);
-        let m2 = s(Sym::M2);
-        let i1 = s(Sym::I1);
+        let m1 = s(M1);
+        let m2 = s(M2);
+        let i1 = s(I1);
         let mt = m1.add(&m2);
         let a = mt.mul(&mt).mul(&i1);
-        let b = mt.mul(&s(Sym::L)).add(&mt.mul(&i1));
+        let b = mt.mul(&s(L)).add(&mt.mul(&i1));
         assert_eq!(a.gcd(&b), mt);
         let c = a.div_exact(&mt).expect("divisible");
         assert_eq!(c, mt.mul(&i1));
-        assert!(a.div_exact(&s(Sym::L)).is_none());
+        assert!(a.div_exact(&s(L)).is_none());
     }
 
     #[test]
     fn gcd_of_coprime_is_one() {
-        let a = s(Sym::M1).add(&Poly::one());
-        let b = s(Sym::M1).sub(&Poly::one());
+        let a = s(M1).add(&Poly::one());
+        let b = s(M1).sub(&Poly::one());
         assert_eq!(a.gcd(&b), Poly::one());
     }
 }
