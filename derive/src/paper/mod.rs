@@ -4,12 +4,13 @@
 //! `models/paper-passive.toml` by the model derivation ([`crate::model`]), the one source of
 //! the walker's mechanics.
 //!
-//! Files, imports one way: `table` (the paper's symbol table and its constants, `Sym::Th1`, ...)
-//! stands alone; `notation` (symbols as expressions, constants, `m_t`, `I_t`, the time
-//! derivative) uses it; `output` (the quintic `y_d` of Section 3.2) and `posture` (the impact posture
-//! and the paper's pre-impact state) use it; `quantities` (the model files' derivation in the
-//! paper's table) uses the model derivation only; `derivation` (the paper's kernels, the
-//! catalogue of its scenes and of `docs/equations.md`) uses `quantities` and `notation`.
+//! Files, imports one way: `table` (the paper's symbol table and its constants, `Sym::Th1`,
+//! ...) stands alone; `notation` (symbols as expressions, constants, `m_t`, `I_t`, the time
+//! derivative) uses it; `output` (the quintic `y_d` of Section 3.2) and `posture` (the impact
+//! posture and the paper's pre-impact state) use `notation`; `quantities` (the model files'
+//! derivation in the paper's table) uses the model derivation only; `derivation` (the paper's
+//! kernels, the catalogue of its scenes and of `docs/equations.md`) uses `quantities` and
+//! `notation`.
 
 mod derivation;
 mod notation;
