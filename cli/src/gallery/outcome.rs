@@ -37,8 +37,8 @@ pub fn is_held(r: &StepResult) -> bool {
     r.stuck_time >= r.period && r.impact == ImpactRegime::Stick
 }
 
-/// Where a failed walk's stance foot was when it failed, on a floor of slope `phi` (0 when
-/// level): its velocity along the floor (m/s, positive forward, down the slope) and how far
+/// Where a failed walk's stance foot was when it failed, on a floor of slope `phi` (0, or NaN
+/// as the gallery's data writes a level floor's slope): its velocity along the floor (m/s, positive forward, down the slope) and how far
 /// along the floor it had slid since its step began (m; from the last completed step's
 /// post-impact foot, or from the origin in step 0). `None` if the walk did not fail.
 #[must_use]
@@ -49,7 +49,7 @@ pub fn foot_at_failure(p: &SweepPoint, phi: f64) -> Option<(f64, f64)> {
         (0, _) | (_, None) => 0.0,
         (_, Some(r)) => r.q_plus[0],
     };
-    let c = phi.cos();
+    let c = if phi.is_nan() { 1.0 } else { phi.cos() };
     Some((f.state[n] / c, (f.state[0] - x0) / c))
 }
 
@@ -97,5 +97,47 @@ impl Outcome {
             Outcome::NotPeriodic => "not periodic".to_owned(),
             Outcome::Failed(name) => name.clone(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use walker::sim::FailureKind;
+    use walker::sweep::SweepPoint;
+    use walker::vector::Vector;
+
+    use super::foot_at_failure;
+
+    /// A walk of a two-coordinate walker that failed in its first step with the foot at
+    /// `x = 0.3`, moving at `xd = -0.5`.
+    fn failed() -> SweepPoint {
+        SweepPoint {
+            value: 0.4,
+            steps: 0,
+            last: None,
+            previous: None,
+            failure: Some(FailureKind::NonFinite.at(
+                0,
+                0.1,
+                Vector::from_slice(&[0.3, 0.0, -0.5, 0.0]),
+            )),
+            periodic: false,
+        }
+    }
+
+    #[test]
+    fn a_level_floor_written_as_nan_is_level() {
+        assert_eq!(foot_at_failure(&failed(), f64::NAN), Some((-0.5, 0.3)));
+        assert_eq!(foot_at_failure(&failed(), 0.0), Some((-0.5, 0.3)));
+    }
+
+    #[test]
+    fn on_a_slope_the_foot_moves_along_it() {
+        // x is horizontal: along a slope of 60 degrees the foot went twice as far.
+        let (v, d) = foot_at_failure(&failed(), std::f64::consts::FRAC_PI_3).expect("failed");
+        assert!(
+            (v + 1.0).abs() < 1e-15 && (d - 0.6).abs() < 1e-15,
+            "{v}, {d}"
+        );
     }
 }
