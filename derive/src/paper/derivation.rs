@@ -29,10 +29,6 @@ const STICK_EQUATION: &str =
 const STICK_CONTROL_EQUATION: &str =
     "stick phase, not in the paper; Eqs. 30-31 with both foot coordinates held";
 
-fn substitute_u_zero(m: &Matrix) -> Result<Matrix> {
-    m.try_map(|r| r.substitute(Atom::Sym(Sym::U), &RatFunc::zero()))
-}
-
 impl Derivation {
     /// Derives the paper's walkers from their model files and builds the kernels.
     ///
@@ -69,8 +65,9 @@ impl Derivation {
         closed_outputs.push(("u".into(), u_closed.clone()));
         let closed_jac =
             Matrix::jacobian(closed.entries(), &[Sym::Th1, Sym::Th1d, Sym::Mu, Sym::V]);
-        let slope_accel = substitute_u_zero(&q.slope.accel)?;
-        let slope_jac = Matrix::jacobian(slope_accel.entries(), &[Sym::Th1, Sym::Th1d, Sym::Mu]);
+        // The slope's quantities are the passive wheel's (no `u`; `Kernel::check` below fails on
+        // an output in a symbol its kernel does not take).
+        let slope_jac = Matrix::jacobian(q.slope.accel.entries(), &[Sym::Th1, Sym::Th1d, Sym::Mu]);
         let impact_vars = [Sym::Th1, Sym::Xd, Sym::Zd, Sym::Th1d, Sym::Th2d];
         // Stick phase (not in the paper): qdd, then [lambda_t, lambda_n].
         let mut level_stick_outputs = named("qdd", &q.stick_level.accel);
@@ -90,8 +87,8 @@ impl Derivation {
             "lambda_n".into(),
             with_u_stick(q.stick_level.forces.get(1, 0))?,
         ));
-        let slope_stick_forces = substitute_u_zero(&q.stick_slope.forces)?;
-        let mut slope_stick_outputs = named("qdd", &substitute_u_zero(&q.stick_slope.accel)?);
+        let slope_stick_forces = &q.stick_slope.forces;
+        let mut slope_stick_outputs = named("qdd", &q.stick_slope.accel);
         slope_stick_outputs.push(("lambda_t".into(), slope_stick_forces.get(0, 0).clone()));
         slope_stick_outputs.push(("lambda_n".into(), slope_stick_forces.get(1, 0).clone()));
         let impact2_jac = Matrix::jacobian(q.impact2.velocity.entries(), &impact_vars);
@@ -171,12 +168,7 @@ impl Derivation {
                 doc: "Vertical ground reaction lambda of the passive wheel on the slope (u = 0)",
                 equation: "Eq. 22 with Eqs. 36, 38",
                 args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
-                outputs: vec![(
-                    "lambda".into(),
-                    q.slope
-                        .lambda
-                        .substitute(Atom::Sym(Sym::U), &RatFunc::zero())?,
-                )],
+                outputs: vec![("lambda".into(), q.slope.lambda.clone())],
                 shape: Shape::Scalar,
                 staged: None,
                 solve: None,
@@ -187,7 +179,7 @@ impl Derivation {
                 doc: "Accelerations qddot of the passive wheel on the slope (u = 0)",
                 equation: "Eq. 27 with Eqs. 36, 38",
                 args: vec![Sym::Th1, Sym::Th1d, Sym::Mu],
-                outputs: named("qdd", &substitute_u_zero(&q.slope.accel)?),
+                outputs: named("qdd", &q.slope.accel),
                 shape: Shape::Vector(4),
                 staged: None,
                 solve: None,
