@@ -105,6 +105,15 @@ fn held(run: &ModelRun) -> Option<&Held> {
     run.slopes.first()?.held.as_ref().ok()
 }
 
+/// What the claims about the held gait start from: the held gait, the model at its default
+/// `mu0` under exact Coulomb friction, and where its angles are in the state.
+fn held_model(run: &ModelRun) -> Option<(&Held, Model, Index)> {
+    let h = held(run)?;
+    let m = model(run, EXACT, param(run, "mu0")?)?;
+    let ix = Index::of(&m)?;
+    Some((h, m, ix))
+}
+
 /// The `(lo, hi)` of `xs`, `(NaN, NaN)` if empty.
 fn span(xs: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
@@ -197,10 +206,8 @@ fn first_strike_sticks(run: &ModelRun, mu0: f64) -> bool {
 /// The grazing heel strike's friction, where the first one starts to stick, and the range of
 /// `mu0` where the walker walks.
 fn threshold(run: &ModelRun) -> Option<Claim> {
-    let h = held(run)?;
+    let (h, m, ix) = held_model(run)?;
     let (r, beta) = (param(run, "r")?, param(run, "beta")?);
-    let m = model(run, EXACT, param(run, "mu0")?)?;
-    let ix = Index::of(&m)?;
     let ing = m.impact_ingredients(&h.pre);
     let [v_t, v_n, _] = ing.v;
     let ratio = ing.w[1][1] / ing.w[0][1].abs();
@@ -270,9 +277,7 @@ fn slides_out(p: &SweepPoint, ix: &Index) -> bool {
 /// How the walks below the heel strike's threshold fail, in three bands of `mu0` set by the
 /// friction the held gait needs.
 fn below(run: &ModelRun) -> Option<Claim> {
-    let h = held(run)?;
-    let m = model(run, EXACT, param(run, "mu0")?)?;
-    let ix = Index::of(&m)?;
+    let (h, m, ix) = held_model(run)?;
     let early = early_need(h);
     let late = h.stance_ratio;
     let strike = h.impact_ratio();
@@ -452,9 +457,7 @@ fn tanh(run: &ModelRun) -> Option<Claim> {
 /// The frictionless impact cannot walk it: its grazing heel strike leaves both feet on the
 /// floor.
 fn frictionless(run: &ModelRun) -> Option<Claim> {
-    let h = held(run)?;
-    let m = model(run, EXACT, param(run, "mu0")?)?;
-    let ix = Index::of(&m)?;
+    let (h, _, ix) = held_model(run)?;
     let early = early_need(h);
     let pl = h.painleve;
     let mut ok = pl.double_support() && pl.normal_impulse.abs() <= TINY_IMPULSE * h.impulse[1];
