@@ -95,7 +95,7 @@ impl<'a> StanceJacobian<'a> {
             return;
         }
         let mut v = [0.0; MAX_COORDINATES];
-        m.aux_inputs_at(t, y, &mut v[..inputs]);
+        m.aux_inputs(t, y, &mut v[..inputs]);
         let args = Args {
             v: &v[..inputs],
             ..Args::state(q, qd)

@@ -185,6 +185,19 @@ pub trait Kernels: Send + Sync {
     /// (flattened row-major). A kernel the model does not have fills `out` with NaN.
     fn eval(&self, k: KernelId, args: &Args<'_>, out: &mut [f64]);
 
+    /// The auxiliary inputs `v` of Eq. 32 at `args`, one per output (`m = v.len()`): the
+    /// outputs and their rates `[y, ydot]` (`output_rates`), then
+    /// `v_i = ydd_d + K_D (yd_d - ydot_i) + K_P (y_d - y_i)` from `control`
+    /// ([`Tracking::aux_input`]).
+    fn aux_inputs(&self, args: &Args<'_>, control: &Tracking<'_>, v: &mut [f64]) {
+        let m = v.len();
+        let mut rates = [0.0; 2 * MAX_COORDINATES];
+        self.eval(KernelId::OutputRates, args, &mut rates[..2 * m]);
+        for (i, vi) in v.iter_mut().enumerate() {
+            *vi = control.aux_input(i, rates[i], rates[m + i]);
+        }
+    }
+
     /// The controlled stance of a model with `m = w.len()` inputs, in one call: the outputs
     /// and their rates `[y, ydot]` (`output_rates` at `args`), the auxiliary inputs
     /// `v_i = ydd_d + K_D (yd_d - ydot_i) + K_P (y_d - y_i)` of Eq. 32 from `control`
@@ -204,12 +217,8 @@ pub trait Kernels: Send + Sync {
         w: &mut [f64],
     ) {
         let m = w.len();
-        let mut rates = [0.0; 2 * MAX_COORDINATES];
-        self.eval(KernelId::OutputRates, args, &mut rates[..2 * m]);
         let mut v = [0.0; MAX_COORDINATES];
-        for (i, vi) in v[..m].iter_mut().enumerate() {
-            *vi = control.aux_input(i, rates[i], rates[m + i]);
-        }
+        self.aux_inputs(args, control, &mut v[..m]);
         self.eval(
             k,
             &Args {

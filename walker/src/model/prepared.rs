@@ -232,24 +232,14 @@ impl Model {
         self.gains
     }
 
-    /// Writes the auxiliary inputs `v` of Eq. 32 at time `t` and state `y`.
-    pub(crate) fn aux_inputs_at(&self, t: f64, y: &[f64], v: &mut [f64]) {
-        self.aux_inputs(t, y, v);
-    }
-
-    /// Writes the auxiliary inputs `v` of Eq. 32 at time `t` and state `y`.
-    fn aux_inputs(&self, t: f64, y: &[f64], v: &mut [f64]) {
+    /// Writes the auxiliary inputs `v` of Eq. 32 at time `t` and state `y` (`m` numbers).
+    pub(crate) fn aux_inputs(&self, t: f64, y: &[f64], v: &mut [f64]) {
         let (n, m) = (self.n(), self.inputs());
-        let mut rates = [0.0; 2 * MAX_COORDINATES];
-        self.eval(
-            KernelId::OutputRates,
-            Args::state(&y[..n], &y[n..2 * n]),
-            &mut rates[..2 * m],
+        self.kernels.aux_inputs(
+            &Args::state(&y[..n], &y[n..2 * n]),
+            &self.tracking_at(t),
+            &mut v[..m],
         );
-        let control = self.tracking_at(t);
-        for (i, vi) in v.iter_mut().enumerate().take(m) {
-            *vi = control.aux_input(i, rates[i], rates[m + i]);
-        }
     }
 
     /// What the output-following control tracks at time `t` since the last impact.
