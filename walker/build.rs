@@ -175,28 +175,53 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// The argument expression of the kernel argument `arg` of `model` (an [`Args`] field).
-fn arg_expr(model: &Model, arg: &str) -> Result<String, String> {
+/// Where a generated call reads its arguments: the fields of an `Args` (`a.q[2]`), or the
+/// fused right-hand side's locals (the state array `y`, `sigma`, the auxiliary inputs `v`).
+#[derive(Clone, Copy)]
+enum Source {
+    Args,
+    State { n: usize },
+}
+
+/// The argument expression of the kernel argument `arg` of `model`, read from `source`.
+fn arg_expr(model: &Model, arg: &str, source: Source) -> Result<String, String> {
     if arg == "sigma" {
-        return Ok("a.sigma".to_owned());
+        return Ok(match source {
+            Source::Args => "a.sigma",
+            Source::State { .. } => "sigma",
+        }
+        .to_owned());
     }
     let sym = model
         .symbols()
         .iter()
         .find(|s| s.name == arg)
         .ok_or_else(|| format!("kernel argument `{arg}` is no symbol of `{}`", model.name))?;
-    let field = match sym.kind {
-        SymbolKind::Coordinate => "q",
-        SymbolKind::Velocity => "qd",
-        SymbolKind::Input => "u",
-        SymbolKind::Aux => "v",
-        other => {
+    let i = sym.index;
+    Ok(match (sym.kind, source) {
+        (SymbolKind::Coordinate, Source::Args) => format!("a.q[{i}]"),
+        (SymbolKind::Velocity, Source::Args) => format!("a.qd[{i}]"),
+        (SymbolKind::Input, Source::Args) => format!("a.u[{i}]"),
+        (SymbolKind::Aux, Source::Args) => format!("a.v[{i}]"),
+        (SymbolKind::Coordinate, Source::State { .. }) => format!("y[{i}]"),
+        (SymbolKind::Velocity, Source::State { n }) => format!("y[{}]", n + i),
+        (SymbolKind::Aux, Source::State { .. }) => format!("v[{i}]"),
+        (other, _) => {
             return Err(format!(
-                "kernel argument `{arg}`: a {other:?} is not an argument"
+                "kernel argument `{arg}`: a {other:?} is not an argument here"
             ));
         }
-    };
-    Ok(format!("a.{field}[{}]", sym.index))
+    })
+}
+
+/// The call of kernel `k` of `module` with its arguments read from `source`.
+fn call(model: &Model, k: &walker_gen::Kernel, source: Source) -> Result<String, String> {
+    let args: Vec<String> = k
+        .args
+        .iter()
+        .map(|a| arg_expr(model, a, source))
+        .collect::<Result<_, _>>()?;
+    Ok(format!("{}(p, {})", k.name, args.join(", ")))
 }
 
 /// The module of one variant and its adapter: `K` implements `Kernels` by calling the
@@ -211,12 +236,7 @@ fn adapter(
     let mut has = Vec::new();
     let mut stores = std::collections::BTreeMap::new();
     for k in &module.kernels {
-        let args: Vec<String> = k
-            .args
-            .iter()
-            .map(|a| arg_expr(model, a))
-            .collect::<Result<_, _>>()?;
-        let call = format!("{}(p, {})", k.name, args.join(", "));
+        let call = call(model, k, Source::Args)?;
         let id = camel(&k.name);
         has.push(format!("KernelId::{id}"));
         let store = match k.output_shape {
@@ -230,6 +250,7 @@ fn adapter(
         stores.insert(k.name.clone(), store);
     }
     let tracking = tracking(&stores, model.inputs.len());
+    let stance = stance_rhs(model, module)?;
     let fixed: Vec<String> = v.fixed.iter().map(|(n, x)| format!("{n} = {x}")).collect();
     Ok(format!(
         "/// `models/{model}.toml`, friction `{friction:?}`, fixed: {fixed}.\n\
@@ -243,7 +264,7 @@ fn adapter(
          #[allow(unreachable_patterns, reason = \"a kernel the variant does not have\")]\n\
          fn eval(&self, k: KernelId, a: &Args<'_>, out: &mut [f64]) {{\n\
          let p = &self.0;\n\
-         match k {{\n{arms}            _ => out.fill(f64::NAN),\n        }}\n    }}\n{tracking}}}\n\
+         match k {{\n{arms}            _ => out.fill(f64::NAN),\n        }}\n    }}\n{tracking}{stance}}}\n\
          /// The kernels prepared for the run-time parameters by name.\n\
          pub fn prepare_kernels(value: &dyn Fn(&str) -> f64) -> std::sync::Arc<dyn Kernels> {{\n\
          std::sync::Arc::new(K(prepare(&Params::from_fn(|name| value(name)))))\n\
@@ -290,6 +311,89 @@ fn tracking(stores: &std::collections::BTreeMap<String, String>, m: usize) -> St
         cl = arm("closed_loop"),
         cls = arm("closed_loop_stick"),
     )
+}
+
+/// The adapter's `Kernels::stance_rhs`: the stance right-hand side as one function with the
+/// arithmetic of the trait's default (the outputs' rates, Eq. 32's `v`, the closed loop or the
+/// stuck closed loop, the inputs' rates and the power `sum |u_i w_i|`; without inputs `accel`
+/// or `stick`), reading the state as an array, so that no `Args`, slice or dispatch stands
+/// between the integrator and the kernels. A kernel the variant lacks gives NaN, as its `eval`
+/// arm would; a model with inputs but without their rates keeps the default.
+fn stance_rhs(model: &Model, module: &walker_gen::Module) -> Result<String, String> {
+    let (n, m) = (model.coordinates.len(), model.inputs.len());
+    let source = Source::State { n };
+    let kernel = |name: &str| module.kernels.iter().find(|k| k.name == name);
+    // The outputs `o[from..to]` of a call as an array expression.
+    let take = |from: usize, to: usize| {
+        let items: Vec<String> = (from..to).map(|i| format!("o[{i}]")).collect();
+        format!("[{}]", items.join(", "))
+    };
+    // `qdd` (then `u` when `m > 0`) from a kernel whose outputs start with them.
+    let split = |name: &str| -> Result<String, String> {
+        let Some(k) = kernel(name) else {
+            return Ok(if m == 0 {
+                format!("[f64::NAN; {n}]")
+            } else {
+                format!("([f64::NAN; {n}], [f64::NAN; {m}])")
+            });
+        };
+        let value = if m == 0 {
+            take(0, n)
+        } else {
+            format!("({}, {})", take(0, n), take(n, n + m))
+        };
+        Ok(format!("let o = {}; {value}", call(model, k, source)?))
+    };
+    let (body, result) = if m == 0 {
+        (
+            format!(
+                "let qdd: [f64; {n}] = if stuck {{ {} }} else {{ {} }};\n",
+                split("stick")?,
+                split("accel")?
+            ),
+            "0.0",
+        )
+    } else {
+        let (Some(rates), Some(w)) = (kernel("output_rates"), kernel("input_rates")) else {
+            return Ok(String::new());
+        };
+        (
+            format!(
+                "let r = {};\n\
+                 let mut v = [0.0; {m}];\n\
+                 for i in 0..{m} {{ v[i] = control.aux_input(i, r[i], r[{m} + i]); }}\n\
+                 let w = {};\n\
+                 let (qdd, u): ([f64; {n}], [f64; {m}]) = if stuck {{ {} }} else {{ {} }};\n",
+                call(model, rates, source)?,
+                call(model, w, source)?,
+                split("closed_loop_stick")?,
+                split("closed_loop")?,
+            ),
+            "crate::model::power(&u, &w)",
+        )
+    };
+    // A parameter the body does not read is named `_` (the smooth law has no `sigma`).
+    let used = |name: &str, param: &str| {
+        if body.contains(name) {
+            param.to_owned()
+        } else {
+            format!("_{param}")
+        }
+    };
+    Ok(format!(
+        "fn stance_rhs(&self, stuck: bool, {sigma}: f64, y: &[f64], {control}: &crate::model::Tracking<'_>, dy: &mut [f64]) -> f64 {{\n\
+         let p = &self.0;\n\
+         let y: &[f64; {two_n}] = y[..{two_n}].try_into().expect(\"a state of {two_n} numbers\");\n\
+         let dy: &mut [f64; {two_n}] = dy.try_into().expect(\"a derivative of {two_n} numbers\");\n\
+         {body}\
+         dy[..{n}].copy_from_slice(&y[{n}..]);\n\
+         dy[{n}..].copy_from_slice(&qdd);\n\
+         {result}\n\
+         }}\n",
+        two_n = 2 * n,
+        sigma = used("sigma", "sigma"),
+        control = used("control.", "control"),
+    ))
 }
 
 /// `closed_loop_stick` as `ClosedLoopStick`.

@@ -229,4 +229,64 @@ pub trait Kernels: Send + Sync {
         );
         self.eval(KernelId::InputRates, args, w);
     }
+
+    /// The stance phase's right-hand side at the state `y = [q, qd, ..]` (of which the first
+    /// `2n` are read, `n = dy.len() / 2`), in one call: `dy = [qd, qdd]`, with `qdd` from
+    /// `accel` (sliding) or `stick` (`stuck`) for a passive walker, and for one with
+    /// `m = control.desired.len()` inputs from the closed loop under the output-following
+    /// control ([`Kernels::tracking`]: `closed_loop`, or `closed_loop_stick` when `stuck`);
+    /// returns the input power's integrand `sum |u_i w_i|` ([`power`]; 0 without inputs).
+    /// `sigma` is the sliding direction under exact Coulomb friction.
+    ///
+    /// The default assembles it from [`Kernels::eval`] and [`Kernels::tracking`]; a compiled
+    /// variant writes it as one function with the same arithmetic (every stance integration
+    /// step calls it several times, and the layers between the calls were a fifth of the
+    /// walk's instructions).
+    fn stance_rhs(
+        &self,
+        stuck: bool,
+        sigma: f64,
+        y: &[f64],
+        control: &Tracking<'_>,
+        dy: &mut [f64],
+    ) -> f64 {
+        let (n, m) = (dy.len() / 2, control.desired.len());
+        let args = Args {
+            sigma,
+            ..Args::state(&y[..n], &y[n..2 * n])
+        };
+        let mut out = [0.0; 2 * MAX_COORDINATES + 2];
+        let power_sum = if m == 0 {
+            let (k, len) = if stuck {
+                (KernelId::Stick, n + 2)
+            } else {
+                (KernelId::Accel, n)
+            };
+            self.eval(k, &args, &mut out[..len]);
+            0.0
+        } else {
+            let (k, len) = if stuck {
+                (KernelId::ClosedLoopStick, n + m + 2)
+            } else {
+                (KernelId::ClosedLoop, n + m)
+            };
+            let mut w = [0.0; MAX_COORDINATES];
+            self.tracking(k, &args, control, &mut out[..len], &mut w[..m]);
+            power(&out[n..n + m], &w[..m])
+        };
+        dy[..n].copy_from_slice(&y[n..2 * n]);
+        dy[n..].copy_from_slice(&out[..n]);
+        power_sum
+    }
+}
+
+/// The integrand of the input power, `sum |u_i w_i|` over the inputs' values `u` and rates `w`.
+#[must_use]
+#[inline]
+pub fn power(u: &[f64], w: &[f64]) -> f64 {
+    let mut sum = 0.0;
+    for (wi, ui) in w.iter().zip(u) {
+        sum += (wi * ui).abs();
+    }
+    sum
 }

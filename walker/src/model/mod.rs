@@ -29,9 +29,9 @@ pub use friction_impact::{
     ImpactJam, ImpactRegime, Ingredients, in_regime, plastic_coulomb, rear_test,
 };
 pub use impact::{ImpactResult, PostImpact};
-pub use kernels::{Args, KernelId, Kernels, Tracking};
+pub use kernels::{Args, KernelId, Kernels, Tracking, power};
 pub use parameters::{ParamError, Parameters};
-pub use prepared::{Model, power};
+pub use prepared::Model;
 pub use spec::{InitError, Spec, SpecError};
 pub use walker::{Compiled, KernelSource, NoKernels, Prepare, Variant, Walker};
 pub use walker_scene::{Friction, ImpactLaw};

@@ -14,7 +14,7 @@ use super::contact::{Contact, FrictionLaw, Reaction};
 use super::desired::Desired;
 use super::friction_impact::{ImpactJam, ImpactRegime, Ingredients, plastic_coulomb, rear_test};
 use super::impact::{ImpactResult, PostImpact};
-use super::kernels::{Args, KernelId, Kernels, Tracking};
+use super::kernels::{Args, KernelId, Kernels, Tracking, power};
 use super::parameters::{ParamError, Parameters};
 use super::spec::Spec;
 use crate::vector::{MAX_COORDINATES, MAX_LEN, Vector};
@@ -304,6 +304,19 @@ impl Model {
         };
         self.kernels
             .tracking(k, &args, &self.tracking_at(t), &mut out[..len], w);
+    }
+
+    /// The stance phase's right-hand side at time `t` since the last impact and state
+    /// `y = [q, qd, ..]` in the contact `contact`: `dy = [qd, qdd]` (`2n` numbers, `qdd` as in
+    /// [`Model::stance`]), and the input power's integrand `sum |u_i w_i|` where the power
+    /// counts ([`Model::power_counts`]; 0 elsewhere and for a passive walker).
+    pub fn stance_rhs(&self, t: f64, y: &[f64], contact: Contact, dy: &mut [f64]) -> f64 {
+        let sigma = contact.sigma();
+        let stuck = self.friction == FrictionLaw::Coulomb && sigma == 0.0;
+        let p = self
+            .kernels
+            .stance_rhs(stuck, sigma, y, &self.tracking_at(t), dy);
+        if self.power_counts(t) { p } else { 0.0 }
     }
 
     /// The length a buffer for [`Model::stance`] needs: the accelerations, the inputs and the
@@ -669,14 +682,4 @@ impl Model {
             .filter(|p| p.stage == Stage::Start)
             .map(|p| p.name.name.as_str())
     }
-}
-
-/// The integrand of the input power, `sum |u_i w_i|` over the inputs' values `u` and rates `w`.
-#[must_use]
-pub fn power(u: &[f64], w: &[f64]) -> f64 {
-    let mut sum = 0.0;
-    for (wi, ui) in w.iter().zip(u) {
-        sum += (wi * ui).abs();
-    }
-    sum
 }

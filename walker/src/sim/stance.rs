@@ -3,9 +3,8 @@
 //! observer that samples the motion ([`Recorder`]).
 
 use crate::jacobian::StanceJacobian;
-use crate::model::{Model, power};
+use crate::model::Model;
 use crate::ode::{Observer, OdeSystem, Step};
-use crate::vector::MAX_COORDINATES;
 use crate::vector::Vector;
 
 use super::foot::{Foot, control_input, ground_reaction};
@@ -22,24 +21,14 @@ pub(super) struct Stance<'a> {
     pub(super) jac: Option<StanceJacobian<'a>>,
     /// The stance foot.
     pub(super) foot: &'a Foot<'a>,
-    /// The right-hand side's buffers for [`Model::stance_and_rates`] (kept here: zeroing them
-    /// at every call cost a tenth of the right-hand side).
-    pub(super) buffers: ([f64; Model::STANCE_LEN], [f64; MAX_COORDINATES]),
 }
 
 impl<const S: usize> OdeSystem<S> for Stance<'_> {
     fn rhs(&mut self, t: f64, y: &[f64; S], dy: &mut [f64; S]) {
-        let (n, m) = (S / 2, self.model.inputs());
-        let (out, w) = &mut self.buffers;
-        self.model
-            .stance_and_rates(t, y, self.foot.contact(), out, &mut w[..m]);
-        dy[..n].copy_from_slice(&y[n..2 * n]);
-        dy[n..2 * n].copy_from_slice(&out[..n]);
-        dy[2 * n] = if self.model.power_counts(t) {
-            power(&out[n..n + m], &w[..m])
-        } else {
-            0.0
-        };
+        let n = S / 2;
+        dy[2 * n] = self
+            .model
+            .stance_rhs(t, y, self.foot.contact(), &mut dy[..2 * n]);
     }
 
     /// The error test watches the power quadrature (the last component) too, except on a step

@@ -7,7 +7,7 @@
 use crate::jacobian::StanceJacobian;
 use crate::model::{Contact, Model, Reaction, Slide};
 use crate::ode::{GaveUp, Integrator, Outcome, Stats};
-use crate::vector::{MAX_COORDINATES, Vector};
+use crate::vector::Vector;
 
 use super::blowup::{blow_up, blown_up};
 use super::config::SimConfig;
@@ -181,7 +181,6 @@ fn segments<const S: usize>(
         model,
         jac: StanceJacobian::new(model).ok(),
         foot,
-        buffers: ([0.0; Model::STANCE_LEN], [0.0; MAX_COORDINATES]),
     };
     let mut lambda_min = lambda0;
     let mut t = 0.0;
