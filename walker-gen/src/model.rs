@@ -118,7 +118,8 @@ impl ModelScene {
 /// rounding, and an output rate of `1e-16` right after the impact puts a spurious kink of the
 /// input power's integrand at `t = 1e-9`, which changes the integrator's steps (measured: the
 /// input power of the paper's second step moved by 6e-12 relative). Every other kernel is
-/// generated in the form with fewer operations.
+/// generated in the form with the smaller estimated time (`Cost::time`: its critical path plus
+/// half its operation count).
 pub const ONCE_PER_STEP: &[&str] = &["impact", "impact_double", "impact_coulomb", "relabel"];
 
 /// Lowers every kernel of `derivation` (derived from `scene.model`) into one [`Module`] named
@@ -214,7 +215,7 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
             kernel: k.name,
         };
         let form = if k.closed && k.solve.is_some() && ONCE_PER_STEP.contains(&k.name) {
-            let solve = kernel_ops(&module, &lowering, k, Form::Solve)?;
+            let solve = kernel_cost(&module, &lowering, k, Form::Solve)?.ops;
             module.forms.insert(
                 k.name.to_owned(),
                 format!(
@@ -225,16 +226,23 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
             );
             Form::Closed
         } else if k.closed && k.solve.is_some() {
-            let closed = kernel_ops(&module, &lowering, k, Form::Closed)?;
-            let solve = kernel_ops(&module, &lowering, k, Form::Solve)?;
-            let (form, other, ops) = if solve < closed {
-                (Form::Solve, Form::Closed, closed)
+            let closed = kernel_cost(&module, &lowering, k, Form::Closed)?;
+            let solve = kernel_cost(&module, &lowering, k, Form::Solve)?;
+            let (form, other, chosen, cost) = if solve.time() < closed.time() {
+                (Form::Solve, Form::Closed, solve, closed)
             } else {
-                (Form::Closed, Form::Solve, solve)
+                (Form::Closed, Form::Solve, closed, solve)
             };
             module.forms.insert(
                 k.name.to_owned(),
-                format!("{} ({}: {ops} ops)", form.name(), other.name()),
+                format!(
+                    "{}, {} cycles ({}: {} ops, {} cycles)",
+                    form.name(),
+                    chosen.path,
+                    other.name(),
+                    cost.ops,
+                    cost.path
+                ),
             );
             form
         } else if k.closed {
@@ -276,19 +284,47 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
     Ok(module)
 }
 
-/// The operations per call of `k` lowered in `form` into a copy of `module` (after CSE and
-/// hoisting, as `walker-gen stats` counts them).
-fn kernel_ops(
+/// What a call of a kernel costs: its operations and its critical path.
+#[derive(Clone, Copy, Debug)]
+struct Cost {
+    /// Operations per call (after CSE and hoisting, as `walker-gen stats` counts them).
+    ops: usize,
+    /// The latency of its longest chain of dependent operations, in cycles
+    /// ([`crate::stats::critical_path`]).
+    path: usize,
+}
+
+impl Cost {
+    /// The estimated time of a call in cycles, for choosing between forms, and the operation
+    /// count to break ties: the critical path plus half the operation count (two
+    /// floating-point pipes), as if the chain and the rest did not overlap. Neither part alone
+    /// chooses well. The operation count alone took the paper's passive walker's `accel` as a
+    /// structured solve (64 operations against 82) whose two dependent divisions make its
+    /// critical path 124 cycles against 94: a long walk ran 11 % slower than with the closed
+    /// form. The critical path alone, or the larger of the two, took the compass gait's `stick`
+    /// as a closed form (94 cycles against 114, but 179 operations against 63): its walk ran
+    /// 21 % slower than with the structured solve (`BENCHMARKS.md`, section 8).
+    fn time(self) -> (usize, usize) {
+        (self.path + self.ops.div_ceil(2), self.ops)
+    }
+}
+
+/// The cost of a call of `k` lowered in `form` into a copy of `module`.
+fn kernel_cost(
     module: &Module,
     lowering: &Lowering,
     k: &walker_symbolic::Kernel,
     form: Form,
-) -> Result<usize, Error> {
+) -> Result<Cost, Error> {
     let mut trial = module.clone();
     let lowered = lowering.kernel_form(&mut trial.graph, k, form)?;
     trial.kernels.push(lowered);
-    let stats = crate::stats::stats(&trial, &crate::options::EmitOptions::default())?;
-    Ok(stats.kernels.last().map_or(0, |s| s.ops.total()))
+    let plan = crate::plan::Plan::new(&trial, crate::options::EmitOptions::default().division)?;
+    let stats = crate::stats::from_plan(&trial, &plan);
+    Ok(Cost {
+        ops: stats.kernels.last().map_or(0, |s| s.ops.total()),
+        path: crate::stats::critical_path(&plan, trial.kernels.len() - 1),
+    })
 }
 
 /// A model file's prose for a doc comment: each word with an underscore (a name, as `y_d`) set

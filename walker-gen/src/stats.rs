@@ -154,6 +154,54 @@ pub(crate) fn block_counts(g: &Graph, block: &Block) -> OpCounts {
     c
 }
 
+/// Latencies in cycles of the scalar double-precision operations, from Agner Fog's instruction
+/// tables (Intel Skylake; AMD Zen 2 is within a cycle or two but for its slower square root):
+/// `ADDSD`, `SUBSD`, `MULSD` 4; `DIVSD` 13-14; `SQRTSD` 15-16; a sign flip or `abs` (`XORPD`,
+/// `ANDPD`) 1. A transcendental call (`sin_cos`, `tanh`: tens of cycles, varying with the
+/// argument) is given 40: both forms of a kernel call the same ones.
+fn latency(node: &Node) -> usize {
+    match node {
+        Node::Const(_) | Node::Param(_) | Node::Input(_) => 0,
+        Node::Add(..) | Node::Sub(..) | Node::Mul(..) => 4,
+        // Emitted as a chain of squarings and products (none remain after planning).
+        Node::Powi(_, n) => 4 * (32 - n.unsigned_abs().leading_zeros() as usize),
+        Node::Div(..) => 14,
+        Node::Sqrt(_) => 16,
+        Node::Neg(_) | Node::Abs(_) => 1,
+        Node::Sin(_) | Node::Cos(_) | Node::Tanh(_) => 40,
+    }
+}
+
+/// The kernel's critical path: the latency, in cycles ([`latency`]), of its longest chain of
+/// dependent operations from its arguments and the `Prepared` fields (read, not computed) to
+/// its outputs. An out-of-order core overlaps everything else, so a kernel called in a chain
+/// (each stage of an integration step needs the previous one's result) costs at least this;
+/// two kernels with about the same operation count differ by it (a structured solve's two
+/// dependent divisions against a closed form's one reciprocal).
+pub(crate) fn critical_path(plan: &Plan, kernel: usize) -> usize {
+    let kp = &plan.kernels[kernel];
+    let mut ready: std::collections::HashMap<crate::ir::NodeId, usize> =
+        std::collections::HashMap::new();
+    // `block.nodes` is in id order, and a node's children have smaller ids.
+    for &n in &kp.block.nodes {
+        if plan.field_of.contains_key(&n) {
+            continue;
+        }
+        let node = plan.graph.node(n);
+        let start = node
+            .children()
+            .map(|c| ready.get(&c).copied().unwrap_or(0))
+            .max()
+            .unwrap_or(0);
+        ready.insert(n, start + latency(&node));
+    }
+    kp.outputs
+        .iter()
+        .map(|o| ready.get(o).copied().unwrap_or(0))
+        .max()
+        .unwrap_or(0)
+}
+
 pub(crate) fn from_plan(module: &Module, plan: &Plan) -> Stats {
     let kernels = module
         .kernels

@@ -43,7 +43,7 @@ pub struct Kernel {
     /// A structured solve of the same outputs: `M`, `h` and the constraint Jacobians bound to
     /// locals ([`SymKind::Local`]), an unrolled factorisation and its substitutions
     /// (`crate::model::Program`). The code generator evaluates whichever of the closed form and
-    /// the solve takes fewer operations.
+    /// the solve it estimates faster (critical path and operation count).
     pub solve: Option<Staged>,
     /// Whether `outputs` are closed forms; false for a kernel that only has its structured
     /// solve (a model whose closed forms are too large to derive).
