@@ -220,6 +220,14 @@ impl Model {
         self.is_active() && t < self.power_until
     }
 
+    /// Whether the stance foot is held in the contact `contact`: under exact Coulomb friction,
+    /// a foot that does not slide (its sliding direction `sigma` is 0; [`Contact::Smooth`] is
+    /// held too). The smooth law's kernels ignore the contact.
+    #[must_use]
+    pub fn is_stuck(&self, contact: Contact) -> bool {
+        self.friction == FrictionLaw::Coulomb && contact.sigma() == 0.0
+    }
+
     /// The sharpness `c` of the tanh law (0 for a model without it).
     #[must_use]
     pub fn sharpness(&self) -> f64 {
@@ -275,8 +283,7 @@ impl Model {
     ) {
         let (n, m) = (self.n(), self.inputs());
         let (q, qd) = (&y[..n], &y[n..2 * n]);
-        let stuck = self.friction == FrictionLaw::Coulomb && contact.sigma() == 0.0;
-        let sigma = contact.sigma();
+        let (stuck, sigma) = (self.is_stuck(contact), contact.sigma());
         if m == 0 {
             let (k, len) = if stuck {
                 (KernelId::Stick, n + 2)
@@ -311,8 +318,7 @@ impl Model {
     /// [`Model::stance`]), and the input power's integrand `sum |u_i w_i|` where the power
     /// counts ([`Model::power_counts`]; 0 elsewhere and for a passive walker).
     pub fn stance_rhs(&self, t: f64, y: &[f64], contact: Contact, dy: &mut [f64]) -> f64 {
-        let sigma = contact.sigma();
-        let stuck = self.friction == FrictionLaw::Coulomb && sigma == 0.0;
+        let (stuck, sigma) = (self.is_stuck(contact), contact.sigma());
         let p = self
             .kernels
             .stance_rhs(stuck, sigma, y, &self.tracking_at(t), dy);
@@ -412,8 +418,7 @@ impl Model {
     pub fn reaction(&self, t: f64, y: &[f64], contact: Contact) -> Reaction {
         let (n, m) = (self.n(), self.inputs());
         let (q, qd) = (&y[..n], &y[n..2 * n]);
-        let stuck = self.friction == FrictionLaw::Coulomb && contact.sigma() == 0.0;
-        if stuck {
+        if self.is_stuck(contact) {
             let mut out = [0.0; MAX_OUT];
             if m == 0 {
                 self.eval(KernelId::Stick, Args::state(q, qd), &mut out[..n + 2]);
@@ -481,7 +486,7 @@ impl Model {
     /// the spin and the inputs. `None` for a stuck foot, whose reaction has no such denominator.
     #[must_use]
     pub fn gravity_lambda(&self, y: &[f64], contact: Contact) -> Option<f64> {
-        if self.friction == FrictionLaw::Coulomb && contact.sigma() == 0.0 {
+        if self.is_stuck(contact) {
             return None;
         }
         let n = self.n();
