@@ -205,6 +205,7 @@ fn arg_expr(model: &Model, arg: &str, source: Source) -> Result<String, String> 
         (SymbolKind::Aux, Source::Args) => format!("a.v[{i}]"),
         (SymbolKind::Coordinate, Source::State { .. }) => format!("y[{i}]"),
         (SymbolKind::Velocity, Source::State { n }) => format!("y[{}]", n + i),
+        (SymbolKind::Input, Source::State { .. }) => format!("u[{i}]"),
         (SymbolKind::Aux, Source::State { .. }) => format!("v[{i}]"),
         (other, _) => {
             return Err(format!(
@@ -250,7 +251,8 @@ fn adapter(
         stores.insert(k.name.clone(), store);
     }
     let tracking = tracking(&stores, model.inputs.len());
-    let stance = stance_rhs(model, module)?;
+    let stance =
+        stance_rhs(model, module)? + &power_sign(model, module)? + &sliding_lambda(model, module)?;
     let fixed: Vec<String> = v.fixed.iter().map(|(n, x)| format!("{n} = {x}")).collect();
     Ok(format!(
         "/// `models/{model}.toml`, friction `{friction:?}`, fixed: {fixed}.\n\
@@ -359,12 +361,9 @@ fn stance_rhs(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
         };
         (
             format!(
-                "let r = {};\n\
-                 let mut v = [0.0; {m}];\n\
-                 for i in 0..{m} {{ v[i] = control.aux_input(i, r[i], r[{m} + i]); }}\n\
-                 let w = {};\n\
+                "{}let w = {};\n\
                  let (qdd, u): ([f64; {n}], [f64; {m}]) = if stuck {{ {} }} else {{ {} }};\n",
-                call(model, rates, source)?,
+                aux_inputs(model, rates, source)?,
                 call(model, w, source)?,
                 split("closed_loop_stick")?,
                 split("closed_loop")?,
@@ -372,18 +371,10 @@ fn stance_rhs(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
             "crate::model::power(&u, &w)",
         )
     };
-    // A parameter the body does not read is named `_` (the smooth law has no `sigma`).
-    let used = |name: &str, param: &str| {
-        if body.contains(name) {
-            param.to_owned()
-        } else {
-            format!("_{param}")
-        }
-    };
     Ok(format!(
         "fn stance_rhs(&self, stuck: bool, {sigma}: f64, y: &[f64], {control}: &crate::model::Tracking<'_>, dy: &mut [f64]) -> f64 {{\n\
          let p = &self.0;\n\
-         let y: &[f64; {two_n}] = y[..{two_n}].try_into().expect(\"a state of {two_n} numbers\");\n\
+         {state}\
          let dy: &mut [f64; {two_n}] = dy.try_into().expect(\"a derivative of {two_n} numbers\");\n\
          {body}\
          dy[..{n}].copy_from_slice(&y[{n}..]);\n\
@@ -391,9 +382,125 @@ fn stance_rhs(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
          {result}\n\
          }}\n",
         two_n = 2 * n,
-        sigma = used("sigma", "sigma"),
-        control = used("control.", "control"),
+        state = state_array(n),
+        sigma = param(&body, "sigma", "sigma"),
+        control = param(&body, "control.", "control"),
     ))
+}
+
+/// The adapter's `Kernels::power_sign` for a model with inputs: `prod u_i w_i` from the
+/// closed loop (or the stuck one) and the inputs' rates, as one function with the arithmetic
+/// of the trait's default. A passive walker, or a variant without these kernels, keeps the
+/// default.
+fn power_sign(model: &Model, module: &walker_gen::Module) -> Result<String, String> {
+    let (n, m) = (model.coordinates.len(), model.inputs.len());
+    let source = Source::State { n };
+    let kernel = |name: &str| module.kernels.iter().find(|k| k.name == name);
+    let (Some(rates), Some(w)) = (kernel("output_rates"), kernel("input_rates")) else {
+        return Ok(String::new());
+    };
+    if m == 0 {
+        return Ok(String::new());
+    }
+    // `u` from a closed loop's outputs `[qdd, u, ..]`.
+    let inputs = |name: &str| -> Result<String, String> {
+        let Some(k) = kernel(name) else {
+            return Ok(format!("[f64::NAN; {m}]"));
+        };
+        let u: Vec<String> = (n..n + m).map(|i| format!("o[{i}]")).collect();
+        Ok(format!(
+            "let o = {}; [{}]",
+            call(model, k, source)?,
+            u.join(", ")
+        ))
+    };
+    let body = format!(
+        "{}let w = {};\n\
+         let u: [f64; {m}] = if stuck {{ {} }} else {{ {} }};\n\
+         w.iter().zip(&u).map(|(wi, ui)| wi * ui).product()",
+        aux_inputs(model, rates, source)?,
+        call(model, w, source)?,
+        inputs("closed_loop_stick")?,
+        inputs("closed_loop")?,
+    );
+    Ok(format!(
+        "fn power_sign(&self, stuck: bool, {sigma}: f64, y: &[f64], control: &crate::model::Tracking<'_>) -> f64 {{\n\
+         let p = &self.0;\n\
+         {state}\
+         {body}\n\
+         }}\n",
+        state = state_array(n),
+        sigma = param(&body, "sigma", "sigma"),
+    ))
+}
+
+/// The adapter's `Kernels::sliding_lambda`: `lambda` at the state with the closed loop's
+/// inputs of that point (the outputs' rates, Eq. 32's `v`, `closed_loop`, then `lambda`), as
+/// one function with the arithmetic of the trait's default; without inputs `lambda` alone. A
+/// variant without these kernels keeps the default.
+fn sliding_lambda(model: &Model, module: &walker_gen::Module) -> Result<String, String> {
+    let (n, m) = (model.coordinates.len(), model.inputs.len());
+    let source = Source::State { n };
+    let kernel = |name: &str| module.kernels.iter().find(|k| k.name == name);
+    let Some(lambda) = kernel("lambda") else {
+        return Ok(String::new());
+    };
+    let mut body = String::new();
+    if m > 0 {
+        let (Some(rates), Some(closed_loop)) = (kernel("output_rates"), kernel("closed_loop"))
+        else {
+            return Ok(String::new());
+        };
+        let u: Vec<String> = (n..n + m).map(|i| format!("o[{i}]")).collect();
+        body = format!(
+            "{}let o = {};\nlet u = [{}];\n",
+            aux_inputs(model, rates, source)?,
+            call(model, closed_loop, source)?,
+            u.join(", ")
+        );
+    }
+    body.push_str(&call(model, lambda, source)?);
+    Ok(format!(
+        "fn sliding_lambda(&self, {sigma}: f64, y: &[f64], {control}: &crate::model::Tracking<'_>) -> f64 {{\n\
+         let p = &self.0;\n\
+         {state}\
+         {body}\n\
+         }}\n",
+        state = state_array(n),
+        sigma = param(&body, "sigma", "sigma"),
+        control = param(&body, "control.", "control"),
+    ))
+}
+
+/// The outputs' rates `r = [y, ydot]` (the `output_rates` call `rates`) and Eq. 32's auxiliary
+/// inputs `v` from them, as generated statements.
+fn aux_inputs(model: &Model, rates: &walker_gen::Kernel, source: Source) -> Result<String, String> {
+    let m = model.inputs.len();
+    Ok(format!(
+        "let r = {};\n\
+         let mut v = [0.0; {m}];\n\
+         for i in 0..{m} {{ v[i] = control.aux_input(i, r[i], r[{m} + i]); }}\n",
+        call(model, rates, source)?
+    ))
+}
+
+/// The statement that reads the state slice `y` as the array `[q, qd]` of `2n` numbers.
+fn state_array(n: usize) -> String {
+    let two_n = 2 * n;
+    format!(
+        "let y: &[f64; {two_n}] = y[..{two_n}].try_into().expect(\"a state of {two_n} numbers\");\n"
+    )
+}
+
+/// The name of the parameter `param` in a generated signature: itself if the body reads it
+/// (contains `name`), otherwise `_param` (the smooth law has no `sigma`, a passive walker no
+/// control).
+fn param(body: &str, name: &str, param: &str) -> String {
+    if body.contains(name) {
+        param.to_owned()
+    } else {
+        format!("_{param}")
+    }
 }
 
 /// `closed_loop_stick` as `ClosedLoopStick`.

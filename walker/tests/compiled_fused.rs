@@ -1,7 +1,7 @@
 //! The compiled variants' fused paths against the kernel interface's defaults: every compiled
-//! variant (`walker/build.rs`) writes `Kernels::stance_rhs` and `Kernels::tracking` as straight
-//! functions of its kernels; the trait's defaults assemble the same quantities from
-//! `Kernels::eval` calls. Both do the same floating-point operations in the same order, so they
+//! variant (`walker/build.rs`) writes `Kernels::stance_rhs`, `power_sign`, `sliding_lambda` and
+//! `tracking` as straight functions of its kernels; the trait's defaults assemble the same
+//! quantities from `Kernels::eval` calls. Both do the same floating-point operations in the same order, so they
 //! must agree bit for bit (a mismatch is a wrong argument or output slot in the generator, not
 //! rounding), at any state, in both contacts and both sliding directions.
 
@@ -91,6 +91,17 @@ proptest! {
                     "{}: dy[{i}] = {} against {}", case.name, fused[i], reference[i]
                 );
             }
+
+            let (p, q) = (
+                case.kernels.power_sign(stuck, sigma, y, &control),
+                assembled.power_sign(stuck, sigma, y, &control),
+            );
+            prop_assert!(same(p, q), "{}: power sign {p} against {q}", case.name);
+            let (p, q) = (
+                case.kernels.sliding_lambda(sigma, y, &control),
+                assembled.sliding_lambda(sigma, y, &control),
+            );
+            prop_assert!(same(p, q), "{}: lambda {p} against {q}", case.name);
 
             if m > 0 {
                 let args = Args { sigma, ..Args::state(&y[..n], &y[n..]) };

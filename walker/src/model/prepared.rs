@@ -268,49 +268,14 @@ impl Model {
     /// `contact`; a Coulomb model given [`Contact::Smooth`] is treated as stuck.
     pub fn stance(&self, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
         let mut w = [0.0; MAX_COORDINATES];
-        self.stance_and_rates(t, y, contact, out, &mut w[..self.inputs()]);
-    }
-
-    /// [`Model::stance`], and the inputs' rates `w = S^T qd` in `w` (`m` numbers: the power
-    /// `sum |u_i w_i|` the right-hand side integrates; empty for a passive walker).
-    pub fn stance_and_rates(
-        &self,
-        t: f64,
-        y: &[f64],
-        contact: Contact,
-        out: &mut [f64],
-        w: &mut [f64],
-    ) {
-        let (n, m) = (self.n(), self.inputs());
-        let (q, qd) = (&y[..n], &y[n..2 * n]);
-        let (stuck, sigma) = (self.is_stuck(contact), contact.sigma());
-        if m == 0 {
-            let (k, len) = if stuck {
-                (KernelId::Stick, n + 2)
-            } else {
-                (KernelId::Accel, n)
-            };
-            self.eval(
-                k,
-                Args {
-                    sigma,
-                    ..Args::state(q, qd)
-                },
-                &mut out[..len],
-            );
-            return;
-        }
-        let (k, len) = if stuck {
-            (KernelId::ClosedLoopStick, n + m + 2)
-        } else {
-            (KernelId::ClosedLoop, n + m)
-        };
-        let args = Args {
-            sigma,
-            ..Args::state(q, qd)
-        };
-        self.kernels
-            .tracking(k, &args, &self.tracking_at(t), &mut out[..len], w);
+        self.kernels.stance(
+            self.is_stuck(contact),
+            contact.sigma(),
+            &y[..2 * self.n()],
+            &self.tracking_at(t),
+            out,
+            &mut w,
+        );
     }
 
     /// The stance phase's right-hand side at time `t` since the last impact and state
@@ -321,7 +286,7 @@ impl Model {
         let (stuck, sigma) = (self.is_stuck(contact), contact.sigma());
         let p = self
             .kernels
-            .stance_rhs(stuck, sigma, y, &self.tracking_at(t), dy);
+            .stance_rhs(stuck, sigma, &y[..dy.len()], &self.tracking_at(t), dy);
         if self.power_counts(t) { p } else { 0.0 }
     }
 
@@ -362,18 +327,15 @@ impl Model {
     /// it changes sign where one of them does (a kink of the integrand `sum |u_i w_i|`).
     #[must_use]
     pub fn power_sign_function(&self, t: f64, y: &[f64], contact: Contact) -> f64 {
-        let (n, m) = (self.n(), self.inputs());
-        if m == 0 {
+        if self.inputs() == 0 {
             return 1.0;
         }
-        let mut out = [0.0; Model::STANCE_LEN];
-        let mut w = [0.0; MAX_COORDINATES];
-        self.stance_and_rates(t, y, contact, &mut out, &mut w[..m]);
-        w[..m]
-            .iter()
-            .zip(&out[n..n + m])
-            .map(|(wi, ui)| wi * ui)
-            .product()
+        self.kernels.power_sign(
+            self.is_stuck(contact),
+            contact.sigma(),
+            &y[..2 * self.n()],
+            &self.tracking_at(t),
+        )
     }
 
     /// The friction coefficient `mu` of the smooth law at the foot's velocity `xd`:
@@ -442,8 +404,9 @@ impl Model {
                 tangential,
             };
         }
-        let u = self.control_input(t, y, contact);
-        let lambda = self.lambda(q, qd, &u, contact.sigma());
+        let lambda =
+            self.kernels
+                .sliding_lambda(contact.sigma(), &y[..2 * n], &self.tracking_at(t));
         let mu = match contact {
             Contact::Sliding(s) => -self.mu0 * s.sigma(),
             Contact::Smooth | Contact::Stuck => self.tanh_mu(qd[0]),
