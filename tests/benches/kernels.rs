@@ -1,7 +1,10 @@
 //! Criterion benchmarks of the generated kernels (`active_level` / `passive_slope` with Table 1
 //! compiled in, `general_level` / `general_slope` with every parameter at run time) against the
 //! lean generic nalgebra path (fixed-size KKT + LU, `common`) on the same 1024 seeded inputs.
-//! Each measurement evaluates all 1024 points; throughput is reported per element.
+//! Each measurement evaluates all 1024 points; throughput is reported per element. Beside the
+//! scene kernels (what the hand-derived simulator called), the closed loop and the slope's
+//! `accel` the simulator calls now: those of `models/paper-active.toml` and
+//! `models/paper-passive.toml` with Table 1 fixed (`walker::compiled`, the `model_*` benches).
 //!
 //! `cargo bench -p walker-tests --bench kernels` (about 1.5 s per bench, sample size 20).
 
@@ -13,6 +16,7 @@ use std::time::Duration;
 use common::{C, Input, MU0, inputs};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use nalgebra::Vector4;
+use walker::compiled::{paper_active_0 as ma, paper_passive_0 as mp};
 use walker_tests::scenes::{
     active_level as al, general_level as gl, general_slope as gs, passive_slope as ps,
 };
@@ -48,6 +52,18 @@ fn bench(c: &mut Criterion) {
         c: C,
     });
     let ks = gs_prep(&p2);
+    let kma = ma::prepare(&ma::Params {
+        mu0: MU0,
+        c: C,
+        t_set: 0.3,
+        k_p: 0.0,
+        k_d: 0.0,
+    });
+    let kmp = mp::prepare(&mp::Params {
+        phi: 0.2,
+        mu0: MU0,
+        c: C,
+    });
 
     let mut g = c.benchmark_group("rhs_control_accel");
     g.throughput(Throughput::Elements(xs.len() as u64));
@@ -64,6 +80,13 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             for x in black_box(&xs) {
                 black_box(al::closed_loop_level(&ka, x.th1, x.th1d, x.xd, x.v));
+            }
+        });
+    });
+    g.bench_function("model_closed_loop", |b| {
+        b.iter(|| {
+            for x in black_box(&xs) {
+                black_box(ma::closed_loop(&kma, x.th1, x.th1d, x.xd, x.v));
             }
         });
     });
@@ -219,6 +242,13 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             for x in black_box(&xs) {
                 black_box(ps::accel_slope(&kp, x.th1, x.th1d, x.xd));
+            }
+        });
+    });
+    g.bench_function("model_accel", |b| {
+        b.iter(|| {
+            for x in black_box(&xs) {
+                black_box(mp::accel(&kmp, x.th1, x.th1d, x.xd));
             }
         });
     });
