@@ -324,12 +324,7 @@ fn tracking(stores: &std::collections::BTreeMap<String, String>, m: usize) -> St
 fn stance_rhs(model: &Model, module: &walker_gen::Module) -> Result<String, String> {
     let (n, m) = (model.coordinates.len(), model.inputs.len());
     let source = Source::State { n };
-    let kernel = |name: &str| module.kernels.iter().find(|k| k.name == name);
-    // The outputs `o[from..to]` of a call as an array expression.
-    let take = |from: usize, to: usize| {
-        let items: Vec<String> = (from..to).map(|i| format!("o[{i}]")).collect();
-        format!("[{}]", items.join(", "))
-    };
+    let kernel = |name: &str| find(module, name);
     // `qdd` (then `u` when `m > 0`) from a kernel whose outputs start with them.
     let split = |name: &str| -> Result<String, String> {
         let Some(k) = kernel(name) else {
@@ -340,9 +335,9 @@ fn stance_rhs(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
             });
         };
         let value = if m == 0 {
-            take(0, n)
+            outputs(0, n)
         } else {
-            format!("({}, {})", take(0, n), take(n, n + m))
+            format!("({}, {})", outputs(0, n), outputs(n, n + m))
         };
         Ok(format!("let o = {}; {value}", call(model, k, source)?))
     };
@@ -371,21 +366,20 @@ fn stance_rhs(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
             "crate::model::power(&u, &w)",
         )
     };
-    Ok(format!(
-        "fn stance_rhs(&self, stuck: bool, {sigma}: f64, y: &[f64], {control}: &crate::model::Tracking<'_>, dy: &mut [f64]) -> f64 {{\n\
-         let p = &self.0;\n\
-         {state}\
-         let dy: &mut [f64; {two_n}] = dy.try_into().expect(\"a derivative of {two_n} numbers\");\n\
+    let params = format!(
+        "stuck: bool, {}: f64, y: &[f64], {}: &crate::model::Tracking<'_>, dy: &mut [f64]",
+        param(&body, "sigma", "sigma"),
+        param(&body, "control.", "control"),
+    );
+    let two_n = 2 * n;
+    let body = format!(
+        "let dy: &mut [f64; {two_n}] = dy.try_into().expect(\"a derivative of {two_n} numbers\");\n\
          {body}\
          dy[..{n}].copy_from_slice(&y[{n}..]);\n\
          dy[{n}..].copy_from_slice(&qdd);\n\
-         {result}\n\
-         }}\n",
-        two_n = 2 * n,
-        state = state_array(n),
-        sigma = param(&body, "sigma", "sigma"),
-        control = param(&body, "control.", "control"),
-    ))
+         {result}"
+    );
+    Ok(method("stance_rhs", &params, n, &body))
 }
 
 /// The adapter's `Kernels::power_sign` for a model with inputs: `prod u_i w_i` from the
@@ -395,7 +389,7 @@ fn stance_rhs(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
 fn power_sign(model: &Model, module: &walker_gen::Module) -> Result<String, String> {
     let (n, m) = (model.coordinates.len(), model.inputs.len());
     let source = Source::State { n };
-    let kernel = |name: &str| module.kernels.iter().find(|k| k.name == name);
+    let kernel = |name: &str| find(module, name);
     let (Some(rates), Some(w)) = (kernel("output_rates"), kernel("input_rates")) else {
         return Ok(String::new());
     };
@@ -407,11 +401,10 @@ fn power_sign(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
         let Some(k) = kernel(name) else {
             return Ok(format!("[f64::NAN; {m}]"));
         };
-        let u: Vec<String> = (n..n + m).map(|i| format!("o[{i}]")).collect();
         Ok(format!(
-            "let o = {}; [{}]",
+            "let o = {}; {}",
             call(model, k, source)?,
-            u.join(", ")
+            outputs(n, n + m)
         ))
     };
     let body = format!(
@@ -423,15 +416,11 @@ fn power_sign(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
         inputs("closed_loop_stick")?,
         inputs("closed_loop")?,
     );
-    Ok(format!(
-        "fn power_sign(&self, stuck: bool, {sigma}: f64, y: &[f64], control: &crate::model::Tracking<'_>) -> f64 {{\n\
-         let p = &self.0;\n\
-         {state}\
-         {body}\n\
-         }}\n",
-        state = state_array(n),
-        sigma = param(&body, "sigma", "sigma"),
-    ))
+    let params = format!(
+        "stuck: bool, {}: f64, y: &[f64], control: &crate::model::Tracking<'_>",
+        param(&body, "sigma", "sigma"),
+    );
+    Ok(method("power_sign", &params, n, &body))
 }
 
 /// The adapter's `Kernels::sliding_lambda`: `lambda` at the state with the closed loop's
@@ -441,7 +430,7 @@ fn power_sign(model: &Model, module: &walker_gen::Module) -> Result<String, Stri
 fn sliding_lambda(model: &Model, module: &walker_gen::Module) -> Result<String, String> {
     let (n, m) = (model.coordinates.len(), model.inputs.len());
     let source = Source::State { n };
-    let kernel = |name: &str| module.kernels.iter().find(|k| k.name == name);
+    let kernel = |name: &str| find(module, name);
     let Some(lambda) = kernel("lambda") else {
         return Ok(String::new());
     };
@@ -451,25 +440,20 @@ fn sliding_lambda(model: &Model, module: &walker_gen::Module) -> Result<String, 
         else {
             return Ok(String::new());
         };
-        let u: Vec<String> = (n..n + m).map(|i| format!("o[{i}]")).collect();
         body = format!(
-            "{}let o = {};\nlet u = [{}];\n",
+            "{}let o = {};\nlet u = {};\n",
             aux_inputs(model, rates, source)?,
             call(model, closed_loop, source)?,
-            u.join(", ")
+            outputs(n, n + m)
         );
     }
     body.push_str(&call(model, lambda, source)?);
-    Ok(format!(
-        "fn sliding_lambda(&self, {sigma}: f64, y: &[f64], {control}: &crate::model::Tracking<'_>) -> f64 {{\n\
-         let p = &self.0;\n\
-         {state}\
-         {body}\n\
-         }}\n",
-        state = state_array(n),
-        sigma = param(&body, "sigma", "sigma"),
-        control = param(&body, "control.", "control"),
-    ))
+    let params = format!(
+        "{}: f64, y: &[f64], {}: &crate::model::Tracking<'_>",
+        param(&body, "sigma", "sigma"),
+        param(&body, "control.", "control"),
+    );
+    Ok(method("sliding_lambda", &params, n, &body))
 }
 
 /// The outputs' rates `r = [y, ydot]` (the `output_rates` call `rates`) and Eq. 32's auxiliary
@@ -484,11 +468,28 @@ fn aux_inputs(model: &Model, rates: &walker_gen::Kernel, source: Source) -> Resu
     ))
 }
 
-/// The statement that reads the state slice `y` as the array `[q, qd]` of `2n` numbers.
-fn state_array(n: usize) -> String {
+/// The kernel of `module` called `name`, if the variant has it.
+fn find<'m>(module: &'m walker_gen::Module, name: &str) -> Option<&'m walker_gen::Kernel> {
+    module.kernels.iter().find(|k| k.name == name)
+}
+
+/// The outputs `o[from..to]` of a kernel call bound to `o`, as an array expression.
+fn outputs(from: usize, to: usize) -> String {
+    let items: Vec<String> = (from..to).map(|i| format!("o[{i}]")).collect();
+    format!("[{}]", items.join(", "))
+}
+
+/// A generated `Kernels` method `name(&self, params) -> f64` of a model with `n` coordinates:
+/// the prepared parameters as `p`, the state slice `y` read as the array `[q, qd]` of `2n`
+/// numbers, then `body`.
+fn method(name: &str, params: &str, n: usize, body: &str) -> String {
     let two_n = 2 * n;
     format!(
-        "let y: &[f64; {two_n}] = y[..{two_n}].try_into().expect(\"a state of {two_n} numbers\");\n"
+        "fn {name}(&self, {params}) -> f64 {{\n\
+         let p = &self.0;\n\
+         let y: &[f64; {two_n}] = y[..{two_n}].try_into().expect(\"a state of {two_n} numbers\");\n\
+         {body}\n\
+         }}\n"
     )
 }
 

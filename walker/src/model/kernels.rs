@@ -280,7 +280,7 @@ pub trait Kernels: Send + Sync {
     ///
     /// The default assembles it from [`Kernels::stance`]; a compiled variant writes it as one
     /// function with the same arithmetic (every stage of every integration step calls it, and
-    /// the layers between the calls were a tenth of a walk's instructions).
+    /// the layers between the calls were 7 % of a walk's instructions).
     fn stance_rhs(
         &self,
         stuck: bool,
