@@ -122,3 +122,39 @@ fn sine_and_cosine_pair() {
     let steps = plan.kernels.first().map(|k| k.block.steps.clone());
     assert!(matches!(steps.as_deref(), Some([Step::SinCos { .. }])));
 }
+
+/// The critical path by hand: `(a + b) * x` with `a + b` hoisted to `prepare` is one
+/// multiplication (4 cycles); `sin(x) / (1 + x)` is the sine (40) then the division (14), the
+/// addition beside the sine being off the path.
+#[test]
+fn the_critical_path_counts_the_longest_chain_only() {
+    let hoisted = module_with(|m| {
+        let a = m.param("a", "");
+        let b = m.param("b", "");
+        let x = m.graph.input("x");
+        let ab = m.graph.add(a, b);
+        vec![m.graph.mul(ab, x)]
+    });
+    let plan = Plan::new(&hoisted, Division::Exact).expect("valid");
+    assert_eq!(crate::stats::critical_path(&plan, 0), 4);
+
+    let quotient = module_with(|m| {
+        let x = m.graph.input("x");
+        let s = m.graph.sin(x);
+        let one = m.graph.constant(1.0);
+        let d = m.graph.add(one, x);
+        vec![m.graph.div(s, d), x]
+    });
+    let plan = Plan::new(&quotient, Division::Exact).expect("valid");
+    assert_eq!(crate::stats::critical_path(&plan, 0), 40 + 14);
+    // Two dependent divisions: each on the path.
+    let chained = module_with(|m| {
+        let x = m.graph.input("x");
+        let one = m.graph.constant(1.0);
+        let d = m.graph.add(one, x);
+        let q = m.graph.div(x, d);
+        vec![m.graph.div(q, d)]
+    });
+    let plan = Plan::new(&chained, Division::Exact).expect("valid");
+    assert_eq!(crate::stats::critical_path(&plan, 0), 4 + 14 + 14);
+}
