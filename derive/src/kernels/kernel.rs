@@ -67,6 +67,29 @@ pub struct Staged {
 }
 
 impl Kernel {
+    /// A kernel of closed forms taking `args`, with no staged form and no structured solve.
+    #[must_use]
+    pub fn closed_form(
+        name: &'static str,
+        doc: &'static str,
+        equation: &'static str,
+        args: Vec<Sym>,
+        outputs: Vec<(String, RatFunc)>,
+        shape: Shape,
+    ) -> Kernel {
+        Kernel {
+            name,
+            doc,
+            equation,
+            args,
+            outputs,
+            shape,
+            staged: None,
+            solve: None,
+            closed: true,
+        }
+    }
+
     /// The parameters the kernel's forms contain (`symbols`: the table of the derivation), in
     /// symbol order.
     pub fn params(&self, symbols: &Symbols) -> Vec<Sym> {

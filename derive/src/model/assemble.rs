@@ -91,17 +91,8 @@ pub(super) fn kernel(
     shape: Shape,
     always: &[Sym],
 ) -> Kernel {
-    Kernel {
-        name,
-        doc,
-        equation,
-        args: args_of(symbols, outputs.iter().map(|(_, r)| r), always),
-        outputs,
-        shape,
-        staged: None,
-        solve: None,
-        closed: true,
-    }
+    let args = args_of(symbols, outputs.iter().map(|(_, r)| r), always);
+    Kernel::closed_form(name, doc, equation, args, outputs, shape)
 }
 
 /// The output names [`named`] gives a `rows x cols` matrix.
