@@ -167,8 +167,9 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         }
         let _ = write!(
             index,
-            "    Compiled {{\n        name: \"{name}\",\n        source: include_str!(\"{}\"),\n        variants: &[\n{entries}        ],\n    }},\n",
-            path.display()
+            "    Compiled {{\n        name: \"{name}\",\n        source: include_str!(\"{}\"),\n        canonical: {:?},\n        variants: &[\n{entries}        ],\n    }},\n",
+            path.display(),
+            model.canonical()
         );
     }
     index.push_str("];\n");

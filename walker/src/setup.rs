@@ -172,17 +172,15 @@ pub struct Setup {
     pub fixed: Vec<(String, f64)>,
 }
 
-/// The walker of a model file: its compiled variants when the file is a shipped model byte for
-/// byte, else the run-time source.
+/// The walker of a model file: the compiled variants of the shipped model with the same
+/// canonical content ([`ModelFile::canonical`]: layout, comments, names and docs aside), else
+/// the run-time source.
 ///
 /// # Errors
 /// The model cannot be simulated, or is not compiled in and the run-time source fails.
-pub fn walker_of(
-    model: ModelFile,
-    text: &str,
-    runtime: Option<&RuntimeSource>,
-) -> Result<Walker, SetupError> {
-    if let Some(c) = MODELS.iter().find(|c| c.source == text) {
+pub fn walker_of(model: ModelFile, runtime: Option<&RuntimeSource>) -> Result<Walker, SetupError> {
+    let canonical = model.canonical();
+    if let Some(c) = MODELS.iter().find(|c| c.canonical == canonical) {
         let source: Arc<dyn KernelSource> = Arc::new(*c);
         return Ok(Walker::new(Spec::new(model)?, source));
     }
@@ -338,7 +336,7 @@ impl Setup {
         let friction = model.stance.default_friction();
         let impact = model.impact.law;
         let name = model.name.clone();
-        let walker = walker_of(model, &text, runtime)?;
+        let walker = walker_of(model, runtime)?;
         let mut setup = Setup {
             params: walker.defaults(),
             walker,
@@ -361,7 +359,7 @@ impl Setup {
             .unwrap_or_else(|| file.model.stance.default_friction());
         let impact = file.impact.unwrap_or(file.model.impact.law);
         let name = file.name.clone().unwrap_or_else(|| file.model.name.clone());
-        let walker = walker_of(file.model, &file.model_text, runtime)?;
+        let walker = walker_of(file.model, runtime)?;
         let mut params = walker.defaults();
         for (n, v) in file.fix.iter().chain(&file.set) {
             params.set(n, *v)?;

@@ -192,7 +192,7 @@ mod tests {
     fn every_chain_starts_from_its_own_models_start() {
         let text = include_str!("../../models/compass-gait.toml");
         let file = walker_scene::model::Model::from_toml(text, "compass-gait.toml").unwrap();
-        let walker = crate::setup::walker_of(file, text, None).unwrap();
+        let walker = crate::setup::walker_of(file, None).unwrap();
         let setup = Setup {
             params: walker.defaults(),
             walker,

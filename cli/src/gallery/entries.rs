@@ -87,7 +87,7 @@ impl Entry {
             .ok_or_else(|| err(&"not a compiled model"))?;
         let file =
             walker_scene::model::Model::from_toml(c.source, &self.path()).map_err(|e| err(&e))?;
-        let walker = walker_of(file, c.source, None).map_err(|e| err(&e))?;
+        let walker = walker_of(file, None).map_err(|e| err(&e))?;
         Ok(Setup {
             params: walker.defaults(),
             walker,

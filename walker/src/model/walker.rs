@@ -93,6 +93,9 @@ pub struct Compiled {
     pub name: &'static str,
     /// The model file's text (the compiled kernels were generated from exactly this).
     pub source: &'static str,
+    /// The model's canonical text ([`walker_scene::model::Model::canonical`]): a model file
+    /// whose parsed content has this text runs these kernels, whatever its layout and comments.
+    pub canonical: &'static str,
     /// The variants, those fixing more parameters first (they are faster where they apply).
     pub variants: &'static [Variant],
 }
