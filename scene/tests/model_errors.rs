@@ -162,15 +162,42 @@ fn a_name_declared_twice_is_an_error_at_the_second() {
     );
 }
 
+/// `MINI` with one more parameter called `name`, declared after `m` (from line 23).
+fn with_parameter(name: &str) -> Result<Model, ModelError> {
+    let extra = format!(
+        "[[parameter]]\nname = \"{name}\"\nunit = \"kg\"\ndoc = \"another mass\"\nrange = \"(0, inf)\"\ndefault = 1.0\n[[parameter]]\nname = \"l\""
+    );
+    load_with(MINI, "[[parameter]]\nname = \"l\"", &extra)
+}
+
 #[test]
-fn parameters_that_differ_only_in_case_are_an_error() {
-    // `M` and `m` would both be the field `m` of the generated `Params`.
-    let r = load_with(MINI, "name = \"g\"", "name = \"M\"");
+fn parameters_that_differ_only_in_case_get_fields_of_their_own() {
+    // `M` beside `m`: the fields are `_m` and `m` (docs/model-format.md, "Names").
+    let model = with_parameter("M").unwrap_or_else(|e| panic!("{e}"));
+    let names: Vec<&str> = model.parameters.iter().map(|p| p.name.name.as_str()).collect();
+    assert_eq!(
+        walker_scene::model::fields::param_fields(&names)[..2],
+        ["m".to_owned(), "_m".to_owned()]
+    );
+}
+
+#[test]
+fn parameters_whose_fields_would_really_collide_are_an_error_at_the_later() {
+    // `m__h` is the field of `m__h` and, beside `m_h`, of `m_H`.
+    let text = MINI.replacen(
+        "[[parameter]]\nname = \"l\"",
+        "[[parameter]]\nname = \"m__h\"\nunit = \"kg\"\ndoc = \"a\"\nrange = \"(0, inf)\"\ndefault = 1.0\n\
+         [[parameter]]\nname = \"m_h\"\nunit = \"kg\"\ndoc = \"b\"\nrange = \"(0, inf)\"\ndefault = 1.0\n\
+         [[parameter]]\nname = \"m_H\"\nunit = \"kg\"\ndoc = \"c\"\nrange = \"(0, inf)\"\ndefault = 1.0\n\
+         [[parameter]]\nname = \"l\"",
+        1,
+    );
+    let r = Model::from_toml(&text, "mini.toml");
     assert_error(
         r,
         ModelErrorKind::Duplicate,
-        "30:8",
-        "would both be the field `m`",
+        "36:8",
+        "`m__h` and `m_H` would both be the field `m__h`",
     );
 }
 

@@ -313,3 +313,33 @@ fn bad_model_scenes_exit_2_naming_the_field() {
     let s = model_scene("model = \"wheel.toml\"\nkernels = []\n");
     fails_naming(&["stats", "--scene", &s], "kernels = []");
 }
+
+#[test]
+fn parameters_that_differ_only_in_case_are_fields_of_their_own() {
+    // The compass gait in the notation of much of the literature: `M` the hip mass beside `m`
+    // the legs' (docs/model-format.md, "Names": the field of `M` is `_m`).
+    let text = std::fs::read_to_string(file("models", "compass-gait.toml"))
+        .expect("the compass gait")
+        .replace("\"m_H\"", "\"M\"");
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let path = dir.join("compass-gait-big-m.toml");
+    std::fs::write(&path, text).expect("write the model");
+    let code = emitted_twice(&["emit", "--model", &path.display().to_string()]);
+    let file = syn::parse_file(&code).expect("the generated code parses");
+    let fields: Vec<String> = file
+        .items
+        .iter()
+        .find_map(|item| match item {
+            syn::Item::Struct(s) if s.ident == "Params" => Some(s),
+            _ => None,
+        })
+        .expect("a Params struct")
+        .fields
+        .iter()
+        .filter_map(|f| f.ident.as_ref().map(ToString::to_string))
+        .collect();
+    assert!(fields.contains(&"m".to_owned()), "{fields:?}");
+    assert!(fields.contains(&"_m".to_owned()), "{fields:?}");
+    // Values are looked up by the parameter's own name.
+    assert!(code.contains("_m: value(\"M\")"), "M is read by its name");
+}

@@ -14,6 +14,7 @@ use std::path::Path;
 
 use crate::model::angles::{angle_outside_trig, check_trig_arguments, zero_divisor};
 use crate::model::error::{ModelError, ModelErrorKind};
+use crate::model::fields::param_fields;
 use crate::model::interval::Interval;
 use crate::model::parse::parse_expr;
 use crate::model::raw::{RawModel, Str};
@@ -222,20 +223,27 @@ impl Loader<'_> {
             return Err(self.error(s.span(), kind, message));
         }
         if kind == SymbolKind::Parameter {
-            let field = name.to_ascii_lowercase();
-            if let Some(other) =
-                self.symbols.symbols.iter().find(|o| {
-                    o.kind == SymbolKind::Parameter && o.name.to_ascii_lowercase() == field
-                })
-            {
+            let mut names: Vec<&str> = self
+                .symbols
+                .symbols
+                .iter()
+                .filter(|o| o.kind == SymbolKind::Parameter)
+                .map(|o| o.name.as_str())
+                .collect();
+            names.push(name);
+            let fields = param_fields(&names);
+            let clash = (0..fields.len()).find_map(|i| {
+                (i + 1..fields.len())
+                    .find(|&j| fields[i] == fields[j])
+                    .map(|j| (names[i], names[j], &fields[i]))
+            });
+            if let Some((a, b, field)) = clash {
                 return Err(self.error(
                     s.span(),
                     ModelErrorKind::Duplicate,
                     format!(
-                        "parameters `{}` and `{name}` would both be the field `{field}` of the \
-                         generated `Params` (a field is its parameter's name in lowercase): \
-                         rename one",
-                        other.name
+                        "parameters `{a}` and `{b}` would both be the field `{field}` of the \
+                         generated `Params` (docs/model-format.md, \"Names\"): rename one"
                     ),
                 ));
             }

@@ -18,6 +18,7 @@ mod control;
 pub mod divisors;
 pub mod error;
 pub mod expr;
+pub mod fields;
 pub mod identity;
 pub mod interval;
 pub mod load;

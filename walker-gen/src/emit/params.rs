@@ -29,9 +29,10 @@ pub(super) fn params_and_prepare(
     let fields: Vec<TokenStream> = module
         .params
         .iter()
-        .map(|p| {
+        .enumerate()
+        .map(|(i, p)| {
             let docs = doc_attrs(std::slice::from_ref(&p.doc));
-            let f = ident(&p.field());
+            let f = ident(&module.param_field(i));
             quote!(#(#docs)* pub #f: F,)
         })
         .collect();
@@ -87,8 +88,9 @@ pub(super) fn params_and_prepare(
     let lookups: Vec<TokenStream> = module
         .params
         .iter()
-        .map(|p| {
-            let f = ident(&p.field());
+        .enumerate()
+        .map(|(i, p)| {
+            let f = ident(&module.param_field(i));
             let name = &p.name;
             quote!(#f: value(#name),)
         })

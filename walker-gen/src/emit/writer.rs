@@ -224,12 +224,7 @@ impl Writer<'_> {
         match g.node(n) {
             Node::Const(c) => self.literal(c.value()),
             Node::Param(p) => {
-                let field = self
-                    .module
-                    .params
-                    .get(p.index())
-                    .map_or_else(|| format!("param{}", p.index()), |d| d.field());
-                let field = ident(&field);
+                let field = ident(&self.module.param_field(p.index()));
                 (quote!(p.#field), POSTFIX)
             }
             Node::Input(i) => (ident_expr(g.input_name(i)), ATOM),

@@ -1,6 +1,8 @@
 //! What one generated file declares: its kernels ([`Kernel`], with a result [`Shape`]), its
 //! runtime parameters ([`ParamDecl`]) and the [`Module`] that holds them with the graph.
 
+use walker_scene::model::fields::param_fields;
+
 use super::graph::Graph;
 use super::node::{NodeId, ParamId, index_u32};
 
@@ -50,21 +52,14 @@ pub struct Kernel {
     pub output_shape: Shape,
 }
 
-/// A runtime parameter of a [`Module`]: a field of the generated `Params`.
+/// A runtime parameter of a [`Module`]: a field of the generated `Params`
+/// ([`Module::param_field`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ParamDecl {
-    /// Name as in the scene (`m1`, `I1`, `T_set`); the Rust field is its ASCII lowercase.
+    /// Name as in the scene (`m1`, `I1`, `T_set`).
     pub name: String,
     /// Doc comment of the field.
     pub doc: String,
-}
-
-impl ParamDecl {
-    /// The Rust field name: the ASCII lowercase of [`ParamDecl::name`].
-    #[must_use]
-    pub fn field(&self) -> String {
-        self.name.to_ascii_lowercase()
-    }
 }
 
 /// Everything that goes into one generated file.
@@ -106,6 +101,18 @@ impl Module {
             doc: doc.to_owned(),
         });
         ParamId(index_u32(self.params.len() - 1))
+    }
+
+    /// The Rust field of parameter `index` in the generated `Params`: its name in ASCII lower
+    /// case, unless another parameter shares that lower case
+    /// ([`walker_scene::model::fields`]); `param{index}` for an undeclared index.
+    #[must_use]
+    pub fn param_field(&self, index: usize) -> String {
+        let names: Vec<&str> = self.params.iter().map(|p| p.name.as_str()).collect();
+        param_fields(&names)
+            .into_iter()
+            .nth(index)
+            .unwrap_or_else(|| format!("param{index}"))
     }
 
     /// Declares the runtime parameter `name` and returns its node.

@@ -94,11 +94,7 @@ impl Plan {
         for &n in &frontier {
             let (name, param) = match g.node(n) {
                 Node::Param(p) => {
-                    let name = module
-                        .params
-                        .get(p.index())
-                        .map_or_else(|| format!("param{}", p.index()), |d| d.field());
-                    (name, Some(p))
+                    (module.param_field(p.index()), Some(p))
                 }
                 _ => {
                     let name = format!("k{k}");

@@ -45,8 +45,8 @@ pub(super) fn validate(module: &Module) -> Result<(), EmitError> {
         });
     }
     let mut fields = BTreeSet::new();
-    for p in &module.params {
-        let field = p.field();
+    for (i, p) in module.params.iter().enumerate() {
+        let field = module.param_field(i);
         if !is_snake_ident(&field) || is_generated_name(&field) || field == "p" {
             return Err(EmitError::BadName {
                 what: "parameter".to_owned(),
@@ -56,7 +56,7 @@ pub(super) fn validate(module: &Module) -> Result<(), EmitError> {
         if !fields.insert(field) {
             return Err(EmitError::Duplicate {
                 what: "parameter field".to_owned(),
-                name: p.field(),
+                name: module.param_field(i),
             });
         }
     }
