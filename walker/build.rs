@@ -11,19 +11,9 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use walker_gen::scene::ModelSceneFile;
 use walker_gen::scene::model::{Model, SymbolKind};
 use walker_gen::{EmitOptions, Friction, ModelScene, Shape, derive_model, emit, lower_model};
-
-/// Table 1 of the paper (with `g`): what the fast variants of its walkers fix.
-const TABLE1: &[(&str, f64)] = &[
-    ("m1", 2.0),
-    ("m2", 1.0),
-    ("l", 1.0),
-    ("I1", 0.5),
-    ("I2", 1.0),
-    ("g", 9.81),
-    ("alpha", 0.523_598_775_598_298_8),
-];
 
 /// The kernels the simulator calls (the model's others, such as `mass_matrix`, are left out).
 const SIMULATED: &[&str] = &[
@@ -54,14 +44,15 @@ const JACOBIANS: &[&str] = &[
     "relabel_jacobian",
 ];
 
-/// A compiled variant: a friction law and the parameters fixed at generation.
+/// A compiled variant: a friction law and the parameters fixed at generation, those of the
+/// `[fix]` table of a built-in scene (`models/scenes/<scene>.toml`), or none.
 struct Variant {
     friction: Friction,
-    fixed: &'static [(&'static str, f64)],
+    fixed_by: Option<&'static str>,
 }
 
-const fn variant(friction: Friction, fixed: &'static [(&'static str, f64)]) -> Variant {
-    Variant { friction, fixed }
+const fn variant(friction: Friction, fixed_by: Option<&'static str>) -> Variant {
+    Variant { friction, fixed_by }
 }
 
 /// The shipped models compiled into the library, each with its variants (those fixing more
@@ -70,41 +61,66 @@ const MODELS: &[(&str, &[Variant])] = &[
     (
         "paper-active",
         &[
-            variant(Friction::Tanh, TABLE1),
-            variant(Friction::Tanh, &[]),
-            variant(Friction::Coulomb, &[]),
+            variant(Friction::Tanh, Some("active-level")),
+            variant(Friction::Tanh, None),
+            variant(Friction::Coulomb, None),
         ],
     ),
     (
         "paper-passive",
         &[
-            variant(Friction::Tanh, TABLE1),
-            variant(Friction::Tanh, &[]),
-            variant(Friction::Coulomb, &[]),
+            variant(Friction::Tanh, Some("passive-slope")),
+            variant(Friction::Tanh, None),
+            variant(Friction::Coulomb, None),
         ],
     ),
     (
         "rimless-wheel",
         &[
-            variant(Friction::Tanh, &[]),
-            variant(Friction::Coulomb, &[]),
+            variant(Friction::Tanh, None),
+            variant(Friction::Coulomb, None),
         ],
     ),
     (
         "compass-gait",
         &[
-            variant(Friction::Tanh, &[]),
-            variant(Friction::Coulomb, &[]),
+            variant(Friction::Tanh, None),
+            variant(Friction::Coulomb, None),
         ],
     ),
     (
         "three-link",
         &[
-            variant(Friction::Tanh, &[]),
-            variant(Friction::Coulomb, &[]),
+            variant(Friction::Tanh, None),
+            variant(Friction::Coulomb, None),
         ],
     ),
 ];
+
+/// The parameters variant `v` of model `name` fixes: the `[fix]` table of its built-in scene
+/// (`models/scenes/<scene>.toml`, which must be a scene of this model), so that Table 1 is
+/// written in the scene files only.
+fn fixed_values(
+    models: &Path,
+    name: &str,
+    v: &Variant,
+) -> Result<Vec<(String, f64)>, Box<dyn std::error::Error>> {
+    let Some(scene) = v.fixed_by else {
+        return Ok(Vec::new());
+    };
+    let path = models.join("scenes").join(format!("{scene}.toml"));
+    println!("cargo:rerun-if-changed={}", path.display());
+    let file = ModelSceneFile::from_file(&path)?;
+    if file.model.name != name {
+        return Err(format!(
+            "{}: the scene's model is `{}`, not `{name}`",
+            path.display(),
+            file.model.name
+        )
+        .into());
+    }
+    Ok(file.fix.into_iter().collect())
+}
 
 fn main() {
     if let Err(e) = run() {
@@ -129,14 +145,13 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         let mut entries = String::new();
         for (k, v) in variants.iter().enumerate() {
             let ident = format!("{}_{k}", name.replace('-', "_"));
+            let fixed = fixed_values(&models, name, v)?;
             let mut scene = ModelScene::new(model.clone());
             scene.friction = v.friction;
-            scene.fixed = v.fixed.iter().map(|(n, x)| ((*n).to_owned(), *x)).collect();
-            let wanted = SIMULATED.iter().chain(if v.fixed.is_empty() {
-                &[][..]
-            } else {
-                JACOBIANS
-            });
+            scene.fixed = fixed.iter().cloned().collect();
+            let wanted = SIMULATED
+                .iter()
+                .chain(if fixed.is_empty() { &[][..] } else { JACOBIANS });
             let has = |name: &str| derivation.kernels.iter().any(|k| k.name == name);
             scene.kernels = Some(
                 wanted
@@ -152,9 +167,12 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
                 ..EmitOptions::default()
             };
             write_if_changed(&out.join(format!("{ident}.rs")), &emit(&module, &options)?)?;
-            let _ = write!(modules, "{}", adapter(&model, &ident, v, &module)?);
-            let fixed: Vec<String> = v
-                .fixed
+            let _ = write!(
+                modules,
+                "{}",
+                adapter(&model, &ident, v.friction, &fixed, &module)?
+            );
+            let fixed: Vec<String> = fixed
                 .iter()
                 .map(|(n, x)| format!("(\"{n}\", {x:?})"))
                 .collect();
@@ -238,7 +256,8 @@ fn call(model: &Model, k: &walker_gen::Kernel, source: Source) -> Result<String,
 fn adapter(
     model: &Model,
     ident: &str,
-    v: &Variant,
+    friction: Friction,
+    fixed: &[(String, f64)],
     module: &walker_gen::Module,
 ) -> Result<String, String> {
     let mut arms = String::new();
@@ -261,7 +280,7 @@ fn adapter(
     let tracking = tracking(&stores, model.inputs.len());
     let stance =
         stance_rhs(model, module)? + &power_sign(model, module)? + &sliding_lambda(model, module)?;
-    let fixed: Vec<String> = v.fixed.iter().map(|(n, x)| format!("{n} = {x}")).collect();
+    let fixed: Vec<String> = fixed.iter().map(|(n, x)| format!("{n} = {x}")).collect();
     Ok(format!(
         "/// `models/{model}.toml`, friction `{friction:?}`, fixed: {fixed}.\n\
          #[allow(clippy::all, clippy::pedantic, clippy::suboptimal_flops, missing_docs, reason = \"generated by walker-gen: plain multiply-add keeps the same rounding on every target\")]\n\
@@ -280,7 +299,6 @@ fn adapter(
          std::sync::Arc::new(K(prepare(&Params::from_fn(|name| value(name)))))\n\
          }}\n}}\n",
         model = model.name,
-        friction = v.friction,
         fixed = if fixed.is_empty() {
             "none".to_owned()
         } else {

@@ -174,7 +174,11 @@ fn with_parameter(name: &str) -> Result<Model, ModelError> {
 fn parameters_that_differ_only_in_case_get_fields_of_their_own() {
     // `M` beside `m`: the fields are `_m` and `m` (docs/model-format.md, "Names").
     let model = with_parameter("M").unwrap_or_else(|e| panic!("{e}"));
-    let names: Vec<&str> = model.parameters.iter().map(|p| p.name.name.as_str()).collect();
+    let names: Vec<&str> = model
+        .parameters
+        .iter()
+        .map(|p| p.name.name.as_str())
+        .collect();
     assert_eq!(
         walker_scene::model::fields::param_fields(&names)[..2],
         ["m".to_owned(), "_m".to_owned()]

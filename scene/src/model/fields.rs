@@ -53,7 +53,10 @@ mod tests {
     #[test]
     fn names_that_differ_only_in_case_get_distinct_fields() {
         assert_eq!(param_fields(&["m", "M", "l"]), ["m", "_m", "l"]);
-        assert_eq!(param_fields(&["m_H", "m_h", "M_h"]), ["m__h", "m_h", "_m_h"]);
+        assert_eq!(
+            param_fields(&["m_H", "m_h", "M_h"]),
+            ["m__h", "m_h", "_m_h"]
+        );
     }
 
     #[test]

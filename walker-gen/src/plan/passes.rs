@@ -93,9 +93,7 @@ impl Plan {
         let mut k = 0_usize;
         for &n in &frontier {
             let (name, param) = match g.node(n) {
-                Node::Param(p) => {
-                    (module.param_field(p.index()), Some(p))
-                }
+                Node::Param(p) => (module.param_field(p.index()), Some(p)),
                 _ => {
                     let name = format!("k{k}");
                     k += 1;
