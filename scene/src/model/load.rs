@@ -12,18 +12,21 @@
 use std::ops::Range;
 use std::path::Path;
 
+use crate::limits::{MAX_FILE_BYTES, MAX_NAME_CHARS, echo};
 use crate::model::angles::{angle_outside_trig, check_trig_arguments, zero_divisor};
 use crate::model::error::{ModelError, ModelErrorKind};
 use crate::model::interval::Interval;
 use crate::model::parse::parse_expr;
 use crate::model::raw::{RawModel, Str};
+use crate::model::reserved::reserved_because;
 use crate::model::source::SourceMap;
 use crate::model::symbols::{SymbolKind, SymbolTable};
 use crate::model::types::{
     Coordinate, CoordinateUnit, Model, ModelExpr, Name, Parameter, Stage, locate,
 };
 
-/// The names no declaration may take (besides every coordinate's velocity and acceleration).
+/// The names of the expression language no declaration may take (besides every coordinate's
+/// velocity and acceleration); [`reserved`](crate::model::reserved) has every reserved name.
 pub const RESERVED: [&str; 4] = ["t", "mu", "sin", "cos"];
 
 /// The symbols an expression may use, and whether it is a position.
@@ -70,13 +73,13 @@ impl Model {
     ///
     /// # Errors
     ///
-    /// [`ModelError::Read`] if the file cannot be read, else the first problem found, with
-    /// its line and column.
+    /// [`ModelError::Read`] if the file cannot be read, is not a regular file or is longer
+    /// than [`MAX_FILE_BYTES`], else the first problem found, with its line and column.
     pub fn from_file(path: &Path) -> Result<Model, ModelError> {
         let shown = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| ModelError::Read {
+        let text = crate::read::read_input(path, MAX_FILE_BYTES).map_err(|e| ModelError::Read {
             path: shown.clone(),
-            source,
+            source: e.into(),
         })?;
         Model::from_toml(&text, &shown)
     }
@@ -124,6 +127,34 @@ pub fn is_kebab_name(s: &str) -> bool {
 }
 
 impl Loader<'_> {
+    /// Checks that a declared name is an identifier of at most [`MAX_NAME_CHARS`] characters,
+    /// echoing a bad one escaped and cut.
+    pub(crate) fn check_name(&self, s: &Str) -> Result<(), ModelError> {
+        let name = s.get_ref();
+        if !is_identifier(name) {
+            return Err(self.error(
+                s.span(),
+                ModelErrorKind::BadName,
+                format!(
+                    "`{}` is not a name: expected an ASCII letter followed by letters, digits or `_`",
+                    echo(name)
+                ),
+            ));
+        }
+        if name.len() > MAX_NAME_CHARS {
+            return Err(self.error(
+                s.span(),
+                ModelErrorKind::Limit,
+                format!(
+                    "the name `{}` has {} characters: expected at most {MAX_NAME_CHARS}",
+                    echo(name),
+                    name.len()
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     /// An error at a byte offset of the file.
     pub(crate) fn error_at(
         &self,
@@ -161,13 +192,7 @@ impl Loader<'_> {
         angle: bool,
     ) -> Result<(), ModelError> {
         let name = s.get_ref();
-        if !is_identifier(name) {
-            return Err(self.error(
-                s.span(),
-                ModelErrorKind::BadName,
-                format!("`{name}` is not a name: expected an ASCII letter followed by letters, digits or `_`"),
-            ));
-        }
+        self.check_name(s)?;
         let argument = matches!(
             kind,
             SymbolKind::Coordinate | SymbolKind::Input | SymbolKind::Aux
@@ -184,11 +209,15 @@ impl Loader<'_> {
                 ),
             ));
         }
-        if RESERVED.contains(&name.as_str()) {
+        if let Some(why) = reserved_because(name) {
             return Err(self.error(
                 s.span(),
                 ModelErrorKind::Reserved,
-                format!("`{name}` is reserved (t, mu, sin, cos and the coordinates' velocities and accelerations)"),
+                format!(
+                    "`{name}` is reserved: {why}; expected another name for {} \
+                     (docs/model-format.md lists the reserved names)",
+                    kind.describe()
+                ),
             ));
         }
         if let Some(existing) = self.symbols.get(name) {
@@ -340,20 +369,22 @@ impl Loader<'_> {
                 ),
             ));
         }
-        if !is_kebab_name(raw.name.get_ref()) {
+        if !is_kebab_name(raw.name.get_ref()) || raw.name.get_ref().len() > MAX_NAME_CHARS {
             return Err(self.error(
                 raw.name.span(),
                 ModelErrorKind::BadName,
                 format!(
-                    "model name `{}`: expected [a-z][a-z0-9-]*",
-                    raw.name.get_ref()
+                    "model name `{}`: expected [a-z][a-z0-9-]*, at most {MAX_NAME_CHARS} characters",
+                    echo(raw.name.get_ref())
                 ),
             ));
         }
+        self.check_size(&raw)?;
         let coordinates = self.coordinates(&raw)?;
         let parameters = self.parameters(&raw)?;
         self.later_symbols(&raw)?;
         let model = self.sections(raw, coordinates, parameters)?;
+        crate::model::validate::validate(&model)?;
         Ok(model)
     }
 
@@ -381,7 +412,10 @@ impl Loader<'_> {
                     return Err(self.error(
                         c.unit.span(),
                         ModelErrorKind::Toml,
-                        format!("coordinate unit `{other}`: expected \"m\" (a length) or \"rad\" (an angle)"),
+                        format!(
+                            "coordinate unit `{}`: expected \"m\" (a length) or \"rad\" (an angle)",
+                            echo(other)
+                        ),
                     ));
                 }
             };
@@ -391,7 +425,7 @@ impl Loader<'_> {
                     ModelErrorKind::Inconsistent,
                     format!(
                         "coordinate `{}` must be a length (unit \"m\"): the first two coordinates are the stance foot's x and z",
-                        c.name.get_ref()
+                        echo(c.name.get_ref())
                     ),
                 ));
             }
@@ -423,6 +457,20 @@ impl Loader<'_> {
                 typed.unit == CoordinateUnit::Angle,
             )?;
         }
+        for (c, suffix) in list.iter().flat_map(|c| [(c, "d"), (c, "dd")]) {
+            let derived = format!("{}{suffix}", c.get_ref().name.get_ref());
+            if let Some(why) = reserved_because(&derived) {
+                return Err(self.error(
+                    c.get_ref().name.span(),
+                    ModelErrorKind::Reserved,
+                    format!(
+                        "coordinate `{}` gives the rate `{derived}`, and `{derived}` is \
+                         reserved: {why}; expected another name for the coordinate",
+                        c.get_ref().name.get_ref()
+                    ),
+                ));
+            }
+        }
         for (suffix, kind) in [
             ("d", SymbolKind::Velocity),
             ("dd", SymbolKind::Acceleration),
@@ -453,7 +501,8 @@ impl Loader<'_> {
                     p.default.span(),
                     ModelErrorKind::Range,
                     format!(
-                        "default of `{}` = {default} lies outside its range {range}",
+                        "default of `{}` = {default} lies outside its range {range}: expected a \
+                         finite value inside it",
                         p.name.get_ref()
                     ),
                 ));
@@ -467,7 +516,10 @@ impl Loader<'_> {
                     return Err(self.error(
                         span,
                         ModelErrorKind::Toml,
-                        format!("stage `{other}`: expected \"run\", \"generation\" or \"start\""),
+                        format!(
+                            "stage `{}`: expected \"run\", \"generation\" or \"start\"",
+                            echo(other)
+                        ),
                     ));
                 }
             };
