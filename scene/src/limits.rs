@@ -63,10 +63,16 @@ pub const MAX_ECHO_CHARS: usize = 80;
 /// (`escape_debug`), cut to [`MAX_ECHO_CHARS`] characters with its length noted.
 #[must_use]
 pub fn echo(text: &str) -> String {
+    echo_at_most(text, MAX_ECHO_CHARS)
+}
+
+/// [`echo`] with a bound of `max` characters (for a parser's message, which quotes the file).
+#[must_use]
+pub fn echo_at_most(text: &str, max: usize) -> String {
     let escaped: String = text.chars().flat_map(char::escape_debug).collect();
-    if escaped.chars().count() <= MAX_ECHO_CHARS {
+    if escaped.chars().count() <= max {
         return escaped;
     }
-    let cut: String = escaped.chars().take(MAX_ECHO_CHARS).collect();
+    let cut: String = escaped.chars().take(max).collect();
     format!("{cut}... ({} bytes in all)", text.len())
 }

@@ -16,7 +16,7 @@ use crate::limits::{MAX_FILE_BYTES, MAX_NAME_CHARS, echo};
 use crate::model::angles::{angle_outside_trig, check_trig_arguments, zero_divisor};
 use crate::model::error::{ModelError, ModelErrorKind};
 use crate::model::interval::Interval;
-use crate::model::parse::parse_expr;
+use crate::model::parse::{ParseErrorKind, parse_expr};
 use crate::model::raw::{RawModel, Str};
 use crate::model::reserved::reserved_because;
 use crate::model::source::SourceMap;
@@ -97,7 +97,11 @@ impl Model {
         };
         let raw: RawModel = toml::from_str(text).map_err(|e| {
             let offset = e.span().map_or(0, |s| s.start);
-            cx.error_at(offset, ModelErrorKind::Toml, e.message().trim().to_owned())
+            cx.error_at(
+                offset,
+                ModelErrorKind::Toml,
+                crate::limits::echo_at_most(e.message().trim(), 20 * crate::limits::MAX_ECHO_CHARS),
+            )
         })?;
         cx.build(raw)
     }
@@ -281,10 +285,14 @@ impl Loader<'_> {
             ModelError::invalid(self.path, e.location_of(span), kind, message)
         };
         let expr = parse_expr(&text).map_err(|e| {
+            let kind = match e.kind {
+                ParseErrorKind::NumberTooLong { .. } => ModelErrorKind::Limit,
+                _ => ModelErrorKind::Syntax,
+            };
             ModelError::invalid(
                 self.path,
                 locate(&text, location, verbatim, e.span),
-                ModelErrorKind::Syntax,
+                kind,
                 format!("{what}: {e}"),
             )
         })?;
@@ -302,7 +310,8 @@ impl Loader<'_> {
                         span,
                         ModelErrorKind::UnknownSymbol,
                         format!(
-                            "{what}: unknown symbol `{name}`: expected {}",
+                            "{what}: unknown symbol `{}`: expected {}",
+                            echo(name),
                             use_.expected()
                         ),
                     ));
@@ -444,7 +453,7 @@ impl Loader<'_> {
                     return Err(self.error(
                         c.get_ref().name.span(),
                         ModelErrorKind::Reserved,
-                        format!("`{name}` is reserved: it is the velocity or acceleration of coordinate `{o}`"),
+                        format!("`{}` is reserved: it is the velocity or acceleration of coordinate `{o}`", crate::limits::echo(name)),
                     ));
                 }
             }
