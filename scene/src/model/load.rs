@@ -6,8 +6,9 @@
 //! symbol table, and `sections.rs` and `control.rs` check the rest against it. Beyond
 //! the format's own list of checks, each expression may use only the symbols its field is
 //! about: positions, masses, inertias, forces, outputs, locks and the relabelling use
-//! coordinates and parameters; guards may also use velocities and `t`; desired trajectories
-//! use parameters only.
+//! coordinates and parameters; guards parse with velocities and `t` too, which the validation
+//! (`validate.rs`, run last) then refuses with their place; desired trajectories use parameters
+//! only. The model's size is checked first (`size.rs`), against [`crate::limits`].
 
 use std::ops::Range;
 use std::path::Path;
