@@ -15,9 +15,11 @@
 
 pub mod catalog;
 pub mod error;
+pub mod limits;
 pub mod model;
 pub mod model_scene;
 pub mod param;
+pub mod read;
 pub mod scene;
 pub mod structure;
 
@@ -25,5 +27,6 @@ pub use catalog::KernelName;
 pub use error::SceneError;
 pub use model_scene::{ModelSceneError, ModelSceneFile, is_model_scene};
 pub use param::Param;
+pub use read::{ReadError, read_input};
 pub use scene::Scene;
 pub use structure::{Floor, Friction, ImpactLaw, Torso};

@@ -89,10 +89,14 @@ pub struct ModelSceneFile {
     pub kernels: Option<Vec<String>>,
 }
 
+/// The text of a scene or model file: a regular file of at most
+/// [`MAX_FILE_BYTES`](crate::limits::MAX_FILE_BYTES) (`read_input`).
 fn read(path: &Path) -> Result<String, ModelSceneError> {
-    std::fs::read_to_string(path).map_err(|source| ModelSceneError::Read {
-        path: path.to_path_buf(),
-        source,
+    crate::read::read_input(path, crate::limits::MAX_FILE_BYTES).map_err(|e| {
+        ModelSceneError::Read {
+            path: path.to_path_buf(),
+            source: e.into(),
+        }
     })
 }
 

@@ -158,9 +158,11 @@ impl Scene {
     /// The file cannot be read or the scene is invalid.
     pub fn from_file(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
         let path = path.as_ref();
-        let src = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
-            path: path.display().to_string(),
-            source,
+        let src = crate::read::read_input(path, crate::limits::MAX_FILE_BYTES).map_err(|e| {
+            SceneError::Read {
+                path: path.display().to_string(),
+                source: e.into(),
+            }
         })?;
         let origin = path.file_name().map_or_else(
             || path.display().to_string(),

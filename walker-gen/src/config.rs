@@ -390,7 +390,17 @@ fn module_of(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
     Ok(module)
 }
 
-/// Writes `source` to `out_file` unless it already holds these bytes.
+/// Whether `out_file` is a regular file that holds exactly `source`: read only when its
+/// metadata says it is a regular file of `source`'s length, so that a device or a pipe as the
+/// target (`/dev/full`, a FIFO) is never read, and a large file is not read whole.
+fn holds(out_file: &Path, source: &str) -> bool {
+    std::fs::metadata(out_file)
+        .is_ok_and(|m| m.file_type().is_file() && m.len() == source.len() as u64)
+        && std::fs::read(out_file).is_ok_and(|old| old == source.as_bytes())
+}
+
+/// Writes `source` to `out_file` unless it is a regular file that already holds these bytes
+/// (the target is not read otherwise).
 fn write_if_changed(
     out_file: PathBuf,
     source: &str,
@@ -400,7 +410,7 @@ fn write_if_changed(
         path: out_file.clone(),
         source,
     };
-    let unchanged = std::fs::read(&out_file).is_ok_and(|old| old == source.as_bytes());
+    let unchanged = holds(&out_file, source);
     if !unchanged {
         if let Some(dir) = out_file.parent().filter(|d| !d.as_os_str().is_empty()) {
             std::fs::create_dir_all(dir).map_err(io)?;

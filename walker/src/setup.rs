@@ -41,7 +41,7 @@ const BUILT_IN: [(&str, &str); 2] = [
 
 /// The longest scene or model file read (bytes): a scene is a few hundred bytes, the largest
 /// shipped model a dozen kilobytes.
-pub const MAX_FILE_BYTES: u64 = 1 << 20;
+pub const MAX_FILE_BYTES: u64 = walker_scene::limits::MAX_FILE_BYTES;
 
 /// Derives a model file that is not compiled in and gives its kernels (the `walker-load`
 /// crate's), or says why it cannot.
@@ -229,13 +229,13 @@ fn check_file(what: &'static str, path: &Path) -> Result<(), SetupError> {
     Ok(())
 }
 
-/// A model file's text, checked by [`check_file`] first.
+/// A model file's text: a regular file of at most [`MAX_FILE_BYTES`], its kind checked before
+/// it is opened (`walker_scene::read_input`).
 fn read_model(path: &Path) -> Result<String, SetupError> {
-    check_file("model", path)?;
-    std::fs::read_to_string(path).map_err(|e| SetupError::File {
+    walker_scene::read_input(path, MAX_FILE_BYTES).map_err(|e| SetupError::File {
         what: "model",
         path: path.to_path_buf(),
-        message: format!("cannot be read: {e}"),
+        message: e.reason(),
     })
 }
 

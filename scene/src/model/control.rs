@@ -150,7 +150,10 @@ impl Loader<'_> {
                     return Err(self.error(
                         d.shape.span(),
                         ModelErrorKind::Toml,
-                        format!("{what} desired shape `{other}`: expected \"quintic\" or \"hold\""),
+                        format!(
+                            "{what} desired shape `{}`: expected \"quintic\" or \"hold\"",
+                            crate::limits::echo(other)
+                        ),
                     ));
                 }
             };
@@ -184,7 +187,10 @@ impl Loader<'_> {
                         return Err(self.error(
                             s.span(),
                             ModelErrorKind::Duplicate,
-                            format!("descriptor `{}` is listed twice", s.get_ref()),
+                            format!(
+                                "descriptor `{}` is listed twice",
+                                crate::limits::echo(s.get_ref())
+                            ),
                         ));
                     }
                     if desc.needs_inputs() && inputs.is_empty() {

@@ -53,17 +53,25 @@ pub enum ModelErrorKind {
     Count,
     /// Two sections that contradict each other, or a field required by another one missing.
     Inconsistent,
+    /// A model, list, name or number past one of the [`limits`](crate::limits).
+    Limit,
+    /// A value without physical sense: a mass or an inertia that is not positive over the
+    /// parameters' ranges, a start off the floor, a guard that is zero everywhere, an
+    /// expression that is not finite at the defaults, a duration that is not positive.
+    Physics,
 }
 
 /// A model file that could not be read or is not a valid model.
 #[derive(Debug, thiserror::Error)]
 pub enum ModelError {
-    /// The file could not be read.
+    /// The file could not be read, is not a regular file, or is longer than
+    /// [`MAX_FILE_BYTES`](crate::limits::MAX_FILE_BYTES).
     #[error("{path}: cannot read the model file: {source}")]
     Read {
         /// The path as given.
         path: String,
-        /// The I/O error.
+        /// The I/O error (kind `InvalidInput` for a file that is not regular or too long; see
+        /// [`read_input`](crate::read::read_input)).
         #[source]
         source: std::io::Error,
     },

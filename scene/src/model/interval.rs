@@ -106,13 +106,13 @@ pub enum IntervalError {
     #[error("expected an interval such as \"(0, inf)\" or \"[0, pi/2)\"")]
     Shape,
     /// A bound that is not a number, `inf`, `-inf`, `pi` or `pi/k`.
-    #[error("bound `{0}` is not a number, inf, -inf, pi or pi/k")]
+    #[error("bound `{}` is not a number, inf, -inf, pi or pi/k", crate::limits::echo(.0))]
     BadBound(String),
     /// `inf` on a closed side.
-    #[error("an infinite bound must be open: `{0}`")]
+    #[error("an infinite bound must be open: `{}`", crate::limits::echo(.0))]
     ClosedInfinity(String),
     /// The interval holds no number.
-    #[error("the interval {0} is empty")]
+    #[error("the interval {} is empty", crate::limits::echo(.0))]
     Empty(String),
 }
 

@@ -6,25 +6,29 @@
 //! symbol table, and `sections.rs` and `control.rs` check the rest against it. Beyond
 //! the format's own list of checks, each expression may use only the symbols its field is
 //! about: positions, masses, inertias, forces, outputs, locks and the relabelling use
-//! coordinates and parameters; guards may also use velocities and `t`; desired trajectories
-//! use parameters only.
+//! coordinates and parameters; guards parse with velocities and `t` too, which the validation
+//! (`validate.rs`, run last) then refuses with their place; desired trajectories use parameters
+//! only. The model's size is checked first (`size.rs`), against [`crate::limits`].
 
 use std::ops::Range;
 use std::path::Path;
 
+use crate::limits::{MAX_FILE_BYTES, MAX_NAME_CHARS, echo};
 use crate::model::angles::{angle_outside_trig, check_trig_arguments, zero_divisor};
 use crate::model::error::{ModelError, ModelErrorKind};
 use crate::model::fields::param_fields;
 use crate::model::interval::Interval;
-use crate::model::parse::parse_expr;
+use crate::model::parse::{ParseErrorKind, parse_expr};
 use crate::model::raw::{RawModel, Str};
+use crate::model::reserved::reserved_because;
 use crate::model::source::SourceMap;
 use crate::model::symbols::{SymbolKind, SymbolTable};
 use crate::model::types::{
     Coordinate, CoordinateUnit, Model, ModelExpr, Name, Parameter, Stage, locate,
 };
 
-/// The names no declaration may take (besides every coordinate's velocity and acceleration).
+/// The names of the expression language no declaration may take (besides every coordinate's
+/// velocity and acceleration); [`reserved`](crate::model::reserved) has every reserved name.
 pub const RESERVED: [&str; 4] = ["t", "mu", "sin", "cos"];
 
 /// The symbols an expression may use, and whether it is a position.
@@ -71,13 +75,13 @@ impl Model {
     ///
     /// # Errors
     ///
-    /// [`ModelError::Read`] if the file cannot be read, else the first problem found, with
-    /// its line and column.
+    /// [`ModelError::Read`] if the file cannot be read, is not a regular file or is longer
+    /// than [`MAX_FILE_BYTES`], else the first problem found, with its line and column.
     pub fn from_file(path: &Path) -> Result<Model, ModelError> {
         let shown = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| ModelError::Read {
+        let text = crate::read::read_input(path, MAX_FILE_BYTES).map_err(|e| ModelError::Read {
             path: shown.clone(),
-            source,
+            source: e.into(),
         })?;
         Model::from_toml(&text, &shown)
     }
@@ -95,7 +99,11 @@ impl Model {
         };
         let raw: RawModel = toml::from_str(text).map_err(|e| {
             let offset = e.span().map_or(0, |s| s.start);
-            cx.error_at(offset, ModelErrorKind::Toml, e.message().trim().to_owned())
+            cx.error_at(
+                offset,
+                ModelErrorKind::Toml,
+                crate::limits::echo_at_most(e.message().trim(), 20 * crate::limits::MAX_ECHO_CHARS),
+            )
         })?;
         cx.build(raw)
     }
@@ -125,6 +133,34 @@ pub fn is_kebab_name(s: &str) -> bool {
 }
 
 impl Loader<'_> {
+    /// Checks that a declared name is an identifier of at most [`MAX_NAME_CHARS`] characters,
+    /// echoing a bad one escaped and cut.
+    pub(crate) fn check_name(&self, s: &Str) -> Result<(), ModelError> {
+        let name = s.get_ref();
+        if !is_identifier(name) {
+            return Err(self.error(
+                s.span(),
+                ModelErrorKind::BadName,
+                format!(
+                    "`{}` is not a name: expected an ASCII letter followed by letters, digits or `_`",
+                    echo(name)
+                ),
+            ));
+        }
+        if name.len() > MAX_NAME_CHARS {
+            return Err(self.error(
+                s.span(),
+                ModelErrorKind::Limit,
+                format!(
+                    "the name `{}` has {} characters: expected at most {MAX_NAME_CHARS}",
+                    echo(name),
+                    name.len()
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     /// An error at a byte offset of the file.
     pub(crate) fn error_at(
         &self,
@@ -162,13 +198,7 @@ impl Loader<'_> {
         angle: bool,
     ) -> Result<(), ModelError> {
         let name = s.get_ref();
-        if !is_identifier(name) {
-            return Err(self.error(
-                s.span(),
-                ModelErrorKind::BadName,
-                format!("`{name}` is not a name: expected an ASCII letter followed by letters, digits or `_`"),
-            ));
-        }
+        self.check_name(s)?;
         let argument = matches!(
             kind,
             SymbolKind::Coordinate | SymbolKind::Input | SymbolKind::Aux
@@ -185,11 +215,15 @@ impl Loader<'_> {
                 ),
             ));
         }
-        if RESERVED.contains(&name.as_str()) {
+        if let Some(why) = reserved_because(name) {
             return Err(self.error(
                 s.span(),
                 ModelErrorKind::Reserved,
-                format!("`{name}` is reserved (t, mu, sin, cos and the coordinates' velocities and accelerations)"),
+                format!(
+                    "`{name}` is reserved: {why}; expected another name for {} \
+                     (docs/model-format.md lists the reserved names)",
+                    kind.describe()
+                ),
             ));
         }
         if let Some(existing) = self.symbols.get(name) {
@@ -260,10 +294,14 @@ impl Loader<'_> {
             ModelError::invalid(self.path, e.location_of(span), kind, message)
         };
         let expr = parse_expr(&text).map_err(|e| {
+            let kind = match e.kind {
+                ParseErrorKind::NumberTooLong { .. } => ModelErrorKind::Limit,
+                _ => ModelErrorKind::Syntax,
+            };
             ModelError::invalid(
                 self.path,
                 locate(&text, location, verbatim, e.span),
-                ModelErrorKind::Syntax,
+                kind,
                 format!("{what}: {e}"),
             )
         })?;
@@ -281,7 +319,8 @@ impl Loader<'_> {
                         span,
                         ModelErrorKind::UnknownSymbol,
                         format!(
-                            "{what}: unknown symbol `{name}`: expected {}",
+                            "{what}: unknown symbol `{}`: expected {}",
+                            echo(name),
                             use_.expected()
                         ),
                     ));
@@ -348,20 +387,22 @@ impl Loader<'_> {
                 ),
             ));
         }
-        if !is_kebab_name(raw.name.get_ref()) {
+        if !is_kebab_name(raw.name.get_ref()) || raw.name.get_ref().len() > MAX_NAME_CHARS {
             return Err(self.error(
                 raw.name.span(),
                 ModelErrorKind::BadName,
                 format!(
-                    "model name `{}`: expected [a-z][a-z0-9-]*",
-                    raw.name.get_ref()
+                    "model name `{}`: expected [a-z][a-z0-9-]*, at most {MAX_NAME_CHARS} characters",
+                    echo(raw.name.get_ref())
                 ),
             ));
         }
+        self.check_size(&raw)?;
         let coordinates = self.coordinates(&raw)?;
         let parameters = self.parameters(&raw)?;
         self.later_symbols(&raw)?;
         let model = self.sections(raw, coordinates, parameters)?;
+        crate::model::validate::validate(&model)?;
         Ok(model)
     }
 
@@ -389,7 +430,10 @@ impl Loader<'_> {
                     return Err(self.error(
                         c.unit.span(),
                         ModelErrorKind::Toml,
-                        format!("coordinate unit `{other}`: expected \"m\" (a length) or \"rad\" (an angle)"),
+                        format!(
+                            "coordinate unit `{}`: expected \"m\" (a length) or \"rad\" (an angle)",
+                            echo(other)
+                        ),
                     ));
                 }
             };
@@ -399,7 +443,7 @@ impl Loader<'_> {
                     ModelErrorKind::Inconsistent,
                     format!(
                         "coordinate `{}` must be a length (unit \"m\"): the first two coordinates are the stance foot's x and z",
-                        c.name.get_ref()
+                        echo(c.name.get_ref())
                     ),
                 ));
             }
@@ -418,7 +462,7 @@ impl Loader<'_> {
                     return Err(self.error(
                         c.get_ref().name.span(),
                         ModelErrorKind::Reserved,
-                        format!("`{name}` is reserved: it is the velocity or acceleration of coordinate `{o}`"),
+                        format!("`{}` is reserved: it is the velocity or acceleration of coordinate `{o}`", crate::limits::echo(name)),
                     ));
                 }
             }
@@ -430,6 +474,20 @@ impl Loader<'_> {
                 i,
                 typed.unit == CoordinateUnit::Angle,
             )?;
+        }
+        for (c, suffix) in list.iter().flat_map(|c| [(c, "d"), (c, "dd")]) {
+            let derived = format!("{}{suffix}", c.get_ref().name.get_ref());
+            if let Some(why) = reserved_because(&derived) {
+                return Err(self.error(
+                    c.get_ref().name.span(),
+                    ModelErrorKind::Reserved,
+                    format!(
+                        "coordinate `{}` gives the rate `{derived}`, and `{derived}` is \
+                         reserved: {why}; expected another name for the coordinate",
+                        c.get_ref().name.get_ref()
+                    ),
+                ));
+            }
         }
         for (suffix, kind) in [
             ("d", SymbolKind::Velocity),
@@ -461,7 +519,8 @@ impl Loader<'_> {
                     p.default.span(),
                     ModelErrorKind::Range,
                     format!(
-                        "default of `{}` = {default} lies outside its range {range}",
+                        "default of `{}` = {default} lies outside its range {range}: expected a \
+                         finite value inside it",
                         p.name.get_ref()
                     ),
                 ));
@@ -475,7 +534,10 @@ impl Loader<'_> {
                     return Err(self.error(
                         span,
                         ModelErrorKind::Toml,
-                        format!("stage `{other}`: expected \"run\", \"generation\" or \"start\""),
+                        format!(
+                            "stage `{}`: expected \"run\", \"generation\" or \"start\"",
+                            echo(other)
+                        ),
                     ));
                 }
             };

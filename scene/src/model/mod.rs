@@ -16,6 +16,7 @@
 pub mod angles;
 mod control;
 pub mod divisors;
+mod enclosure;
 pub mod error;
 pub mod expr;
 pub mod fields;
@@ -25,10 +26,13 @@ pub mod load;
 pub mod parse;
 pub mod rational;
 mod raw;
+pub mod reserved;
 mod sections;
+mod size;
 mod source;
 pub mod symbols;
 pub mod types;
+mod validate;
 
 pub use divisors::ExprRole;
 pub use error::{Location, ModelError, ModelErrorKind};

@@ -35,16 +35,16 @@ pub enum ParseErrorKind {
         after: String,
     },
     /// A character outside the grammar.
-    #[error("unexpected character `{0}`")]
+    #[error("unexpected character `{}`", .0.escape_debug())]
     UnexpectedChar(char),
     /// An operand followed by something that is not an operator.
-    #[error("expected an operator or the end of the expression, found `{0}`")]
+    #[error("expected an operator or the end of the expression, found `{}`", crate::limits::echo(.0))]
     ExpectedOperator(String),
     /// A `)` without its `(`.
     #[error("`)` without a matching `(`")]
     Unmatched,
     /// A `(` without its `)`.
-    #[error("expected `)` to close the `(`, found {found}")]
+    #[error("expected `)` to close the `(`, found {}", crate::limits::echo(found))]
     Unclosed {
         /// Byte offset of the `(`.
         open: usize,
@@ -52,7 +52,7 @@ pub enum ParseErrorKind {
         found: String,
     },
     /// A call of a function other than `sin` and `cos`.
-    #[error("unknown function `{0}`: only sin and cos")]
+    #[error("unknown function `{}`: only sin and cos", crate::limits::echo(.0))]
     UnknownFunction(String),
     /// `sin` or `cos` not followed by `(`.
     #[error("expected `(` after `{0}`")]
@@ -66,6 +66,21 @@ pub enum ParseErrorKind {
     /// A number or exponent too large to hold.
     #[error("number too large")]
     TooLarge,
+    /// A number literal with more significant digits than
+    /// [`MAX_NUMBER_DIGITS`](crate::limits::MAX_NUMBER_DIGITS), or a power of ten beyond
+    /// [`MAX_NUMBER_EXPONENT`](crate::limits::MAX_NUMBER_EXPONENT).
+    #[error(
+        "number literal with {digits} significant digits and power of ten {exponent}: expected \
+         at most {} digits and a power of ten within +-{}",
+        crate::limits::MAX_NUMBER_DIGITS,
+        crate::limits::MAX_NUMBER_EXPONENT
+    )]
+    NumberTooLong {
+        /// Its significant digits.
+        digits: usize,
+        /// The power of ten of its leading digit.
+        exponent: i64,
+    },
     /// Deeper than [`MAX_DEPTH`].
     #[error("expression nested more than {MAX_DEPTH} levels deep")]
     TooDeep,
@@ -475,6 +490,23 @@ impl Parser<'_> {
         let span = Span::new(start, end);
         let n = Number::new(&mantissa, exponent)
             .ok_or_else(|| self.error(ParseErrorKind::TooLarge, span))?;
+        let digits = n.mantissa().len();
+        let lead = i64::try_from(digits)
+            .ok()
+            .and_then(|d| n.exponent().checked_add(d - 1))
+            .unwrap_or(i64::MAX);
+        if !n.is_zero()
+            && (digits > crate::limits::MAX_NUMBER_DIGITS
+                || lead.unsigned_abs() > crate::limits::MAX_NUMBER_EXPONENT.unsigned_abs())
+        {
+            return Err(self.error(
+                ParseErrorKind::NumberTooLong {
+                    digits,
+                    exponent: lead,
+                },
+                span,
+            ));
+        }
         Ok(Expr::new(ExprKind::Number(n), span))
     }
 }

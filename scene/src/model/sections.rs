@@ -34,12 +34,18 @@ impl Loader<'_> {
             Some(sym) if sym.kind == SymbolKind::Parameter => Err(self.error(
                 s.span(),
                 ModelErrorKind::UnknownReference,
-                format!("{field} = `{name}`: expected an angle parameter (unit \"rad\")"),
+                format!(
+                    "{field} = `{}`: expected an angle parameter (unit \"rad\")",
+                    crate::limits::echo(name)
+                ),
             )),
             _ => Err(self.error(
                 s.span(),
                 ModelErrorKind::UnknownReference,
-                format!("{field} = `{name}`: expected the name of a declared parameter"),
+                format!(
+                    "{field} = `{}`: expected the name of a declared parameter",
+                    crate::limits::echo(name)
+                ),
             )),
         }
     }
@@ -89,14 +95,29 @@ impl Loader<'_> {
             return Err(self.error(
                 s.span(),
                 ModelErrorKind::BadName,
-                format!("{what} name `{name}`: expected {expected}"),
+                format!(
+                    "{what} name `{}`: expected {expected}",
+                    crate::limits::echo(name)
+                ),
+            ));
+        }
+        if name.len() > crate::limits::MAX_NAME_CHARS {
+            return Err(self.error(
+                s.span(),
+                ModelErrorKind::Limit,
+                format!(
+                    "{what} name `{}` has {} characters: expected at most {}",
+                    crate::limits::echo(name),
+                    name.len(),
+                    crate::limits::MAX_NAME_CHARS
+                ),
             ));
         }
         if !seen.insert(name.clone()) {
             return Err(self.error(
                 s.span(),
                 ModelErrorKind::Duplicate,
-                format!("{what} `{name}` is declared twice"),
+                format!("{what} `{}` is declared twice", crate::limits::echo(name)),
             ));
         }
         Ok(self.name(s))
@@ -128,7 +149,10 @@ impl Loader<'_> {
                 self.error(
                     s.span(),
                     ModelErrorKind::UnknownReference,
-                    format!("section {what} `{name}`: expected a coordinate or a velocity"),
+                    format!(
+                        "section {what} `{}`: expected a coordinate or a velocity",
+                        crate::limits::echo(name)
+                    ),
                 )
             })?;
             if implied(i) {
@@ -152,7 +176,10 @@ impl Loader<'_> {
                 return Err(self.error(
                     s.span(),
                     ModelErrorKind::Duplicate,
-                    format!("section: `{}` is listed twice", s.get_ref()),
+                    format!(
+                        "section: `{}` is listed twice",
+                        crate::limits::echo(s.get_ref())
+                    ),
                 ));
             }
             free.push(i);
@@ -170,7 +197,7 @@ impl Loader<'_> {
                     ),
                 ));
             }
-            let what = format!("section given `{}`", key.get_ref());
+            let what = format!("section given `{}`", crate::limits::echo(key.get_ref()));
             let e = self.expr(value, &what, Use::Guard)?;
             for (name, span) in e.expr.symbols() {
                 let ok = self
@@ -209,7 +236,7 @@ impl Loader<'_> {
             return Err(self.error(
                 sec.span(),
                 ModelErrorKind::Inconsistent,
-                format!("section: `{name}` is neither free nor given; every component of the state but x, z and zd is one of the two"),
+                format!("section: `{}` is neither free nor given; every component of the state but x, z and zd is one of the two", crate::limits::echo(&name)),
             ));
         }
         Ok(Section { free, given })
@@ -351,7 +378,10 @@ impl Loader<'_> {
                     return Err(self.error(
                         l.span(),
                         ModelErrorKind::Toml,
-                        format!("impact law `{other}`: expected \"frictionless\" or \"coulomb\""),
+                        format!(
+                            "impact law `{}`: expected \"frictionless\" or \"coulomb\"",
+                            crate::limits::echo(other)
+                        ),
                     ));
                 }
             },
@@ -429,12 +459,12 @@ impl Loader<'_> {
                     return Err(self.error(
                         key.span(),
                         ModelErrorKind::UnknownReference,
-                        format!("relabel `{}`: {why}", key.get_ref()),
+                        format!("relabel `{}`: {why}", crate::limits::echo(key.get_ref())),
                     ));
                 };
                 let value = self.expr(
                     value,
-                    &format!("relabel `{}`", key.get_ref()),
+                    &format!("relabel `{}`", crate::limits::echo(key.get_ref())),
                     Use::Configuration,
                 )?;
                 relabel.push(Relabel {
@@ -461,10 +491,17 @@ impl Loader<'_> {
                     return Err(self.error(
                         key.span(),
                         ModelErrorKind::UnknownReference,
-                        format!("start `{name}`: expected a coordinate or a velocity"),
+                        format!(
+                            "start `{}`: expected a coordinate or a velocity",
+                            crate::limits::echo(name)
+                        ),
                     ));
                 };
-                let value = self.expr(value, &format!("start `{name}`"), Use::Constant)?;
+                let value = self.expr(
+                    value,
+                    &format!("start `{}`", crate::limits::echo(name)),
+                    Use::Constant,
+                )?;
                 start.push(StartValue {
                     coordinate,
                     velocity,
