@@ -18,10 +18,14 @@ use std::cell::RefCell;
 
 use crate::error::{Error, Result};
 
-/// The derivation budget of one model file, in term products: 40 times the largest shipped
-/// model's derivation (`models/five-link.toml`, 7.5 million term products; the paper's walkers
-/// about 1 million, the compass gait 2.3 million). Spending it takes about 8 s on one core of the
-/// reference machine in an optimised build (five-link's whole derivation: 1.5 s).
+/// The derivation budget of one model file, in term products (each weighed by the 64-bit words
+/// of its coefficients): ten times the largest shipped model's derivation. Measured
+/// (`cargo run --release -p walker-symbolic --example derive_cost -- models/*.toml`): the
+/// paper's passive walker 193 thousand, the active one 89 thousand, the rimless wheel 64
+/// thousand, the five-link biped 18.5 thousand (its stance and impact kernels are structured
+/// solves), the compass gait 10 thousand and the three-link biped 9 thousand. A derivation
+/// that spends it takes 2 to 5 s on one core of the reference machine (optimised build, the
+/// machine shared), a few microseconds per term product.
 pub const DERIVATION_BUDGET: u64 = 2_000_000;
 
 /// The budget's state on one thread.
