@@ -53,6 +53,20 @@ pub enum Error {
         /// The limit.
         limit: usize,
     },
+    /// A derivation that spent its budget of work ([`crate::budget::DERIVATION_BUDGET`]).
+    #[error(
+        "model `{model}`: deriving {stage} took more than the derivation budget of {budget} term \
+         products; the model's expressions grow too large in the canonical form (simplify them, \
+         or use fewer coordinates)"
+    )]
+    Budget {
+        /// The model's name.
+        model: String,
+        /// What was being derived when the budget ran out.
+        stage: String,
+        /// The budget, in term products.
+        budget: u64,
+    },
     /// A symbolic check of the model failed (a derivation bug, reported rather than panicking).
     #[error("check failed: {what}")]
     CheckFailed {

@@ -2,6 +2,7 @@
 //! walkers on slippery ground: the underactuated rimless wheel with torso (Asano, Kikuchi,
 //! Shibata), and any walker of a model file.
 //!
+//! - [`budget`]: the bound on one derivation's work;
 //! - [`symbol`]: a model's symbol table (symbols and base angles are indices into it) and the
 //!   self-describing atom slots of a monomial;
 //! - [`poly`], [`ratfunc`]: the canonical form, polynomials in symbols and in sines and cosines
@@ -15,6 +16,7 @@
 //!   files by [`model`], and its named kernels ([`Derivation`]);
 //! - [`latex`]: readable mathematics for people.
 
+pub mod budget;
 pub mod error;
 pub mod kernels;
 pub mod latex;

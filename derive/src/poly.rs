@@ -162,6 +162,9 @@ impl Poly {
 
     /// Sum.
     pub fn add(&self, other: &Poly) -> Poly {
+        if !crate::budget::charge(self.weight().saturating_add(other.weight())) {
+            return Poly::zero();
+        }
         let (a, b) = (&self.terms, &other.terms);
         let mut out = Vec::with_capacity(a.len() + b.len());
         let (mut i, mut j) = (0, 0);
@@ -214,7 +217,7 @@ impl Poly {
 
     /// Product with one term, without trig reduction (monomial order is preserved).
     pub fn mul_term(&self, m: &Mono, k: &Q) -> Poly {
-        if k.is_zero() {
+        if k.is_zero() || !crate::budget::charge(self.terms.len()) {
             return Poly::zero();
         }
         Poly {
@@ -226,8 +229,21 @@ impl Poly {
         }
     }
 
+    /// The size of the polynomial for the derivation's budget: its terms, each weighed by one
+    /// plus the 64-bit words of its coefficient (a product's cost is the product of its
+    /// factors' weights: every pair of terms is multiplied, in time growing with their digits).
+    pub(crate) fn weight(&self) -> usize {
+        self.terms
+            .iter()
+            .map(|(_, c)| 1 + ((c.numer().bits() + c.denom().bits()) / 64) as usize)
+            .sum()
+    }
+
     /// Product in the free polynomial ring (no trig reduction).
     pub fn mul_raw(&self, other: &Poly) -> Poly {
+        if !crate::budget::charge(self.weight().saturating_mul(other.weight())) {
+            return Poly::zero();
+        }
         let mut map: BTreeMap<Mono, Q> = BTreeMap::new();
         for (ma, ca) in &self.terms {
             for (mb, cb) in &other.terms {
@@ -283,6 +299,9 @@ impl Poly {
                 .collect();
             let mut expansion = vec![(m, c)];
             for co in cosines {
+                if !crate::budget::charge(expansion.len()) {
+                    return Poly::zero();
+                }
                 let s = co - 1;
                 let mut next = Vec::new();
                 for (mm, cc) in expansion {
@@ -366,6 +385,9 @@ impl Poly {
         let mut rem = self.clone();
         let mut quot: Vec<(Mono, Q)> = Vec::new();
         while let Some((rm, rc)) = rem.leading().cloned() {
+            if crate::budget::spent() {
+                return None;
+            }
             let m = rm.div(lm)?;
             if m.factors()
                 .any(|(s, e)| bound.get(&s).is_none_or(|b| e > *b))
@@ -385,6 +407,9 @@ impl Poly {
         let Some((_, lead)) = self.leading() else {
             return (Q::one(), Poly::zero());
         };
+        if !crate::budget::charge(self.weight()) {
+            return (Q::one(), Poly::zero());
+        }
         let mut den_lcm = BigInt::one();
         let mut num_gcd = BigInt::zero();
         for (_, c) in &self.terms {

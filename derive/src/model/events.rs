@@ -8,6 +8,7 @@ use walker_scene::model::{FallCondition, Model};
 
 use super::assemble::{kernel, named};
 use super::mechanics::{Mechanics, time_derivative};
+use crate::budget::stage;
 use crate::error::Result;
 use crate::kernels::{Kernel, Shape};
 use crate::matrix::Matrix;
@@ -24,14 +25,20 @@ pub fn event_kernels(m: &Mechanics, model: &Model, table: &Symbols) -> Result<Ve
         Ok(m.floor.gap(x, z))
     };
     let guard = match &model.strike.guard {
-        Some(e) => m.syms.lower(e)?,
+        Some(e) => {
+            stage(|| format!("the strike guard ({}:{})", model.path, e.location));
+            m.syms.lower(e)?
+        }
         None => gap(&model.strike.point.name)?,
     };
     let mut outputs = vec![("guard".to_owned(), guard)];
     for f in &model.falls {
         let value = match &f.condition {
             FallCondition::Point(p) => gap(&p.name)?,
-            FallCondition::Guard(e) => m.syms.lower(e)?,
+            FallCondition::Guard(e) => {
+                stage(|| format!("fall `{}` ({}:{})", f.name.name, model.path, e.location));
+                m.syms.lower(e)?
+            }
         };
         outputs.push((format!("fall_{}", f.name.name), value));
     }
@@ -51,6 +58,7 @@ pub fn event_kernels(m: &Mechanics, model: &Model, table: &Symbols) -> Result<Ve
     after[0] = px.clone();
     after[1] = pz.clone();
     for r in &model.relabel {
+        stage(|| format!("the relabelling ({}:{})", model.path, r.value.location));
         after[r.coordinate] = m.syms.lower(&r.value)?;
     }
     let mut outputs: Vec<(String, RatFunc)> = after

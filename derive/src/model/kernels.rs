@@ -16,12 +16,15 @@ use super::coulomb::impact_coulomb;
 use super::descriptors::descriptor_kernels;
 use super::events::event_kernels;
 use super::jacobians::{Differentiated, jacobian_kernels};
+use super::located::singular;
 use super::maps::map_kernels;
 use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
+use super::multiples::check_angle_multiples;
 use super::phases::{output_control, sliding, strike_impacts, strike_rows, stuck};
 use super::stick_control::closed_loop_stick;
 use super::structured::structured_kernels;
 use super::table::ModelSymbols;
+use crate::budget::{DERIVATION_BUDGET, Measured, stage, within};
 use crate::error::Result;
 use crate::kernels::{Kernel, Shape, Staged, find_kernel};
 use crate::matrix::Matrix;
@@ -63,18 +66,42 @@ impl ModelDerivation {
     /// always; the code generator evaluates the cheaper. The Jacobians exist in closed form
     /// only, where the closed forms they differentiate do.
     ///
+    /// The work is bounded by [`DERIVATION_BUDGET`]; the angles' multiples by
+    /// [`MAX_ANGLE_MULTIPLE`](crate::model::MAX_ANGLE_MULTIPLE), checked before any work.
+    ///
     /// # Errors
     /// As [`Mechanics::new`], the phases' derivations, or a kernel that depends on a symbol it
-    /// does not take.
+    /// does not take; [`crate::Error::Budget`] for a derivation past the budget.
     pub fn new(model: &Model) -> Result<ModelDerivation> {
+        ModelDerivation::measured(model, DERIVATION_BUDGET).result
+    }
+
+    /// [`ModelDerivation::new`] within `budget` term products, and the work it took.
+    pub fn measured(model: &Model, budget: u64) -> Measured<ModelDerivation> {
+        check_angle_multiples(model).map_or_else(
+            |e| Measured {
+                result: Err(e),
+                work: 0,
+            },
+            |()| {
+                let mut m = within(&model.name, budget, || ModelDerivation::derive(model));
+                m.result = m.result.map_err(|e| singular(model, e));
+                m
+            },
+        )
+    }
+
+    fn derive(model: &Model) -> Result<ModelDerivation> {
         let m = Mechanics::new(model)?;
         let closed = inverse_terms(&m).is_some_and(|terms| terms <= MAX_INVERSE_TERMS);
         let mut table = m.syms.table.clone();
+        stage(|| "the structured solves of the stance and impact kernels".to_owned());
         let solves = structured_kernels(&m, model, &mut table)?;
         let n = m.syms.q.len();
         // The stuck foot's closed form needs no M^-1 (it is solved by blocks), only the inverse
         // of the angles' block: derived while that block is small.
         let stick_closed = n - 2 < MAX_CLOSED_COORDINATES;
+        stage(|| "the stuck stance in closed form".to_owned());
         let st = if stick_closed { Some(stuck(&m)?) } else { None };
         // The stuck closed loop in closed form where both its neighbours have theirs (`stick`
         // and `closed_loop`): the three-link biped's stuck stance is closed, but substituting
@@ -82,19 +109,24 @@ impl ModelDerivation {
         let loop_stick = if model.outputs.is_empty() {
             None
         } else {
+            stage(|| "the stuck stance's output control".to_owned());
             let stuck_closed = st.as_ref().filter(|_| closed);
             Some(closed_loop_stick(&m, model, stuck_closed, &mut table)?)
         };
+        stage(|| "the impact with Coulomb friction".to_owned());
         let coulomb = impact_coulomb(&m, model, closed, &mut table)?;
         // The closed forms: the sliding stance, its control and closed loop, the impacts, and
         // the Jacobians of the closed loop's (or, without inputs, the stance's) accelerations
         // and of the impact.
+        stage(|| "the sliding stance in closed form".to_owned());
         let slide = if closed { Some(sliding(&m)?) } else { None };
+        stage(|| "the impact maps in closed form".to_owned());
         let imp = if closed {
             Some(strike_impacts(&m, model)?)
         } else {
             None
         };
+        stage(|| "the output control in closed form".to_owned());
         let control = match &slide {
             Some(s) if !model.outputs.is_empty() => {
                 let c = output_control(&m, model, &s.projection)?;
@@ -119,6 +151,7 @@ impl ModelDerivation {
             }
             _ => None,
         };
+        stage(|| "the Jacobians of the closed forms".to_owned());
         let jacobians = match (&slide, &imp) {
             (Some(s), Some(imp)) => {
                 let of = Differentiated {
@@ -286,6 +319,7 @@ impl ModelDerivation {
         kernels.push(with_solve(stick, solves.stick, stick_closed, t));
         kernels.extend(loop_stick);
         let qd = m.syms.qd.clone();
+        stage(|| "the impact's constraint rows".to_owned());
         let rows = strike_rows(&m, model)?;
         let (impact_doc, impact_eq) = (
             "Normal impulses and post-impact velocities: the striking point and the locks",
@@ -337,6 +371,7 @@ impl ModelDerivation {
         }
         kernels.push(coulomb);
         kernels.extend(jacobians);
+        stage(|| "the events, relabelling and descriptors".to_owned());
         kernels.extend(map_kernels(&m, model, &rows, t)?);
         kernels.extend(event_kernels(&m, model, t)?);
         let mut points = Vec::new();

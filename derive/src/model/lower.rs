@@ -123,6 +123,17 @@ impl ModelSymbols {
                 .to_integer()
                 .try_into()
                 .map_err(|_| self.at(top, arg.span, "an angle multiple too large"))?;
+            if n.unsigned_abs() > super::MAX_ANGLE_MULTIPLE {
+                return Err(self.at(
+                    top,
+                    arg.span,
+                    format!(
+                        "`{name}` appears as {} times its base angle: at most {}",
+                        n.unsigned_abs(),
+                        super::MAX_ANGLE_MULTIPLE
+                    ),
+                ));
+            }
             terms.push((base, n));
         }
         let (s, c) = sin_cos_combination(&terms);

@@ -7,6 +7,7 @@
 use walker_scene::model::{Model, ModelExpr};
 
 use super::table::ModelSymbols;
+use crate::budget::stage;
 use crate::error::{Error, Result};
 use crate::matrix::Matrix;
 use crate::ratfunc::RatFunc;
@@ -115,6 +116,12 @@ impl Mechanics {
         let half = RatFunc::constant(crate::poly::Q::new(1.into(), 2.into()));
         let (mut kinetic, mut potential) = (RatFunc::zero(), RatFunc::zero());
         for b in &model.bodies {
+            stage(|| {
+                format!(
+                    "the energies of body `{}` ({}:{})",
+                    b.name.name, model.path, b.name.location
+                )
+            });
             let m = syms.lower(&b.mass)?;
             let [cx, cz] = [syms.lower(&b.com[0])?, syms.lower(&b.com[1])?];
             let (vx, vz) = (time_derivative(&syms, &cx), time_derivative(&syms, &cz));
@@ -127,6 +134,7 @@ impl Mechanics {
             kinetic = kinetic + &(&half * &t);
             potential = potential + &(&(&m * &floor.gravity) * &cz);
         }
+        stage(|| "the mass matrix M and the bias h (Euler-Lagrange)".to_owned());
         let lagrangian = &kinetic - &potential;
         let mut mass = Matrix::zeros(n, n);
         let mut bias = Vec::with_capacity(n);
@@ -150,14 +158,35 @@ impl Mechanics {
                      or inertia",
                     model.path, c.name.location, c.name.name
                 ),
-                None => format!(
-                    "{}: the mass matrix M is singular: the bodies do not move independently in \
-                     the coordinates (some combination of coordinates moves no body with mass or \
-                     inertia)",
-                    model.path
-                ),
+                None => {
+                    let dependent = super::located::dependent_coordinates(model, &syms, &mass);
+                    let names: Vec<String> = dependent
+                        .iter()
+                        .filter_map(|&i| model.coordinates.get(i))
+                        .map(|c| format!("`{}`", c.name.name))
+                        .collect();
+                    let place = dependent
+                        .first()
+                        .or(Some(&0))
+                        .and_then(|&i| model.coordinates.get(i))
+                        .map_or_else(
+                            || model.path.clone(),
+                            |c| format!("{}:{}", model.path, c.name.location),
+                        );
+                    format!(
+                        "{place}: the mass matrix M is singular: the bodies do not move \
+                         independently in the coordinates (a combination of {} moves no body \
+                         with mass or inertia)",
+                        if names.is_empty() {
+                            "the coordinates".to_owned()
+                        } else {
+                            names.join(", ")
+                        }
+                    )
+                }
             },
         };
+        stage(|| "the inverse of the mass matrix M".to_owned());
         let mass_inv = if n <= MAX_CLOSED_COORDINATES {
             Some(mass.inverse("M").map_err(|_| singular())?)
         } else {
@@ -185,6 +214,12 @@ impl Mechanics {
         }
         let mut points = Vec::with_capacity(model.points.len());
         for p in &model.points {
+            stage(|| {
+                format!(
+                    "point `{}` ({}:{})",
+                    p.name.name, model.path, p.name.location
+                )
+            });
             points.push((
                 p.name.name.clone(),
                 [syms.lower(&p.at[0])?, syms.lower(&p.at[1])?],

@@ -25,9 +25,11 @@ mod descriptors;
 mod events;
 mod jacobians;
 mod kernels;
+mod located;
 mod lower;
 mod maps;
 mod mechanics;
+mod multiples;
 mod phases;
 mod program;
 mod stick_control;
@@ -39,6 +41,7 @@ pub(crate) use coulomb::coulomb_outputs;
 pub use coulomb::{CoulombImpact, CoulombRows, coulomb_impact, coulomb_rows};
 pub use kernels::{MAX_INVERSE_TERMS, ModelDerivation};
 pub use mechanics::{FloorGeometry, MAX_CLOSED_COORDINATES, Mechanics, time_derivative};
+pub use multiples::{MAX_ANGLE_MULTIPLE, check_angle_multiples};
 pub use phases::{
     ImpactMap, OutputControl, OutputMaps, Sliding, StrikeImpacts, StrikeRows, Stuck, impact_map,
     output_control, output_maps, sliding, strike_impacts, strike_rows, stuck,

@@ -57,7 +57,8 @@ impl ModelSymbols {
     /// engine's table is its index in [`Model::symbols`].
     ///
     /// # Errors
-    /// A base-angle divisor above 255, or more symbols than a table holds.
+    /// A base-angle divisor above 255, or more symbols than a table holds: at the declaration of
+    /// the symbol refused.
     pub fn new(model: &Model) -> Result<ModelSymbols> {
         let mut table = Symbols::new();
         let (mut q, mut qd, mut qdd, mut inputs, mut aux) =
@@ -75,10 +76,11 @@ impl ModelSymbols {
             };
             let latex = latex_of(model, &s.name, s.kind, s.index);
             let sym = if s.angle {
-                table.push_angle(&s.name, &latex, kind, s.base_divisor as i64)?
+                table.push_angle(&s.name, &latex, kind, s.base_divisor as i64)
             } else {
-                table.push(&s.name, &latex, kind)?
-            };
+                table.push(&s.name, &latex, kind)
+            }
+            .map_err(|e| super::located::symbol_error(model, &s.name, e))?;
             match s.kind {
                 SymbolKind::Coordinate => q.push(sym),
                 SymbolKind::Velocity => qd.push(sym),

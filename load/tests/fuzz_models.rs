@@ -1,0 +1,581 @@
+//! Model files as a careless or hostile user writes them: every shipped model file, mutated by a
+//! seeded generator (numbers replaced by zero, negative, huge, tiny, non-numbers and long
+//! literals; names swapped, duplicated or reserved; lines deleted or duplicated; expressions
+//! replaced by others of the file, by velocities, by `sin(1000*th)`; `[start]` values changed;
+//! sections duplicated; extra `[[point]]`s), each run through the library path of
+//! `walker simulate` (load, derive for the tape, walk a few steps) and of `walker-gen emit`
+//! (derive and emit the code). For every case:
+//!
+//! - the result is `Ok`, or an error that names its place: `file:line:column` of the model
+//!   file, or the derivation budget's error (which names the model and what was being
+//!   derived), or one of the library's errors that name the field (a parameter's range);
+//! - nothing panics (each case runs under `catch_unwind`);
+//! - no case runs past [`CASE_SECONDS`];
+//! - a case that walks from a finite start does not fail as `non-finite` at `t = 0`.
+//!
+//! The generator is seeded (the cases are the same on every run); `FUZZ_CASES=N` runs `N`
+//! cases per model instead of the default, `FUZZ_SEED=S` another seed, `FUZZ_VERBOSE=1`
+//! prints every case (with `--nocapture`).
+//!
+//! The default counts (398 cases) keep the suite near a minute of CI on two cores: a case that
+//! the loader refuses costs well under a millisecond, one that derives, walks and emits costs
+//! two derivations and an emission, measured on a loaded machine at 0.2 s (compass gait,
+//! three-link), 0.4 s (five-link, rimless wheel) and 1.3 to 1.7 s (the paper's walkers), so
+//! the cheap models get most cases. Before a release, run a few thousand:
+//! `FUZZ_CASES=1000 cargo test --release -p walker-load --test fuzz_models`.
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use walker::setup::{Overrides, Setup};
+use walker::sim::{FailureKind, SimConfig, WalkLimits, walk};
+
+/// The longest a case may take, each of its two paths (simulate, emit): the derivation is
+/// bounded by its budget (2 million term products, measured at 2 to 5 s on one loaded core of
+/// the reference machine), the lowering, the tape and three steps of a walk of at most 3 s of
+/// model time add under a second for the shipped models' sizes. Twice that, for a loaded CI
+/// machine.
+const CASE_SECONDS: f64 = 15.0;
+
+/// Mutations whose failure is a check of the model loader (the validation layer of issue 35)
+/// that is not yet there: kept out of the asserting set, each with what happens today. The
+/// lead empties this list after merging the validation layer; any entry still needed then is
+/// a bug of that layer. An entry matches a case whose description contains it.
+const KNOWN_OPEN: &[(&str, &str)] = &[
+    // A start velocity of 1e300 is finite, but its kinetic energy is not: the first stance
+    // evaluation overflows and the walk ends `non-finite` at t = 0. The loader should refuse a
+    // start whose energy (or whose values) are not finite in double precision.
+    (
+        "compass-gait",
+        "number: line 133 `th_std = \"1.092384\"` -> 1e300",
+    ),
+    (
+        "paper-passive",
+        "start: line 159 `th1d = \"omega0\"` -> `1e300`",
+    ),
+    (
+        "rimless-wheel",
+        "start: line 141 `thd = \"omega0\"` -> `1e300`",
+    ),
+    (
+        "three-link",
+        "start: line 256 `th_std = \"omega0\"` -> `1e300`",
+    ),
+    // A 5000-digit literal `0.00...01` for the `2` of `alpha/2` in the strike guard: the
+    // guard's constant `alpha/1e-5001` is infinite in double precision. The loader should
+    // bound a literal's length and its value's magnitude.
+    (
+        "rimless-wheel",
+        "number: line 126 `guard = \"th + alpha/2 - phi\"` -> 0.0000000000",
+    ),
+    // A mass that depends on a coordinate (`x + l*sin(th)`): the mass matrix is not that of
+    // any body, the walk ends `non-finite` at t = 0. The loader should refuse a mass or an
+    // inertia that is not positive and independent of the coordinates.
+    (
+        "rimless-wheel",
+        "expression: line 97 `mass = \"m\"` -> `x + l*sin(th)`",
+    ),
+    // The derivative gain `K_D = 1e300` lies in its documented range `[0, inf)`: the control
+    // overflows at once and the walk ends `non-finite` at t = 0. The loader should bound a
+    // parameter's default to what its kernels can evaluate (or the model its range).
+    ("paper-active", "number: line 109 `default = 0.0` -> 1e300"),
+];
+
+/// A small, fast, seeded generator (SplitMix64).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        if n == 0 {
+            0
+        } else {
+            (self.next() % n as u64) as usize
+        }
+    }
+
+    fn pick<'a, T>(&mut self, items: &'a [T]) -> Option<&'a T> {
+        items.get(self.below(items.len()))
+    }
+}
+
+fn models_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../models")
+}
+
+/// The quoted strings of a line (`"..."`, without escapes).
+fn quoted(line: &str) -> Vec<(usize, usize)> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, c) in line.char_indices() {
+        if c == '"' {
+            match start {
+                None => start = Some(i + 1),
+                Some(s) => {
+                    out.push((s, i));
+                    start = None;
+                }
+            }
+        } else if c == '#' && start.is_none() {
+            break;
+        }
+    }
+    out
+}
+
+/// The numbers of a line outside comments: byte ranges of digit runs (with a leading `.`).
+fn numbers(line: &str) -> Vec<(usize, usize)> {
+    let code = line.split('#').next().unwrap_or("");
+    let b = code.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        let starts = b[i].is_ascii_digit()
+            && (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_'));
+        if starts {
+            let s = i;
+            while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
+                i += 1;
+            }
+            out.push((s, i));
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+/// The names of a model's coordinates, and of those whose unit is `rad` (its angles).
+fn coordinates(text: &str) -> (Vec<String>, Vec<String>) {
+    let (mut all, mut angles) = (Vec::new(), Vec::new());
+    let mut in_coordinate = false;
+    let mut name = None;
+    for line in text.lines() {
+        let t = line.trim();
+        if t.starts_with('[') {
+            if let Some(n) = name.take() {
+                all.push(n);
+            }
+            in_coordinate = t == "[[coordinate]]";
+        } else if in_coordinate && t.starts_with("name") {
+            name = quoted(t).first().map(|&(s, e)| t[s..e].to_owned());
+        } else if in_coordinate && t.starts_with("unit = \"rad\"") {
+            if let Some(n) = &name {
+                angles.push(n.clone());
+            }
+        }
+    }
+    (all, angles)
+}
+
+/// One mutation of `text`, and its description.
+fn mutate(text: &str, rng: &mut Rng) -> (String, String) {
+    let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
+    let (coords, angles) = coordinates(text);
+    let angle = angles.first().cloned().unwrap_or_else(|| "x".to_owned());
+    let strings: Vec<String> = lines
+        .iter()
+        .flat_map(|l| quoted(l).into_iter().map(move |(s, e)| l[s..e].to_owned()))
+        .collect();
+    let with = |lines: &[String]| lines.join("\n") + "\n";
+    let n = lines.len();
+    match rng.below(9) {
+        0 => {
+            // A number replaced.
+            let candidates: Vec<usize> =
+                (0..n).filter(|&i| !numbers(&lines[i]).is_empty()).collect();
+            let Some(&i) = rng.pick(&candidates) else {
+                return (with(&lines), "nothing".into());
+            };
+            let nums = numbers(&lines[i]);
+            let &(s, e) = rng.pick(&nums).unwrap_or(&nums[0]);
+            let long = format!("1{}", "0".repeat(400));
+            let longer = format!("0.{}1", "0".repeat(5000));
+            let choices = [
+                "0",
+                "-1",
+                "-0.5",
+                "1e300",
+                "1e-300",
+                "nan",
+                "inf",
+                "1e400",
+                long.as_str(),
+                longer.as_str(),
+                "0.0000001",
+                "123456789012345678901234567890",
+            ];
+            let v = *rng.pick(&choices).unwrap_or(&"0");
+            let old = lines[i].clone();
+            lines[i].replace_range(s..e, v);
+            let shown: String = v.chars().take(12).collect();
+            (
+                with(&lines),
+                format!("number: line {} `{}` -> {shown}", i + 1, old.trim()),
+            )
+        }
+        1 => {
+            // A name replaced: reserved, another's, or a duplicate.
+            let candidates: Vec<usize> = (0..n)
+                .filter(|&i| lines[i].trim_start().starts_with("name = "))
+                .collect();
+            let Some(&i) = rng.pick(&candidates) else {
+                return (with(&lines), "nothing".into());
+            };
+            let mut names = vec![
+                "sigma".to_owned(),
+                "mu".to_owned(),
+                "t".to_owned(),
+                "g".to_owned(),
+                "lambda".to_owned(),
+                "q0".to_owned(),
+                "x".to_owned(),
+                "fn".to_owned(),
+                "th\\u0007".to_owned(),
+            ];
+            names.extend(coords.iter().cloned());
+            let v = rng.pick(&names).cloned().unwrap_or_default();
+            let old = lines[i].clone();
+            lines[i] = format!("name = \"{v}\"");
+            (
+                with(&lines),
+                format!("name: line {} `{}` -> `{v}`", i + 1, old.trim()),
+            )
+        }
+        2 => {
+            let i = rng.below(n);
+            let old = lines.remove(i);
+            (
+                with(&lines),
+                format!("delete: line {} `{}`", i + 1, old.trim()),
+            )
+        }
+        3 => {
+            let i = rng.below(n);
+            let copy = lines[i].clone();
+            lines.insert(i, copy.clone());
+            (
+                with(&lines),
+                format!("duplicate: line {} `{}`", i + 1, copy.trim()),
+            )
+        }
+        4 => {
+            // An expression replaced: by another of the file, a velocity, a huge multiple.
+            let candidates: Vec<usize> = (0..n)
+                .filter(|&i| {
+                    let t = lines[i].trim_start();
+                    !quoted(t).is_empty()
+                        && ![
+                            "name",
+                            "unit",
+                            "doc",
+                            "title",
+                            "reference",
+                            "latex",
+                            "format",
+                            "range",
+                            "point",
+                            "law",
+                            "friction",
+                            "report",
+                            "free",
+                            "shape",
+                        ]
+                        .iter()
+                        .any(|k| t.starts_with(k))
+                })
+                .collect();
+            let Some(&i) = rng.pick(&candidates) else {
+                return (with(&lines), "nothing".into());
+            };
+            let qs = quoted(&lines[i]);
+            let &(s, e) = rng.pick(&qs).unwrap_or(&qs[0]);
+            let velocity = format!("{}d", rng.pick(&coords).cloned().unwrap_or_default());
+            let mut choices = vec![
+                velocity,
+                format!("sin(1000*{angle})"),
+                format!("sin(12*{angle})"),
+                format!("cos({angle}/40)"),
+                "0".to_owned(),
+                format!("{angle}*{angle}*{angle}^8"),
+            ];
+            choices.extend(rng.pick(&strings).cloned());
+            let v = rng.pick(&choices).cloned().unwrap_or_default();
+            let old = lines[i].clone();
+            lines[i].replace_range(s..e, &v);
+            (
+                with(&lines),
+                format!("expression: line {} `{}` -> `{v}`", i + 1, old.trim()),
+            )
+        }
+        5 => {
+            // A `[start]` value changed.
+            let Some(start) = lines.iter().position(|l| l.trim() == "[start]") else {
+                return (with(&lines), "nothing".into());
+            };
+            let end = (start + 1..n)
+                .find(|&i| lines[i].trim_start().starts_with('['))
+                .unwrap_or(n);
+            let candidates: Vec<usize> = (start + 1..end)
+                .filter(|&i| !quoted(&lines[i]).is_empty())
+                .collect();
+            let Some(&i) = rng.pick(&candidates) else {
+                return (with(&lines), "nothing".into());
+            };
+            let (s, e) = quoted(&lines[i])[0];
+            let choices = ["0", "1", "-1", "1e3", "-100", "1e300", "nan"];
+            let v = *rng.pick(&choices).unwrap_or(&"0");
+            let old = lines[i].clone();
+            lines[i].replace_range(s..e, v);
+            (
+                with(&lines),
+                format!("start: line {} `{}` -> `{v}`", i + 1, old.trim()),
+            )
+        }
+        6 => {
+            // A section duplicated.
+            let headers: Vec<usize> = (0..n)
+                .filter(|&i| lines[i].trim_start().starts_with('['))
+                .collect();
+            let Some(&i) = rng.pick(&headers) else {
+                return (with(&lines), "nothing".into());
+            };
+            let end = (i + 1..n)
+                .find(|&j| lines[j].trim_start().starts_with('['))
+                .unwrap_or(n);
+            let block: Vec<String> = lines[i..end].to_vec();
+            lines.extend(block);
+            (
+                with(&lines),
+                format!("section: `{}` duplicated", lines[i].trim()),
+            )
+        }
+        7 => {
+            // Extra points.
+            let k = 1 + rng.below(40);
+            let (x, z) = (
+                coords.first().cloned().unwrap_or_default(),
+                coords.get(1).cloned().unwrap_or_default(),
+            );
+            for j in 0..k {
+                lines.push("[[point]]".into());
+                lines.push(format!("name = \"extra{j}\""));
+                lines.push(format!("at = [\"{x}\", \"{z}\"]"));
+            }
+            (with(&lines), format!("points: {k} extra"))
+        }
+        _ => {
+            // Two mutations at once.
+            let (once, a) = mutate(text, rng);
+            let (twice, b) = mutate(&once, rng);
+            (twice, format!("{a}; {b}"))
+        }
+    }
+}
+
+/// Whether `message` names a place: `file:line:column` of `path`, or the derivation's budget
+/// (the model and what was being derived).
+fn located(message: &str, path: &str) -> bool {
+    if message.contains("derivation budget of") {
+        return true;
+    }
+    let mut rest = message;
+    while let Some(i) = rest.find(path) {
+        let after = &rest[i + path.len()..];
+        let mut parts = after.splitn(3, ':');
+        let _ = parts.next();
+        let line = parts.next().unwrap_or("");
+        let column: String = parts
+            .next()
+            .unwrap_or("")
+            .chars()
+            .take_while(char::is_ascii_digit)
+            .collect();
+        if !line.is_empty() && line.chars().all(|c| c.is_ascii_digit()) && !column.is_empty() {
+            return true;
+        }
+        rest = after;
+    }
+    false
+}
+
+/// What one case did wrong, if anything; and whether it walked and emitted.
+fn run_case(path: &Path) -> (Option<String>, [bool; 2]) {
+    let p = path.display().to_string();
+    let t = Instant::now();
+    let simulate = catch_unwind(AssertUnwindSafe(|| -> Result<Option<String>, String> {
+        let source = walker_load::runtime_source();
+        let setup = Setup::from_model_file(path, &Overrides::default(), Some(&source))
+            .map_err(|e| e.to_string())?;
+        let model = setup.model().map_err(|e| e.to_string())?;
+        let start = model.start_state();
+        let limits = WalkLimits {
+            max_steps: 3,
+            duration: 3.0,
+            ..WalkLimits::default()
+        };
+        let w = walk(&model, &SimConfig::default(), &start, &limits);
+        Ok(w.failure.and_then(|f| {
+            let finite = start.iter().all(|v| v.is_finite());
+            (matches!(f.kind, FailureKind::NonFinite) && f.t == 0.0 && finite)
+                .then(|| "walks non-finite at t = 0 from a finite start".to_owned())
+        }))
+    }));
+    let simulate_time = t.elapsed();
+    let t = Instant::now();
+    let emit = catch_unwind(AssertUnwindSafe(|| {
+        walker_gen::Config::new()
+            .model_file(path)
+            .render()
+            .map(|_| ())
+            .map_err(|e| e.to_string())
+    }));
+    let emit_time = t.elapsed();
+    let mut problems = Vec::new();
+    let accepted = [matches!(simulate, Ok(Ok(_))), matches!(emit, Ok(Ok(())))];
+    if std::env::var_os("FUZZ_VERBOSE").is_some() {
+        eprintln!(
+            "{}: simulate {:?} ({:.2} s), emit {:?} ({:.2} s)",
+            path.display(),
+            simulate.as_ref().map(|r| r.as_ref().map(|_| "ok")),
+            simulate_time.as_secs_f64(),
+            emit.as_ref().map(|r| r.as_ref().map(|_| "ok")),
+            emit_time.as_secs_f64()
+        );
+    }
+    match simulate {
+        Err(_) => problems.push("simulate panicked".to_owned()),
+        Ok(Ok(Some(bad))) => problems.push(format!("simulate: {bad}")),
+        Ok(Err(e)) if !located(&e, &p) && !field_error(&e) => {
+            problems.push(format!("simulate: an error without a place: {e}"));
+        }
+        Ok(_) => {}
+    }
+    match emit {
+        Err(_) => problems.push("emit panicked".to_owned()),
+        Ok(Err(e)) if !located(&e, &p) && !field_error(&e) => {
+            problems.push(format!("emit: an error without a place: {e}"));
+        }
+        Ok(_) => {}
+    }
+    for (what, d) in [("simulate", simulate_time), ("emit", emit_time)] {
+        if d > Duration::from_secs_f64(CASE_SECONDS) {
+            problems.push(format!("{what} took {:.1} s", d.as_secs_f64()));
+        }
+    }
+    (
+        (!problems.is_empty()).then(|| problems.join("; ")),
+        accepted,
+    )
+}
+
+/// The library's errors that name the field without a file place: a parameter outside its
+/// documented range (the model's defaults are checked as a request's values are).
+fn field_error(message: &str) -> bool {
+    message.contains("is outside") && message.contains("range")
+}
+
+/// Runs `cases` mutations of `models/<name>.toml`; the failures outside [`KNOWN_OPEN`].
+fn fuzz(name: &str, cases: usize, seed: u64) -> Vec<String> {
+    let text = std::fs::read_to_string(models_dir().join(format!("{name}.toml")))
+        .expect("a shipped model");
+    let mut rng = Rng(seed
+        ^ name
+            .bytes()
+            .fold(0u64, |h, b| h.wrapping_mul(31).wrapping_add(u64::from(b))));
+    let dir = std::env::temp_dir().join(format!("walker-fuzz-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let mut failures = Vec::new();
+    let mut walked_emitted = [0, 0];
+    for case in 0..cases {
+        let (mutated, what) = mutate(&text, &mut rng);
+        let path = dir.join(format!("case{case}.toml"));
+        std::fs::write(&path, &mutated).expect("a temporary file");
+        let (problem, accepted) = run_case(&path);
+        for (count, ok) in walked_emitted.iter_mut().zip(accepted) {
+            *count += usize::from(ok);
+        }
+        if std::env::var_os("FUZZ_VERBOSE").is_some() {
+            eprintln!("case {case}: {what}");
+        }
+        if let Some(problem) = problem {
+            let open = KNOWN_OPEN
+                .iter()
+                .any(|(m, w)| *m == name && what.contains(w));
+            if !open {
+                failures.push(format!("{name} case {case} ({what}): {problem}"));
+            }
+        }
+        let _ = std::fs::remove_file(&path);
+    }
+    let _ = std::fs::remove_dir(&dir);
+    eprintln!(
+        "{name}: {cases} cases, {} walked, {} emitted, {} failures",
+        walked_emitted[0],
+        walked_emitted[1],
+        failures.len()
+    );
+    failures
+}
+
+fn cases(default: usize) -> usize {
+    std::env::var("FUZZ_CASES")
+        .ok()
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(default)
+}
+
+fn seed() -> u64 {
+    std::env::var("FUZZ_SEED")
+        .ok()
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(35)
+}
+
+fn check(name: &str, default_cases: usize) {
+    let failures = fuzz(name, cases(default_cases), seed());
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn mutated_compass_gait_files_load_walk_and_emit_or_fail_with_a_place() {
+    check("compass-gait", 150);
+}
+
+#[test]
+fn mutated_rimless_wheel_files_load_walk_and_emit_or_fail_with_a_place() {
+    check("rimless-wheel", 40);
+}
+
+#[test]
+fn mutated_three_link_files_load_walk_and_emit_or_fail_with_a_place() {
+    check("three-link", 120);
+}
+
+#[test]
+fn mutated_five_link_files_load_walk_and_emit_or_fail_with_a_place() {
+    check("five-link", 60);
+}
+
+#[test]
+fn mutated_paper_passive_files_load_walk_and_emit_or_fail_with_a_place() {
+    check("paper-passive", 12);
+}
+
+#[test]
+fn mutated_paper_active_files_load_walk_and_emit_or_fail_with_a_place() {
+    check("paper-active", 16);
+}
