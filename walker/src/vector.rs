@@ -13,8 +13,9 @@ use std::ops::{Deref, DerefMut};
 
 use serde::{Serialize, Serializer};
 
-/// The most coordinates a model may have in the simulator (the five-link biped has seven).
-pub const MAX_COORDINATES: usize = 8;
+/// The most coordinates a model may have in the simulator (the five-link biped has seven): the
+/// loader's limit, so that a model with more is refused at load.
+pub const MAX_COORDINATES: usize = walker_scene::limits::MAX_COORDINATES;
 
 /// The most numbers a [`Vector`] holds: a mechanical state `[q, qd]` of [`MAX_COORDINATES`].
 pub const MAX_LEN: usize = 2 * MAX_COORDINATES;

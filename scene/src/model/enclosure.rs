@@ -161,7 +161,7 @@ impl Enclosure {
         let shift = if f == Func::Cos { FRAC_PI_2 } else { 0.0 };
         // cos(x) = sin(x + pi/2).
         let (a, b) = (self.lo.value + shift, self.hi.value + shift);
-        if !(b - a < 2.0 * PI) || !a.is_finite() {
+        if b - a >= 2.0 * PI || !a.is_finite() || !b.is_finite() {
             return Enclosure {
                 lo: end(-1.0, false),
                 hi: end(1.0, false),

@@ -11,6 +11,16 @@ use crate::model::error::{ModelError, ModelErrorKind};
 use crate::model::load::Loader;
 use crate::model::raw::RawModel;
 
+/// One list's check: its name, its length, its limit, the span of its first entry past the
+/// limit, and why the limit is there.
+type ListSize<'a> = (
+    &'a str,
+    usize,
+    usize,
+    Option<std::ops::Range<usize>>,
+    &'a str,
+);
+
 /// The span of entry `i` of `list`, if it has one.
 fn span_of<T>(list: &[Spanned<T>], i: usize) -> Option<std::ops::Range<usize>> {
     list.get(i).map(Spanned::span)
@@ -24,7 +34,7 @@ impl Loader<'_> {
             .impact
             .as_ref()
             .map_or(&[][..], |i| i.get_ref().locks.as_slice());
-        let lists: [(&str, usize, usize, Option<std::ops::Range<usize>>, &str); 8] = [
+        let lists: [ListSize<'_>; 8] = [
             (
                 "[[coordinate]]",
                 raw.coordinate.get_ref().len(),

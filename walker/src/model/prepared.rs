@@ -484,7 +484,8 @@ impl Model {
         if !self.spec.model.strike.ahead {
             return true;
         }
-        let mut p = [0.0; 2 * 32];
+        // The loader refuses more points than this (walker_scene::limits::MAX_POINTS).
+        let mut p = [0.0; 2 * walker_scene::limits::MAX_POINTS];
         let k = self.spec.model.points.len();
         if 2 * k > p.len() {
             return true;

@@ -6,12 +6,12 @@ use std::cell::Cell;
 
 use crate::model::{Contact, FrictionLaw, Model};
 use crate::ode::{Direction, Event};
-use crate::vector::MAX_COORDINATES;
 
 use super::foot::Foot;
 
-/// The most falls a model's stance watches (its `[[fall]]` entries).
-pub const MAX_FALLS: usize = 2 * MAX_COORDINATES;
+/// The most falls a model's stance watches (its `[[fall]]` entries): the loader's limit, so
+/// that a model with more is refused at load rather than cut here.
+pub const MAX_FALLS: usize = walker_scene::limits::MAX_FALLS;
 
 /// A stance event (a terminal event of the stance integration).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
