@@ -1,6 +1,7 @@
 //! A model file that is not compiled in walks exactly as the compiled one: every shipped model
-//! that `walker` compiles, copied with a changed title (so that it is not the shipped file byte
-//! for byte and `walker-load` derives it at run time), walks the same steps bit for bit under
+//! that `walker` compiles, copied with its first mass written `1*(...)` (another parsed tree, so
+//! another canonical content, and `walker-load` derives it at run time; the derivation's
+//! polynomial is the same), walks the same steps bit for bit under
 //! each friction law it is compiled for. The tape computes what the generated Rust computes
 //! (walker-gen's `tape_vs_compiled`), so nothing may differ, not even in the last bit.
 
@@ -16,11 +17,13 @@ fn shipped(name: &str) -> PathBuf {
         .join(format!("{name}.toml"))
 }
 
-/// A copy of `models/<name>.toml` in a temporary file, its title changed.
+/// A copy of `models/<name>.toml` in a temporary file, its first mass `1*(...)`: the same
+/// walker, but not the compiled model's canonical content (`Model::canonical`).
 fn copy(name: &str) -> PathBuf {
     let text = std::fs::read_to_string(shipped(name)).expect("a shipped model");
-    let changed = text.replacen("title = \"", "title = \"(a copy) ", 1);
-    assert_ne!(text, changed, "{name} has a title to change");
+    let (head, tail) = text.split_once("mass = \"").expect("a body with a mass");
+    let (mass, rest) = tail.split_once('"').expect("the mass's closing quote");
+    let changed = format!("{head}mass = \"1*({mass})\"{rest}");
     let path = std::env::temp_dir().join(format!("walker-load-{}-{name}.toml", std::process::id()));
     std::fs::write(&path, changed).expect("a temporary file");
     path
