@@ -114,10 +114,15 @@ impl From<ParamError> for InputError {
             ParamError::OutOfRange { name, value, range } => {
                 InputError::out_of_range(flag(name), *value, &format!("in {range}"))
             }
-            // Only a name given as it is (`--set NAME=..`, or a chain's `T_set`) can be
-            // unknown: a role the model lacks is a `SetupError::NoRole`.
+            // Only a name given as it is can be unknown (a role the model lacks is a
+            // `SetupError::NoRole`): a sweep's chains by `--t-set` (`T_set`) or `--phi`, any
+            // other by `--set NAME=..`.
             ParamError::Unknown { name, .. } => {
-                let field = if name == "T_set" { "t-set" } else { "set" };
+                let field = match name.as_str() {
+                    "T_set" => "t-set",
+                    "phi" => "phi",
+                    _ => "set",
+                };
                 InputError::new(field, e.to_string())
             }
         }

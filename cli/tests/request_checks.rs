@@ -254,6 +254,14 @@ fn a_huge_or_hostile_name_is_echoed_short_and_escaped() {
         assert!(stderr.len() < 1000, "{flag}: {} bytes", stderr.len());
         assert!(!stderr.contains('\u{1b}'), "{flag}: {stderr}");
     }
+    for scene in [name.clone(), format!("{name}.toml")] {
+        let o = walker(&["simulate", "--scene", &scene]);
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{stderr}");
+        assert!(stderr.contains("invalid scene:"), "{stderr}");
+        assert!(stderr.len() < 1000, "--scene: {} bytes", stderr.len());
+        assert!(!stderr.contains('\u{1b}'), "--scene: {stderr}");
+    }
     let huge = "9".repeat(400);
     refused_simulate(&[&format!("--duration={huge}")], "duration", &["e399"]);
 }

@@ -53,7 +53,7 @@ pub type RuntimeSource = dyn Fn(&ModelFile) -> Result<Arc<dyn KernelSource>, Str
 pub enum SetupError {
     /// A scene or model file cannot be read, is not a regular file (a device or a pipe could
     /// be read without end), or is longer than [`MAX_FILE_BYTES`].
-    #[error("{what} file {}: {message}", path.display())]
+    #[error("{what} file {}: {message}", request::shown::name(&path.display().to_string()))]
     File {
         /// `"scene"` or `"model"`.
         what: &'static str,

@@ -144,6 +144,34 @@ pub fn max_frames(n: i128) -> Result<usize, RequestError> {
     count(Field::MaxFrames, n, 1, MAX_FRAMES)
 }
 
+/// A trajectory's sampling, checked as a whole: `dt` by [`trajectory_dt()`], `max_frames`
+/// by [`max_frames()`], and, for a walk of finite `duration`, the samples it asks for,
+/// `duration / dt + 1`, at most [`MAX_FRAMES`] (a request for more is refused before any
+/// work, rather than cut). Returns `(dt, max_frames)`.
+///
+/// # Errors
+/// One of them out of its range, or too many samples ([`Field::TrajectoryDt`]).
+pub fn trajectory(
+    duration: Option<f64>,
+    dt: f64,
+    max_frames_given: i128,
+) -> Result<(f64, usize), RequestError> {
+    let dt = trajectory_dt(dt)?;
+    let frames = max_frames(max_frames_given)?;
+    if let Some(d) = duration.filter(|d| d.is_finite()) {
+        let asked = (d / dt + 1e-9).floor() + 1.0;
+        if asked > MAX_FRAMES as f64 {
+            return Err(RequestError::TooLarge {
+                field: Field::TrajectoryDt,
+                what: "samples (duration / trajectory_dt + 1)",
+                count: asked,
+                limit: MAX_FRAMES as u64,
+            });
+        }
+    }
+    Ok((dt, frames))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -197,5 +225,15 @@ mod tests {
             "max_steps: \"1e30\": must be a whole number in [0, 1000000]"
         );
         assert_eq!(count_text(Field::MaxSteps, " 7 ", 0, 10), Ok(7));
+    }
+
+    #[test]
+    fn a_trajectory_of_more_samples_than_the_bound_is_refused_before_any_work() {
+        let e = trajectory(Some(100.0), 1e-6, 10).expect_err("1e8 samples");
+        assert_eq!(e.field(), &Field::TrajectoryDt);
+        assert!(e.to_string().contains("at most 1000000"), "{e}");
+        assert_eq!(trajectory(Some(100.0), 1e-3, 10), Ok((1e-3, 10)));
+        // Without a duration the walk's steps end it; the samples are cut at `max_frames`.
+        assert_eq!(trajectory(None, 1e-9, 5), Ok((1e-9, 5)));
     }
 }

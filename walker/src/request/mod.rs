@@ -20,7 +20,7 @@
 //! | steps of a walk | `--max-steps` | `max_steps` | whole, `[0, 10^6]` ([`MAX_STEPS`]) | bound checked; `1e30`, `-1` refused by the parser without the range |
 //! | length of a walk | `--duration` | `duration` | `(0, 1e9]` s ([`MAX_DURATION`]) | `> 0`: `1e300` accepted |
 //! | periodic-gait stop | `--until-periodic` | `until_periodic` | `(0, 1)` | checked |
-//! | trajectory sampling | (animate: `--fps`, `--speed`) | `trajectory_dt` | `(0, 1e9]` s | `> 0`, named `dt` |
+//! | trajectory sampling | (animate: `--fps`, `--speed`) | `trajectory_dt` | `(0, 1e9]` s, at most `10^6` samples over a finite duration | `> 0`, named `dt`; more samples cut silently |
 //! | trajectory samples | (animate: frames of the format) | `max_frames` | `[1, 10^6]` ([`MAX_FRAMES`]) | checked |
 //! | sweep range | `--from`, `--to`, `--step` | `from_`, `to`, `step` | finite, `to >= from`, `step > 0` | checked |
 //! | sweep size | (the range and chains) | (the same) | `<= 10^5` points ([`MAX_SWEEP_POINTS`]) | checked |
@@ -34,6 +34,27 @@
 //! Inputs only one front end has are checked there: `walker animate`'s `--steps`, `--speed`,
 //! `--fps` and its `--duration` (`cli/src/animate/request.rs`), `walker continue`'s flags,
 //! a grid's columns in Python.
+
+//! A front end's part, in order (the command line's is `cli/src/run.rs` and `cli/src/input.rs`):
+//!
+//! 1. The integrator: [`method_named`], [`friction_named`], [`impact_named`] for names given
+//!    as text, then [`sim_config`]`(method, rtol, atol)`.
+//! 2. The limits: [`walk_limits`]`(duration, max_steps, until_periodic)` (a count as `i128`,
+//!    so that a negative or huge one is named here; [`count_text`] for a count given as
+//!    text), and for a sampled walk [`trajectory`]`(duration, dt, max_frames)`.
+//! 3. The parameters: [`crate::setup::Setup::apply`] refuses one parameter given twice among
+//!    the roles and the by-name list of its [`crate::setup::Overrides`]
+//!    ([`crate::setup::SetupError::Request`]); values set another way (one by one, a grid's
+//!    columns, the swept parameter, chains, the start parameter `omega0`) are checked with
+//!    [`distinct_fields`] (fields by role or by name) or [`distinct`] (a field and the
+//!    parameter's index, as for [`Field::Param`]).
+//! 4. A sweep: [`SweepRange::grid`]`(chains, chain_field)` checks the range and counts the
+//!    points before making the grid.
+//! 5. The start: [`start_components`]`(spec, init)`.
+//!
+//! Each error's [`RequestError::field`] is the input to name (the command line's
+//! `flag_of`, Python's keyword), [`RequestError::detail`] the message with every other field
+//! named by the front end's own function.
 
 pub mod error;
 pub mod field;
@@ -52,7 +73,7 @@ pub use integrator::{
 };
 pub use limits::{
     MAX_DURATION, MAX_FRAMES, MAX_STEPS, count, count_text, duration, max_frames, max_steps,
-    trajectory_dt, until_periodic, walk_limits,
+    trajectory, trajectory_dt, until_periodic, walk_limits,
 };
 pub use parameters::{distinct, distinct_fields, parameter_of, role_parameter};
 pub use start::start_components;
