@@ -49,9 +49,11 @@ pub fn count_text(
     low: usize,
     high: usize,
 ) -> Result<usize, RequestError> {
-    match text.trim().parse::<i128>() {
-        Ok(n) => count(field, n, low, high),
-        Err(_) => Err(RequestError::Count {
+    let t = text.trim();
+    // A count has no sign: `-0` is a mistyped flag or value, not zero.
+    match t.parse::<i128>() {
+        Ok(n) if !t.starts_with('-') => count(field, n, low, high),
+        _ => Err(RequestError::Count {
             field,
             given: shown::text(text),
             low: low as u64,
@@ -225,6 +227,7 @@ mod tests {
             "max_steps: \"1e30\": must be a whole number in [0, 1000000]"
         );
         assert_eq!(count_text(Field::MaxSteps, " 7 ", 0, 10), Ok(7));
+        assert!(count_text(Field::MaxSteps, "-0", 0, 10).is_err());
     }
 
     #[test]
