@@ -10,7 +10,7 @@ use walker::ode::Method;
 use walker::setup::Overrides;
 use walker::sim::SimConfig;
 
-use crate::input::{InputError, assignments, tolerance};
+use crate::input::{InputError, assignments};
 
 /// Command-line interface.
 #[derive(Parser, Debug)]
@@ -84,7 +84,8 @@ pub struct Common {
     /// compiled kernels, any other file is derived when the command starts.
     #[arg(long)]
     pub model: Option<PathBuf>,
-    /// Set a run-time parameter of the model: NAME=VALUE (repeat), e.g. --set T_set=0.2.
+    /// Set a run-time parameter of the model: NAME=VALUE (repeat for others; each parameter
+    /// once, also across --mu0, --c, --t-set and --phi), e.g. --set T_set=0.2.
     #[arg(long = "set")]
     pub set: Vec<String>,
     /// Friction law (default: the scene's; tanh for the built-in scenes).
@@ -99,10 +100,12 @@ pub struct Common {
     /// Integrator.
     #[arg(long, value_enum, default_value = "dop853")]
     pub method: MethodArg,
-    /// Relative tolerance of the integrator, in (0, 1) (default 1e-10; 1e-8 with rodas4).
+    /// Relative tolerance of the integrator, in [2.2e-15, 1) (ten machine epsilons and more;
+    /// default 1e-10; 1e-8 with rodas4).
     #[arg(long, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
-    /// Absolute tolerance of the integrator, in (0, 1) (default 1e-12; 1e-10 with rodas4).
+    /// Absolute tolerance of the integrator, in [2.2e-308, 1) (a normal number; default
+    /// 1e-12; 1e-10 with rodas4).
     #[arg(long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Print one JSON object instead of a table.
@@ -136,22 +139,14 @@ impl Common {
     /// `--rtol` and `--atol`.
     ///
     /// # Errors
-    /// `--rtol` or `--atol` is outside (0, 1) (the error names the flag).
+    /// `--rtol` or `--atol` is outside its range ([`walker::request::sim_config`]; the error
+    /// names the flag).
     pub fn config(&self) -> Result<SimConfig, InputError> {
-        let base = match self.method {
-            MethodArg::Dop853 => SimConfig::default(),
-            MethodArg::Rodas4 => SimConfig {
-                method: Method::Rodas4,
-                rtol: 1e-8,
-                atol: 1e-10,
-                ..SimConfig::default()
-            },
+        let method = match self.method {
+            MethodArg::Dop853 => Method::Dop853,
+            MethodArg::Rodas4 => Method::Rodas4,
         };
-        Ok(SimConfig {
-            rtol: self.rtol.map_or(Ok(base.rtol), |x| tolerance("rtol", x))?,
-            atol: self.atol.map_or(Ok(base.atol), |x| tolerance("atol", x))?,
-            ..base
-        })
+        Ok(walker::request::sim_config(method, self.rtol, self.atol)?)
     }
 }
 
@@ -172,7 +167,7 @@ pub struct WalkFlags {
     #[arg(long, allow_hyphen_values = true)]
     pub phi: Option<f64>,
     /// Start from this value of a coordinate or velocity instead of the model's start:
-    /// NAME=VALUE (repeat), e.g. --init th1d=0.7.
+    /// NAME=VALUE (repeat for others; each once), e.g. --init th1d=0.7.
     #[arg(long = "init")]
     pub init: Vec<String>,
 }
@@ -188,19 +183,20 @@ pub enum Command {
         /// The walker's parameters and start.
         #[command(flatten)]
         walk: WalkFlags,
-        /// Stop after the step that passes this time (s).
+        /// Stop after the step that passes this time (s), in (0, 1e9].
         #[arg(long, allow_hyphen_values = true)]
         duration: Option<f64>,
-        /// Stop after this many steps.
-        #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 100)]
-        max_steps: usize,
+        /// Stop after this many steps: a whole number in [0, 1000000].
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "100")]
+        max_steps: String,
     },
     /// Sweep a run-time parameter (mu0 by default: procedures P1a-P5a / P1b-P5b).
     Sweep {
         /// The shared flags.
         #[command(flatten)]
         common: Common,
-        /// The parameter to sweep (default mu0, the friction coefficient).
+        /// The parameter to sweep (default mu0, the friction coefficient); not also given by
+        /// --set or as the chains.
         #[arg(long)]
         param: Option<String>,
         /// First value.
@@ -209,24 +205,24 @@ pub enum Command {
         /// Last value.
         #[arg(long, visible_alias = "mu0-to", allow_hyphen_values = true)]
         to: f64,
-        /// Increment, > 0.
+        /// Increment, > 0; at most 100000 points in all (values times chains).
         #[arg(long, visible_alias = "mu0-step", allow_hyphen_values = true)]
         step: f64,
-        /// T_set values (active walker; repeat for several chains).
+        /// T_set values (active walker; repeat for several chains, at most 64).
         #[arg(long = "t-set", allow_hyphen_values = true)]
         t_set: Vec<f64>,
-        /// Slope angles (passive wheel; repeat for several chains).
+        /// Slope angles (passive wheel; repeat for several chains, at most 64).
         #[arg(long, allow_hyphen_values = true)]
         phi: Vec<f64>,
         /// Start every value from the initial condition instead of the previous steady state.
         #[arg(long)]
         restart: bool,
-        /// Walk each value for this long (s).
+        /// Walk each value for this long (s), in (0, 1e9].
         #[arg(long, default_value_t = 100.0, allow_hyphen_values = true)]
         duration: f64,
-        /// At most this many steps per value.
-        #[arg(long = "max-steps", allow_hyphen_values = true, default_value_t = 1000)]
-        max_steps: usize,
+        /// At most this many steps per value: a whole number in [0, 1000000].
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "1000")]
+        max_steps: String,
         /// Stop a value early once its gait is periodic: when the step-to-step change of T, dx
         /// and p, continued geometrically, adds up to at most this (relative; in (0, 1)). The
         /// last step then stands for the rest of the duration.
@@ -264,9 +260,9 @@ pub enum Command {
         /// The walker's parameters and start.
         #[command(flatten)]
         walk: WalkFlags,
-        /// Walk this many steps, in [1, 1000] (default 6).
+        /// Walk this many steps: a whole number in [1, 1000] (default 6).
         #[arg(long, allow_hyphen_values = true)]
-        steps: Option<usize>,
+        steps: Option<String>,
         /// Walk for this long instead (s), in (0, 600].
         #[arg(long, allow_hyphen_values = true)]
         duration: Option<f64>,

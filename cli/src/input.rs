@@ -1,8 +1,13 @@
 //! Input errors of the command line: which argument was wrong and what is accepted (exit
-//! code 2). Parameter errors of the library ([`walker::setup::SetupError`]) are named here by
-//! the flag a user typed (`--t-set` for `T_set`).
+//! code 2). The library checks what a request may ask ([`walker::request`]) and names the
+//! field in its own words; its errors ([`RequestError`], [`walker::setup::SetupError`]) are
+//! named here by the flag a user typed (`--t-set` for `T_set`, `--max-steps` for
+//! `max_steps`). A user's text is echoed at most [`walker::request::shown::MAX_ECHO`]
+//! characters long with control characters escaped.
 
 use walker::model::{NoKernels, ParamError};
+use walker::request::shown;
+use walker::request::{Field, RequestError, Role};
 use walker::setup::SetupError;
 
 /// A user error: which input was wrong and what is accepted (exit code 2).
@@ -27,8 +32,69 @@ impl InputError {
     /// `value` of `field` is outside its valid range, `must_be` in words (`"in (0, 1)"`,
     /// `"finite and > 0"`).
     pub fn out_of_range(field: &str, value: f64, must_be: &str) -> Self {
-        InputError::new(field, format!("{value}: must be {must_be}"))
+        InputError::new(
+            field,
+            format!("{}: must be {must_be}", shown::number(value)),
+        )
     }
+}
+
+/// The flag (without `--`) of a field of the library's requests: `max-steps` for
+/// `max_steps`, `t-set` for the role `T_set`, `set` for a parameter given by name, `init` for
+/// a component of the start.
+#[must_use]
+pub fn flag_of(field: &Field) -> String {
+    match field {
+        Field::Method => "method".into(),
+        Field::Friction => "friction".into(),
+        Field::Impact => "impact".into(),
+        Field::Rtol => "rtol".into(),
+        Field::Atol => "atol".into(),
+        Field::MaxSteps => "max-steps".into(),
+        Field::Duration => "duration".into(),
+        Field::UntilPeriodic => "until-periodic".into(),
+        Field::TrajectoryDt => "trajectory-dt".into(),
+        Field::MaxFrames => "max-frames".into(),
+        Field::From => "from".into(),
+        Field::To => "to".into(),
+        Field::Step => "step".into(),
+        Field::Param => "param".into(),
+        Field::Role(Role::Mu0) => "mu0".into(),
+        Field::Role(Role::C) => "c".into(),
+        Field::Role(Role::TSet) => "t-set".into(),
+        Field::Role(Role::Slope) => "phi".into(),
+        Field::StartParameter(name) if name == "omega0" => "omega0".into(),
+        Field::Parameter(_) | Field::StartParameter(_) => "set".into(),
+        Field::Init(_) => "init".into(),
+    }
+}
+
+/// A field as a message mentions it, the way a user typed it: `--t-set`, `--set T_set=..`,
+/// `--init th1d=..`.
+#[must_use]
+pub fn mention(field: &Field) -> String {
+    match field {
+        Field::Parameter(name) => format!("--set {}=..", shown::name(name)),
+        Field::Init(name) => format!("--init {}=..", shown::name(name)),
+        other => format!("--{}", flag_of(other)),
+    }
+}
+
+impl From<RequestError> for InputError {
+    /// Named by the flag of the field, the other fields it mentions by theirs.
+    fn from(e: RequestError) -> Self {
+        InputError::new(&flag_of(e.field()), e.detail(&mention))
+    }
+}
+
+/// A whole number given as the flag `field` (text: `1e30`, `-1` and `1.5` are refused with
+/// the range, not left to the parser) in `[low, high]`.
+///
+/// # Errors
+/// Not a whole number, or outside the range.
+pub fn whole(field: &str, text: &str, low: usize, high: usize) -> Result<usize, InputError> {
+    walker::request::count_text(Field::MaxSteps, text, low, high)
+        .map_err(|e| InputError::new(field, e.detail(&mention)))
 }
 
 /// The flag (without `--`) that sets the parameter called `name`, or the name itself where no
@@ -48,7 +114,17 @@ impl From<ParamError> for InputError {
             ParamError::OutOfRange { name, value, range } => {
                 InputError::out_of_range(flag(name), *value, &format!("in {range}"))
             }
-            ParamError::Unknown { name, .. } => InputError::new(flag(name), e.to_string()),
+            // Only a name given as it is can be unknown (a role the model lacks is a
+            // `SetupError::NoRole`): a sweep's chains by `--t-set` (`T_set`) or `--phi`, any
+            // other by `--set NAME=..`.
+            ParamError::Unknown { name, .. } => {
+                let field = match name.as_str() {
+                    "T_set" => "t-set",
+                    "phi" => "phi",
+                    _ => "set",
+                };
+                InputError::new(field, e.to_string())
+            }
         }
     }
 }
@@ -59,6 +135,7 @@ impl From<SetupError> for InputError {
     fn from(e: SetupError) -> Self {
         match e {
             SetupError::Param(p) => p.into(),
+            SetupError::Request(r) => r.into(),
             SetupError::Model(_) | SetupError::Spec(_) | SetupError::NotCompiled { .. } => {
                 InputError::new("model", e.to_string())
             }
@@ -86,18 +163,22 @@ pub fn assignments(field: &str, pairs: &[String]) -> Result<Vec<(String, f64)>, 
     pairs
         .iter()
         .map(|s| {
-            let (name, value) = s
-                .split_once('=')
-                .ok_or_else(|| InputError::new(field, format!("{s:?}: expected NAME=VALUE")))?;
+            let malformed =
+                || InputError::new(field, format!("{}: expected NAME=VALUE", shown::text(s)));
+            let (name, value) = s.split_once('=').ok_or_else(malformed)?;
             let name = name.trim();
             if name.is_empty() {
-                return Err(InputError::new(
-                    field,
-                    format!("{s:?}: expected NAME=VALUE"),
-                ));
+                return Err(malformed());
             }
             let v: f64 = value.trim().parse().map_err(|_| {
-                InputError::new(field, format!("{s:?}: the value of {name} is not a number"))
+                InputError::new(
+                    field,
+                    format!(
+                        "{}: the value of {} is not a number",
+                        shown::text(s),
+                        shown::name(name)
+                    ),
+                )
             })?;
             Ok((name.to_owned(), v))
         })

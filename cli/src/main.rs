@@ -10,9 +10,8 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use clap::Parser;
-use walker::sim::WalkLimits;
 use walker_cli::args::{Cli, Command, WalkFlags};
-use walker_cli::input::{InputError, duration as positive_duration, tolerance};
+use walker_cli::input::{self, InputError};
 use walker_cli::{animate, continue_cmd, gallery, report, reproduce, run};
 
 /// Why a command did not finish, and its exit code.
@@ -79,17 +78,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
             duration,
             max_steps,
         } => {
+            let limits = run::limits(&max_steps, duration, None)?;
             let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
+            run::omega0_once(&setup, &common, omega0)?;
             run::set_omega0(&mut setup, omega0, |_| true, "finite")?;
-            let duration = duration
-                .map(|d| positive_duration("duration", d))
-                .transpose()?;
-            let limits = WalkLimits {
-                max_steps,
-                duration: duration.unwrap_or(f64::INFINITY),
-                record: false,
-                periodic: None,
-            };
             let model = run::model(&setup)?;
             let start = run::start(&model, &init)?;
             let w = run::simulate(&model, &start, &limits, &common.config()?)?;
@@ -122,16 +114,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 },
                 str::to_owned,
             );
-            let duration = positive_duration("duration", duration)?;
-            let periodic = until_periodic
-                .map(|x| tolerance("until-periodic", x))
-                .transpose()?;
-            let limits = WalkLimits {
-                max_steps,
-                duration,
-                record: false,
-                periodic,
-            };
+            let limits = run::limits(&max_steps, Some(duration), until_periodic)?;
             let chains = match (t_set.is_empty(), phi.is_empty()) {
                 (false, false) => {
                     return Err(InputError::new(
@@ -151,6 +134,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 step,
                 chains,
                 restart,
+                set: input::assignments("set", &common.set)?
+                    .into_iter()
+                    .map(|(name, _)| name)
+                    .collect(),
             };
             let res = run::sweep(&setup, &[], &req, &limits, &common.config()?)?;
             if common.json {
@@ -168,6 +155,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             init,
         } => {
             let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
+            run::omega0_once(&setup, &common, omega0)?;
             run::set_omega0(&mut setup, omega0, |w| w > 0.0, "finite and > 0")?;
             let model = run::model(&setup)?;
             let start = run::start(&model, &init)?;
@@ -196,8 +184,13 @@ fn run(cli: Cli) -> Result<(), CliError> {
             output,
             strobe,
         } => {
+            let steps = steps
+                .as_deref()
+                .map(|t| input::whole("steps", t, 1, animate::request::MAX_STEPS))
+                .transpose()?;
             let req = animate::Request::new(steps, duration, speed, fps, &output, strobe)?;
             let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
+            run::omega0_once(&setup, &common, omega0)?;
             run::set_omega0(&mut setup, omega0, |_| true, "finite")?;
             let model = run::model(&setup)?;
             let start = run::start(&model, &init)?;

@@ -1,12 +1,13 @@
-//! The commands' work between parsing and printing: validate what the library does not (the
-//! flags' own ranges), build the setup and the model, and call the library.
+//! The commands' work between parsing and printing: check the request with the library's
+//! checks ([`walker::request`]: ranges, limits, each parameter once), build the setup and the
+//! model, and call the library.
 
-use walker::model::InitError;
 use walker::model::Model;
 use walker::poincare::{FixedPoint, FixedPointError, FixedPointOptions, fixed_point};
+use walker::request::{Field, Role, SweepRange};
 use walker::setup::{Overrides, Setup, SetupError};
 use walker::sim::{SimConfig, Walk, WalkLimits, walk};
-use walker::sweep::{mu0_grid, sweep_chains};
+use walker::sweep::sweep_chains;
 use walker::vector::Vector;
 
 use crate::args::Common;
@@ -15,16 +16,20 @@ use crate::progress::Progress;
 use crate::report::Chain;
 
 /// The most steps a walk of `walker simulate` or a point of `walker sweep` may take
-/// (`--max-steps`): every step of a walk is kept (and printed by `simulate`), so this bounds
-/// the memory of a request (a step is about 200 bytes).
-pub const MAX_STEPS: usize = 1_000_000;
+/// (`--max-steps`), the library's bound: every step of a walk is kept (and printed by
+/// `simulate`), so this bounds the memory of a request (a step is about 200 bytes).
+pub use walker::request::MAX_STEPS;
 
-/// The most chains (`--t-set` or `--phi` values) a sweep may have: without `--restart` each
-/// chain runs on its own thread.
-pub const MAX_SWEEP_CHAINS: usize = 64;
+/// The most chains (`--t-set` or `--phi` values) a sweep may have, the library's bound:
+/// without `--restart` each chain runs on its own thread.
+pub use walker::request::MAX_SWEEP_CHAINS;
 
-/// The most points a sweep may have in all (chains times swept values).
-pub const MAX_SWEEP_POINTS: usize = 100_000;
+/// The most points a sweep may have in all (chains times swept values), the library's bound.
+pub use walker::request::MAX_SWEEP_POINTS;
+
+/// The longest walk of `walker simulate` or a point of `walker sweep` (`--duration`, s), the
+/// library's bound.
+pub use walker::request::MAX_DURATION;
 
 /// The setup of `--scene` or `--model` with the overrides `ov`. A model file that is not one
 /// of the shipped models is derived here.
@@ -41,18 +46,55 @@ pub fn setup(common: &Common, ov: &Overrides) -> Result<Setup, InputError> {
     Ok(Setup::resolve(scene, ov, Some(&runtime))?)
 }
 
-/// `--max-steps` if it is at most [`MAX_STEPS`].
+/// `--max-steps` as typed, if it is a whole number in `[0, MAX_STEPS]`.
 ///
 /// # Errors
-/// More than [`MAX_STEPS`].
-pub fn max_steps(n: usize) -> Result<usize, InputError> {
-    if n > MAX_STEPS {
-        return Err(InputError::new(
-            "max-steps",
-            format!("{n}: must be in [0, {MAX_STEPS}]"),
-        ));
+/// Not a whole number (`1e30`, `-1`, `1.5`), or more than [`MAX_STEPS`].
+pub fn max_steps(text: &str) -> Result<usize, InputError> {
+    Ok(walker::request::count_text(
+        Field::MaxSteps,
+        text,
+        0,
+        MAX_STEPS,
+    )?)
+}
+
+/// The limits of a walk of `walker simulate` or of a point of `walker sweep`: `--max-steps`
+/// as typed, `--duration` in (0, [`MAX_DURATION`]] (`None`: the steps bound the walk) and
+/// `--until-periodic` in (0, 1).
+///
+/// # Errors
+/// One of them outside its range (the error names the flag).
+pub fn limits(
+    max_steps_text: &str,
+    duration: Option<f64>,
+    until_periodic: Option<f64>,
+) -> Result<WalkLimits, InputError> {
+    let n = max_steps(max_steps_text)?;
+    Ok(walker::request::walk_limits(
+        duration,
+        n as i128,
+        until_periodic,
+    )?)
+}
+
+/// Checks that `--omega0` and a `--set` of the same start parameter are not both given.
+///
+/// # Errors
+/// Both are given (the error names both).
+pub fn omega0_once(setup: &Setup, common: &Common, omega0: Option<f64>) -> Result<(), InputError> {
+    if omega0.is_none() {
+        return Ok(());
     }
-    Ok(n)
+    let mut fields: Vec<Field> = assignments("set", &common.set)?
+        .into_iter()
+        .map(|(name, _)| Field::Parameter(name))
+        .collect();
+    fields.push(Field::StartParameter("omega0".to_owned()));
+    Ok(walker::request::distinct_fields(
+        setup.walker.spec(),
+        &fields,
+    )?)
 }
 
 /// Sets the paper's initial angular velocity `omega0` (a parameter of the start) where the
@@ -90,30 +132,29 @@ pub fn model(setup: &Setup) -> Result<Model, InputError> {
 /// (a coordinate or a velocity by name).
 ///
 /// # Errors
-/// A malformed pair, an unknown component, or a value that is not finite.
+/// A malformed pair, an unknown component, a component given twice, or a value that is not
+/// finite ([`walker::request::start_components`]).
 pub fn start(model: &Model, init: &[String]) -> Result<Vector, InputError> {
     let pairs = assignments("init", init)?;
-    let components = model.spec().start_components(&pairs).map_err(|e| match e {
-        InitError::NotFinite { value, .. } => InputError::out_of_range("init", value, "finite"),
-        e => InputError::new("init", e.to_string()),
-    })?;
+    let components = walker::request::start_components(model.spec(), &pairs)?;
     Ok(model.start_state_replacing(&components))
 }
 
 /// Run `walker simulate` from `start`.
 ///
 /// # Errors
-/// `duration` is not positive, or `max_steps` is above [`MAX_STEPS`].
+/// `duration` is not positive or above [`MAX_DURATION`] (an infinite duration is no limit),
+/// or `max_steps` is above [`MAX_STEPS`].
 pub fn simulate(
     model: &Model,
     start: &Vector,
     limits: &WalkLimits,
     cfg: &SimConfig,
 ) -> Result<Walk, InputError> {
-    if limits.duration.is_nan() || limits.duration <= 0.0 {
-        return Err(InputError::out_of_range("duration", limits.duration, "> 0"));
+    if limits.duration != f64::INFINITY {
+        walker::request::duration(limits.duration)?;
     }
-    max_steps(limits.max_steps)?;
+    walker::request::max_steps(limits.max_steps as i128)?;
     Ok(walk(model, cfg, start, limits))
 }
 
@@ -132,15 +173,18 @@ pub struct SweepRequest<'a> {
     pub chains: Option<(&'a str, &'a [f64])>,
     /// Start every value from the initial condition.
     pub restart: bool,
+    /// The parameters given by `--set` (the swept one may not be among them).
+    pub set: Vec<String>,
 }
 
 /// Run `walker sweep` of `req.param` for each chain value; a point that does not continue
 /// starts from its own model's `[start]` with the components `init` (index, value) replaced.
 ///
 /// # Errors
-/// A range flag is out of range, a chain value is invalid, more than [`MAX_SWEEP_CHAINS`]
-/// chains, more than [`MAX_SWEEP_POINTS`] points in all, `max_steps` above [`MAX_STEPS`], or a
-/// point's model cannot be built.
+/// An unknown swept parameter, or one also given as the chains or by `--set`; a range flag is
+/// out of range, a chain value is invalid, more than [`MAX_SWEEP_CHAINS`] chains, more than
+/// [`MAX_SWEEP_POINTS`] points in all ([`SweepRange::grid`]), `max_steps` above
+/// [`MAX_STEPS`], or a point's model cannot be built.
 pub fn sweep(
     setup: &Setup,
     init: &[(usize, f64)],
@@ -148,43 +192,55 @@ pub fn sweep(
     limits: &WalkLimits,
     cfg: &SimConfig,
 ) -> Result<Vec<Chain>, InputError> {
-    let (from, to, step) = (req.from, req.to, req.step);
-    check("from", from, true, "finite")?;
-    check("to", to, to >= from, "finite and >= from")?;
-    check("step", step, step > 0.0, "finite and > 0")?;
-    max_steps(limits.max_steps)?;
-    let (chain_param, chain_values): (Option<String>, Vec<f64>) = match req.chains {
-        Some((name, values)) if !values.is_empty() => (Some(name.to_owned()), values.to_vec()),
-        _ => match setup.default_chain() {
-            Some((name, v)) => (Some(name), vec![v]),
-            None => (None, vec![f64::NAN]),
+    let from = req.from;
+    walker::request::max_steps(limits.max_steps as i128)?;
+    let spec = setup.walker.spec();
+    let swept = setup
+        .params
+        .index(req.param)
+        .map_err(|e| InputError::new("param", e.to_string()))?;
+    let explicit = req.chains.filter(|(_, values)| !values.is_empty());
+    // The chain's field: `--t-set` for `T_set`, `--phi` for the slope.
+    let chain_field = |name: &str| {
+        if name == "T_set" {
+            Field::Role(Role::TSet)
+        } else {
+            Field::Role(Role::Slope)
+        }
+    };
+    // Each parameter once: the swept one is not also set or chained (one of the two values
+    // would be dropped silently).
+    let mut given: Vec<(Field, usize)> = req
+        .set
+        .iter()
+        .filter_map(|n| spec.parameter(n).map(|i| (Field::Parameter(n.clone()), i)))
+        .collect();
+    if let Some((name, _)) = explicit {
+        if let Some(i) = spec.parameter(name) {
+            given.push((chain_field(name), i));
+        }
+    }
+    given.push((Field::Param, swept));
+    walker::request::distinct(spec, &given)?;
+    let (chain_param, chain_values): (Option<String>, Vec<f64>) = match explicit {
+        Some((name, values)) => (Some(name.to_owned()), values.to_vec()),
+        // Without chains asked for, the default chain is the scene's own value; when the
+        // swept parameter is that one, there is no chain.
+        None => match setup.default_chain() {
+            Some((name, v)) if spec.parameter(&name) != Some(swept) => (Some(name), vec![v]),
+            _ => (None, vec![f64::NAN]),
         },
     };
-    if chain_values.len() > MAX_SWEEP_CHAINS {
-        return Err(InputError::new(
-            crate::input::flag(chain_param.as_deref().unwrap_or("chain")),
-            format!(
-                "given {} times; at most {MAX_SWEEP_CHAINS} chains",
-                chain_values.len()
-            ),
-        ));
-    }
-    // Count the points before making them: the grid is allocated by the request (the inputs
-    // are finite and the step positive, so the count is a number, possibly infinite). The
-    // count is `mu0_grid`'s.
-    let per_chain = ((to - from) / step + 1e-9).floor() + 1.0;
-    let total = per_chain * chain_values.len() as f64;
-    if total > MAX_SWEEP_POINTS as f64 {
-        return Err(InputError::new(
-            "step",
-            format!(
-                "{step:e} gives {per_chain:.3e} values from --from to --to, {total:.3e} points \
-                 for {} chain(s); at most {MAX_SWEEP_POINTS} points in all",
-                chain_values.len()
-            ),
-        ));
-    }
-    let grid = mu0_grid(from, to, step);
+    let range = SweepRange {
+        from,
+        to: req.to,
+        step: req.step,
+    };
+    // Counted before it is made: the library refuses a grid beyond its bound.
+    let grid = range.grid(
+        chain_values.len(),
+        chain_field(chain_param.as_deref().unwrap_or("T_set")),
+    )?;
     // Every point's model, built before any walk: a value out of its range or kernels that
     // cannot be prepared are input errors, named by the flag.
     let mut models = Vec::with_capacity(chain_values.len());

@@ -267,7 +267,8 @@ fn random_simulate_flags_give_exit_2_naming_the_flag_or_a_json_status() {
 }
 
 /// Found by the fuzz test: `--max-steps -5` was taken for an unknown flag `-5` ("unexpected
-/// argument '-5' found"), a message that does not name `--max-steps`.
+/// argument '-5' found"), a message that does not name `--max-steps`; a negative count (also
+/// `-0`) is refused with the flag's range.
 #[test]
 fn a_negative_max_steps_names_the_flag() {
     for form in [
@@ -281,6 +282,8 @@ fn a_negative_max_steps_names_the_flag() {
         args.extend(form.iter().map(|s| (*s).to_owned()));
         let (code, _, stderr) = run(&args);
         assert_eq!(code, Some(2), "{form:?}: {stderr}");
-        assert!(stderr.contains("--max-steps"), "{form:?}: {stderr}");
+        // Named as every refused flag is (`invalid max-steps:`), with its range.
+        assert!(stderr.contains("invalid max-steps:"), "{form:?}: {stderr}");
+        assert!(stderr.contains("[0, 1000000]"), "{form:?}: {stderr}");
     }
 }

@@ -10,6 +10,9 @@
 //! computer algebra; a model file that is not compiled in is derived at run time by the
 //! `walker-load` crate, which implements [`model::KernelSource`].
 //!
+//! What a request may ask (ranges, limits, each parameter once) is checked by [`request`],
+//! for every front end.
+//!
 //! Imports run one way, from the analyses down to the integrators:
 //! [`continuation`] -> [`poincare`]; [`sweep`], [`poincare`] -> [`sim`] -> [`setup`] ->
 //! [`model`] ([`jacobian`], [`compiled`]) -> [`ode`], [`vector`].
@@ -20,6 +23,7 @@ pub mod jacobian;
 pub mod model;
 pub mod ode;
 pub mod poincare;
+pub mod request;
 pub mod setup;
 pub mod sim;
 pub mod sweep;

@@ -26,6 +26,7 @@ use crate::compiled::MODELS;
 use crate::model::{
     Compiled, KernelSource, Model, NoKernels, ParamError, Parameters, Spec, SpecError, Walker,
 };
+use crate::request::{self, Field, Role};
 
 /// The built-in scenes: their names and their files (`models/scenes/`).
 const BUILT_IN: [(&str, &str); 2] = [
@@ -52,7 +53,7 @@ pub type RuntimeSource = dyn Fn(&ModelFile) -> Result<Arc<dyn KernelSource>, Str
 pub enum SetupError {
     /// A scene or model file cannot be read, is not a regular file (a device or a pipe could
     /// be read without end), or is longer than [`MAX_FILE_BYTES`].
-    #[error("{what} file {}: {message}", path.display())]
+    #[error("{what} file {}: {message}", request::shown::name(&path.display().to_string()))]
     File {
         /// `"scene"` or `"model"`.
         what: &'static str,
@@ -70,7 +71,7 @@ pub enum SetupError {
         name: String,
     },
     /// The scene is neither a built-in name nor a `.toml` file.
-    #[error("unknown scene {0:?}; use active-level, passive-slope or a FILE.toml")]
+    #[error("unknown scene {}; use active-level, passive-slope or a FILE.toml", request::shown::text(.0))]
     UnknownScene(String),
     /// A scene file in the paper's format could not be read or is invalid.
     #[error(transparent)]
@@ -110,6 +111,10 @@ pub enum SetupError {
     /// The model's kernels cannot be prepared.
     #[error(transparent)]
     NoKernels(#[from] NoKernels),
+    /// The request gives one parameter twice (by its role and by its name, or one name
+    /// twice).
+    #[error(transparent)]
+    Request(#[from] crate::request::RequestError),
     /// The model file is not compiled in and no run-time source was given or it failed.
     #[error("model `{model}`: {message}")]
     NotCompiled {
@@ -423,21 +428,30 @@ impl Setup {
                 })
         };
         let mut named = Vec::new();
+        let mut fields = Vec::new();
         if let Some(v) = ov.mu0 {
             named.push((role(spec.mu0, "mu0", "friction coefficient")?, v));
+            fields.push(Field::Role(Role::Mu0));
         }
         if let Some(v) = ov.c {
             named.push((role(spec.c, "c", "tanh friction law")?, v));
+            fields.push(Field::Role(Role::C));
         }
         if let Some(v) = ov.t_set {
             named.push((
                 role(spec.parameter("T_set"), "t-set", "parameter T_set")?,
                 v,
             ));
+            fields.push(Field::Role(Role::TSet));
         }
         if let Some(v) = ov.phi {
             named.push((role(spec.slope, "phi", "slope (its floor is level)")?, v));
+            fields.push(Field::Role(Role::Slope));
         }
+        fields.extend(ov.set.iter().map(|(n, _)| Field::Parameter(n.clone())));
+        // Each parameter once: a second value (by its role and by its name, or one name
+        // twice) would silently replace the first.
+        request::distinct_fields(&spec, &fields)?;
         named.extend(ov.set.iter().cloned());
         for (name, v) in named {
             self.set(&name, v)?;

@@ -94,10 +94,19 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut it = args.iter();
     while let Some(a) = it.next() {
-        match (a.as_str(), it.next().map(|v| v.parse::<usize>())) {
-            ("--long-steps", Some(Ok(n))) => long_steps = n,
+        match (a.as_str(), it.next()) {
+            ("--long-steps", Some(v)) => {
+                // At most the library's bound on a walk's steps (every step is kept).
+                match walker_cli::input::whole("long-steps", v, 1, walker::request::MAX_STEPS) {
+                    Ok(n) => long_steps = n,
+                    Err(e) => {
+                        eprintln!("stress: {e}");
+                        return ExitCode::from(2);
+                    }
+                }
+            }
             _ => {
-                eprintln!("usage: stress [--long-steps N]");
+                eprintln!("usage: stress [--long-steps N], N a whole number in [1, 1000000]");
                 return ExitCode::from(2);
             }
         }

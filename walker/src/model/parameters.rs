@@ -9,7 +9,10 @@ use super::spec::Spec;
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ParamError {
     /// No parameter of the model has this name.
-    #[error("`{name}` is not a parameter of model `{model}`; its parameters: {known}")]
+    #[error(
+        "`{}` is not a parameter of model `{model}`; its parameters: {known}",
+        crate::request::shown::name(name)
+    )]
     Unknown {
         /// The name given.
         name: String,

@@ -36,7 +36,10 @@ pub enum SpecError {
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum InitError {
     /// The model has no coordinate or velocity of that name.
-    #[error("`{name}` is not a coordinate or velocity of model `{model}`; they are: {known}")]
+    #[error(
+        "`{}` is not a coordinate or velocity of model `{model}`; they are: {known}",
+        crate::request::shown::name(name)
+    )]
     Unknown {
         /// The name given.
         name: String,
