@@ -44,6 +44,7 @@ MAX_STEPS: int = _core.MAX_STEPS
 
 __all__ = [
     "FixedPoint",
+    "ArgumentTypeError",
     "ModelInfo",
     "Parameter",
     "Sweep",
@@ -72,13 +73,92 @@ def _failure(text: Optional[str]) -> Optional[Dict[str, Any]]:
     return None if text is None else json.loads(text)
 
 
+class ArgumentTypeError(TypeError, ValueError):
+    """An argument of the wrong type (a string, a complex number or a bool where a number
+    goes, a float where a count goes, ...): a :class:`TypeError`, and a :class:`ValueError` as
+    every other bad argument, so that ``except ValueError`` catches every bad argument."""
+
+
+ECHO = 80
+"""The most characters of a rejected value that an error message repeats."""
+
+MAX_NAME = 256
+"""The longest name (a law, a method, a parameter, a key of ``set``/``init``, a column)."""
+
+MAX_PATH = 4096
+"""The longest file path or scene name (the usual ``PATH_MAX``)."""
+
+
+def _short(v: Any) -> str:
+    """``repr(v)``, cut to :data:`ECHO` characters: a megabyte argument is not echoed whole."""
+    try:
+        r = repr(v)
+    except Exception:  # a hostile __repr__
+        r = f"<{type(v).__name__}>"
+    return r if len(r) <= ECHO else r[:ECHO - 3] + "..."
+
+
+def _type_error(arg: str, v: Any, must_be: str) -> ArgumentTypeError:
+    return ArgumentTypeError(
+        f"invalid {arg}: {_short(v)} ({type(v).__name__}): must be {must_be}")
+
+
+def _float(arg: str, v: Any) -> Optional[float]:
+    """``v`` as a float, or None for None: a real number (not a bool, a string or a complex
+    number: :class:`ArgumentTypeError`); one too large for a float64 (``10**400``) is a
+    :class:`ValueError` naming ``arg``, as any other value out of range."""
+    if v is None:
+        return None
+    if isinstance(v, (bool, np.bool_, str, bytes, complex, np.complexfloating)):
+        raise _type_error(arg, v, "a real number")
+    try:
+        return float(v)
+    except OverflowError:
+        raise ValueError(f"invalid {arg}: {_short(v)}: must be finite (it is too large "
+                         "for a float64)") from None
+    except Exception:  # TypeError, ValueError, or whatever a hostile __float__ raises
+        raise _type_error(arg, v, "a real number") from None
+
+
+def _int(arg: str, v: Any, lo: int, hi: int) -> int:
+    """``v`` as an int in ``[lo, hi]``: an integer (not a bool or a float)."""
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)):
+        raise _type_error(arg, v, "an integer")
+    if not lo <= v <= hi:
+        raise ValueError(f"invalid {arg}: {_short(v)}: must be in [{lo}, {hi}]")
+    return int(v)
+
+
+def _bool(arg: str, v: Any) -> bool:
+    """``v`` as a bool: True or False only (``"False"`` is a string, not a no)."""
+    if not isinstance(v, (bool, np.bool_)):
+        raise _type_error(arg, v, "True or False")
+    return bool(v)
+
+
+def _str(arg: str, v: Any, limit: int = MAX_NAME) -> Optional[str]:
+    """``v`` as a name of at most ``limit`` characters, or None for None."""
+    if v is None:
+        return None
+    if not isinstance(v, str):
+        raise _type_error(arg, v, "a string")
+    if len(v) > limit:
+        raise ValueError(f"invalid {arg}: {_short(v)}: {len(v)} characters; at most {limit}")
+    if any(ord(ch) < 0x20 or ord(ch) == 0x7F for ch in v):
+        raise ValueError(f"invalid {arg}: {_short(v)}: must not contain control characters")
+    return v
+
+
 def _path(arg: str, p: Optional[Path]) -> Optional[str]:
     if p is None:
         return None
     try:
-        return os.fspath(p)
+        path = os.fspath(p)
     except TypeError:
-        raise ValueError(f"invalid {arg}: {p!r}: must be a name or a file path") from None
+        raise _type_error(arg, p, "a name or a file path") from None
+    if isinstance(path, bytes):
+        raise _type_error(arg, p, "a name or a file path (str)")
+    return _str(arg, path, MAX_PATH)
 
 
 def _pairs(arg: str, values: Values) -> List[Tuple[str, float]]:
@@ -86,16 +166,13 @@ def _pairs(arg: str, values: Values) -> List[Tuple[str, float]]:
     if values is None:
         return []
     if not isinstance(values, Mapping):
-        raise ValueError(f"invalid {arg}: must be a dict of names to numbers")
+        raise _type_error(arg, values, "a dict of names to numbers")
     out = []
     for k, v in values.items():
         if not isinstance(k, str):
-            raise ValueError(f"invalid {arg}: {k!r}: the keys must be names (str)")
-        try:
-            x = float(v)
-        except (TypeError, ValueError):
-            raise ValueError(f"invalid {arg}['{k}']: {v!r}: must be a number") from None
-        out.append((k, x))
+            raise _type_error(arg, k, "a dict whose keys are names (str)")
+        _str(arg, k)
+        out.append((k, _float(f"{arg}['{k}']", v)))
     return out
 
 
@@ -103,6 +180,14 @@ def _walker(scene: Optional[Path], model: Optional[Path], set: Values) -> Dict[s
     """The walker's keyword arguments of the core functions."""
     return dict(scene=_path("scene", scene), model=_path("model", model),
                 set=_pairs("set", set))
+
+
+def _options(method: Any, rtol: Any, atol: Any, friction: Any, impact: Any) -> Dict[str, Any]:
+    """The integrator's and the laws' keyword arguments of the core functions, checked for
+    their types."""
+    return dict(method=_str("method", method), rtol=_float("rtol", rtol),
+                atol=_float("atol", atol), friction=_str("friction", friction),
+                impact=_str("impact", impact))
 
 
 @dataclass(frozen=True)
@@ -250,11 +335,18 @@ def simulate(
         ValueError: an argument out of its range (the message names it and the range; a key
             of ``set`` or ``init`` as ``set['name']``).
     """
+    trajectory = _bool("trajectory", trajectory)
+    dt = _float("dt", dt)
+    if trajectory and not (dt is not None and dt > 0 and np.isfinite(dt)):
+        raise ValueError(f"invalid dt: {_short(dt)}: must be finite and > 0")
     d = _core.simulate(
-        **_walker(scene, model, set), init=_pairs("init", init), mu0=mu0, t_set=t_set, omega0=omega0, phi=phi,
-        c=c, friction=friction, impact=impact, method=method, rtol=rtol, atol=atol,
-        duration=duration, max_steps=max_steps,
-        trajectory_dt=dt if trajectory else None, max_frames=max_frames,
+        **_walker(scene, model, set), init=_pairs("init", init), mu0=_float("mu0", mu0),
+        t_set=_float("t_set", t_set), omega0=_float("omega0", omega0), phi=_float("phi", phi),
+        c=_float("c", c), **_options(method, rtol, atol, friction, impact),
+        duration=_float("duration", duration),
+        max_steps=_int("max_steps", max_steps, 0, MAX_STEPS),
+        trajectory_dt=dt if trajectory else None,
+        max_frames=_int("max_frames", max_frames, 1, 1_000_000),
     )
     return _walk(d)
 
@@ -389,21 +481,39 @@ def sweep(
         _alias("to", to, "mu0_to", mu0_to),
         _alias("step", step, "mu0_step", mu0_step),
     )
+    names = tuple((n, _float(n, v)) for n, v in names)
+    duration = _float("duration", duration)
+    if duration is None:
+        raise _type_error("duration", duration, "a real number")
     d = _core.sweep(
-        **_walker(scene, model, set), init=_pairs("init", init), param=param,
+        **_walker(scene, model, set), init=_pairs("init", init), param=_str("param", param),
         from_=names[0][1], to=names[1][1], step=names[2][1],
         range_names=tuple(n for n, _ in names),
-        t_set=_list(t_set), phi=_list(phi), restart=restart, omega0=omega0, c=c,
-        friction=friction, impact=impact, method=method, rtol=rtol, atol=atol,
-        duration=duration, max_steps=max_steps, until_periodic=until_periodic,
+        t_set=_list("t_set", t_set), phi=_list("phi", phi), restart=_bool("restart", restart),
+        omega0=_float("omega0", omega0), c=_float("c", c),
+        **_options(method, rtol, atol, friction, impact),
+        duration=duration, max_steps=_int("max_steps", max_steps, 0, MAX_STEPS),
+        until_periodic=_float("until_periodic", until_periodic),
     )
     return _rows(d, {"chain": _arr(d["chain"]), d["param"]: _arr(d["value"])})
 
 
-def _list(x: Union[float, Sequence[float], None]) -> list:
+MAX_CHAINS = 64
+"""The most chains of a sweep (``t_set`` or ``phi`` values)."""
+
+
+def _list(arg: str, x: Union[float, Sequence[float], None]) -> list:
+    """A number or a sequence of numbers as a list of floats (at most :data:`MAX_CHAINS`)."""
     if x is None:
         return []
-    return [float(v) for v in np.atleast_1d(np.asarray(x, dtype=np.float64))]
+    if isinstance(x, (str, bytes, Mapping)):
+        raise _type_error(arg, x, "a number or a sequence of numbers")
+    items = list(x) if isinstance(x, (Sequence, np.ndarray)) else [x]
+    if len(items) > MAX_CHAINS:
+        raise ValueError(f"invalid {arg}: {len(items)} values: at most {MAX_CHAINS} chains")
+    if any(v is None for v in items):
+        raise _type_error(arg, x, "a number or a sequence of numbers (not None)")
+    return [_float(arg, v) for v in items]
 
 
 GRID_COLUMNS = ("mu0", "c", "t_set", "phi", "omega0")
@@ -448,30 +558,59 @@ def walk_points(
         KeyboardInterrupt: Ctrl-C (seen every 16 points).
     """
     cols = _grid_columns(grid)
-    d = _core.walk_points(
-        **_walker(scene, model, set), init=_pairs("init", init), grid=list(cols.items()), friction=friction,
-        impact=impact, method=method, rtol=rtol, atol=atol, duration=duration,
-        max_steps=max_steps, until_periodic=until_periodic,
-    )
-    return _rows(d, {k: np.asarray(v, dtype=np.float64) for k, v in cols.items()})
+    d = _core.walk_points(**_grid_options(cols, scene=scene, model=model, set=set, init=init,
+                                          friction=friction, impact=impact, method=method,
+                                          rtol=rtol, atol=atol, duration=duration,
+                                          max_steps=max_steps, until_periodic=until_periodic))
+    return _rows(d, dict(cols))
 
 
-def _grid_columns(grid: Any) -> Dict[str, list]:
+def _grid_options(cols: Mapping[str, np.ndarray], *, scene: Any, model: Any, set: Any,
+                  init: Any, friction: Any, impact: Any, method: Any, rtol: Any, atol: Any,
+                  duration: Any, max_steps: Any, until_periodic: Any,
+                  check_only: bool = False) -> Dict[str, Any]:
+    """The core's arguments of a grid: its columns as bytes of float64 (8 bytes a value, not
+    a Python float each), the others checked for their types."""
+    return dict(
+        **_walker(scene, model, set), init=_pairs("init", init),
+        grid=[(k, np.ascontiguousarray(v, dtype=np.float64).tobytes()) for k, v in cols.items()],
+        **_options(method, rtol, atol, friction, impact), duration=_float("duration", duration),
+        max_steps=_int("max_steps", max_steps, 0, MAX_STEPS),
+        until_periodic=_float("until_periodic", until_periodic), check_only=check_only)
+
+
+def _grid_columns(grid: Any) -> Dict[str, np.ndarray]:
+    """The grid's columns as one-dimensional float64 arrays (the caller's own where they are
+    such already: a large grid is not copied into Python floats)."""
     if hasattr(grid, "to_dict") and hasattr(grid, "columns"):
+        if len(set(map(str, grid.columns))) != len(grid.columns):
+            raise ValueError("invalid grid: two columns have the same name")
         items = [(str(k), grid[k].to_numpy()) for k in grid.columns]
     elif isinstance(grid, Mapping):
-        items = [(str(k), v) for k, v in grid.items()]
+        items = [(k, v) for k, v in grid.items()]
     else:
-        raise ValueError("invalid grid: must be a dict of arrays or a pandas DataFrame")
-    out: Dict[str, list] = {}
+        raise _type_error("grid", grid, "a dict of arrays or a pandas DataFrame")
+    out: Dict[str, np.ndarray] = {}
     for k, v in items:
+        if not isinstance(k, str):
+            raise _type_error("grid", k, "a dict whose keys are column names (str)")
+        k = _str("grid", k)
+        if isinstance(v, (str, bytes)):
+            raise _type_error(k, v, "a column of numbers")
         try:
-            a = np.asarray(v, dtype=np.float64)
-        except (TypeError, ValueError):
-            raise ValueError(f"invalid {k}: the grid column must hold numbers") from None
+            a = np.asarray(v)
+            if a.dtype.kind in "cbUSOVMm" and a.dtype != object:
+                raise _type_error(k, v, "a column of real numbers")
+            if a.dtype == object:
+                a = np.array([_float(k, x) for x in a.ravel()], dtype=np.float64).reshape(a.shape)
+            a = a.astype(np.float64, copy=False)
+        except Exception as e:  # including what a hostile element's __float__ raises
+            if isinstance(e, ValueError) and str(e).startswith("invalid "):
+                raise
+            raise _type_error(k, v, "a column of real numbers") from None
         if a.ndim != 1:
             raise ValueError(f"invalid {k}: the grid column must be one-dimensional")
-        out[k] = a.tolist()
+        out[k] = a
     return out
 
 
@@ -530,8 +669,9 @@ def fixed_point(
         ValueError: an argument out of its range (the message names it and the range).
     """
     text, names = _core.fixed_point(
-        **_walker(scene, model, set), init=_pairs("init", init), mu0=mu0, t_set=t_set, omega0=omega0, phi=phi,
-        c=c, friction=friction, impact=impact, method=method, rtol=rtol, atol=atol,
+        **_walker(scene, model, set), init=_pairs("init", init), mu0=_float("mu0", mu0),
+        t_set=_float("t_set", t_set), omega0=_float("omega0", omega0), phi=_float("phi", phi),
+        c=_float("c", c), **_options(method, rtol, atol, friction, impact),
     )
     j = json.loads(text)
     names = tuple(names)
@@ -600,7 +740,8 @@ def describe(
     Raises:
         ValueError: a bad argument (the message names it).
     """
-    d = _core.describe(**_walker(scene, model, set), friction=friction, impact=impact)
+    d = _core.describe(**_walker(scene, model, set), friction=_str("friction", friction),
+                       impact=_str("impact", impact))
     return ModelInfo(
         model=d["model"],
         scene=d["scene"],

@@ -63,7 +63,7 @@ def walk_points(
     model: Optional[str],
     set: List[Tuple[str, float]],
     init: List[Tuple[str, float]],
-    grid: List[Tuple[str, List[float]]],
+    grid: List[Tuple[str, bytes]],
     friction: Optional[str],
     impact: Optional[str],
     method: str,
@@ -72,6 +72,7 @@ def walk_points(
     duration: Optional[float],
     max_steps: int,
     until_periodic: Optional[float],
+    check_only: bool = ...,
 ) -> Dict[str, Any]: ...
 def fixed_point(
     *,

@@ -10,7 +10,7 @@ Works with any ``dask.distributed`` client: a ``LocalCluster``, a ``dask_jobqueu
 from __future__ import annotations
 
 import os
-from typing import Any, Dict, List, Mapping, Optional
+from typing import Any, Dict, Mapping, Optional
 
 import numpy as np
 
@@ -19,7 +19,7 @@ import slippery_walker as _sw
 __all__ = ["grid_sweep"]
 
 
-def _walk_chunk(cols: Dict[str, list], options: Dict[str, Any]) -> Any:
+def _walk_chunk(cols: Dict[str, Any], options: Dict[str, Any]) -> Any:
     """Walk one chunk of the grid on a worker and return its rows as a DataFrame."""
     return _sw.walk_points(cols, **options).to_pandas()
 
@@ -81,19 +81,22 @@ def grid_sweep(
                   friction=friction, impact=impact, method=method, rtol=rtol,
                   atol=atol, duration=duration, max_steps=max_steps,
                   until_periodic=until_periodic)
-    # Check every point without walking (no steps): a bad value is a ValueError here.
-    _sw.walk_points(cols, **{**kwargs, "max_steps": 0})
+    # Check every argument (max_steps included) and every point here, before any work is sent,
+    # without walking and without keeping a model per point: a bad value is a ValueError here.
+    _sw._core.walk_points(**_sw._grid_options(cols, **kwargs, check_only=True))
     n = len(next(iter(cols.values()), []))
     if chunk_size is None:
         threads = max(1, sum(client.nthreads().values()))
         chunk_size = max(16, -(-n // (4 * threads)))
-    if not (isinstance(chunk_size, (int, np.integer)) and chunk_size >= 1):
-        raise ValueError(f"invalid chunk_size: {chunk_size}: must be an integer >= 1")
-    chunks: List[Dict[str, list]] = [
-        {k: v[i:i + chunk_size] for k, v in cols.items()} for i in range(0, n, chunk_size)
-    ]
-    if not chunks:
+    if isinstance(chunk_size, (bool, np.bool_)) or not (
+            isinstance(chunk_size, (int, np.integer)) and chunk_size >= 1):
+        raise ValueError(f"invalid chunk_size: {_sw._short(chunk_size)}: must be an integer >= 1")
+    if n == 0:
         return _walk_chunk(cols, kwargs)
-    futures = client.map(_walk_chunk, chunks, options=kwargs, pure=False)
+    # The chunks are views of the columns (no copy on the client), made one at a time as the
+    # tasks are submitted.
+    futures = [client.submit(_walk_chunk, {k: v[i:i + chunk_size] for k, v in cols.items()},
+                             kwargs, pure=False)
+               for i in range(0, n, int(chunk_size))]
     parts = client.gather(futures)
     return pd.concat(parts, ignore_index=True)

@@ -24,7 +24,7 @@ pub fn describe<'py>(
     impact: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let ov = overrides(None, None, None, None, friction, impact)?;
-    let setup = walker_args::setup(scene, model, &ov, &set)?;
+    let setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
     let model = walker_args::model(&setup)?;
     let spec = model.spec();
     let d = PyDict::new(py);

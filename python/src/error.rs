@@ -34,8 +34,16 @@ impl ArgError {
     }
 
     /// `value` of `arg` is outside its valid range, `must_be` in words.
+    /// A value whose decimal form is longer than [`ECHO`] (`-1e308`) is written with an
+    /// exponent.
     pub fn out_of_range(arg: &str, value: impl std::fmt::Display, must_be: &str) -> Self {
-        ArgError::new(arg, format!("{value}: must be {must_be}"))
+        let mut text = value.to_string();
+        if text.len() > ECHO {
+            text = text
+                .parse::<f64>()
+                .map_or_else(|_| echo(&text), |x| format!("{x:e}"));
+        }
+        ArgError::new(arg, format!("{text}: must be {must_be}"))
     }
 
     /// The same error named `arg` instead (a grid column, a key of `set`).
@@ -109,6 +117,24 @@ impl From<NoKernels> for ArgError {
     }
 }
 
+/// The most characters of a caller's name or value that a message repeats.
+pub const ECHO: usize = 80;
+
+/// A caller's name or text as a message repeats it: control characters escaped (`\u{1b}`),
+/// cut to [`ECHO`] characters with `...`.
+#[must_use]
+pub fn echo(text: &str) -> String {
+    let mut out: String = text
+        .chars()
+        .take(ECHO)
+        .flat_map(char::escape_debug)
+        .collect();
+    if text.chars().nth(ECHO).is_some() {
+        out.push_str("...");
+    }
+    out
+}
+
 /// `x` given as `arg` if it is finite and `ok`; else an error naming `arg` and what it must be.
 ///
 /// # Errors
@@ -133,6 +159,21 @@ mod tests {
             range: "(0, inf)".into(),
         });
         assert_eq!(e.to_string(), "invalid t_set: -1: must be in (0, inf)");
+    }
+
+    #[test]
+    fn a_huge_value_out_of_range_is_written_with_an_exponent() {
+        let e = ArgError::out_of_range("mu0", -1e308, "in [0, inf)");
+        assert_eq!(e.to_string(), "invalid mu0: -1e308: must be in [0, inf)");
+        let e = ArgError::out_of_range("mu0", -1.0, "in [0, inf)");
+        assert_eq!(e.to_string(), "invalid mu0: -1: must be in [0, inf)");
+    }
+
+    #[test]
+    fn an_echo_escapes_control_characters_and_is_cut() {
+        assert_eq!(echo("a\u{1b}b"), "a\\u{1b}b");
+        assert_eq!(echo(&"x".repeat(1000)), format!("{}...", "x".repeat(ECHO)));
+        assert_eq!(echo("T_set"), "T_set");
     }
 
     #[test]

@@ -35,7 +35,7 @@ pub fn fixed_point(
     atol: Option<f64>,
 ) -> PyResult<(String, Vec<String>)> {
     let ov = overrides(mu0, c, t_set, phi, friction, impact)?;
-    let mut setup = walker_args::setup(scene, model, &ov, &set)?;
+    let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
     walker_args::set_omega0(&mut setup, omega0, |w| w > 0.0, "finite and > 0")?;
     let cfg = options::config(method, rtol, atol)?;
     let model = walker_args::model(&setup)?;
@@ -43,8 +43,11 @@ pub fn fixed_point(
         start: walker_args::start(&model, &init)?,
         ..FixedPointOptions::for_model(&model)
     };
-    // The report is made inside, so that the (large) error never leaves the closure.
-    let json = py.detach(|| {
+    let names = model.spec().state_names();
+    // The report is made inside, so that the (large) error never leaves the thread. The search
+    // cannot be asked to stop: on Ctrl-C it is left to end on its own (it is bounded by its
+    // iterations and its warm-up walk).
+    let json = crate::chunks::abandonable(py, move || {
         let failed = |reason: String| serde_json::json!({ "status": "failed", "reason": reason });
         match search(&model, &cfg, &opts) {
             Ok(fp) => {
@@ -52,6 +55,6 @@ pub fn fixed_point(
             }
             Err(e) => failed(e.to_string()).to_string(),
         }
-    });
-    Ok((json, model.spec().state_names()))
+    })?;
+    Ok((json, names))
 }

@@ -26,7 +26,10 @@ pub fn friction(name: Option<&str>) -> Result<Option<Friction>, ArgError> {
         Some("coulomb") => Ok(Some(Friction::Coulomb)),
         Some(other) => Err(ArgError::new(
             "friction",
-            format!("{other:?}: must be \"none\", \"tanh\" or \"coulomb\""),
+            format!(
+                "\"{}\": must be \"none\", \"tanh\" or \"coulomb\"",
+                crate::error::echo(other)
+            ),
         )),
     }
 }
@@ -42,7 +45,10 @@ pub fn impact(name: Option<&str>) -> Result<Option<ImpactLaw>, ArgError> {
         Some("coulomb") => Ok(Some(ImpactLaw::Coulomb)),
         Some(other) => Err(ArgError::new(
             "impact",
-            format!("{other:?}: must be \"frictionless\" or \"coulomb\""),
+            format!(
+                "\"{}\": must be \"frictionless\" or \"coulomb\"",
+                crate::error::echo(other)
+            ),
         )),
     }
 }
@@ -65,7 +71,10 @@ pub fn config(method: &str, rtol: Option<f64>, atol: Option<f64>) -> Result<SimC
         other => {
             return Err(ArgError::new(
                 "method",
-                format!("{other:?}: must be \"dop853\" or \"rodas4\""),
+                format!(
+                    "\"{}\": must be \"dop853\" or \"rodas4\"",
+                    crate::error::echo(other)
+                ),
             ));
         }
     };

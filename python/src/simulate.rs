@@ -4,8 +4,9 @@
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use walker::sim::{trajectory, walk};
+use walker::sim::{trajectory_stoppable, walk_stoppable};
 
+use crate::chunks::{asked, stoppable};
 use crate::error::check;
 use crate::options;
 use crate::table::steps_dict;
@@ -45,19 +46,32 @@ pub fn simulate<'py>(
     max_frames: i64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let ov = overrides(mu0, c, t_set, phi, friction, impact)?;
-    let mut setup = walker_args::setup(scene, model, &ov, &set)?;
+    let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
     walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
     let cfg = options::config(method, rtol, atol)?;
     let limits = options::limits(duration, max_steps, None)?;
     let model = walker_args::model(&setup)?;
     let start = walker_args::start(&model, &init)?;
     let Some(dt) = trajectory_dt else {
-        let w = py.detach(|| walk(&model, &cfg, &start, &limits));
+        let w = stoppable(py, |stop| {
+            walk_stoppable(&model, &cfg, &start, &limits, &|| asked(stop))
+        })?;
+        // Stopped only after a signal, whose error `stoppable` returns first.
+        let Ok(w) = w else {
+            return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(()));
+        };
         return steps_dict(py, &model, &w);
     };
     check("dt", dt, dt > 0.0, "finite and > 0")?;
     let max_frames = options::count("max_frames", max_frames, 1, MAX_FRAMES)?;
-    let tr = py.detach(|| trajectory(&model, &cfg, &start, &limits, dt, max_frames));
+    let tr = stoppable(py, |stop| {
+        trajectory_stoppable(&model, &cfg, &start, &limits, dt, max_frames, &|| {
+            asked(stop)
+        })
+    })?;
+    let Ok(tr) = tr else {
+        return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(()));
+    };
     let d = steps_dict(py, &model, &tr.walk)?;
     d.set_item(
         "times",

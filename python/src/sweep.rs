@@ -4,19 +4,20 @@
 //! value starts from the previous value's last post-impact state moved to the origin (from the
 //! start after a failure), as `walker::sweep::sweep_chains`; with `restart` every point starts
 //! from the start. Every point's model is built before any walk (a value out of its range is an
-//! input error). The work runs in chunks of values (chains in parallel), so that Ctrl-C is seen
-//! between chunks.
+//! input error). The chains walk in parallel with the GIL released; every walk asks before each
+//! of its steps whether Ctrl-C was pressed (`crate::chunks`), so that it is seen within a step.
+//! The swept parameter cannot also be a chain's.
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 use walker::model::Model;
 use walker::setup::Setup;
-use walker::sim::{SimConfig, WalkLimits};
+use walker::sim::{SimConfig, Stopped, WalkLimits};
 use walker::sweep::{Carry, mu0_grid};
 use walker::vector::Vector;
 
-use crate::chunks::in_chunks;
+use crate::chunks::{asked, stoppable};
 use crate::error::{ArgError, check};
 use crate::options;
 use crate::table::{Outcome, RESULT_COLUMNS, Rows, names_dict};
@@ -28,9 +29,6 @@ pub const MAX_SWEEP_CHAINS: usize = 64;
 /// The most points a sweep may have in all, as the command line's.
 pub const MAX_SWEEP_POINTS: usize = 100_000;
 
-/// Values walked per chain between two checks for Ctrl-C.
-const CHUNK: usize = 4;
-
 /// A chain of a sweep on its way along the grid.
 struct Chain {
     /// Where the next value starts.
@@ -41,6 +39,9 @@ struct Chain {
 /// Walks `chain` through the models of consecutive values, as `walker::sweep::sweep_chains`
 /// walks one chain ([`Carry`]: each value from the previous steady state moved to the origin,
 /// from `initial(model)` at the first value, after a failure, and always with `restart`).
+///
+/// # Errors
+/// `stop()` answered true (Ctrl-C): the chain stops where it is.
 fn advance(
     models: &[Model],
     cfg: &SimConfig,
@@ -48,11 +49,15 @@ fn advance(
     restart: bool,
     initial: &(dyn Fn(&Model) -> Vector + Sync),
     chain: &mut Chain,
-) {
+    stop: &dyn Fn() -> bool,
+) -> Result<(), Stopped> {
     for model in models {
-        let w = chain.carry.walk(model, cfg, limits, restart, initial);
+        let w = chain
+            .carry
+            .walk_stoppable(model, cfg, limits, restart, initial, stop)?;
         chain.points.push(Outcome::of(w));
     }
+    Ok(())
 }
 
 /// The names a caller gave the range's three values (`from_`, `to`, `step`, or the paper's
@@ -132,7 +137,7 @@ pub fn sweep<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let RangeNames(from_name, to_name, step_name) = &range_names;
     let ov = overrides(None, c, None, None, friction, impact)?;
-    let mut setup = walker_args::setup(scene, model, &ov, &set)?;
+    let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
     walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
     let cfg = options::config(method, rtol, atol)?;
     let limits = options::limits(Some(duration), max_steps, until_periodic)?;
@@ -162,13 +167,35 @@ pub fn sweep<'py>(
         )
         .into());
     }
-    let (chain_param, chain_arg, values) = chains(&setup, t_set, phi)?;
+    let (mut chain_param, chain_arg, mut values) = chains(&setup, t_set, phi)?;
+    if chain_param.as_deref() == Some(param.as_str()) {
+        // The swept parameter cannot also be held at the chains' values: each chain would
+        // walk the same values and report a chain value it did not walk.
+        if chain_arg != "chain" {
+            return Err(ArgError::new(
+                chain_arg,
+                format!(
+                    "{param} is the swept parameter (param); it cannot also be given as {chain_arg}"
+                ),
+            )
+            .into());
+        }
+        (chain_param, values) = (None, vec![f64::NAN]);
+    }
     if values.len() > MAX_SWEEP_CHAINS {
         return Err(ArgError::new(
             chain_arg,
             format!("{} values: at most {MAX_SWEEP_CHAINS} chains", values.len()),
         )
         .into());
+    }
+    // The ends in the parameter's range before the count, so that a value far out of it is
+    // named as itself, not as a step that would give too many points.
+    for (name, v) in [(from_name, from_), (to_name, to)] {
+        setup
+            .params
+            .with(&param, v)
+            .map_err(|e| ArgError::new(name, ArgError::from(e).message))?;
     }
     // Count the points before making them, as the command line does (`mu0_grid`'s count).
     let per_chain = ((to - from_) / step + 1e-9).floor() + 1.0;
@@ -198,7 +225,9 @@ pub fn sweep<'py>(
                 let arg = if v == from_ { from_name } else { to_name };
                 ArgError::new(arg, e.to_string())
             })?;
-            row.push(setup.model_with(&params).map_err(ArgError::from)?);
+            let model = setup.model_with(&params).map_err(ArgError::from)?;
+            walker_args::on_the_floor(&model, &initial(&model), &init)?;
+            row.push(model);
         }
         models.push(row);
     }
@@ -209,11 +238,16 @@ pub fn sweep<'py>(
             points: Vec::with_capacity(grid.len()),
         })
         .collect();
-    in_chunks(py, &mut state, grid.len(), CHUNK, |chains, range| {
-        chains.par_iter_mut().zip(&models).for_each(|(ch, row)| {
-            advance(&row[range.clone()], &cfg, &limits, restart, &initial, ch);
-        });
+    let done = stoppable(py, |stop| {
+        state
+            .par_iter_mut()
+            .zip(&models)
+            .map(|(ch, row)| advance(row, &cfg, &limits, restart, &initial, ch, &|| asked(stop)))
+            .collect::<Result<Vec<()>, Stopped>>()
     })?;
+    if done.is_err() {
+        return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(()));
+    }
     let mut rows = Rows::new(spec.n);
     let (mut chain_col, mut value_col) = (Vec::new(), Vec::new());
     for (ch, &c) in state.iter().zip(&values) {
@@ -281,8 +315,10 @@ mod tests {
                     carry: Carry::default(),
                     points: Vec::new(),
                 };
-                for part in models.chunks(CHUNK) {
-                    advance(part, &cfg, &limits, restart, &|_| start, &mut ch);
+                // In parts, as a sweep that goes on after being asked whether to stop.
+                for part in models.chunks(3) {
+                    advance(part, &cfg, &limits, restart, &|_| start, &mut ch, &|| false)
+                        .expect("never stopped");
                 }
                 let got: Vec<_> = ch
                     .points

@@ -11,6 +11,9 @@ use walker::model::{InitError, Model, Spec};
 use walker::setup::{Overrides, Setup, SetupError};
 use walker::vector::Vector;
 
+use pyo3::prelude::*;
+
+use crate::chunks;
 use crate::error::{ArgError, check};
 use crate::options;
 
@@ -43,13 +46,13 @@ pub fn overrides(
 /// The argument `set['name']`, as errors about a key of `set` name it.
 #[must_use]
 pub fn set_key(name: &str) -> String {
-    format!("set['{name}']")
+    format!("set['{}']", crate::error::echo(name))
 }
 
 /// The argument `init['name']`, as errors about a key of `init` name it.
 #[must_use]
 pub fn init_key(name: &str) -> String {
-    format!("init['{name}']")
+    format!("init['{}']", crate::error::echo(name))
 }
 
 /// The setup of `scene` or `model` (neither: [`DEFAULT_SCENE`]) with the overrides `ov`, then
@@ -77,12 +80,58 @@ pub fn setup(
         (None, Some(path)) => Setup::from_model_file(Path::new(path), ov, Some(&runtime))?,
         (scene, None) => Setup::resolve(scene.unwrap_or(DEFAULT_SCENE), ov, Some(&runtime))?,
     };
+    let spec = std::sync::Arc::clone(setup.walker.spec());
+    let role = |i: Option<usize>| i.map(|i| spec.model.parameters[i].name.name.as_str());
+    let keywords = [
+        ("mu0", ov.mu0.is_some(), role(spec.mu0)),
+        ("c", ov.c.is_some(), role(spec.c)),
+        ("phi", ov.phi.is_some(), role(spec.slope)),
+        ("t_set", ov.t_set.is_some(), Some("T_set")),
+    ];
+    for (name, _) in set {
+        if let Some((kw, ..)) = keywords
+            .iter()
+            .find(|(_, given, p)| *given && *p == Some(name.as_str()))
+        {
+            return Err(ArgError::new(
+                &set_key(name),
+                format!("{name} is also given as {kw}=; give it once"),
+            ));
+        }
+    }
     for (name, value) in set {
         setup
             .set(name, *value)
             .map_err(|e| ArgError::from(e).named(&set_key(name)))?;
     }
     Ok(setup)
+}
+
+/// [`setup`] (reading the files and deriving a model file that is not shipped, with its kernels
+/// for the setup's friction law lowered) on a thread of its own with the GIL released: other
+/// Python threads run, and Ctrl-C raises `KeyboardInterrupt` within a fraction of a second
+/// ([`chunks::abandonable`]: a derivation cannot be asked to stop, so it ends on its own,
+/// within the derivation's budget, with nobody waiting for it).
+///
+/// # Errors
+/// As [`setup`] (`ValueError`), or a signal handler's error.
+pub fn setup_released(
+    py: Python<'_>,
+    scene: Option<&str>,
+    model: Option<&str>,
+    ov: &Overrides,
+    set: &[(String, f64)],
+) -> PyResult<Setup> {
+    let (scene, model) = (scene.map(str::to_owned), model.map(str::to_owned));
+    let (ov, set) = (ov.clone(), set.to_vec());
+    let s = chunks::abandonable(py, move || {
+        let s = setup(scene.as_deref(), model.as_deref(), &ov, &set)?;
+        // The first model lowers the kernels of the friction law (kept for later models);
+        // its error, if any, is reported where the model is asked for.
+        let _ = s.model();
+        Ok::<_, ArgError>(s)
+    })??;
+    Ok(s)
 }
 
 /// Sets the paper's initial angular velocity `omega0` (a parameter of the start) where the
@@ -140,9 +189,74 @@ pub fn check_init(spec: &Spec, init: &[(String, f64)]) -> Result<Vec<(usize, f64
 /// velocity by name) replaced, as the command line's `--init`.
 ///
 /// # Errors
-/// As [`check_init`].
+/// As [`check_init`] and [`on_the_floor`].
 pub fn start(model: &Model, init: &[(String, f64)]) -> Result<Vector, ArgError> {
-    Ok(model.start_state_replacing(&check_init(model.spec(), init)?))
+    let components = check_init(model.spec(), init)?;
+    let start = model.start_state_replacing(&components);
+    on_the_floor(model, &start, &components)?;
+    Ok(start)
+}
+
+/// Checks that a start whose stance foot `init` moved is still on the floor: the first two
+/// coordinates are the stance foot's `x` and `z` (`docs/model-format.md`), held on the floor
+/// `z = -x tan(phi)` (level: `z = 0`) and moving along it (`zd = -xd tan(phi)`). A start off
+/// the floor walks as if it were on it (a foot a kilometre up walks "ok"), so it is refused,
+/// named by the `init` key that moved the foot. The tolerance is relative to the foot's
+/// distance from the origin (and 1 m, 1 m/s): rounding in `x tan(phi)`, not a displacement.
+/// A start the model file gives itself is the model's to check.
+///
+/// # Errors
+/// The stance foot given by `init` is off the floor or leaves it.
+pub fn on_the_floor(
+    model: &Model,
+    start: &[f64],
+    components: &[(usize, f64)],
+) -> Result<(), ArgError> {
+    let n = model.n();
+    let Some(&(moved, _)) = components
+        .iter()
+        .find(|(i, _)| [0, 1, n, n + 1].contains(i))
+    else {
+        return Ok(());
+    };
+    let names = model.spec().state_names();
+    let key = init_key(&names[moved]);
+    let tan = model.phi().tan();
+    let off = |a: f64, b: f64| {
+        let scale = 1.0 + a.abs().max(b.abs());
+        (b + a * tan).abs() > 1e-9 * scale
+    };
+    if off(start[0], start[1]) {
+        return Err(ArgError::new(
+            &key,
+            format!(
+                "the stance foot ({} = {}, {} = {}) must be on the floor ({} = {})",
+                names[0],
+                start[0],
+                names[1],
+                start[1],
+                names[1],
+                if tan == 0.0 {
+                    "0".to_owned()
+                } else {
+                    format!("-{} tan(phi)", names[0])
+                }
+            ),
+        ));
+    }
+    if off(start[n], start[n + 1]) {
+        return Err(ArgError::new(
+            &key,
+            format!(
+                "the stance foot's velocity ({} = {}, {} = {}) must be along the floor",
+                names[n],
+                start[n],
+                names[n + 1],
+                start[n + 1]
+            ),
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]

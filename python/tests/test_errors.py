@@ -64,7 +64,9 @@ def test_every_function_names_the_key_of_set_with_the_model_files_range(call):
     with pytest.raises(ValueError,
                        match=r"^invalid set\['gravity'\]: .* its parameters: m1, m2, l, "):
         call(set={"gravity": 9.81})
-    with pytest.raises(ValueError, match=r"^invalid set\['T_set'\]: 'fast': must be a number$"):
+    # A wrong type: sw.ArgumentTypeError, a TypeError that is also a ValueError.
+    with pytest.raises(TypeError, match=r"^invalid set\['T_set'\]: 'fast' \(str\): must be a real "
+                                        r"number$"):
         call(set={"T_set": "fast"})
 
 

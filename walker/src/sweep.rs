@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::model::Model;
-use crate::sim::{Failure, SimConfig, StepResult, Walk, WalkLimits, walk};
+use crate::sim::{Failure, SimConfig, StepResult, Stopped, Walk, WalkLimits, walk, walk_stoppable};
 use crate::vector::Vector;
 
 /// The outcome of one value of a sweep.
@@ -80,16 +80,48 @@ impl Carry {
         restart: bool,
         initial: &(dyn Fn(&Model) -> Vector + Sync),
     ) -> Walk {
-        let start = match self.state {
+        let w = walk(model, cfg, &self.start(model, restart, initial), limits);
+        self.moved_on(w)
+    }
+
+    /// Where the chain's walk of `model` starts.
+    fn start(
+        &self,
+        model: &Model,
+        restart: bool,
+        initial: &(dyn Fn(&Model) -> Vector + Sync),
+    ) -> Vector {
+        match self.state {
             Some(s) if !restart => s,
             _ => initial(model),
-        };
-        let w = walk(model, cfg, &start, limits);
+        }
+    }
+
+    /// Moves the chain on past the walk `w` and returns it.
+    fn moved_on(&mut self, w: Walk) -> Walk {
         self.state = match (&w.failure, w.last_state()) {
             (None, Some(s)) => Some(moved_to_origin(s)),
             _ => None,
         };
         w
+    }
+
+    /// [`Carry::walk`], asking `stop()` before every step of the walker
+    /// ([`walk_stoppable`]): a stopped walk leaves the chain where it stood.
+    ///
+    /// # Errors
+    /// `stop()` answered true before the walk ended.
+    pub fn walk_stoppable(
+        &mut self,
+        model: &Model,
+        cfg: &SimConfig,
+        limits: &WalkLimits,
+        restart: bool,
+        initial: &(dyn Fn(&Model) -> Vector + Sync),
+        stop: &dyn Fn() -> bool,
+    ) -> Result<Walk, Stopped> {
+        let start = self.start(model, restart, initial);
+        Ok(self.moved_on(walk_stoppable(model, cfg, &start, limits, stop)?))
     }
 }
 

@@ -41,5 +41,5 @@ pub use foot::{control_input, ground_reaction};
 pub use frame::Frame;
 pub use gait::{Sample, StepResult, Walk};
 pub use guard::{Guard, MAX_FALLS};
-pub use trajectory::{Trajectory, trajectory};
-pub use walk::{walk, walk_with_stats};
+pub use trajectory::{Trajectory, trajectory, trajectory_stoppable};
+pub use walk::{Stopped, walk, walk_stoppable, walk_with_stats};

@@ -9,7 +9,7 @@ use crate::model::Model;
 use super::config::{SimConfig, WalkLimits};
 use super::frame::{Frame, Frames, at_failure};
 use super::gait::Walk;
-use super::walk::walk_recording;
+use super::walk::{Stopped, walk_recording};
 
 /// A walk with its motion sampled every `dt`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -64,8 +64,41 @@ pub fn trajectory(
     dt: f64,
     max_frames: usize,
 ) -> Trajectory {
+    sampled(model, cfg, initial, limits, dt, max_frames, &|| false).0
+}
+
+/// [`trajectory()`], asking `stop()` before every step of the walker and ending with
+/// [`Stopped`] when it answers true (see [`super::walk_stoppable`]).
+///
+/// # Errors
+/// `stop()` answered true before the walk ended.
+pub fn trajectory_stoppable(
+    model: &Model,
+    cfg: &SimConfig,
+    initial: &[f64],
+    limits: &WalkLimits,
+    dt: f64,
+    max_frames: usize,
+    stop: &dyn Fn() -> bool,
+) -> Result<Trajectory, Stopped> {
+    match sampled(model, cfg, initial, limits, dt, max_frames, stop) {
+        (_, true) => Err(Stopped),
+        (tr, false) => Ok(tr),
+    }
+}
+
+/// The trajectory of [`trajectory_stoppable`], and whether `stop` ended it early.
+fn sampled(
+    model: &Model,
+    cfg: &SimConfig,
+    initial: &[f64],
+    limits: &WalkLimits,
+    dt: f64,
+    max_frames: usize,
+    stop: &dyn Fn() -> bool,
+) -> (Trajectory, bool) {
     let mut frames = Frames::new(dt, max_frames);
-    let (walk, _) = walk_recording(model, cfg, initial, limits, Some(&mut frames));
+    let (walk, _, stopped) = walk_recording(model, cfg, initial, limits, Some(&mut frames), stop);
     let (frames, truncated) = frames.finish();
     let mut tr = Trajectory {
         walk,
@@ -77,7 +110,7 @@ pub fn trajectory(
     if let Some(f) = &tr.walk.failure {
         tr.failure_frame = Some(at_failure(model, f, tr.end_time(), tr.frames.last()));
     }
-    tr
+    (tr, stopped)
 }
 
 #[cfg(test)]

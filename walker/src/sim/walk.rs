@@ -27,25 +27,53 @@ pub fn walk_with_stats(
     initial: &[f64],
     limits: &WalkLimits,
 ) -> (Walk, Stats) {
-    walk_recording(model, cfg, initial, limits, None)
+    let (walk, stats, _) = walk_recording(model, cfg, initial, limits, None, &|| false);
+    (walk, stats)
 }
 
-/// [`walk_with_stats`], also sampling the motion into `frames` if given. An initial state of
-/// the wrong length is a non-finite start (nothing to integrate).
+/// A walk ended early because its caller asked (see [`walk_stoppable`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("the walk was stopped by its caller")]
+pub struct Stopped;
+
+/// [`walk`], asking `stop()` before every step of the walker and ending with [`Stopped`] when it
+/// answers true: a front end's cancellation hook (Ctrl-C in Python), so that a long walk (up to
+/// a million steps) is abandoned within one step of the walker, not at its end. The steps a
+/// walk takes and their results do not depend on `stop` until it answers true.
+///
+/// # Errors
+/// `stop()` answered true before the walk ended.
+pub fn walk_stoppable(
+    model: &Model,
+    cfg: &SimConfig,
+    initial: &[f64],
+    limits: &WalkLimits,
+    stop: &dyn Fn() -> bool,
+) -> Result<Walk, Stopped> {
+    match walk_recording(model, cfg, initial, limits, None, stop) {
+        (_, _, true) => Err(Stopped),
+        (walk, _, false) => Ok(walk),
+    }
+}
+
+/// [`walk_with_stats`], also sampling the motion into `frames` if given, and ending early
+/// (the third value true) when `stop()`, asked before every step, answers true. An initial
+/// state of the wrong length is a non-finite start (nothing to integrate).
 pub(super) fn walk_recording(
     model: &Model,
     cfg: &SimConfig,
     initial: &[f64],
     limits: &WalkLimits,
     frames: Option<&mut Frames>,
-) -> (Walk, Stats) {
+    stop: &dyn Fn() -> bool,
+) -> (Walk, Stats, bool) {
     let n = model.n();
     if initial.len() != 2 * n {
         let failure = FailureKind::NonFinite.at(0, 0.0, Vector::from_slice(initial));
-        return (Walk::failed(failure), Stats::default());
+        return (Walk::failed(failure), Stats::default(), false);
     }
-    with_state_size!(n, S => walk_sized::<S>(model, cfg, initial, limits, frames),
-        _ => (Walk::failed(FailureKind::NonFinite.at(0, 0.0, Vector::from_slice(initial))), Stats::default()))
+    with_state_size!(n, S => walk_sized::<S>(model, cfg, initial, limits, frames, stop),
+        _ => (Walk::failed(FailureKind::NonFinite.at(0, 0.0, Vector::from_slice(initial))), Stats::default(), false))
 }
 
 fn walk_sized<const S: usize>(
@@ -54,7 +82,8 @@ fn walk_sized<const S: usize>(
     initial: &[f64],
     limits: &WalkLimits,
     mut frames: Option<&mut Frames>,
-) -> (Walk, Stats) {
+    stop: &dyn Fn() -> bool,
+) -> (Walk, Stats, bool) {
     let mut integ = Integrator::<S>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let mut steps = Vec::new();
     let mut samples = Vec::new();
@@ -62,7 +91,12 @@ fn walk_sized<const S: usize>(
     let mut time = 0.0;
     let mut failure = None;
     let mut periodic = false;
+    let mut stopped = false;
     for k in 0..limits.max_steps {
+        if stop() {
+            stopped = true;
+            break;
+        }
         let record = Record {
             samples: limits.record.then_some(&mut samples),
             frames: frames.as_deref_mut(),
@@ -96,5 +130,46 @@ fn walk_sized<const S: usize>(
             periodic,
         },
         *integ.stats(),
+        stopped,
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use std::cell::Cell;
+
+    use super::{Stopped, walk, walk_stoppable};
+    use crate::setup::Setup;
+    use crate::sim::{SimConfig, WalkLimits};
+
+    /// A stop that never answers true changes nothing; one that answers true before the
+    /// fourth step ends the walk there, having been asked once per step.
+    #[test]
+    fn a_walk_asks_its_stop_before_every_step_and_ends_when_told() {
+        let m = Setup::active_level()
+            .and_then(|s| Ok(s.model()?))
+            .expect("the built-in scene");
+        let limits = WalkLimits {
+            max_steps: 6,
+            ..WalkLimits::default()
+        };
+        let cfg = SimConfig::default();
+        let start = m.start_state();
+        let plain = walk(&m, &cfg, &start, &limits);
+        assert_eq!(plain.steps.len(), 6);
+        let asked = Cell::new(0);
+        let never = walk_stoppable(&m, &cfg, &start, &limits, &|| {
+            asked.set(asked.get() + 1);
+            false
+        });
+        assert_eq!(never, Ok(plain));
+        assert_eq!(asked.get(), 6);
+        asked.set(0);
+        let told = walk_stoppable(&m, &cfg, &start, &limits, &|| {
+            asked.set(asked.get() + 1);
+            asked.get() > 3
+        });
+        assert_eq!(told, Err(Stopped));
+        assert_eq!(asked.get(), 4);
+    }
 }
