@@ -93,8 +93,9 @@ const OFFSETS: [f64; 4] = [1e-3, 3e-3, 1e-2, 3e-2];
 /// end reason is [`EndReason::BranchSwitch`].
 ///
 /// # Errors
-/// [`ContinuationError::NoSeed`] when no offset along the critical eigenvector gives a
-/// period-two cycle, or the map fails at the period doubling.
+/// [`ContinuationError::InvalidOptions`] for invalid options; [`ContinuationError::NoSeed`]
+/// when no offset along the critical eigenvector gives a period-two cycle, or the map fails at
+/// the period doubling.
 pub fn period_two<G: GaitProblem + ?Sized>(
     problem: &G,
     pd: &Point,
@@ -102,11 +103,13 @@ pub fn period_two<G: GaitProblem + ?Sized>(
     to: f64,
     opts: &ContinuationOptions,
 ) -> Result<Branch, ContinuationError> {
+    opts.validate()?;
     let parameter = problem.parameter_name().to_owned();
     let no_seed = |last| ContinuationError::NoSeed {
         parameter: parameter.clone(),
         tried: vec![pd.parameter],
         last,
+        tries: Vec::new(),
     };
     if !(from.is_finite() && to.is_finite()) || from == to {
         return Err(ContinuationError::EmptyRange {
