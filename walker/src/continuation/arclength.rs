@@ -98,7 +98,10 @@ impl ContinuationOptions {
             return bad(
                 "initial_step",
                 self.initial_step,
-                format!("in [min_step, max_step] = [{}, {}]", self.min_step, self.max_step),
+                format!(
+                    "in [min_step, max_step] = [{}, {}]",
+                    self.min_step, self.max_step
+                ),
             );
         }
         if self.max_state.is_nan() || self.max_state <= 0.0 {
@@ -163,7 +166,8 @@ pub enum ContinuationError {
 pub struct SeedTry {
     /// The parameter value.
     pub parameter: f64,
-    /// Which guess ([`GaitProblem::guesses`]: `warm-up`, `start`, ...).
+    /// Which guess ([`GaitProblem::guesses`]: `warm-up walk`, `start`, ...; empty where the
+    /// problem had none).
     pub guess: String,
     /// Why it gave no seed: the map's failure, or `None` where Newton's method did not
     /// converge (or the problem had no such guess there).
@@ -178,11 +182,20 @@ fn seed_tries(tries: &[SeedTry]) -> String {
     let each: Vec<String> = tries
         .iter()
         .map(|t| {
+            if t.guess.is_empty() {
+                return format!(
+                    "{}: {}",
+                    t.parameter,
+                    t.failure.as_deref().unwrap_or("no guess")
+                );
+            }
             format!(
                 "{} from the {} guess: {}",
                 t.parameter,
                 t.guess,
-                t.failure.as_deref().unwrap_or("Newton's method did not converge")
+                t.failure
+                    .as_deref()
+                    .unwrap_or("Newton's method did not converge")
             )
         })
         .collect();
@@ -315,8 +328,10 @@ pub fn continuation<G: GaitProblem + ?Sized>(
         if guesses.is_empty() {
             tries.push(SeedTry {
                 parameter: p,
-                guess: "any".to_owned(),
-                failure: Some("the problem has no guess here".to_owned()),
+                guess: String::new(),
+                failure: Some(
+                    "no guess (the warm-up walk failed before its first step)".to_owned(),
+                ),
             });
         }
         let direction = if q < 1.0 { 1.0 } else { -1.0 };
