@@ -170,6 +170,66 @@ fn bad_input_exits_2_naming_the_flag_and_its_range() {
             "set",
             "family",
         ),
+        // Non-finite and out-of-range values of every number flag.
+        (
+            vec!["--param", "mu0", "--from", "NaN", "--to", "1"],
+            "from",
+            "must be in [0, inf)",
+        ),
+        (
+            vec!["--param", "mu0", "--from", "0.1", "--to", "inf"],
+            "to",
+            "must be in [0, inf)",
+        ),
+        (
+            vec![
+                "--param", "mu0", "--from", "0.1", "--to", "0.2", "--at", "NaN",
+            ],
+            "at",
+            "in [0.1, 0.2]",
+        ),
+        (
+            vec![
+                "--param",
+                "mu0",
+                "--from",
+                "0.1",
+                "--to",
+                "0.2",
+                "--max-step",
+                "1.5",
+            ],
+            "max-step",
+            "in (0, 1]",
+        ),
+        (
+            vec![
+                "--param",
+                "mu0",
+                "--from",
+                "0.1",
+                "--to",
+                "0.2",
+                "--max-step",
+                "-1e-7",
+            ],
+            "max-step",
+            "in (0, 1]",
+        ),
+        (
+            vec![
+                "--param",
+                "mu0",
+                "--from",
+                "0.1",
+                "--to",
+                "0.2",
+                "--max-step",
+                "NaN",
+            ],
+            "max-step",
+            "in (0, 1]",
+        ),
     ] {
         let mut all = vec!["--scene", "active-level"];
         all.extend(args.iter());
@@ -179,4 +239,32 @@ fn bad_input_exits_2_naming_the_flag_and_its_range() {
         assert!(err.contains(says), "{args:?}: {err}");
         assert!(!err.contains("panicked"), "{err}");
     }
+}
+
+/// Issue 35: `--max-step` below the default smallest step (1e-6) panicked in `f64::clamp`
+/// (min > max). It is in the documented range (0, 1], so the branch is followed with the
+/// smallest step brought down to it; the run is bounded by the steps' count, and the first
+/// steps' branch is the rimless wheel's, starting at `phi = 0.1`.
+#[test]
+fn a_max_step_below_the_default_smallest_step_is_followed_not_a_panic() {
+    let (code, out, err) = run(&[
+        "--model",
+        "../models/rimless-wheel.toml",
+        "--param",
+        "phi",
+        "--from",
+        "0.1",
+        "--to",
+        "0.2",
+        "--max-step",
+        "1e-7",
+        "--json",
+    ]);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(code, 0, "{out} {err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let points = j["branches"][0]["points"].as_array().unwrap();
+    assert!(points.len() > 2, "{out}");
+    let p0 = points[0]["parameter"].as_f64().unwrap();
+    assert!((p0 - 0.1).abs() < 1e-12, "{p0}");
 }

@@ -149,12 +149,18 @@ pub fn run(req: &Request, cfg: &SimConfig) -> Result<Vec<Branch>, ContinueError>
         ..ContinuationOptions::default()
     };
     if let Some(h) = req.max_step {
+        // `--max-step` is documented as (0, 1]: below the default smallest step, the smallest
+        // step follows it down.
         opts.max_step = h;
         opts.initial_step = opts.initial_step.min(h);
+        opts.min_step = opts.min_step.min(h);
     }
     let branch = continuation(&walker, req.from, req.to, &opts).map_err(|e| match e {
         ContinuationError::FamilyEverywhere { .. } | ContinuationError::EmptyRange { .. } => {
             ContinueError::Input(InputError::new("set", e.to_string()))
+        }
+        ContinuationError::InvalidOptions { .. } => {
+            ContinueError::Input(InputError::new("max-step", e.to_string()))
         }
         e @ ContinuationError::NoSeed { .. } => ContinueError::NoBranch(e),
     })?;

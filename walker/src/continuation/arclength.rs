@@ -60,9 +60,73 @@ impl Default for ContinuationOptions {
     }
 }
 
+impl ContinuationOptions {
+    /// Check the settings: the steps finite and positive with
+    /// `min_step <= initial_step <= max_step`, the tolerances finite and positive, the state
+    /// bound positive (infinite allowed) and the user points finite.
+    ///
+    /// # Errors
+    /// [`ContinuationError::InvalidOptions`] naming the first field out of its range.
+    pub fn validate(&self) -> Result<(), ContinuationError> {
+        let bad = |field: &'static str, value: f64, expected: String| {
+            Err(ContinuationError::InvalidOptions {
+                field,
+                value,
+                expected,
+            })
+        };
+        let positive = |v: f64| v.is_finite() && v > 0.0;
+        for (field, v) in [
+            ("min_step", self.min_step),
+            ("initial_step", self.initial_step),
+            ("max_step", self.max_step),
+            ("tol", self.tol),
+            ("locate_tol", self.locate_tol),
+        ] {
+            if !positive(v) {
+                return bad(field, v, "finite and positive".to_owned());
+            }
+        }
+        if self.min_step > self.max_step {
+            return bad(
+                "min_step",
+                self.min_step,
+                format!("at most max_step = {}", self.max_step),
+            );
+        }
+        if !(self.min_step..=self.max_step).contains(&self.initial_step) {
+            return bad(
+                "initial_step",
+                self.initial_step,
+                format!(
+                    "in [min_step, max_step] = [{}, {}]",
+                    self.min_step, self.max_step
+                ),
+            );
+        }
+        if self.max_state.is_nan() || self.max_state <= 0.0 {
+            return bad("max_state", self.max_state, "positive".to_owned());
+        }
+        if let Some(&p) = self.user_points.iter().find(|p| !p.is_finite()) {
+            return bad("user_points", p, "finite".to_owned());
+        }
+        Ok(())
+    }
+}
+
 /// Why no branch could be computed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ContinuationError {
+    /// A setting of [`ContinuationOptions`] is out of its range.
+    #[error("continuation option {field} = {value}: must be {expected}")]
+    InvalidOptions {
+        /// The field of [`ContinuationOptions`].
+        field: &'static str,
+        /// Its value.
+        value: f64,
+        /// What it must be.
+        expected: String,
+    },
     /// `from` and `to` are equal or not finite.
     #[error("the range of {parameter} is empty or not finite: from {from} to {to}")]
     EmptyRange {
@@ -83,7 +147,7 @@ pub enum ContinuationError {
         parameter: String,
     },
     /// No fixed point was found at any of the seed values.
-    #[error("no fixed point found to start from at {parameter} = {tried:?}{}", .last.as_ref().map(|e| format!(" (last: {e})")).unwrap_or_default())]
+    #[error("no fixed point found to start from at {parameter} = {tried:?}{}{}", .last.as_ref().map(|e| format!(" (last: {e})")).unwrap_or_default(), seed_tries(.tries))]
     NoSeed {
         /// The parameter.
         parameter: String,
@@ -92,7 +156,50 @@ pub enum ContinuationError {
         /// The last failure of the map, if any.
         #[source]
         last: Option<ProblemError>,
+        /// Every try: where, from which guess, and why it failed.
+        tries: Vec<SeedTry>,
     },
+}
+
+/// One failed try to start a branch: a parameter value and a guess of the problem's.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SeedTry {
+    /// The parameter value.
+    pub parameter: f64,
+    /// Which guess ([`GaitProblem::guesses`]: `warm-up walk`, `start`, ...; empty where the
+    /// problem had none).
+    pub guess: String,
+    /// Why it gave no seed: the map's failure, or `None` where Newton's method did not
+    /// converge (or the problem had no such guess there).
+    pub failure: Option<String>,
+}
+
+/// The tries as a list for the message of [`ContinuationError::NoSeed`].
+fn seed_tries(tries: &[SeedTry]) -> String {
+    if tries.is_empty() {
+        return String::new();
+    }
+    let each: Vec<String> = tries
+        .iter()
+        .map(|t| {
+            if t.guess.is_empty() {
+                return format!(
+                    "{}: {}",
+                    t.parameter,
+                    t.failure.as_deref().unwrap_or("no guess")
+                );
+            }
+            format!(
+                "{} from the {} guess: {}",
+                t.parameter,
+                t.guess,
+                t.failure
+                    .as_deref()
+                    .unwrap_or("Newton's method did not converge")
+            )
+        })
+        .collect();
+    format!("; tried {}", each.join("; "))
 }
 
 /// The distance in the scaled parameter from a family end at which the last ordinary point
@@ -160,9 +267,15 @@ fn seed_at<G: GaitProblem + ?Sized>(
                 let image = problem.image(&r, p)?;
                 let f = DVector::from_fn(n, |i, _| image[i] - r[i]);
                 let a = &jac - nalgebra::DMatrix::identity(n, n);
-                let Some(d) = a.lu().solve(&(-f)) else {
+                let Some(mut d) = a.lu().solve(&(-f)) else {
                     return Ok(None);
                 };
+                if let Some(k) = problem.held_coordinate()
+                    && r[k] == 0.0
+                    && image[k] == 0.0
+                {
+                    d[k] = 0.0;
+                }
                 for i in 0..n {
                     z[i] += d[i];
                 }
@@ -178,13 +291,15 @@ fn seed_at<G: GaitProblem + ?Sized>(
 /// continuation from it towards both ends.
 ///
 /// # Errors
-/// An empty range, a range that is a family of cycles throughout, or no seed.
+/// Invalid options, an empty range, a range that is a family of cycles throughout, or no
+/// seed.
 pub fn continuation<G: GaitProblem + ?Sized>(
     problem: &G,
     from: f64,
     to: f64,
     opts: &ContinuationOptions,
 ) -> Result<Branch, ContinuationError> {
+    opts.validate()?;
     let parameter = problem.parameter_name().to_owned();
     if !(from.is_finite() && to.is_finite()) || from == to {
         return Err(ContinuationError::EmptyRange {
@@ -202,26 +317,46 @@ pub fn continuation<G: GaitProblem + ?Sized>(
     }
     let mut tried = Vec::new();
     let mut last = None;
+    let mut tries = Vec::new();
     for q in SEEDS {
         let p = frame.p(q);
         if problem.has_family_at(p) {
             continue;
         }
         tried.push(p);
-        let Some(guess) = problem.guess(p) else {
-            continue;
-        };
+        let guesses = problem.guesses(p);
+        if guesses.is_empty() {
+            tries.push(SeedTry {
+                parameter: p,
+                guess: String::new(),
+                failure: Some(
+                    "no guess (the warm-up walk failed before its first step)".to_owned(),
+                ),
+            });
+        }
         let direction = if q < 1.0 { 1.0 } else { -1.0 };
-        match seed_at(problem, &frame, q, guess, opts.tol, direction) {
-            Ok(Some(seed)) => return Ok(from_seed(problem, &frame, seed, opts, 1)),
-            Ok(None) => {}
-            Err(e) => last = Some(e),
+        for (name, guess) in guesses {
+            let failure = match seed_at(problem, &frame, q, guess, opts.tol, direction) {
+                Ok(Some(seed)) => return Ok(from_seed(problem, &frame, seed, opts, 1)),
+                Ok(None) => None,
+                Err(e) => {
+                    let text = e.to_string();
+                    last = Some(e);
+                    Some(text)
+                }
+            };
+            tries.push(SeedTry {
+                parameter: p,
+                guess: name,
+                failure,
+            });
         }
     }
     Err(ContinuationError::NoSeed {
         parameter,
         tried,
         last,
+        tries,
     })
 }
 

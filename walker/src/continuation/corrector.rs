@@ -83,6 +83,17 @@ pub(super) enum CorrectError {
     NoConvergence,
 }
 
+/// A held coordinate ([`GaitProblem::held_coordinate`]) within this of zero at the start of a
+/// correction is zero: the linear algebra's rounding (a tangent component of `1e-17` times a
+/// step), not a motion. A foot sliding at `1e-12` m/s would move `1e-12` m in a step.
+const HELD_ROUNDING: f64 = 1e-12;
+
+/// Whether `z`'s held coordinate `k` is exactly zero together with its image's (`f[k] = P_k -
+/// r_k`): a sticking impact, whose fixed points all have it zero.
+pub(super) fn held_at(k: Option<usize>, z: &DVector<f64>, f: &DVector<f64>) -> Option<usize> {
+    k.filter(|&k| z[k] == 0.0 && f[k] == 0.0)
+}
+
 /// Largest number of chord iterations.
 const MAX_ITER: usize = 12;
 
@@ -159,7 +170,16 @@ pub(super) fn correct<G: GaitProblem + ?Sized>(
     let mut m = bordered(jac, fq, normal);
     let fixes_q = normal[n] == 1.0 && normal.rows(0, n).iter().all(|v| *v == 0.0);
     let mut z = z0;
+    let held = problem.held_coordinate();
+    if let Some(k) = held
+        && z[k].abs() <= HELD_ROUNDING
+    {
+        z[k] = 0.0;
+    }
     let mut f = residual(problem, frame, &z).map_err(CorrectError::Map)?;
+    // On a sticking impact the held coordinate's fixed-point equation is `0 - r_k = 0`: it
+    // stays at zero, whatever rounding the bordered solve puts into its step.
+    let pinned = held_at(held, &z, &f);
     // The full map value at `z` where it was evaluated instead of the image alone.
     let mut value: Option<MapValue> = None;
     let first = f.amax();
@@ -182,7 +202,10 @@ pub(super) fn correct<G: GaitProblem + ?Sized>(
             b[i] = -f[i];
         }
         b[n] = -normal.dot(&(&z - anchor));
-        let dz = solve(m.clone(), &b).ok_or(CorrectError::NoConvergence)?;
+        let mut dz = solve(m.clone(), &b).ok_or(CorrectError::NoConvergence)?;
+        if let Some(k) = pinned {
+            dz[k] = 0.0;
+        }
         z += &dz;
         if fixes_q {
             // Exactly on the asked parameter (an end of the range, a user point): rounding in
@@ -262,7 +285,17 @@ pub(super) fn complete<G: GaitProblem + ?Sized>(
     let jac = problem.jacobian(&r, p)?;
     let dp = problem.parameter_derivative(&r, p, &value.image, frame.inward(q))?;
     let fq = DVector::from_fn(n, |i, _| dp[i] * frame.span);
-    let tangent = tangent(&jac, &fq, previous);
+    let mut tangent = tangent(&jac, &fq, previous);
+    let f = DVector::from_fn(n, |i, _| value.image[i] - z[i]);
+    if let Some(k) = held_at(problem.held_coordinate(), &z, &f) {
+        // The branch of sticking impacts stays at `r_k = 0`; a tangent component there is the
+        // finite differences' mixing of regimes or rounding, and a predictor along it would
+        // start a slide.
+        tangent[k] = 0.0;
+        if tangent.norm() > 0.0 {
+            tangent = tangent.normalize();
+        }
+    }
     Ok(Solved {
         z,
         value,

@@ -25,7 +25,7 @@ mod problem;
 mod profile;
 mod walker_problem;
 
-pub use arclength::{ContinuationError, ContinuationOptions, continuation};
+pub use arclength::{ContinuationError, ContinuationOptions, SeedTry, continuation};
 pub use branch::{Branch, EndReason, Label, LabelKind, Point, Stability};
 pub use period_two::{SecondIterate, period_two};
 pub use problem::{Cycle, GaitProblem, MapValue, ProblemError, SlipStructure, Tests};

@@ -78,6 +78,10 @@ impl<G: GaitProblem + ?Sized> GaitProblem for SecondIterate<'_, G> {
         self.inner.has_family_at(p)
     }
 
+    fn held_coordinate(&self) -> Option<usize> {
+        self.inner.held_coordinate()
+    }
+
     fn guess(&self, _p: f64) -> Option<Vec<f64>> {
         None
     }
@@ -93,8 +97,9 @@ const OFFSETS: [f64; 4] = [1e-3, 3e-3, 1e-2, 3e-2];
 /// end reason is [`EndReason::BranchSwitch`].
 ///
 /// # Errors
-/// [`ContinuationError::NoSeed`] when no offset along the critical eigenvector gives a
-/// period-two cycle, or the map fails at the period doubling.
+/// [`ContinuationError::InvalidOptions`] for invalid options; [`ContinuationError::NoSeed`]
+/// when no offset along the critical eigenvector gives a period-two cycle, or the map fails at
+/// the period doubling.
 pub fn period_two<G: GaitProblem + ?Sized>(
     problem: &G,
     pd: &Point,
@@ -102,11 +107,13 @@ pub fn period_two<G: GaitProblem + ?Sized>(
     to: f64,
     opts: &ContinuationOptions,
 ) -> Result<Branch, ContinuationError> {
+    opts.validate()?;
     let parameter = problem.parameter_name().to_owned();
     let no_seed = |last| ContinuationError::NoSeed {
         parameter: parameter.clone(),
         tried: vec![pd.parameter],
         last,
+        tries: Vec::new(),
     };
     if !(from.is_finite() && to.is_finite()) || from == to {
         return Err(ContinuationError::EmptyRange {
@@ -136,6 +143,17 @@ pub fn period_two<G: GaitProblem + ?Sized>(
     let mut dir = DVector::zeros(n + 1);
     for i in 0..n {
         dir[i] = v[i];
+    }
+    if let Some(k) = problem.held_coordinate()
+        && pd.state[k] == 0.0
+    {
+        // A held foot stays held on the period-two branch born here: the eigenvector's
+        // component along its velocity is rounding (that row of `D_r P` is zero), and an
+        // offset along it would start a slide.
+        dir[k] = 0.0;
+        if dir.norm() > 0.0 {
+            dir = dir.normalize();
+        }
     }
     let value = twice
         .map(&pd.state, pd.parameter)

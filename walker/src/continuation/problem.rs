@@ -197,7 +197,25 @@ pub trait GaitProblem: Sync {
         false
     }
 
+    /// The index in `r` of a velocity that a sticking impact sets exactly to zero and that
+    /// the map cannot take slightly off zero (the stance foot's velocity along the floor under
+    /// exact Coulomb friction: a foot at rest is `xd == 0` exactly, and a foot sliding at
+    /// `1e-17` m/s may be a contact Painleve's paradox forbids). Where an iterate and its image
+    /// both have it exactly zero, the continuation keeps it there ([`super::corrector`]). The
+    /// default: none.
+    fn held_coordinate(&self) -> Option<usize> {
+        None
+    }
+
     /// A first guess of a fixed point at `p` (for the paper's walkers, the end of a warm-up
     /// walk), or `None` if the problem has none to offer.
     fn guess(&self, p: f64) -> Option<Vec<f64>>;
+
+    /// The first guesses of a fixed point at `p` to try in order, each with a name for a
+    /// message. The default: [`GaitProblem::guess`], named `guess`.
+    fn guesses(&self, p: f64) -> Vec<(String, Vec<f64>)> {
+        self.guess(p)
+            .map(|g| vec![("guess".to_owned(), g)])
+            .unwrap_or_default()
+    }
 }

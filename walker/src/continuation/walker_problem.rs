@@ -53,6 +53,11 @@ pub struct WalkerProblem {
     param: String,
     cfg: SimConfig,
     dim: usize,
+    /// The section's index of the stance foot's velocity along the floor, under exact Coulomb
+    /// friction in stance or at the impact ([`GaitProblem::held_coordinate`]).
+    held: Option<usize>,
+    /// Components of the start replaced ([`WalkerProblem::with_start`]).
+    start: Vec<(usize, f64)>,
 }
 
 impl WalkerProblem {
@@ -87,12 +92,21 @@ impl WalkerProblem {
             value: setup.params.get(param).unwrap_or(f64::NAN),
             message: e.to_string(),
         })?;
-        let dim = Section::of(&model).dim();
+        let section = Section::of(&model);
+        let dim = section.dim();
+        let n = model.n();
+        let coulomb =
+            model.friction_law() == FrictionLaw::Coulomb || model.impact_law == ImpactLaw::Coulomb;
+        let held = coulomb
+            .then(|| section.free().iter().position(|&i| i == n))
+            .flatten();
         Ok(Self {
             param: param.to_owned(),
             setup,
             cfg,
             dim,
+            held,
+            start: Vec::new(),
         })
     }
 
@@ -127,6 +141,20 @@ impl WalkerProblem {
         self.setup
             .model_with(&params)
             .map_err(|e| err(e.to_string()))
+    }
+
+    /// The same walker started from the model's `[start]` with the components `(index into
+    /// [q, qd], value)` replaced (a user's `--init`), for the guesses of a branch's start.
+    #[must_use]
+    pub fn with_start(mut self, components: Vec<(usize, f64)>) -> Self {
+        self.start = components;
+        self
+    }
+
+    /// The start at the model of a parameter value: its `[start]` with the replaced
+    /// components.
+    fn start_of(&self, model: &Model) -> crate::vector::Vector {
+        model.start_state_replacing(&self.start)
     }
 
     /// The simulation settings.
@@ -251,6 +279,10 @@ impl GaitProblem for WalkerProblem {
         mu0 == 0.0 || self.setup.friction == Friction::None
     }
 
+    fn held_coordinate(&self) -> Option<usize> {
+        self.held
+    }
+
     fn guess(&self, p: f64) -> Option<Vec<f64>> {
         let model = self.model_at(p).ok()?;
         let limits = WalkLimits {
@@ -263,7 +295,36 @@ impl GaitProblem for WalkerProblem {
             atol: self.cfg.atol.max(WARMUP_RTOL / 100.0),
             ..self.cfg
         };
-        let w = walk(&model, &cfg, &model.start_state(), &limits);
+        let w = walk(&model, &cfg, &self.start_of(&model), &limits);
         w.last_state().map(|s| Section::of(&model).reduce(&s))
+    }
+
+    /// The end of the warm-up walk ([`GaitProblem::guess`]), then the start itself (the
+    /// model's `[start]` at `p`, with [`WalkerProblem::with_start`]'s components): where the
+    /// gait is unstable the warm-up walk wanders off or falls, and Newton's method from the
+    /// start, a gait's post-impact state for the model's default parameters, may still
+    /// converge.
+    fn guesses(&self, p: f64) -> Vec<(String, Vec<f64>)> {
+        let mut out = Vec::new();
+        if let Some(g) = self.guess(p) {
+            out.push(("warm-up walk".to_owned(), g));
+        }
+        if let Ok(model) = self.model_at(p) {
+            let section = Section::of(&model);
+            let start = self.start_of(&model);
+            let on_section = section.embed(&section.reduce(&start));
+            // Only a start on the section is a guess of a fixed point (the paper's walkers
+            // start at `omega0`, off the controller's manifold).
+            let r = section.reduce(&start);
+            if on_section
+                .iter()
+                .zip(start.iter())
+                .all(|(a, b)| (a - b).abs() <= 1e-9 * b.abs().max(1.0))
+                && out.iter().all(|(_, g)| *g != r)
+            {
+                out.push(("start".to_owned(), r));
+            }
+        }
+        out
     }
 }
