@@ -47,9 +47,12 @@ def test_grid_sweep_checks_every_point_before_sending_work(client):
 
 
 def test_grid_sweep_of_a_model_file_that_is_not_shipped_equals_one_process(client, tmp_path):
-    # A copy of the compass gait is not compiled in: every worker derives it (walker-load).
+    # A copy of the compass gait whose hip mass is written `1*(m_H)`: the same walker, but not
+    # the compiled model's canonical content, so every worker derives it (walker-load).
     copy = tmp_path / "compass-gait-copy.toml"
-    copy.write_text((MODELS / "compass-gait.toml").read_text() + "\n# a copy\n")
+    text = (MODELS / "compass-gait.toml").read_text()
+    assert 'mass = "m_H"' in text
+    copy.write_text(text.replace('mass = "m_H"', 'mass = "1*(m_H)"'))
     g = {"phi": [0.04, 0.045, 0.05, 0.055], "mu0": [0.5, 0.6, 0.7, 0.8]}
     kw = dict(model=copy, friction="coulomb", impact="frictionless", duration=2.0)
     dist = grid_sweep(client, g, chunk_size=2, **kw)
