@@ -215,10 +215,8 @@ pub fn sweep(
         .iter()
         .filter_map(|n| spec.parameter(n).map(|i| (Field::Parameter(n.clone()), i)))
         .collect();
-    if let Some((name, _)) = explicit {
-        if let Some(i) = spec.parameter(name) {
-            given.push((chain_field(name), i));
-        }
+    if let Some(i) = explicit.and_then(|(name, _)| spec.parameter(name)) {
+        given.push((chain_field(explicit.map_or("T_set", |(n, _)| n)), i));
     }
     given.push((Field::Param, swept));
     walker::request::distinct(spec, &given)?;

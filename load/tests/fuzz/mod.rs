@@ -82,10 +82,11 @@ fn coordinates(text: &str) -> (Vec<String>, Vec<String>) {
             in_coordinate = t == "[[coordinate]]";
         } else if in_coordinate && t.starts_with("name") {
             name = quoted(t).first().map(|&(s, e)| t[s..e].to_owned());
-        } else if in_coordinate && t.starts_with("unit = \"rad\"") {
-            if let Some(n) = &name {
-                angles.push(n.clone());
-            }
+        } else if in_coordinate
+            && t.starts_with("unit = \"rad\"")
+            && let Some(n) = &name
+        {
+            angles.push(n.clone());
         }
     }
     (all, angles)
