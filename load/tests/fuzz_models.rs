@@ -103,8 +103,7 @@ fn run_case(path: &Path) -> (Option<String>, [bool; 2]) {
             .all(|v| v.abs() <= MODERATE);
         Ok(w.failure.and_then(|f| {
             (matches!(f.kind, FailureKind::NonFinite) && f.t == 0.0 && moderate).then(|| {
-                "walks non-finite at t = 0 from a start and parameters of moderate size"
-                    .to_owned()
+                "walks non-finite at t = 0 from a start and parameters of moderate size".to_owned()
             })
         }))
     }));
