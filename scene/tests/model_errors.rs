@@ -171,9 +171,9 @@ fn with_parameter(name: &str) -> Result<Model, ModelError> {
 }
 
 #[test]
-fn parameters_that_differ_only_in_case_get_fields_of_their_own() {
+fn parameters_that_differ_only_in_case_get_fields_of_their_own() -> Result<(), ModelError> {
     // `M` beside `m`: the fields are `_m` and `m` (docs/model-format.md, "Names").
-    let model = with_parameter("M").unwrap_or_else(|e| panic!("{e}"));
+    let model = with_parameter("M")?;
     let names: Vec<&str> = model
         .parameters
         .iter()
@@ -183,6 +183,7 @@ fn parameters_that_differ_only_in_case_get_fields_of_their_own() {
         walker_scene::model::fields::param_fields(&names)[..2],
         ["m".to_owned(), "_m".to_owned()]
     );
+    Ok(())
 }
 
 #[test]

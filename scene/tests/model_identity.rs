@@ -1,6 +1,8 @@
 //! The canonical text of a model (`Model::canonical`): the same for files that derive the same
 //! kernels however they are laid out, different where a derivation would differ.
 
+#![allow(clippy::panic, reason = "tests")]
+
 use walker_scene::model::Model;
 
 const COMPASS: &str = include_str!("../../models/compass-gait.toml");

@@ -2,6 +2,8 @@
 //! (`walker_scene::model::Model::canonical`): a reformatted, commented or renamed copy of a
 //! shipped model runs the compiled kernels, and a copy whose physics differs does not.
 
+#![allow(clippy::panic, reason = "tests")]
+
 use walker::compiled::MODELS;
 use walker::setup::{SetupError, walker_of};
 use walker_scene::model::Model;
