@@ -201,7 +201,7 @@ pub trait GaitProblem: Sync {
     /// the map cannot take slightly off zero (the stance foot's velocity along the floor under
     /// exact Coulomb friction: a foot at rest is `xd == 0` exactly, and a foot sliding at
     /// `1e-17` m/s may be a contact Painleve's paradox forbids). Where an iterate and its image
-    /// both have it exactly zero, the continuation keeps it there ([`super::corrector`]). The
+    /// both have it exactly zero, the continuation keeps it there (`continuation/corrector.rs`). The
     /// default: none.
     fn held_coordinate(&self) -> Option<usize> {
         None
