@@ -15,9 +15,10 @@ use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex};
 
+use walker::contract::Binding;
 use walker::model::{Args, KernelId, KernelSource, Kernels, NoKernels, Parameters};
 use walker_gen::scene::Friction;
-use walker_gen::scene::model::{Model, SymbolKind};
+use walker_gen::scene::model::Model;
 use walker_gen::tape::{KernelIndex, Prepared, Scratch, TapeModule};
 use walker_gen::{EmitOptions, ModelScene, derive_model, lower_model};
 
@@ -47,19 +48,9 @@ pub struct Derived {
 /// argument comes from.
 struct Lowered {
     tape: TapeModule,
-    /// Per kernel (by [`KernelId`]): its index in the tape, its number of outputs, and the
-    /// argument sources.
-    kernels: Vec<Option<(KernelIndex, usize, Vec<Slot>)>>,
-}
-
-/// Where a kernel argument's value comes from in [`Args`].
-#[derive(Clone, Copy)]
-enum Slot {
-    Q(usize),
-    Qd(usize),
-    U(usize),
-    V(usize),
-    Sigma,
+    /// Per kernel (by [`KernelId`]): its index in the tape, its number of outputs, and its
+    /// arguments' bindings (the kernel contract's, which the generated adapters use too).
+    kernels: Vec<Option<(KernelIndex, usize, Vec<Binding>)>>,
 }
 
 impl Derived {
@@ -86,29 +77,12 @@ impl Derived {
         scene.friction = law;
         let module = lower_model(&self.derivation, &scene).map_err(|e| e.to_string())?;
         let tape = TapeModule::new(&module, &EmitOptions::default()).map_err(|e| e.to_string())?;
-        let symbols = self.model.symbols();
         let kernels = KernelId::ALL
             .iter()
             .map(|id| {
                 let index = tape.kernel_index(id.name())?;
                 let k = tape.kernel(index)?;
-                let slots = k
-                    .args()
-                    .iter()
-                    .map(|a| {
-                        if a == "sigma" {
-                            return Some(Slot::Sigma);
-                        }
-                        let s = symbols.iter().find(|s| &s.name == a)?;
-                        Some(match s.kind {
-                            SymbolKind::Coordinate => Slot::Q(s.index),
-                            SymbolKind::Velocity => Slot::Qd(s.index),
-                            SymbolKind::Input => Slot::U(s.index),
-                            SymbolKind::Aux => Slot::V(s.index),
-                            _ => return None,
-                        })
-                    })
-                    .collect::<Option<Vec<_>>>()?;
+                let slots = Binding::all(&self.model, k.args()).ok()?;
                 Some((index, k.output_len(), slots))
             })
             .collect();
@@ -156,16 +130,9 @@ impl Kernels for Taped {
             out.fill(f64::NAN);
             return;
         }
-        let get = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(f64::NAN);
         let mut values = [0.0; MAX_ARGS];
-        for (v, slot) in values.iter_mut().zip(slots) {
-            *v = match *slot {
-                Slot::Q(i) => get(args.q, i),
-                Slot::Qd(i) => get(args.qd, i),
-                Slot::U(i) => get(args.u, i),
-                Slot::V(i) => get(args.v, i),
-                Slot::Sigma => args.sigma,
-            };
+        for (v, binding) in values.iter_mut().zip(slots) {
+            *v = binding.read(args);
         }
         let mut result = [0.0; MAX_OUTPUTS];
         let done = SCRATCH.with(|scratch| {
@@ -188,7 +155,7 @@ impl Kernels for Taped {
 }
 
 impl Taped {
-    fn entry(&self, k: KernelId) -> Option<&(KernelIndex, usize, Vec<Slot>)> {
+    fn entry(&self, k: KernelId) -> Option<&(KernelIndex, usize, Vec<Binding>)> {
         let i = KernelId::ALL.iter().position(|id| *id == k)?;
         self.lowered.kernels.get(i)?.as_ref()
     }

@@ -30,3 +30,5 @@ pub mod sweep;
 pub mod vector;
 
 pub use vector::Vector;
+/// The kernel contract a compiled model implements (the `walker-contract` crate).
+pub use walker_contract as contract;

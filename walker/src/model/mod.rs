@@ -7,31 +7,30 @@
 //! and `models/paper-passive.toml`.
 //!
 //! Files, imports one way: `spec.rs` (what the simulator reads from a model file),
-//! `parameters.rs` (values by name, checked against their ranges), `desired.rs` (the outputs'
-//! desired trajectories and Eq. 32), `kernels.rs` (the kernel interface), `contact.rs` (the
+//! `parameters.rs` (values by name, checked against their ranges), `contact.rs` (the
 //! contact vocabulary), `friction_impact.rs` (the plastic impact with Coulomb friction at the
 //! striking foot), `impact.rs` (the impact's results), `prepared.rs` ([`Model`]), `walker.rs`
 //! ([`Walker`], [`KernelSource`], compiled variants).
 
 mod contact;
-mod desired;
 mod friction_impact;
 mod impact;
-mod kernels;
 mod parameters;
 mod prepared;
 mod spec;
 mod walker;
 
 pub use contact::{Contact, FrictionLaw, Reaction, Slide};
-pub use desired::{Desired, Ramp, aux_input};
 pub use friction_impact::{
     ImpactJam, ImpactRegime, Ingredients, in_regime, plastic_coulomb, rear_test,
 };
 pub use impact::{ImpactResult, PostImpact};
-pub use kernels::{Args, KernelId, Kernels, Tracking, power};
 pub use parameters::{ParamError, Parameters};
 pub use prepared::Model;
 pub use spec::{InitError, Spec, SpecError};
-pub use walker::{Compiled, KernelSource, NoKernels, Prepare, Variant, Walker};
+pub use walker::{KernelSource, NoKernels, Walker};
+/// The kernel contract ([`walker_contract`]), re-exported where the simulator's code names it.
+pub use walker_contract::{
+    Args, Compiled, Desired, KernelId, Kernels, Prepare, Ramp, Tracking, Variant, aux_input, power,
+};
 pub use walker_scene::{Friction, ImpactLaw};

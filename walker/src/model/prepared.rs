@@ -11,10 +11,9 @@ use walker_scene::ImpactLaw;
 use walker_scene::model::Stage;
 
 use super::contact::{Contact, FrictionLaw, Reaction};
-use super::desired::Desired;
 use super::friction_impact::{ImpactJam, ImpactRegime, Ingredients, plastic_coulomb, rear_test};
 use super::impact::{ImpactResult, PostImpact};
-use super::kernels::{Args, KernelId, Kernels, Tracking, power};
+use walker_contract::{Args, Desired, KernelId, Kernels, Tracking, power};
 use super::parameters::{ParamError, Parameters};
 use super::spec::Spec;
 use crate::vector::{MAX_COORDINATES, MAX_LEN, Vector};

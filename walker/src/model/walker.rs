@@ -1,14 +1,15 @@
 //! A [`Walker`]: a model file ([`Spec`]) and where its kernels come from ([`KernelSource`]):
-//! the variants compiled into this library at build time ([`Compiled`]), or an implementation
-//! given at run time (the `walker-load` crate derives a model file and evaluates its kernels).
+//! variants compiled at build time ([`Compiled`], this library's or a user crate's), or an
+//! implementation given at run time (the `walker-load` crate derives a model file and evaluates its kernels).
 //! [`Walker::model`] prepares the kernels for a set of parameters: a [`Model`] to simulate.
 
 use std::sync::Arc;
 
 use walker_scene::{Friction, ImpactLaw};
 
+use walker_contract::{Compiled, KernelId, Kernels, Variant};
+
 use super::contact::FrictionLaw;
-use super::kernels::{KernelId, Kernels};
 use super::parameters::Parameters;
 use super::prepared::Model;
 use super::spec::Spec;
@@ -68,36 +69,6 @@ pub trait KernelSource: Send + Sync {
     /// # Errors
     /// [`NoKernels`] when this source has no such kernels.
     fn prepare(&self, law: Friction, params: &Parameters) -> Result<Arc<dyn Kernels>, NoKernels>;
-}
-
-/// A compiled variant's constructor: its kernels prepared at the run-time parameters given by
-/// name.
-pub type Prepare = fn(&dyn Fn(&str) -> f64) -> Arc<dyn Kernels>;
-
-/// One compiled variant of a model: its kernels generated for a friction law with some
-/// parameters fixed at generation (`walker/build.rs`).
-#[derive(Clone, Copy)]
-pub struct Variant {
-    /// The friction law the kernels were generated for.
-    pub friction: Friction,
-    /// The parameters substituted at generation, with their values.
-    pub fixed: &'static [(&'static str, f64)],
-    /// Prepares the kernels: the run-time parameters by name.
-    pub prepare: Prepare,
-}
-
-/// The variants of a model compiled into this library.
-#[derive(Clone, Copy)]
-pub struct Compiled {
-    /// The model's name.
-    pub name: &'static str,
-    /// The model file's text (the compiled kernels were generated from exactly this).
-    pub source: &'static str,
-    /// The model's canonical text ([`walker_scene::model::Model::canonical`]): a model file
-    /// whose parsed content has this text runs these kernels, whatever its layout and comments.
-    pub canonical: &'static str,
-    /// The variants, those fixing more parameters first (they are faster where they apply).
-    pub variants: &'static [Variant],
 }
 
 impl KernelSource for Compiled {

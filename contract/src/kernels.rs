@@ -1,187 +1,23 @@
 //! The kernels of a model as the simulator calls them: one interface ([`Kernels`]) whatever
-//! produced them, code generated at build time (`walker/build.rs`, [`crate::compiled`]) or a
+//! produced them, code generated at build time (walker-gen's adapter, [`crate::Compiled`]) or a
 //! model file derived and evaluated at run time (the `walker-load` crate).
 //!
-//! A kernel is named by a [`KernelId`] (the model-independent names of `docs/model-format.md`);
-//! its arguments come as one [`Args`] (coordinates, velocities, inputs, the sliding direction,
-//! auxiliary inputs), from which each implementation takes the ones its kernel reads; its
-//! outputs are written in the derivation's order, flattened row-major.
+//! A kernel is named by a [`KernelId`]; its arguments come as one [`Args`] (coordinates,
+//! velocities, inputs, the sliding direction, auxiliary inputs), from which each implementation
+//! takes the ones its kernel reads ([`crate::Binding`]); its outputs are written in the
+//! derivation's order, flattened row-major.
 //!
 //! Beside [`Kernels::eval`], the interface names what the simulator asks for at every point of
 //! a stance phase: the right-hand side ([`Kernels::stance_rhs`]), the power's sign function
 //! ([`Kernels::power_sign`]) and the sliding foot's ground reaction
 //! ([`Kernels::sliding_lambda`]). Their provided methods assemble them from `eval`; a compiled
 //! variant overrides each with one generated function of the same arithmetic
-//! (`tests/compiled_fused.rs` holds them equal bit for bit), so that no argument struct, slice
-//! or dispatch stands between the integrator and the kernels.
+//! (`walker/tests/compiled_fused.rs` holds them equal bit for bit), so that no argument struct,
+//! slice or dispatch stands between the integrator and the kernels.
 
-use super::desired::{Desired, aux_input};
-use crate::vector::MAX_COORDINATES;
-
-/// A model kernel (`docs/model-format.md`, "The kernels of a model").
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum KernelId {
-    /// `accel`: `qdd` of the sliding stance (inputs as arguments; `u = 0` for a passive walker).
-    Accel,
-    /// `closed_loop`: `[qdd, u]` under the output-following control (Eqs. 27, 31).
-    ClosedLoop,
-    /// `lambda`: the vertical ground reaction of the sliding stance foot (Eqs. 22-23).
-    Lambda,
-    /// `stick`: `[qdd, lambda_t, lambda_n]` with the stance foot stuck.
-    Stick,
-    /// `closed_loop_stick`: `[qdd, u, lambda_t, lambda_n]` stuck, under the control.
-    ClosedLoopStick,
-    /// `impact`: `[lambda_I, qd+]` of the frictionless impact (striking point and locks).
-    Impact,
-    /// `impact_double`: `[lambda_I, qd+]` with the old stance foot held too (the test).
-    ImpactDouble,
-    /// `impact_coulomb`: the ingredients of the impact with Coulomb friction
-    /// (`[qdl, v_t, v_n, v_r, W_tt, W_tn, W_tr, W_nn, W_nr, W_rr, R]`).
-    ImpactCoulomb,
-    /// `events`: `[guard, fall_1, ..]`.
-    Events,
-    /// `relabel`: `[q+, qd+]` in the new stance leg's coordinates, from `q-` and `qd+`.
-    Relabel,
-    /// `points`: `[x_p, z_p]` of every named point.
-    Points,
-    /// `energy`: `[T, V]`.
-    Energy,
-    /// `output_rates`: `[y, yd]` of the controlled outputs.
-    OutputRates,
-    /// `input_rates`: `w_i = S_i^T qd`, the rate at which input `i` does work.
-    InputRates,
-    /// `accel_jacobian`: `d qdd / d [q, qd, mu]` of `accel` (n x (2n + 1)).
-    AccelJacobian,
-    /// `closed_loop_jacobian`: `d [qdd, u] / d [q, qd, mu, v]` of `closed_loop`
-    /// ((n + m) x (2n + 1 + m)).
-    ClosedLoopJacobian,
-    /// `impact_jacobian`: `d qd+ / d [q, qd]` of `impact` (n x 2n).
-    ImpactJacobian,
-    /// `output_rates_jacobian`: `d [y, yd] / d [q, qd]` of `output_rates` (2m x 2n).
-    OutputRatesJacobian,
-    /// `input_rates_jacobian`: `d w / d [q, qd]` of `input_rates` (m x 2n).
-    InputRatesJacobian,
-    /// `relabel_jacobian`: `d [q+, qd+] / d [q-, qd+ of the old coordinates]` of `relabel`
-    /// (2n x 2n).
-    RelabelJacobian,
-}
-
-impl KernelId {
-    /// Every kernel, in the order of `docs/model-format.md`.
-    pub const ALL: [KernelId; 20] = [
-        KernelId::Accel,
-        KernelId::ClosedLoop,
-        KernelId::Lambda,
-        KernelId::Stick,
-        KernelId::ClosedLoopStick,
-        KernelId::Impact,
-        KernelId::ImpactDouble,
-        KernelId::ImpactCoulomb,
-        KernelId::Events,
-        KernelId::Relabel,
-        KernelId::Points,
-        KernelId::Energy,
-        KernelId::OutputRates,
-        KernelId::InputRates,
-        KernelId::AccelJacobian,
-        KernelId::ClosedLoopJacobian,
-        KernelId::ImpactJacobian,
-        KernelId::OutputRatesJacobian,
-        KernelId::InputRatesJacobian,
-        KernelId::RelabelJacobian,
-    ];
-
-    /// The kernel's name in model files and generated code.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            KernelId::Accel => "accel",
-            KernelId::ClosedLoop => "closed_loop",
-            KernelId::Lambda => "lambda",
-            KernelId::Stick => "stick",
-            KernelId::ClosedLoopStick => "closed_loop_stick",
-            KernelId::Impact => "impact",
-            KernelId::ImpactDouble => "impact_double",
-            KernelId::ImpactCoulomb => "impact_coulomb",
-            KernelId::Events => "events",
-            KernelId::Relabel => "relabel",
-            KernelId::Points => "points",
-            KernelId::Energy => "energy",
-            KernelId::OutputRates => "output_rates",
-            KernelId::InputRates => "input_rates",
-            KernelId::AccelJacobian => "accel_jacobian",
-            KernelId::ClosedLoopJacobian => "closed_loop_jacobian",
-            KernelId::ImpactJacobian => "impact_jacobian",
-            KernelId::OutputRatesJacobian => "output_rates_jacobian",
-            KernelId::InputRatesJacobian => "input_rates_jacobian",
-            KernelId::RelabelJacobian => "relabel_jacobian",
-        }
-    }
-
-    /// The kernel called `name`.
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<KernelId> {
-        KernelId::ALL.into_iter().find(|k| k.name() == name)
-    }
-}
-
-/// The arguments of a kernel call: every kernel reads the ones it needs.
-#[derive(Clone, Copy, Debug)]
-pub struct Args<'a> {
-    /// Coordinates `q`.
-    pub q: &'a [f64],
-    /// Velocities `qd`.
-    pub qd: &'a [f64],
-    /// Inputs `u` (the `accel` and `lambda` kernels of a model with inputs).
-    pub u: &'a [f64],
-    /// The sliding direction `sigma` under exact Coulomb friction (`mu = -mu0 sigma`); the
-    /// tanh law reads the foot's velocity `qd[0]` instead.
-    pub sigma: f64,
-    /// The auxiliary inputs `v` of the output-following control (Eq. 32).
-    pub v: &'a [f64],
-}
-
-impl<'a> Args<'a> {
-    /// The state `(q, qd)` with no inputs, `sigma = 0` and no auxiliary inputs.
-    #[must_use]
-    pub fn state(q: &'a [f64], qd: &'a [f64]) -> Args<'a> {
-        Args {
-            q,
-            qd,
-            u: &[],
-            sigma: 0.0,
-            v: &[],
-        }
-    }
-}
-
-/// What the output-following control tracks at one instant (Eq. 32): the desired trajectories
-/// (one per output), the time since the last impact and the gains.
-#[derive(Clone, Copy, Debug)]
-pub struct Tracking<'a> {
-    /// The desired trajectories `y_d`, in output order.
-    pub desired: &'a [Desired],
-    /// The time `t` since the last impact.
-    pub t: f64,
-    /// The gains `(K_P, K_D)`.
-    pub gains: (f64, f64),
-}
-
-impl Tracking<'_> {
-    /// The auxiliary input `v_i` of output `i` at its value `y` and rate `ydot`:
-    /// `ydd_d + K_D (yd_d - ydot) + K_P (y_d - y)` with `[y_d, yd_d, ydd_d] = desired[i](t)`.
-    #[inline]
-    #[must_use]
-    pub fn aux_input(&self, i: usize, y: f64, ydot: f64) -> f64 {
-        aux_input(
-            self.desired[i].at(self.t),
-            y,
-            ydot,
-            self.gains.0,
-            self.gains.1,
-        )
-    }
-}
+use crate::MAX_COORDINATES;
+use crate::args::{Args, Tracking};
+use crate::kernel_id::KernelId;
 
 /// A model's kernels, prepared for one set of run-time parameters.
 pub trait Kernels: Send + Sync {
