@@ -393,7 +393,7 @@ fn module_of(derivation: &Derivation, scene: &Scene) -> Result<Module, Error> {
 /// Whether `out_file` is a regular file that holds exactly `source`: read only when its
 /// metadata says it is a regular file of `source`'s length, so that a device or a pipe as the
 /// target (`/dev/full`, a FIFO) is never read, and a large file is not read whole.
-fn holds(out_file: &Path, source: &str) -> bool {
+pub(crate) fn holds(out_file: &Path, source: &str) -> bool {
     std::fs::metadata(out_file)
         .is_ok_and(|m| m.file_type().is_file() && m.len() == source.len() as u64)
         && std::fs::read(out_file).is_ok_and(|old| old == source.as_bytes())

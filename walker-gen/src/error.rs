@@ -121,4 +121,13 @@ pub enum Error {
     /// No `out_file`, no `out_dir` and no `OUT_DIR` in the environment.
     #[error("no output file: call Config::out_file or Config::out_dir (OUT_DIR is not set)")]
     NoOutFile,
+    /// A kernel argument the kernel contract cannot bind (a generator or model bug).
+    #[error(transparent)]
+    Bind(#[from] walker_contract::BindError),
+    /// A compiled variant's adapter or registry cannot be written ([`crate::Compile`]).
+    #[error("compiled variants: {message}")]
+    Adapter {
+        /// What went wrong.
+        message: String,
+    },
 }

@@ -1,12 +1,17 @@
 #![doc = include_str!("../README.md")]
 
+#[cfg(feature = "emit")]
+pub mod adapter;
 pub mod bind;
+#[cfg(feature = "emit")]
 mod config;
+#[cfg(feature = "emit")]
 pub mod emit;
 pub mod error;
 pub mod ir;
 pub mod lower;
 pub mod model;
+#[cfg(feature = "emit")]
 mod model_scene;
 mod options;
 mod plan;
@@ -17,10 +22,15 @@ pub mod tape;
 /// `walker-scene` so that `walker_gen::scene::Scene` and `walker_gen::Param` keep working.
 pub use walker_scene::{self as scene, catalog};
 
+#[cfg(feature = "emit")]
+pub use adapter::{Compile, CompileReport, VariantSpec};
 pub use bind::ParamNodes;
 pub use catalog::KernelName;
+#[cfg(feature = "emit")]
 pub use config::{Config, GenerateReport};
-pub use emit::{EmitOptions, Float, FloatFunctions, emit};
+#[cfg(feature = "emit")]
+pub use emit::emit;
+pub use options::{EmitOptions, Float, FloatFunctions};
 pub use error::{EmitError, Error};
 pub use ir::{Graph, Kernel, Module, Node, NodeId, ParamDecl, ParamId, Shape};
 pub use model::{ModelScene, derive_model, lower_model};

@@ -111,17 +111,6 @@ impl ModelScene {
     }
 }
 
-/// The kernels a simulation evaluates once per step (at the impact), whose cost does not
-/// matter: they keep the closed form wherever one is derived, whatever its operation count,
-/// because a closed form keeps the impact's constraints exact. The paper's torso lock makes
-/// `th1d+` and `th2d+` one and the same closed form; a structured solve meets it only to
-/// rounding, and an output rate of `1e-16` right after the impact puts a spurious kink of the
-/// input power's integrand at `t = 1e-9`, which changes the integrator's steps (measured: the
-/// input power of the paper's second step moved by 6e-12 relative). Every other kernel is
-/// generated in the form with the smaller estimated time (`Cost::time`: its critical path plus
-/// half its operation count).
-pub const ONCE_PER_STEP: &[&str] = &["impact", "impact_double", "impact_coulomb", "relabel"];
-
 /// Lowers every kernel of `derivation` (derived from `scene.model`) into one [`Module`] named
 /// after the model.
 ///
@@ -214,7 +203,7 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
             binding: &binding,
             kernel: k.name,
         };
-        let form = if k.closed && k.solve.is_some() && ONCE_PER_STEP.contains(&k.name) {
+        let form = if k.closed && k.solve.is_some() && walker_contract::KernelId::from_name(k.name).is_some_and(walker_contract::KernelId::once_per_step) {
             let solve = kernel_cost(&module, &lowering, k, Form::Solve)?.ops;
             module.forms.insert(
                 k.name.to_owned(),

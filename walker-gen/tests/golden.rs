@@ -68,3 +68,55 @@ fn compass_gait_model_matches_golden() {
     config.model_file(root.join("../models/compass-gait.toml"));
     compare("model-compass-gait", &config);
 }
+
+/// The registry and adapters `Compile` writes for `model` (its default variants, or a fast
+/// variant fixing `scene`'s `[fix]` first), against `tests/golden/compiled-<model>.rs`.
+fn check_compiled(model: &str, scene: Option<&str>) {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("golden-compiled-{model}"));
+    std::fs::create_dir_all(&out).expect("create the output directory");
+    let mut compile = walker_gen::Compile::new();
+    compile
+        .model(root.join(format!("../models/{model}.toml")))
+        .out_dir(&out);
+    if let Some(scene) = scene {
+        use walker_gen::{Friction, VariantSpec};
+        compile
+            .variant(
+                VariantSpec::new(Friction::Tanh)
+                    .fixed_by_scene(root.join(format!("../models/scenes/{scene}.toml")))
+                    .jacobians(true),
+            )
+            .variant(VariantSpec::new(Friction::Tanh))
+            .variant(VariantSpec::new(Friction::Coulomb));
+    }
+    compile.generate().expect("the model compiles");
+    let rendered = std::fs::read_to_string(out.join("compiled.rs")).expect("compiled.rs");
+    let name = format!("compiled-{model}");
+    let golden = root.join("tests/golden").join(format!("{name}.rs"));
+    if std::env::var_os("WALKER_GEN_BLESS").is_some_and(|v| v == "1") {
+        std::fs::write(&golden, &rendered).expect("write the golden file");
+        return;
+    }
+    let expected = std::fs::read_to_string(&golden).unwrap_or_default();
+    assert!(
+        expected == rendered,
+        "tests/golden/{name}.rs differs from the generated registry{}\nIf the change is \
+         intended, run `{BLESS}` and review the diff.",
+        first_difference(&expected, &rendered)
+    );
+}
+
+/// The compass gait's adapters (a passive walker: the fused right-hand side without inputs),
+/// one variant per friction law.
+#[test]
+fn compass_gait_adapters_match_golden() {
+    check_compiled("compass-gait", None);
+}
+
+/// The paper's active walker's adapters (inputs: the fused tracking, power sign and lambda),
+/// with its Table 1 variant first, as `walker/build.rs` compiles it.
+#[test]
+fn paper_active_adapters_match_golden() {
+    check_compiled("paper-active", Some("active-level"));
+}

@@ -99,7 +99,7 @@ fn the_papers_model_files_cost_at_most_what_the_papers_scene_kernels_cost() {
         let scene = totals(&["stats", "--scene", &file("walker/scenes", scene_file)]);
         for &(m, s) in pairs {
             let ((model, form), (scene, _)) = (&model[m], &scene[s]);
-            // The impacts are evaluated once per step and keep the closed form (ONCE_PER_STEP).
+            // The impacts are evaluated once per step and keep the closed form (`walker_contract::KernelId::once_per_step`).
             assert_eq!(
                 m.starts_with("impact"),
                 form.contains("once per step"),

@@ -14,6 +14,10 @@ use crate::options::Division;
 
 /// A field of `Prepared`.
 #[derive(Clone, Debug)]
+#[cfg_attr(
+    not(feature = "emit"),
+    allow(dead_code, reason = "read by the emitter (the `emit` feature)")
+)]
 pub(crate) struct Field {
     /// The hoisted node.
     pub node: NodeId,
@@ -25,6 +29,10 @@ pub(crate) struct Field {
 
 /// The plan of one kernel.
 #[derive(Clone, Debug)]
+#[cfg_attr(
+    not(feature = "emit"),
+    allow(dead_code, reason = "read by the emitter (the `emit` feature)")
+)]
 pub(crate) struct KernelPlan {
     /// The output nodes (after rewrites), in output order.
     pub outputs: Vec<NodeId>,
