@@ -1,7 +1,8 @@
-//! `walker`: simulate any model file's walker (the paper's walkers are built in), sweep its
-//! parameters, find and follow its limit cycles, reproduce the paper's figures, and draw the gallery of the shipped
-//! walkers on a slippery floor. The arguments are defined in [`walker_cli::args`]; this file dispatches
-//! the commands and maps their errors to exit codes.
+//! The whole `walker` command line as one function ([`main`]), and the same over a program's
+//! own compiled models ([`main_with`]): a user's crate that compiles its model files from its
+//! build script (`walker_gen::Compile`) gets `simulate`, `sweep`, `fixed-point`, `continue`,
+//! `animate` and the rest over them with a `main` of one line. Parses the arguments
+//! ([`crate::args`]), dispatches the commands and maps their errors to exit codes.
 //!
 //! Exit codes: 0 success (also for a walk that ends in a failure: that is a result), 2 invalid
 //! input, 1 an I/O error.
@@ -10,9 +11,11 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use clap::Parser;
-use walker_cli::args::{Cli, Command, WalkFlags};
-use walker_cli::input::{self, InputError};
-use walker_cli::{animate, continue_cmd, gallery, report, reproduce, run};
+use walker::contract::Compiled;
+
+use crate::args::{Cli, Command, WalkFlags};
+use crate::input::{self, InputError};
+use crate::{animate, continue_cmd, gallery, report, reproduce, run};
 
 /// Why a command did not finish, and its exit code.
 #[derive(Debug, thiserror::Error)]
@@ -269,7 +272,27 @@ fn run(cli: Cli) -> Result<(), CliError> {
     Ok(())
 }
 
-fn main() -> ExitCode {
+/// The `walker` command line over the models compiled into the `walker` library: parses the
+/// process's arguments, runs the command, and returns its exit code.
+#[must_use]
+pub fn main() -> ExitCode {
+    main_with(&[])
+}
+
+/// The `walker` command line with `models` (a crate's `MODELS`, written by
+/// `walker_gen::Compile`) registered beside the library's own ([`walker::setup::register`]):
+/// every model file with the canonical content of one of them runs its compiled kernels.
+///
+/// ```no_run
+/// // src/main.rs of a crate that compiles its own walker:
+/// include!(concat!(env!("OUT_DIR"), "/compiled.rs"));
+/// fn main() -> std::process::ExitCode {
+///     walker_cli::main_with(MODELS)
+/// }
+/// ```
+#[must_use]
+pub fn main_with(models: &'static [Compiled]) -> ExitCode {
+    walker::setup::register(models);
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {

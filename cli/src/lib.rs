@@ -5,7 +5,8 @@
 //! gallery of the shipped walkers on a slippery floor ([`gallery`]) and
 //! animations and stick diagrams of a walk ([`animate`]), and the continuation of gaits
 //! ([`continue_cmd`]).
-//! `src/main.rs` parses the arguments and dispatches to these.
+//! [`main`] parses the arguments and dispatches to these (`src/main.rs` calls it), and
+//! [`main_with`] does the same over a program's own compiled models.
 //!
 //! Imports run one way: [`args`], [`run`], [`gallery`] -> [`reproduce`] -> [`continue_cmd`], [`animate`] -> [`input`],
 //! [`report`], [`plot`], [`progress`] -> the `walker` library.
@@ -13,10 +14,14 @@
 pub mod animate;
 pub mod args;
 pub mod continue_cmd;
+mod dispatch;
 pub mod gallery;
 pub mod input;
 pub mod plot;
+pub mod png;
 pub mod progress;
 pub mod report;
 pub mod reproduce;
 pub mod run;
+
+pub use dispatch::{main, main_with};

@@ -9,11 +9,12 @@
 //! names the paper's walkers. Every parameter is checked against the range its model file gives.
 //!
 //! A model's kernels come from the variants compiled into this library ([`crate::compiled`])
-//! when the model file is one of the shipped ones, byte for byte; otherwise from a
+//! or registered ([`register`]) when the model file has the canonical content of one of
+//! them; otherwise from a
 //! [`RuntimeSource`] the caller gives (the `walker-load` crate derives the file at run time).
 
 use std::path::{Path, PathBuf};
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, OnceLock, PoisonError, RwLock};
 
 use walker_scene::model::Model as ModelFile;
 use walker_scene::model::ModelError;
@@ -177,15 +178,59 @@ pub struct Setup {
     pub fixed: Vec<(String, f64)>,
 }
 
-/// The walker of a model file: the compiled variants of the shipped model with the same
-/// canonical content ([`ModelFile::canonical`]: layout, comments, names and docs aside), else
-/// the run-time source.
+/// The compiled models a program adds to this library's own ([`crate::compiled::MODELS`]).
+static REGISTERED: RwLock<Vec<&'static Compiled>> = RwLock::new(Vec::new());
+
+/// Adds compiled models to those [`walker_of`] (and so every scene, model file and front end)
+/// looks a model file up in: a user's crate that compiles its own model files from its build
+/// script (`walker_gen::Compile`) registers its `MODELS` once, and every model file with the
+/// same canonical content then runs its compiled kernels, with no change to this library. A
+/// model registered twice is kept once; the registered models are looked up before the
+/// shipped ones.
+pub fn register(models: &'static [Compiled]) {
+    let mut registered = REGISTERED.write().unwrap_or_else(PoisonError::into_inner);
+    for c in models {
+        if !registered.iter().any(|r| std::ptr::eq(*r, c)) {
+            registered.push(c);
+        }
+    }
+}
+
+/// The compiled model whose canonical content is `canonical`: a registered one, else a
+/// shipped one.
+fn compiled_by_canonical(canonical: &str) -> Option<&'static Compiled> {
+    let registered = REGISTERED.read().unwrap_or_else(PoisonError::into_inner);
+    registered
+        .iter()
+        .copied()
+        .chain(MODELS)
+        .find(|c| c.canonical == canonical)
+}
+
+impl Walker {
+    /// The walker of a compiled model (a user crate's `MODELS` entry, or one of
+    /// [`crate::compiled::MODELS`]): its model file as it was compiled, its kernels from its
+    /// variants.
+    ///
+    /// # Errors
+    /// The model's text does not parse or cannot be simulated (a model compiled by another
+    /// version of the generator).
+    pub fn from_compiled(compiled: &'static Compiled) -> Result<Walker, SetupError> {
+        let path = format!("{}.toml", compiled.name);
+        let model = ModelFile::from_toml(compiled.source, &path)?;
+        let source: Arc<dyn KernelSource> = Arc::new(*compiled);
+        Ok(Walker::new(Spec::new(model)?, source))
+    }
+}
+
+/// The walker of a model file: the compiled variants of a registered ([`register`]) or shipped
+/// model with the same canonical content ([`ModelFile::canonical`]: layout, comments, names
+/// and docs aside), else the run-time source.
 ///
 /// # Errors
 /// The model cannot be simulated, or is not compiled in and the run-time source fails.
 pub fn walker_of(model: ModelFile, runtime: Option<&RuntimeSource>) -> Result<Walker, SetupError> {
-    let canonical = model.canonical();
-    if let Some(c) = MODELS.iter().find(|c| c.canonical == canonical) {
+    if let Some(c) = compiled_by_canonical(&model.canonical()) {
         let source: Arc<dyn KernelSource> = Arc::new(*c);
         return Ok(Walker::new(Spec::new(model)?, source));
     }
@@ -193,7 +238,7 @@ pub fn walker_of(model: ModelFile, runtime: Option<&RuntimeSource>) -> Result<Wa
     let Some(runtime) = runtime else {
         return Err(SetupError::NotCompiled {
             model: name,
-            message: "it is not one of the shipped models compiled into this library, and no \
+            message: "it is not one of the models compiled into this program, and no \
                       run-time source was given (the `walker` command line derives model files \
                       at run time)"
                 .to_owned(),
@@ -206,8 +251,8 @@ pub fn walker_of(model: ModelFile, runtime: Option<&RuntimeSource>) -> Result<Wa
     Ok(Walker::new(Spec::new(model)?, source))
 }
 
-/// The compiled model whose file is `models/<file name>` (for the built-in scenes, which name
-/// their model by a relative path).
+/// The shipped compiled model whose file is `models/<file name>` (for the built-in scenes,
+/// which name their model by a relative path).
 fn compiled_by_file(path: &str) -> Option<&'static Compiled> {
     let stem = Path::new(path).file_stem()?.to_str()?;
     MODELS.iter().find(|c| c.name == stem)
@@ -338,20 +383,26 @@ impl Setup {
     ) -> Result<Setup, SetupError> {
         let text = read_model(path)?;
         let model = ModelFile::from_toml(&text, &path.display().to_string())?;
-        let friction = model.stance.default_friction();
-        let impact = model.impact.law;
-        let name = model.name.clone();
-        let walker = walker_of(model, runtime)?;
-        let mut setup = Setup {
+        let mut setup = Setup::of(walker_of(model, runtime)?);
+        setup.apply(ov)?;
+        Ok(setup)
+    }
+
+    /// The walker's model as a scene of its own: its defaults, its first friction law other
+    /// than `none`, its impact law, named after the model (for a walker a program made itself,
+    /// such as [`Walker::from_compiled`]).
+    #[must_use]
+    pub fn of(walker: Walker) -> Setup {
+        let model = &walker.spec().model;
+        let (friction, impact) = (model.stance.default_friction(), model.impact.law);
+        Setup {
             params: walker.defaults(),
+            name: walker.spec().name().to_owned(),
             walker,
-            name,
             friction,
             impact,
             fixed: Vec::new(),
-        };
-        setup.apply(ov)?;
-        Ok(setup)
+        }
     }
 
     /// The setup of a model scene (not yet overridden).
