@@ -313,10 +313,7 @@ pub fn save(fig: &Figure, stem: &Path) -> Result<(), String> {
     register();
     let png = stem.with_extension("png");
     let svg = stem.with_extension("svg");
-    draw(
-        BitMapBackend::new(&png, (800, 500)).into_drawing_area(),
-        fig,
-    )?;
+    crate::png::write_png(&png, (800, 500), |area| draw(area, fig))?;
     draw(SVGBackend::new(&svg, (800, 500)).into_drawing_area(), fig)?;
     Ok(())
 }
@@ -333,12 +330,7 @@ pub fn save_grid(
     register();
     let png = stem.with_extension("png");
     let svg = stem.with_extension("svg");
-    draw_grid(
-        BitMapBackend::new(&png, size).into_drawing_area(),
-        title,
-        panels,
-        cols,
-    )?;
+    crate::png::write_png(&png, size, |area| draw_grid(area, title, panels, cols))?;
     draw_grid(
         SVGBackend::new(&svg, size).into_drawing_area(),
         title,

@@ -116,14 +116,20 @@ fn interval_text(f: &Film) -> String {
 /// Plotters could not draw or write the file (the message says which).
 pub fn strobe_png(f: &Film, path: &Path) -> Result<(), String> {
     crate::plot::register();
-    let area = BitMapBackend::new(path, (f.view.width, f.view.height)).into_drawing_area();
+    crate::png::write_png(path, (f.view.width, f.view.height), |area| {
+        draw_strobe(&area, f)
+    })
+}
+
+/// Draws the stick diagram of `f` on `area`.
+fn draw_strobe(area: &DrawingArea<BitMapBackend<'_>, plotters::coord::Shift>, f: &Film) -> Result<(), String> {
     let e = |x: &dyn std::fmt::Display| x.to_string();
     area.fill(&WHITE).map_err(|x| e(&x))?;
     let c = f.view.fixed;
-    raster::floor(&area, f, c)?;
-    raster::slip(&area, f, c, f.marks.len().saturating_sub(1))?;
+    raster::floor(area, f, c)?;
+    raster::slip(area, f, c, f.marks.len().saturating_sub(1))?;
     for p in &f.poses {
-        raster::stick(&area, f, p, c, RGBColor(0x55, 0x55, 0x55))?;
+        raster::stick(area, f, p, c, RGBColor(0x55, 0x55, 0x55))?;
     }
     let font = ("sans-serif", 14).into_font();
     area.draw(&Text::new(f.title.clone(), (10, 8), font.clone()))

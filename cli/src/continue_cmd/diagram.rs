@@ -175,6 +175,6 @@ pub fn save(d: &Diagram<'_>, path: &Path) -> Result<(), String> {
     if path.extension().is_some_and(|x| x == "svg") {
         draw(SVGBackend::new(path, (800, 500)).into_drawing_area(), d)
     } else {
-        draw(BitMapBackend::new(path, (800, 500)).into_drawing_area(), d)
+        crate::png::write_png(path, (800, 500), |area| draw(area, d))
     }
 }
