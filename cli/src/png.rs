@@ -23,8 +23,12 @@ pub fn write_png(
     (width, height): (u32, u32),
     draw: impl FnOnce(DrawingArea<BitMapBackend<'_>, Shift>) -> Result<(), String>,
 ) -> Result<(), String> {
-    let len = usize::try_from(u64::from(width) * u64::from(height) * 3)
-        .map_err(|_| format!("{}: an image of {width} x {height} is too large", path.display()))?;
+    let len = usize::try_from(u64::from(width) * u64::from(height) * 3).map_err(|_| {
+        format!(
+            "{}: an image of {width} x {height} is too large",
+            path.display()
+        )
+    })?;
     let mut rgb = vec![0u8; len];
     draw(BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area())?;
     let io = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());

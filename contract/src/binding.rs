@@ -88,7 +88,9 @@ impl Binding {
     /// # Errors
     /// The first argument [`Binding::of`] refuses.
     pub fn all<S: AsRef<str>>(model: &Model, args: &[S]) -> Result<Vec<Binding>, BindError> {
-        args.iter().map(|a| Binding::of(model, a.as_ref())).collect()
+        args.iter()
+            .map(|a| Binding::of(model, a.as_ref()))
+            .collect()
     }
 
     /// The argument's value in the call `a` (NaN where the call does not give it: an input

@@ -30,10 +30,10 @@ pub use catalog::KernelName;
 pub use config::{Config, GenerateReport};
 #[cfg(feature = "emit")]
 pub use emit::emit;
-pub use options::{EmitOptions, Float, FloatFunctions};
 pub use error::{EmitError, Error};
 pub use ir::{Graph, Kernel, Module, Node, NodeId, ParamDecl, ParamId, Shape};
 pub use model::{ModelScene, derive_model, lower_model};
 pub use options::Division;
+pub use options::{EmitOptions, Float, FloatFunctions};
 pub use scene::{Floor, Friction, Param, Scene, SceneError, Torso};
 pub use stats::{OpCounts, Stats, stats};

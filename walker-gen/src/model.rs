@@ -203,7 +203,11 @@ pub fn lower_model(derivation: &ModelDerivation, scene: &ModelScene) -> Result<M
             binding: &binding,
             kernel: k.name,
         };
-        let form = if k.closed && k.solve.is_some() && walker_contract::KernelId::from_name(k.name).is_some_and(walker_contract::KernelId::once_per_step) {
+        let form = if k.closed
+            && k.solve.is_some()
+            && walker_contract::KernelId::from_name(k.name)
+                .is_some_and(walker_contract::KernelId::once_per_step)
+        {
             let solve = kernel_cost(&module, &lowering, k, Form::Solve)?.ops;
             module.forms.insert(
                 k.name.to_owned(),

@@ -19,20 +19,26 @@ fn check(scene: &str) {
 }
 
 fn compare(scene: &str, config: &Config) {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let golden = root.join("tests/golden").join(format!("{scene}.rs"));
     let rendered = config.render().expect("the scene renders");
+    check_text(scene, &rendered, "the rendered source");
+}
+
+/// `rendered` against `tests/golden/<name>.rs` (`what` names it in the failure message), or
+/// written there when blessing.
+fn check_text(name: &str, rendered: &str, what: &str) {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let golden = root.join("tests/golden").join(format!("{name}.rs"));
     if std::env::var_os("WALKER_GEN_BLESS").is_some_and(|v| v == "1") {
         std::fs::create_dir_all(root.join("tests/golden")).expect("create tests/golden");
-        std::fs::write(&golden, &rendered).expect("write the golden file");
+        std::fs::write(&golden, rendered).expect("write the golden file");
         return;
     }
     let expected = std::fs::read_to_string(&golden).unwrap_or_default();
     assert!(
         expected == rendered,
-        "tests/golden/{scene}.rs differs from the rendered source{}\nIf the change is \
-         intended, run `{BLESS}` and review the diff.",
-        first_difference(&expected, &rendered)
+        "tests/golden/{name}.rs differs from {what}{}\nIf the change is intended, run \
+         `{BLESS}` and review the diff.",
+        first_difference(&expected, rendered)
     );
 }
 
@@ -92,18 +98,10 @@ fn check_compiled(model: &str, scene: Option<&str>) {
     }
     compile.generate().expect("the model compiles");
     let rendered = std::fs::read_to_string(out.join("compiled.rs")).expect("compiled.rs");
-    let name = format!("compiled-{model}");
-    let golden = root.join("tests/golden").join(format!("{name}.rs"));
-    if std::env::var_os("WALKER_GEN_BLESS").is_some_and(|v| v == "1") {
-        std::fs::write(&golden, &rendered).expect("write the golden file");
-        return;
-    }
-    let expected = std::fs::read_to_string(&golden).unwrap_or_default();
-    assert!(
-        expected == rendered,
-        "tests/golden/{name}.rs differs from the generated registry{}\nIf the change is \
-         intended, run `{BLESS}` and review the diff.",
-        first_difference(&expected, &rendered)
+    check_text(
+        &format!("compiled-{model}"),
+        &rendered,
+        "the generated registry",
     );
 }
 

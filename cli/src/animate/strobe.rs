@@ -122,7 +122,10 @@ pub fn strobe_png(f: &Film, path: &Path) -> Result<(), String> {
 }
 
 /// Draws the stick diagram of `f` on `area`.
-fn draw_strobe(area: &DrawingArea<BitMapBackend<'_>, plotters::coord::Shift>, f: &Film) -> Result<(), String> {
+fn draw_strobe(
+    area: &DrawingArea<BitMapBackend<'_>, plotters::coord::Shift>,
+    f: &Film,
+) -> Result<(), String> {
     let e = |x: &dyn std::fmt::Display| x.to_string();
     area.fill(&WHITE).map_err(|x| e(&x))?;
     let c = f.view.fixed;

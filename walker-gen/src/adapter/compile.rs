@@ -185,15 +185,14 @@ impl Compile {
                 .map(PathBuf::from)
                 .ok_or(Error::NoOutFile)?,
         };
-        let contract: TokenStream =
-            syn::parse_str::<syn::Path>(&self.contract).map_or_else(
-                |e| {
-                    Err(Error::Adapter {
-                        message: format!("contract path `{}`: {e}", self.contract),
-                    })
-                },
-                |p| Ok(quote!(#p)),
-            )?;
+        let contract: TokenStream = syn::parse_str::<syn::Path>(&self.contract).map_or_else(
+            |e| {
+                Err(Error::Adapter {
+                    message: format!("contract path `{}`: {e}", self.contract),
+                })
+            },
+            |p| Ok(quote!(#p)),
+        )?;
         let mut modules = Vec::new();
         let mut entries = Vec::new();
         let mut report = CompileReport {

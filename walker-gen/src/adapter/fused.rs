@@ -152,8 +152,7 @@ impl Fused<'_> {
                 false,
             )
         } else {
-            let (Some(rates), Some(w)) =
-                (self.kernel("output_rates"), self.kernel("input_rates"))
+            let (Some(rates), Some(w)) = (self.kernel("output_rates"), self.kernel("input_rates"))
             else {
                 return Ok(TokenStream::new());
             };

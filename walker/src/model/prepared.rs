@@ -13,10 +13,10 @@ use walker_scene::model::Stage;
 use super::contact::{Contact, FrictionLaw, Reaction};
 use super::friction_impact::{ImpactJam, ImpactRegime, Ingredients, plastic_coulomb, rear_test};
 use super::impact::{ImpactResult, PostImpact};
-use walker_contract::{Args, Desired, KernelId, Kernels, Tracking, power};
 use super::parameters::{ParamError, Parameters};
 use super::spec::Spec;
 use crate::vector::{MAX_COORDINATES, MAX_LEN, Vector};
+use walker_contract::{Args, Desired, KernelId, Kernels, Tracking, power};
 
 /// A walker model: its kernels prepared for `params`, the laws of its contacts, and what the
 /// simulator needs from the model file, evaluated once.
