@@ -81,5 +81,10 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench);
+criterion_group! {
+    name = benches;
+    // No plots: plotters' fonts are not on every machine.
+    config = Criterion::default().without_plots();
+    targets = bench
+}
 criterion_main!(benches);
