@@ -6,10 +6,12 @@
 //! `models/paper-*.toml` in the paper's notation, lowered by the scene path) with the same
 //! adapters, so that `walker-gen --scene` of a paper scene stays under the same tests as the
 //! model files' kernels, and the two lowerings are compared.
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use walker_gen::{Config, Friction, Shape};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use walker_gen::adapter::{by_name_adapter, render};
+use walker_gen::{Config, Friction};
 
 fn main() {
     if let Err(e) = run() {
@@ -27,11 +29,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         .filter(|p| p.extension().is_some_and(|x| x == "toml"))
         .collect();
     files.sort();
-    let mut index = String::from(
-        "/// Every model of `models/`: its name and its kernels called by name.\n\
-         pub const MODELS: &[GeneratedModel] = &[\n",
-    );
-    let mut modules = String::new();
+    let mut modules = Index::default();
     for path in &files {
         println!("cargo:rerun-if-changed={}", path.display());
         let name = path
@@ -49,17 +47,15 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         let module = config.module()?;
         std::fs::write(out.join(format!("model_{ident}.rs")), config.render()?)?;
         let doc = format!("The kernels of `models/{name}.toml` (generated with Coulomb friction).");
-        entry(
-            &mut modules,
-            &mut index,
-            (&name, &ident),
-            &doc,
-            &format!("model_{ident}.rs"),
-            &module,
-        );
+        modules.add((&name, &ident), &doc, &format!("model_{ident}.rs"), &module);
     }
-    index.push_str("];\n");
-    std::fs::write(out.join("models.rs"), modules + &index)?;
+    std::fs::write(
+        out.join("models.rs"),
+        modules.render(
+            "MODELS",
+            "Every model of `models/`: its name and its kernels called by name.",
+        )?,
+    )?;
     scenes(&out)?;
     Ok(())
 }
@@ -81,11 +77,7 @@ const SCENES: [&str; 6] = [
 fn scenes(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../walker/scenes");
     let derivation = walker_gen::lower::derive()?;
-    let mut modules = String::new();
-    let mut index = String::from(
-        "/// The paper's scenes: name and kernels called by name.\n\
-         pub const SCENES: &[GeneratedModel] = &[\n",
-    );
+    let mut modules = Index::default();
     for name in SCENES {
         let path = dir.join(format!("{name}.toml"));
         println!("cargo:rerun-if-changed={}", path.display());
@@ -99,71 +91,55 @@ fn scenes(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
         let doc = format!(
             "The kernels of `walker/scenes/{name}.toml`, generated from the paper's catalogue."
         );
-        entry(
-            &mut modules,
-            &mut index,
-            (name, &ident),
-            &doc,
-            &format!("scene_{ident}.rs"),
-            &module,
-        );
+        modules.add((name, &ident), &doc, &format!("scene_{ident}.rs"), &module);
     }
-    index.push_str("];\n");
-    std::fs::write(out.join("scenes.rs"), modules + &index)?;
+    std::fs::write(
+        out.join("scenes.rs"),
+        modules.render(
+            "SCENES",
+            "The paper's scenes: name and kernels called by name.",
+        )?,
+    )?;
     Ok(())
 }
 
-/// Appends to `modules` the module `ident` (documented by `doc`) that includes the generated
-/// `file` and calls its kernels by name, and to `index` its `GeneratedModel` entry.
-fn entry(
-    modules: &mut String,
-    index: &mut String,
-    (name, ident): (&str, &str),
-    doc: &str,
-    file: &str,
-    module: &walker_gen::Module,
-) {
-    let (arms, outputs) = adapter(module);
-    let _ = write!(
-        modules,
-        "/// {doc}\n\
-         #[allow(clippy::all, clippy::pedantic, missing_docs, reason = \"generated\")]\n\
-         pub mod {ident} {{\n\
-         include!(concat!(env!(\"OUT_DIR\"), \"/{file}\"));\n\
-         /// Calls kernel `kernel` with parameters and arguments by name; `None` for a \
-         kernel it does not have.\n\
-         pub fn call(kernel: &str, param: &dyn Fn(&str) -> f64, arg: &dyn Fn(&str) -> f64) \
-         -> Option<Vec<f64>> {{\n\
-         let p = prepare(&Params::from_fn(|n| param(n)));\n\
-         Some(match kernel {{\n{arms}        _ => return None,\n    }})\n}}\n\
-         /// Every kernel and its output names.\n\
-         pub const KERNELS: &[(&str, &[&str])] = &[\n{outputs}];\n}}\n"
-    );
-    let _ = writeln!(
-        index,
-        "    GeneratedModel {{ name: \"{name}\", call: {ident}::call, kernels: {ident}::KERNELS }},"
-    );
+/// Modules that call their kernels by name (walker-gen's by-name adapter), and the index of
+/// them.
+#[derive(Default)]
+struct Index {
+    modules: Vec<TokenStream>,
+    entries: Vec<TokenStream>,
 }
 
-/// The match arms that call each kernel of `module` by name, and its `KERNELS` entries.
-fn adapter(module: &walker_gen::Module) -> (String, String) {
-    let mut arms = String::new();
-    let mut outputs = String::new();
-    for k in &module.kernels {
-        let args: Vec<String> = k.args.iter().map(|a| format!("arg(\"{a}\")")).collect();
-        let flatten = match k.output_shape {
-            Shape::Scalar => "vec![out]",
-            Shape::Vector(_) => "out.to_vec()",
-            Shape::Matrix(..) => "out.iter().flatten().copied().collect()",
-        };
-        let _ = writeln!(
-            arms,
-            "        \"{0}\" => {{ let out = {0}(&p, {1}); {flatten} }}",
-            k.name,
-            args.join(", ")
-        );
-        let names: Vec<String> = k.outputs.iter().map(|(n, _)| format!("\"{n}\"")).collect();
-        let _ = writeln!(outputs, "    (\"{}\", &[{}]),", k.name, names.join(", "));
+impl Index {
+    /// Adds the module `ident` (documented by `doc`) over the generated `file` of `module`, and
+    /// its `GeneratedModel` entry named `name`.
+    fn add(
+        &mut self,
+        (name, ident): (&str, &str),
+        doc: &str,
+        file: &str,
+        module: &walker_gen::Module,
+    ) {
+        let ident = format_ident!("{ident}");
+        self.modules
+            .push(by_name_adapter(module, &ident, &format!("/{file}"), doc));
+        self.entries.push(quote! {
+            GeneratedModel { name: #name, call: #ident::call, kernels: #ident::KERNELS }
+        });
     }
-    (arms, outputs)
+
+    /// The modules and the index `pub const <name>: &[GeneratedModel]`, documented by `doc`,
+    /// as a formatted file.
+    fn render(self, name: &str, doc: &str) -> Result<String, walker_gen::Error> {
+        let (modules, entries, name) = (self.modules, self.entries, format_ident!("{name}"));
+        render(
+            quote! {
+                #(#modules)*
+                #[doc = #doc]
+                pub const #name: &[GeneratedModel] = &[#(#entries),*];
+            },
+            "tests/build.rs (walker-gen's by-name adapters)",
+        )
+    }
 }
