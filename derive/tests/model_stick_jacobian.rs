@@ -20,7 +20,11 @@ fn check(name: &str) {
     let jac = d.kernel("stick_jacobian").expect("stick_jacobian");
     let n = d.syms.q.len();
     let state: Vec<_> = d.syms.q.iter().chain(&d.syms.qd).copied().collect();
-    assert_eq!(stick.outputs.len(), n + 2, "{name}: qdd, lambda_t, lambda_n");
+    assert_eq!(
+        stick.outputs.len(),
+        n + 2,
+        "{name}: qdd, lambda_t, lambda_n"
+    );
     assert_eq!(jac.outputs.len(), (n + 2) * 2 * n, "{name}: (n + 2) x 2n");
     for (i, (out, f)) in stick.outputs.iter().enumerate() {
         for (j, &x) in state.iter().enumerate() {

@@ -89,5 +89,9 @@ fn main() {
     .expect("the model")
     .model()
     .expect("kernels");
-    bench("simplest-walker (run time, Coulomb, stuck)", &simplest, &cfg);
+    bench(
+        "simplest-walker (run time, Coulomb, stuck)",
+        &simplest,
+        &cfg,
+    );
 }

@@ -111,7 +111,12 @@ fn coordinate_column(
         down[j] -= h;
         let (a, b) = (map(&up)?, map(&down)?);
         let width = up[j] - down[j];
-        Some(a.iter().zip(b.iter()).map(|(a, b)| (a - b) / width).collect())
+        Some(
+            a.iter()
+                .zip(b.iter())
+                .map(|(a, b)| (a - b) / width)
+                .collect(),
+        )
     };
     let (d1, d2) = (central(h)?, central(2.0 * h)?);
     Some(

@@ -71,8 +71,8 @@ mod variational;
 
 pub use continuation::{ContinuationPoint, continuation};
 pub use error::{FixedPointError, MapError};
-pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
 pub use finite_difference::finite_difference_map_with_step;
+pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
 pub use map::{poincare_map, poincare_map_with};
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
 pub use result::{JacobianMethod, MapResult};

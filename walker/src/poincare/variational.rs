@@ -241,10 +241,8 @@ pub(super) fn stance<const NA: usize>(
         jac,
         contact: &contact,
     };
-    let mut integ = Integrator::<NA>::new(
-        cfg.method,
-        crate::ode::Tolerances::new(cfg.rtol, cfg.atol),
-    );
+    let mut integ =
+        Integrator::<NA>::new(cfg.method, crate::ode::Tolerances::new(cfg.rtol, cfg.atol));
     let mut t = 0.0;
     // One budget of attempted steps for the whole stance phase, as in the simulation
     // (`sim/step.rs`): each call after a breakpoint gets what the earlier ones left, and every
