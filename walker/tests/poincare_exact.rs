@@ -251,7 +251,7 @@ fn sliding_wheel(impact: ImpactLaw, mu0: f64) -> (Model, Vec<f64>, walker::sim::
     let w = walker::sim::walk(&model, &SimConfig::default(), &model.start_state(), &limits);
     assert!(w.failure.is_none(), "{:?}", w.failure);
     let s = w.last_state().expect("a step").to_vec();
-    let last = w.steps.last().expect("a step").clone();
+    let last = *w.steps.last().expect("a step");
     (model, s, last)
 }
 
