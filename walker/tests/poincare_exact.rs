@@ -301,3 +301,48 @@ fn a_foot_sliding_through_the_stance_and_the_impact_has_the_exact_jacobian() {
     let d = exact_against_extrapolated(&model, &s);
     assert!(d < 1e-8, "exact against extrapolated differences: {d:e}");
 }
+
+#[test]
+fn the_compass_gait_derived_at_run_time_has_the_exact_jacobian_of_its_held_gait() {
+    // No closed form for its sliding stance (its M^-1 is too large), but its stuck stance has
+    // one (stick_jacobian): the held gait of Goswami et al. with friction at the impact.
+    let path = uncompiled("compass-gait", "held");
+    let source = walker_load::runtime_source();
+    let ov = Overrides {
+        friction: Some(Friction::Coulomb),
+        impact: Some(ImpactLaw::Coulomb),
+        set: vec![("mu0".into(), 5.0)],
+        ..Overrides::default()
+    };
+    let setup = Setup::from_model_file(&path, &ov, Some(&source as &_)).expect("sets up");
+    let _ = std::fs::remove_file(path);
+    let model = setup.model().expect("kernels");
+    let fp = fixed_point(
+        &model,
+        &SimConfig::default(),
+        &FixedPointOptions::for_model(&model),
+    )
+    .expect("a fixed point");
+    assert_eq!(fp.status, Status::Converged, "{fp:?}");
+    assert_eq!(fp.jacobian_method, JacobianMethod::Variational);
+    assert_eq!(fp.impact, ImpactRegime::Stick);
+    // The foot at rest: its velocity's columns are zero in the exact Jacobian and one-sided in
+    // the differences; every other column as in the sliding checks above (seen: 1.5e-10).
+    let n = model.n();
+    let cfg = SimConfig::default();
+    let exact =
+        poincare_map_with(&model, &cfg, &fp.state_plus, JacobianMethod::Variational).expect("map");
+    let fd = |h| finite_difference_map_with_step(&model, &cfg, &fp.state_plus, h).expect("map");
+    let (a, b) = (fd(1e-5), fd(2e-5));
+    let mut worst: f64 = 0.0;
+    for i in 0..2 * n {
+        for j in (2..2 * n).filter(|&j| j != n && j != n + 1) {
+            let rich = (4.0 * a.jacobian[i][j] - b.jacobian[i][j]) / 3.0;
+            worst = worst.max((exact.jacobian[i][j] - rich).abs());
+        }
+    }
+    assert!(
+        worst < 1e-8,
+        "exact against extrapolated differences: {worst:e}"
+    );
+}
