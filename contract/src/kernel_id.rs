@@ -48,11 +48,14 @@ pub enum KernelId {
     /// `relabel_jacobian`: `d [q+, qd+] / d [q-, qd+ of the old coordinates]` of `relabel`
     /// (2n x 2n).
     RelabelJacobian,
+    /// `stick_jacobian`: `d [qdd, lambda_t, lambda_n] / d [q, qd]` of `stick`
+    /// ((n + 2) x 2n; a model without inputs whose stuck stance has a closed form).
+    StickJacobian,
 }
 
 impl KernelId {
     /// Every kernel, in the order of `docs/model-format.md`.
-    pub const ALL: [KernelId; 20] = [
+    pub const ALL: [KernelId; 21] = [
         KernelId::Accel,
         KernelId::ClosedLoop,
         KernelId::Lambda,
@@ -73,6 +76,7 @@ impl KernelId {
         KernelId::OutputRatesJacobian,
         KernelId::InputRatesJacobian,
         KernelId::RelabelJacobian,
+        KernelId::StickJacobian,
     ];
 
     /// The kernel's name in model files and generated code.
@@ -99,6 +103,7 @@ impl KernelId {
             KernelId::OutputRatesJacobian => "output_rates_jacobian",
             KernelId::InputRatesJacobian => "input_rates_jacobian",
             KernelId::RelabelJacobian => "relabel_jacobian",
+            KernelId::StickJacobian => "stick_jacobian",
         }
     }
 
@@ -115,6 +120,7 @@ impl KernelId {
                 | KernelId::OutputRatesJacobian
                 | KernelId::InputRatesJacobian
                 | KernelId::RelabelJacobian
+                | KernelId::StickJacobian
         )
     }
 

@@ -7,7 +7,10 @@
 //! The kernels differentiate with respect to the friction coefficient `mu` and the auxiliary
 //! inputs `v` as symbols of their own; the chain rule through `mu(xd) = -mu0 tanh(c xd / cos
 //! phi)` (Eqs. 26, 37) and through `v = ydd_d + K_D (yd_d - ydot) + K_P (y_d - y)` (Eq. 32) is
-//! applied here.
+//! applied here. Under exact Coulomb friction a sliding phase has `mu = -mu0 sigma`, constant,
+//! and a stuck phase its own kernel (`stick_jacobian`, with the ground force's rows for the
+//! slip guard): [`StanceJacobian::any_law`], [`StanceJacobian::accel_in`], for the Poincare
+//! map's variational equations (`docs/poincare.md`).
 
 use crate::model::{Args, Contact, FrictionLaw, KernelId, Model};
 use crate::vector::MAX_COORDINATES;
@@ -60,6 +63,32 @@ impl<'a> StanceJacobian<'a> {
         Ok(Self { model })
     }
 
+    /// The Jacobian of `model`'s stance for the Poincare map's variational equations under
+    /// either friction law: no kernel is required here; [`StanceJacobian::has_contact`] says
+    /// which contacts the model's kernels differentiate (the simulator's stiff integrator keeps
+    /// [`StanceJacobian::new`], so that its walks do not change).
+    #[must_use]
+    pub fn any_law(model: &'a Model) -> Self {
+        Self { model }
+    }
+
+    /// Whether the model's kernels give the stance Jacobian in the contact `contact`: the
+    /// sliding (or smooth) stance from `accel_jacobian` (`closed_loop_jacobian` with
+    /// `output_rates_jacobian` for a model with inputs), the stuck stance from `stick_jacobian`
+    /// (a model without inputs).
+    #[must_use]
+    pub fn has_contact(&self, contact: Contact) -> bool {
+        let k = self.model.kernels();
+        if self.model.is_stuck(contact) {
+            return self.model.inputs() == 0 && k.has(KernelId::StickJacobian);
+        }
+        if self.model.is_active() {
+            k.has(KernelId::ClosedLoopJacobian) && k.has(KernelId::OutputRatesJacobian)
+        } else {
+            k.has(KernelId::AccelJacobian)
+        }
+    }
+
     /// `d mu / d xd` of the tanh law at the foot's velocity `xd`.
     fn dmu(&self, xd: f64) -> f64 {
         let m = self.model;
@@ -73,16 +102,36 @@ impl<'a> StanceJacobian<'a> {
     /// after the accelerations) at `(t, y)`, the chain rule through `mu(xd)` and `v(t, y)`
     /// applied, written row-major into `out` with row stride `2n`.
     pub fn accel(&self, t: f64, y: &[f64], out: &mut [f64]) {
+        self.accel_in(t, y, Contact::Smooth, out);
+    }
+
+    /// [`StanceJacobian::accel`] in the contact `contact`: the smooth law's chain rule through
+    /// `mu(xd)`; sliding under exact Coulomb friction `mu = -mu0 sigma` is constant (no `mu`
+    /// term); stuck, the `n` rows of `qdd` from `stick_jacobian` (its rows of `x`, `z` are
+    /// zero: the foot is held). The contact's kernels must exist
+    /// ([`StanceJacobian::has_contact`]).
+    pub fn accel_in(&self, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
         let m = self.model;
         let (n, inputs) = (m.n(), m.inputs());
         let (q, qd) = (&y[..n], &y[n..2 * n]);
+        if m.is_stuck(contact) {
+            let mut k = [0.0; MAX_JAC];
+            self.stick(y, &mut k[..(n + 2) * 2 * n]);
+            out[..n * 2 * n].copy_from_slice(&k[..n * 2 * n]);
+            return;
+        }
+        let sliding = contact != Contact::Smooth;
+        let sigma = contact.sigma();
         let cols = 2 * n + 1 + inputs;
         let mut k = [0.0; MAX_JAC];
-        let dmu = self.dmu(qd[0]);
+        let dmu = if sliding { 0.0 } else { self.dmu(qd[0]) };
         if inputs == 0 {
             m.kernels().eval(
                 KernelId::AccelJacobian,
-                &Args::state(q, qd),
+                &Args {
+                    sigma,
+                    ..Args::state(q, qd)
+                },
                 &mut k[..n * cols],
             );
             for i in 0..n {
@@ -90,7 +139,9 @@ impl<'a> StanceJacobian<'a> {
                 for j in 0..2 * n {
                     out[i * 2 * n + j] = row[j];
                 }
-                out[i * 2 * n + n] = row[n] + row[2 * n] * dmu;
+                if !sliding {
+                    out[i * 2 * n + n] = row[n] + row[2 * n] * dmu;
+                }
             }
             return;
         }
@@ -98,6 +149,7 @@ impl<'a> StanceJacobian<'a> {
         m.aux_inputs(t, y, &mut v[..inputs]);
         let args = Args {
             v: &v[..inputs],
+            sigma,
             ..Args::state(q, qd)
         };
         m.kernels().eval(
@@ -117,10 +169,14 @@ impl<'a> StanceJacobian<'a> {
             let row = &k[i * cols..(i + 1) * cols];
             for j in 0..2 * n {
                 let mut d = row[j];
-                if j == n {
-                    d += row[2 * n] * dmu;
-                } else {
-                    d += row[2 * n] * 0.0;
+                // Sliding under exact Coulomb friction, mu = -mu0 sigma does not depend on
+                // the state.
+                if !sliding {
+                    if j == n {
+                        d += row[2 * n] * dmu;
+                    } else {
+                        d += row[2 * n] * 0.0;
+                    }
                 }
                 for kk in 0..inputs {
                     let dy = rates[kk * 2 * n + j];
@@ -130,6 +186,18 @@ impl<'a> StanceJacobian<'a> {
                 out[i * 2 * n + j] = d;
             }
         }
+    }
+
+    /// `d [qdd, lambda_t, lambda_n] / d [q, qd]` of the stuck stance (`stick_jacobian`) at
+    /// `y = [q, qd, ..]`, row-major with row stride `2n` (`n + 2` rows): the accelerations'
+    /// rows, then the ground force's along and normal to the floor (the slip guard's gradient).
+    pub fn stick(&self, y: &[f64], out: &mut [f64]) {
+        let n = self.model.n();
+        self.model.kernels().eval(
+            KernelId::StickJacobian,
+            &Args::state(&y[..n], &y[n..2 * n]),
+            &mut out[..(n + 2) * 2 * n],
+        );
     }
 
     /// Fills the stance system's Jacobian `jac` (`S = 2n + 1` components: the state and the

@@ -9,7 +9,12 @@
 //! - `closed_loop_jacobian` (a model with outputs): `d [qdd, u] / d [q, qdot, mu, v]` of
 //!   `closed_loop`'s outputs, `(n + m) x (2n + 1 + m)` (the inputs' rows for the input power's
 //!   integrand);
-//! - `impact_jacobian`: `d qdot+ / d [q, qdot]` of `impact`'s `qdot+`, `n x 2n`.
+//! - `impact_jacobian`: `d qdot+ / d [q, qdot]` of `impact`'s `qdot+`, `n x 2n`;
+//! - `stick_jacobian` (a model without inputs, where the stuck stance has its closed form):
+//!   `d [qdd, lambda_t, lambda_n] / d [q, qdot]` of `stick`'s outputs, `(n + 2) x 2n`: the
+//!   stuck phase of exact Coulomb friction in the variational equations, and the gradient of
+//!   its slip guard `|lambda_t| - mu0 lambda_n` for the saltation where the foot starts to
+//!   slip. `stick` has no friction coefficient (the floor holds the foot), so no `mu` column.
 //!
 //! `mu` is the friction coefficient itself: the code generator substitutes the scene's friction
 //! law for it afterwards, and the caller applies the chain rule `d mu / d xdot`.
@@ -152,4 +157,22 @@ pub(super) fn jacobian_kernels(
         &m.syms.qd,
     )?);
     Ok(kernels)
+}
+
+/// `stick_jacobian`: `d [qdd, lambda_t, lambda_n] / d [q, qdot]` of the stuck stance's closed
+/// form `stick` (a column), every column present (see the module documentation).
+///
+/// # Errors
+/// A full symbol table.
+pub(super) fn stick_jacobian(m: &Mechanics, stick: &Matrix, table: &mut Symbols) -> Result<Kernel> {
+    let state: Vec<Sym> = m.syms.q.iter().chain(&m.syms.qd).copied().collect();
+    jacobian_kernel(
+        table,
+        "stick_jacobian",
+        "Partial derivatives of the stuck stance's accelerations and ground force by (q, qdot)",
+        "stick phase; Eq. 19 with both foot coordinates held",
+        stick,
+        &state,
+        &[],
+    )
 }

@@ -2,7 +2,7 @@
 //! names are the model-independent ones of `docs/model-format.md` (`mass_matrix`, `bias`,
 //! `lambda`, `accel`, `control`, `closed_loop`, `stick`, `closed_loop_stick`, `impact`,
 //! `impact_double`, `impact_coulomb`, `accel_jacobian`, `closed_loop_jacobian`,
-//! `impact_jacobian`, `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `events`,
+//! `impact_jacobian`, `stick_jacobian`, `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `events`,
 //! `relabel`, `points`, `energy`, `output_rates`, `input_rates`, `total_mass`); a kernel's
 //! arguments are the non-parameter symbols its outputs contain, in the
 //! table's order (coordinates, velocities, inputs, `mu`, auxiliary inputs, `t`), and the impact
@@ -15,7 +15,7 @@ use super::control_check::check_control;
 use super::coulomb::impact_coulomb;
 use super::descriptors::descriptor_kernels;
 use super::events::event_kernels;
-use super::jacobians::{Differentiated, jacobian_kernels};
+use super::jacobians::{Differentiated, jacobian_kernels, stick_jacobian};
 use super::located::singular;
 use super::maps::map_kernels;
 use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
@@ -162,6 +162,22 @@ impl ModelDerivation {
                 jacobian_kernels(&m, &of, &mut table)?
             }
             _ => Vec::new(),
+        };
+        // The stuck stance's Jacobian wherever its closed form is (its own block, no `M^-1`:
+        // the compass gait has it though its sliding stance has no closed form).
+        let stick_jac = match &st {
+            Some(st) if model.inputs.is_empty() => {
+                let column = Matrix::column(
+                    st.accel
+                        .entries()
+                        .iter()
+                        .chain(st.forces.entries())
+                        .cloned()
+                        .collect(),
+                );
+                Some(stick_jacobian(&m, &column, &mut table)?)
+            }
+            _ => None,
         };
         let t = &table;
         let inputs = m.syms.inputs.len();
@@ -371,6 +387,7 @@ impl ModelDerivation {
         }
         kernels.push(coulomb);
         kernels.extend(jacobians);
+        kernels.extend(stick_jac);
         stage(|| "the events, relabelling and descriptors".to_owned());
         kernels.extend(map_kernels(&m, model, &rows, t)?);
         kernels.extend(event_kernels(&m, model, t)?);

@@ -77,13 +77,75 @@ pub struct Prepared {
     k18: F,
     k19: F,
     k20: F,
+    k21: F,
+    k22: F,
+    k23: F,
+    k24: F,
+    k25: F,
+    k26: F,
+    k27: F,
+    k28: F,
+    k29: F,
+    k30: F,
+    k31: F,
+    k32: F,
+    k33: F,
+    k34: F,
+    k35: F,
+    k36: F,
+    k37: F,
+    k38: F,
+    k39: F,
+    k40: F,
+    k41: F,
+    k42: F,
+    k43: F,
+    k44: F,
+    k45: F,
+    k46: F,
+    k47: F,
+    k48: F,
+    k49: F,
+    k50: F,
+    k51: F,
+    k52: F,
+    k53: F,
+    k54: F,
+    k55: F,
+    k56: F,
+    k57: F,
+    k58: F,
+    k59: F,
+    k60: F,
+    k61: F,
+    k62: F,
+    k63: F,
+    k64: F,
+    k65: F,
+    k66: F,
+    k67: F,
+    k68: F,
+    k69: F,
+    k70: F,
+    k71: F,
+    k72: F,
+    k73: F,
+    k74: F,
+    k75: F,
+    k76: F,
+    k77: F,
+    k78: F,
+    k79: F,
+    k80: F,
+    k81: F,
+    k82: F,
 }
 
 /// Computes everything the kernels need that depends on the parameters only.
 ///
 /// Call once per parameter set, then pass the result to every kernel.
 ///
-/// Operations: 23 add/sub, 35 mul, 3 div, 1 transcendental.
+/// Operations: 253 add/sub, 326 mul, 3 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 #[must_use]
 pub fn prepare(p: &Params) -> Prepared {
@@ -94,28 +156,252 @@ pub fn prepare(p: &Params) -> Prepared {
     let t2 = p.m_h * p.a;
     let t3 = p.m_h * p.b;
     let k2 = t1 + k1 + t2 + t3;
-    let t4 = p.m * p.a * p.b;
+    let t4 = p.b * t1;
+    let t5 = 2.0_f64 * p.m_h;
+    let t6 = p.a * t5;
+    let t7 = p.b * t6;
+    let t8 = p.m * p.a;
+    let t9 = p.b * t8;
     let k3 = p.g * t0 + p.m_h * p.g;
+    let t10 = p.g * t1;
     let k4 = p.g * k1;
-    let k5 = p.g * t1 + k4 + p.g * t2 + p.g * t3;
+    let k5 = t10 + k4 + p.g * t2 + p.g * t3;
     let (k6, k7) = sin_cos(p.phi);
     let k8 = p.a * k7 + p.b * k7;
     let k9 = p.a * k6 + p.b * k6;
-    let k10 = 2.0_f64 * p.phi;
-    let k11 = p.a + p.b;
-    let t5 = 0.5_f64 * p.m_h;
-    let k12 = p.m + t5;
-    let t6 = p.a * p.a;
-    let t7 = p.b * p.b;
-    let k13 = p.m * t7;
-    let k14 = p.b * t1 + t0 * t6 + k13 + p.m_h * t6 + 2.0_f64 * p.m_h * p.a * p.b
-        + p.m_h * t7;
-    let k15 = t4 + k13;
-    let k16 = 0.5_f64 * p.m * t7;
-    let k17 = t4 + p.m * t6 + k16 + t5 * t6 + p.b * t2 + t5 * t7;
-    let k18 = 1.0_f64 / k0;
-    let k19 = 1.0_f64 / k7;
-    let k20 = 1.0_f64 / k14;
+    let t11 = 4.0_f64 * p.m;
+    let t12 = p.a * t11;
+    let k10 = k4 + p.g * t8;
+    let t13 = 3.0_f64 * p.m * p.a;
+    let t14 = p.g * t7;
+    let t15 = 3.0_f64 * p.m_h;
+    let t16 = 2.0_f64 * k6;
+    let t17 = p.m * k7 * p.m_h;
+    let t18 = 2.0_f64 * k7;
+    let t19 = p.m * t18 * p.m_h;
+    let t20 = p.m * k6 * p.m_h;
+    let t21 = p.m * t16 * p.m_h;
+    let t22 = 3.0_f64 * k6;
+    let t23 = p.m * t22 * p.m_h;
+    let t24 = 4.0_f64 * k6;
+    let t25 = p.m * t24 * p.m_h * p.a;
+    let t26 = p.b * t25 * p.g;
+    let t27 = 3.0_f64 * k7;
+    let t28 = p.m * t27 * p.m_h;
+    let t29 = 4.0_f64 * k7;
+    let t30 = p.m * t29 * p.m_h * p.a;
+    let t31 = p.b * t30 * p.g;
+    let t32 = 6.0_f64 * k7;
+    let t33 = p.m * t32 * p.m_h;
+    let t34 = 6.0_f64 * k6;
+    let t35 = p.m * t34 * p.m_h;
+    let t36 = 8.0_f64 * p.m;
+    let t37 = p.a * t36;
+    let k11 = t10 + p.b * t0 * p.g;
+    let t38 = 6.0_f64 * p.m * p.a;
+    let t39 = 6.0_f64 * p.m_h;
+    let t40 = 8.0_f64 * k7 * p.m * p.m_h * p.a;
+    let t41 = p.b * t40 * p.g;
+    let t42 = 8.0_f64 * k6 * p.m * p.m_h * p.a;
+    let t43 = p.b * t42 * p.g;
+    let k12 = 2.0_f64 * p.phi;
+    let k13 = p.a + p.b;
+    let t44 = 0.5_f64 * p.m_h;
+    let k14 = p.m + t44;
+    let t45 = p.a * p.a;
+    let t46 = t0 * t45;
+    let t47 = p.b * p.b;
+    let k15 = p.m * t47;
+    let t48 = p.m_h * t45;
+    let t49 = p.m_h * t47;
+    let k16 = t4 + t46 + k15 + t48 + t7 + t49;
+    let k17 = t9 + k15;
+    let t50 = t0 * t47;
+    let k18 = p.b * t12 + t46 + t50;
+    let t51 = p.m * t45;
+    let k19 = t4 + t51 + k15;
+    let k20 = t48 + t51 + t7 + t49;
+    let t52 = p.b * t47;
+    let t53 = t0 * t52;
+    let k21 = p.b * t46 + t12 * t47 + t53;
+    let t54 = p.g * t46;
+    let t55 = p.g * k15;
+    let t56 = p.g * t48;
+    let t57 = p.g * t49;
+    let k22 = p.b * t13 * p.g + t54 + t55 + t56 + t14 + t57;
+    let t58 = p.b * t51;
+    let t59 = p.m * t52;
+    let k23 = t58 + t1 * t47 + t59;
+    let t60 = p.a * t45;
+    let t61 = t11 * t45;
+    let t62 = p.b * t61;
+    let t63 = p.m_h * t52;
+    let k24 = t0 * t60 + t62 + t13 * t47 + t59 + p.m_h * t60 + t15 * t45 * p.b
+        + p.a * t15 * t47 + t63;
+    let k25 = p.g * t4 + t54 + t55 + t56 + t14 + t57;
+    let k26 = t58 + p.b * t48 + t6 * t47 + t63;
+    let t64 = p.m * p.m;
+    let t65 = t16 * t64;
+    let t66 = p.a * t65;
+    let k27 = p.b * t66 * p.g;
+    let t67 = t47 * t65 * p.g;
+    let k28 = k27 + t67;
+    let t68 = k7 * t64;
+    let t69 = t45 * t68 * p.b;
+    let t70 = p.a * t68;
+    let k29 = t47 * t70;
+    let t71 = t17 * t45 * p.b;
+    let t72 = p.a * t19 * t47;
+    let t73 = t17 * t52;
+    let k30 = t69 + k29;
+    let k31 = t71 + k30 + t72 + t73;
+    let t74 = k6 * t64;
+    let t75 = t45 * t74 * p.b;
+    let t76 = p.a * t74;
+    let k32 = t47 * t76;
+    let t77 = t20 * t45 * p.b;
+    let t78 = p.a * t21 * t47;
+    let t79 = t20 * t52;
+    let k33 = t75 + k32;
+    let k34 = t77 + k33 + t78 + t79;
+    let t80 = t45 * t65;
+    let t81 = p.g * t80;
+    let t82 = t47 * t74 * p.g;
+    let t83 = t23 * t45 * p.g;
+    let t84 = t20 * t47 * p.g;
+    let t85 = p.m_h * p.m_h;
+    let t86 = k6 * t85;
+    let t87 = t45 * t86 * p.g;
+    let t88 = t16 * t85;
+    let t89 = p.a * t88 * p.b * p.g;
+    let t90 = t47 * t86 * p.g;
+    let k35 = t82 - t81 - t83 - t26 - t84 - t87 - t89 - t90;
+    let t91 = t18 * t64;
+    let t92 = t45 * t91;
+    let t93 = p.g * t92;
+    let k36 = p.b * t70 * p.g;
+    let t94 = t28 * t45 * p.g;
+    let t95 = t17 * t47 * p.g;
+    let t96 = k7 * t85;
+    let t97 = t45 * t96 * p.g;
+    let t98 = t18 * t85;
+    let t99 = p.a * t98 * p.b * p.g;
+    let t100 = t47 * t96 * p.g;
+    let k37 = t93 + k36 + t94 + t31 + t95 + t97 + t99 + t100;
+    let t101 = t60 * t91;
+    let t102 = p.b * t92;
+    let t103 = t28 * t60;
+    let t104 = t33 * t45;
+    let t105 = p.b * t104;
+    let t106 = t30 * t47;
+    let t107 = t60 * t96;
+    let t108 = t27 * t85;
+    let t109 = t45 * t108 * p.b;
+    let t110 = p.a * t108 * t47;
+    let t111 = t52 * t96;
+    let k38 = t101 + t102 + k29 + t103 + t105 + t106 + t73 + t107 + t109 + t110 + t111;
+    let t112 = t60 * t65;
+    let t113 = t23 * t60;
+    let t114 = t35 * t45;
+    let t115 = p.b * t114;
+    let t116 = t25 * t47;
+    let t117 = t60 * t86;
+    let t118 = t22 * t85;
+    let t119 = t45 * t118 * p.b;
+    let t120 = p.a * t118 * t47;
+    let t121 = t52 * t86;
+    let k39 = t75 + t112 + t113 + t115 + t116 + t79 + t117 + t119 + t120 + t121;
+    let k40 = k27 + t82;
+    let k41 = t75 + t77 + t78 + t79;
+    let t122 = t21 * t47 * p.g;
+    let k42 = t81 + t83 + t26 + t122 + t87 + t89 + t90;
+    let t123 = p.a * t91;
+    let k43 = p.b * t123 * p.g;
+    let t124 = t47 * t91 * p.g;
+    let k44 = k43 + t124;
+    let t125 = t47 * t68 * p.g;
+    let k45 = t93 - t125 + t94 + t31 + t95 + t97 + t99 + t100;
+    let k46 = p.b * t76 * p.g;
+    let k47 = t81 + k46 + t83 + t26 + t84 + t87 + t89 + t90;
+    let t126 = p.b * t80;
+    let k48 = t112 + t126 + k32 + t113 + t115 + t116 + t79 + t117 + t119 + t120 + t121;
+    let k49 = t69 + t101 + t103 + t105 + t106 + t73 + t107 + t109 + t110 + t111;
+    let k50 = k43 + t125;
+    let k51 = t69 + t71 + t72 + t73;
+    let t127 = t19 * t47 * p.g;
+    let k52 = t93 + t94 + t31 + t127 + t97 + t99 + t100;
+    let k53 = p.b * t37 + t61 + t11 * t47;
+    let k54 = t4 + t50;
+    let k55 = t62 + t37 * t47 + t11 * t52;
+    let k56 = p.b * t38 * p.g + p.g * t61 + p.g * t50 + t5 * t45 * p.g
+        + 4.0_f64 * p.m_h * p.a * p.b * p.g + t5 * t47 * p.g;
+    let k57 = t11 * t60 + t36 * t45 * p.b + t38 * t47 + t53 + t5 * t60 + t39 * t45 * p.b
+        + p.a * t39 * t47 + t5 * t52;
+    let t128 = t24 * t64;
+    let t129 = p.a * t128 * p.b * p.g;
+    let k58 = t129 + t47 * t128 * p.g;
+    let k59 = t47 * t66;
+    let t130 = t21 * t45 * p.b;
+    let t131 = t21 * t52;
+    let k60 = t126 + k59;
+    let k61 = t130 + k60 + t116 + t131;
+    let k62 = t47 * t123;
+    let t132 = t19 * t45 * p.b;
+    let t133 = t19 * t52;
+    let k63 = t102 + k62;
+    let k64 = t132 + k63 + t106 + t133;
+    let t134 = t29 * t64;
+    let t135 = t45 * t134;
+    let t136 = p.g * t135;
+    let t137 = p.g * t104;
+    let t138 = t45 * t98 * p.g;
+    let t139 = t29 * t85 * p.a * p.b * p.g;
+    let t140 = t47 * t98 * p.g;
+    let k65 = k43 + t136 + t137 + t41 + t127 + t138 + t139 + t140;
+    let t141 = t45 * t128;
+    let t142 = p.g * t141;
+    let t143 = p.g * t114;
+    let t144 = t45 * t88 * p.g;
+    let t145 = t24 * t85 * p.a * p.b * p.g;
+    let t146 = t47 * t88 * p.g;
+    let k66 = t67 - t142 - t143 - t43 - t122 - t144 - t145 - t146;
+    let k67 = t67 + t129;
+    let t147 = t60 * t134;
+    let t148 = t33 * t60;
+    let t149 = 12.0_f64 * k7 * p.m * p.m_h * t45 * p.b;
+    let t150 = t40 * t47;
+    let t151 = t60 * t98;
+    let t152 = t32 * t85;
+    let t153 = t45 * t152 * p.b;
+    let t154 = p.a * t152 * t47;
+    let t155 = t52 * t98;
+    let k68 = t147 + p.b * t135 + k62 + t148 + t149 + t150 + t133 + t151 + t153 + t154
+        + t155;
+    let t156 = t60 * t128;
+    let t157 = t35 * t60;
+    let t158 = 12.0_f64 * k6 * p.m * p.m_h * t45 * p.b;
+    let t159 = t42 * t47;
+    let t160 = t60 * t88;
+    let t161 = t34 * t85;
+    let t162 = t45 * t161 * p.b;
+    let t163 = p.a * t161 * t47;
+    let t164 = t52 * t88;
+    let k69 = t126 + t156 + t157 + t158 + t159 + t131 + t160 + t162 + t163 + t164;
+    let k70 = t126 + t130 + t116 + t131;
+    let t165 = p.a * t134 * p.b * p.g;
+    let k71 = t165 + t47 * t134 * p.g;
+    let k72 = k27 + t142 + t143 + t43 + t122 + t144 + t145 + t146;
+    let k73 = t136 - t124 + t137 + t41 + t127 + t138 + t139 + t140;
+    let k74 = t124 + t165;
+    let k75 = t156 + p.b * t141 + k59 + t157 + t158 + t159 + t131 + t160 + t162 + t163
+        + t164;
+    let k76 = t102 + t147 + t148 + t149 + t150 + t133 + t151 + t153 + t154 + t155;
+    let k77 = t102 + t132 + t106 + t133;
+    let k78 = 0.5_f64 * p.m * t47;
+    let k79 = t9 + t51 + k78 + t44 * t45 + p.b * t2 + t44 * t47;
+    let k80 = 1.0_f64 / k0;
+    let k81 = 1.0_f64 / k7;
+    let k82 = 1.0_f64 / k16;
     Prepared {
         mu0: p.mu0,
         c: p.c,
@@ -140,6 +426,68 @@ pub fn prepare(p: &Params) -> Prepared {
         k18,
         k19,
         k20,
+        k21,
+        k22,
+        k23,
+        k24,
+        k25,
+        k26,
+        k27,
+        k28,
+        k29,
+        k30,
+        k31,
+        k32,
+        k33,
+        k34,
+        k35,
+        k36,
+        k37,
+        k38,
+        k39,
+        k40,
+        k41,
+        k42,
+        k43,
+        k44,
+        k45,
+        k46,
+        k47,
+        k48,
+        k49,
+        k50,
+        k51,
+        k52,
+        k53,
+        k54,
+        k55,
+        k56,
+        k57,
+        k58,
+        k59,
+        k60,
+        k61,
+        k62,
+        k63,
+        k64,
+        k65,
+        k66,
+        k67,
+        k68,
+        k69,
+        k70,
+        k71,
+        k72,
+        k73,
+        k74,
+        k75,
+        k76,
+        k77,
+        k78,
+        k79,
+        k80,
+        k81,
+        k82,
     }
 }
 
@@ -214,12 +562,12 @@ pub fn mass_matrix(p: &Prepared, th_st: F, th_sw: F) -> [[F; 4]; 4] {
     let t5 = -(p.k1 * t4);
     let t6 = -(p.k2 * t0);
     let t7 = p.k1 * t3;
-    let t8 = -(t3 * p.k15 * t0 + t4 * p.k15 * t1);
+    let t8 = -(t3 * p.k17 * t0 + t4 * p.k17 * t1);
     [
         [p.k0, 0.0_f64, t2, t5],
         [0.0_f64, p.k0, t6, t7],
-        [t2, t6, p.k14, t8],
-        [t5, t7, t8, p.k13],
+        [t2, t6, p.k16, t8],
+        [t5, t7, t8, p.k15],
     ]
 }
 
@@ -283,8 +631,8 @@ pub fn bias(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F) -> [F; 4] {
     let (t2, t3) = sin_cos(th_sw);
     let t4 = p.k2 * th_std * th_std;
     let t5 = p.k1 * th_swd * th_swd;
-    let t6 = th_swd * p.k15 * th_swd;
-    let t7 = th_std * p.k15 * th_std;
+    let t6 = th_swd * p.k17 * th_swd;
+    let t7 = th_std * p.k17 * th_std;
     [
         t2 * t5 - t0 * t4,
         p.k3 + t3 * t5 - t1 * t4,
@@ -355,33 +703,33 @@ pub fn lambda(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F, xd: F) -> 
     let t13 = t1 * t8;
     let t14 = p.k3 + t4 * t10;
     let t15 = t14 - t13;
-    let t16 = th_swd * p.k15 * th_swd;
-    let t17 = th_std * p.k15 * th_std;
-    let t18 = t2 * p.k18;
-    let t19 = t6 * p.k18;
-    let t20 = t5 * p.k18;
-    let t21 = t7 * p.k18;
-    let t22 = tanh(p.c * xd * p.k19);
+    let t16 = th_swd * p.k17 * th_swd;
+    let t17 = th_std * p.k17 * th_std;
+    let t18 = t2 * p.k80;
+    let t19 = t6 * p.k80;
+    let t20 = t5 * p.k80;
+    let t21 = t7 * p.k80;
+    let t22 = tanh(p.c * xd * p.k81);
     let t23 = p.mu0 * t22;
     let t24 = p.k7 * t23;
     let t25 = p.k7 + p.k6 * t23;
     let t26 = t24 - p.k6;
     let t27 = t18 * t26 + t19 * t25;
-    let t28 = p.k14 - (t2 * t18 + t6 * t19);
-    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
+    let t28 = p.k16 - (t2 * t18 + t6 * t19);
+    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
     let t30 = 1.0_f64 / t28;
     let t31 = t29 * t30;
-    let t32 = 1.0_f64 / (p.k13 - (t7 * t21 + t29 * t31 + t5 * t20));
+    let t32 = 1.0_f64 / (p.k15 - (t7 * t21 + t29 * t31 + t5 * t20));
     let t33 = (t21 * t25 + t27 * t31 + t20 * t26) * t32;
     let t34 = t30 * (t27 + t31 * t33 * t28);
     let t35 = t0 * (p.k5 + t4 * t16) - t3 * t16 * t1 - t15 * t19 + t12 * t18;
     let t36 = t32
         * (t3 * (t1 * t17 - p.k4) - t4 * t17 * t0 - t31 * t35 + t15 * t21 - t12 * t20);
     let t37 = t30 * (t35 - t31 * t36 * t28);
-    -((p.k18 * (t9 - t11 + p.k0 * (t20 * t36 - t18 * t37)) * p.k6
-        + p.k18 * (t13 - t14 + p.k0 * (t19 * t37 - t21 * t36)) * p.k7)
-        / (p.k18 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33)) * p.k6
-            + p.k18 * (t25 + p.k0 * (t19 * t34 + t21 * t33)) * p.k7) * p.k7)
+    -((p.k80 * (t9 - t11 + p.k0 * (t20 * t36 - t18 * t37)) * p.k6
+        + p.k80 * (t13 - t14 + p.k0 * (t19 * t37 - t21 * t36)) * p.k7)
+        / (p.k80 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33)) * p.k6
+            + p.k80 * (t25 + p.k0 * (t19 * t34 + t21 * t33)) * p.k7) * p.k7)
 }
 
 /// Checked variant of [`lambda`]: the same value, or why it would not be finite.
@@ -445,33 +793,33 @@ pub fn accel(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F, xd: F) -> [
     let t13 = t1 * t8;
     let t14 = p.k3 + t4 * t10;
     let t15 = t14 - t13;
-    let t16 = th_swd * p.k15 * th_swd;
-    let t17 = th_std * p.k15 * th_std;
-    let t18 = t2 * p.k18;
-    let t19 = t6 * p.k18;
-    let t20 = t5 * p.k18;
-    let t21 = t7 * p.k18;
-    let t22 = tanh(p.c * xd * p.k19);
+    let t16 = th_swd * p.k17 * th_swd;
+    let t17 = th_std * p.k17 * th_std;
+    let t18 = t2 * p.k80;
+    let t19 = t6 * p.k80;
+    let t20 = t5 * p.k80;
+    let t21 = t7 * p.k80;
+    let t22 = tanh(p.c * xd * p.k81);
     let t23 = p.mu0 * t22;
     let t24 = p.k7 * t23;
     let t25 = p.k7 + p.k6 * t23;
     let t26 = t24 - p.k6;
     let t27 = t18 * t26 + t19 * t25;
-    let t28 = p.k14 - (t2 * t18 + t6 * t19);
-    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
+    let t28 = p.k16 - (t2 * t18 + t6 * t19);
+    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
     let t30 = 1.0_f64 / t28;
     let t31 = t29 * t30;
-    let t32 = 1.0_f64 / (p.k13 - (t7 * t21 + t29 * t31 + t5 * t20));
+    let t32 = 1.0_f64 / (p.k15 - (t7 * t21 + t29 * t31 + t5 * t20));
     let t33 = (t21 * t25 + t27 * t31 + t20 * t26) * t32;
     let t34 = t30 * (t27 + t31 * t33 * t28);
-    let t35 = p.k18 * (t25 + p.k0 * (t19 * t34 + t21 * t33));
-    let t36 = p.k18 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33));
+    let t35 = p.k80 * (t25 + p.k0 * (t19 * t34 + t21 * t33));
+    let t36 = p.k80 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33));
     let t37 = t0 * (p.k5 + t4 * t16) - t3 * t16 * t1 - t15 * t19 + t12 * t18;
     let t38 = t32
         * (t3 * (t1 * t17 - p.k4) - t4 * t17 * t0 - t31 * t37 + t15 * t21 - t12 * t20);
     let t39 = t30 * (t37 - t31 * t38 * t28);
-    let t40 = p.k18 * (t13 - t14 + p.k0 * (t19 * t39 - t21 * t38));
-    let t41 = p.k18 * (t9 - t11 + p.k0 * (t20 * t38 - t18 * t39));
+    let t40 = p.k80 * (t13 - t14 + p.k0 * (t19 * t39 - t21 * t38));
+    let t41 = p.k80 * (t9 - t11 + p.k0 * (t20 * t38 - t18 * t39));
     let t42 = (p.k6 * t41 + p.k7 * t40) / (p.k6 * t36 + p.k7 * t35);
     [t41 - t36 * t42, t40 - t35 * t42, t39 - t34 * t42, t38 + t33 * t42]
 }
@@ -529,15 +877,15 @@ pub fn stick(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F) -> [F; 6] {
     let (t2, t3) = sin_cos(th_sw);
     let t4 = p.k2 * th_std * th_std;
     let t5 = p.k1 * th_swd * th_swd;
-    let t6 = t2 * p.k15 * t0 + t3 * p.k15 * t1;
-    let t7 = th_swd * p.k15 * th_swd;
+    let t6 = t2 * p.k17 * t0 + t3 * p.k17 * t1;
+    let t7 = th_swd * p.k17 * th_swd;
     let t8 = t0 * (p.k5 + t3 * t7);
     let t9 = t2 * t7 * t1;
-    let t10 = th_std * p.k15 * th_std;
-    let t11 = t6 * p.k20;
+    let t10 = th_std * p.k17 * th_std;
+    let t11 = t6 * p.k82;
     let t12 = (t2 * (t1 * t10 - p.k4) - t3 * t10 * t0 - (t9 - t8) * t11)
-        / (p.k13 - t6 * t11);
-    let t13 = p.k20 * (t8 - t9 + t11 * t12 * p.k14);
+        / (p.k15 - t6 * t11);
+    let t13 = p.k82 * (t8 - t9 + t11 * t12 * p.k16);
     let t14 = t2 * t5 - t0 * t4 + (p.k2 * t1 * t13 - p.k1 * t3 * t12);
     let t15 = p.k3 + t3 * t5 - t1 * t4 + (p.k1 * t2 * t12 - p.k2 * t0 * t13);
     [0.0_f64, 0.0_f64, t13, t12, p.k7 * t14 - p.k6 * t15, p.k6 * t14 + p.k7 * t15]
@@ -613,21 +961,21 @@ pub fn impact(
     let t11 = t3 * p.k8;
     let t12 = t4 * p.k9;
     let t13 = t11 - t12;
-    let t14 = t2 * p.k18;
-    let t15 = t6 * p.k18;
-    let t16 = t5 * p.k18;
-    let t17 = t7 * p.k18;
-    let t18 = p.k14 - (t2 * t14 + t6 * t15);
-    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
+    let t14 = t2 * p.k80;
+    let t15 = t6 * p.k80;
+    let t16 = t5 * p.k80;
+    let t17 = t7 * p.k80;
+    let t18 = p.k16 - (t2 * t14 + t6 * t15);
+    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
     let t20 = 1.0_f64 / t18;
     let t21 = t19 * t20;
     let t22 = p.k6 * t14;
     let t23 = t10 + p.k7 * t15;
     let t24 = (t13 + t21 * (t22 - t23) - p.k7 * t17 + p.k6 * t16)
-        / (p.k13 - (t7 * t17 + t19 * t21 + t5 * t16));
+        / (p.k15 - (t7 * t17 + t19 * t21 + t5 * t16));
     let t25 = t20 * (t23 - t22 - t21 * t24 * t18);
-    let t26 = p.k18 * (p.k7 + p.k0 * (t15 * t25 - t17 * t24));
-    let t27 = p.k18 * (p.k6 + p.k0 * (t16 * t24 - t14 * t25));
+    let t26 = p.k80 * (p.k7 + p.k0 * (t15 * t25 - t17 * t24));
+    let t27 = p.k80 * (p.k6 + p.k0 * (t16 * t24 - t14 * t25));
     let t28 = (th_std * (t8 - t9) + th_swd * (t12 - t11) - p.k7 * zd - p.k6 * xd)
         / (t10 * t25 + t13 * t24 + p.k7 * t26 + p.k6 * t27);
     [t28, xd + t27 * t28, zd + t26 * t28, th_std + t25 * t28, th_swd + t24 * t28]
@@ -709,15 +1057,15 @@ pub fn impact_double(
     let t14 = p.k6 * xd;
     let t15 = p.k7 * zd;
     let t16 = th_std * (t8 - t9) + th_swd * (t12 - t11) - t15;
-    let t17 = t2 * p.k18;
-    let t18 = t6 * p.k18;
-    let t19 = t5 * p.k18;
-    let t20 = t7 * p.k18;
-    let t21 = p.k14 - (t2 * t17 + t6 * t18);
-    let t22 = t5 * t17 + t7 * t18 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
+    let t17 = t2 * p.k80;
+    let t18 = t6 * p.k80;
+    let t19 = t5 * p.k80;
+    let t20 = t7 * p.k80;
+    let t21 = p.k16 - (t2 * t17 + t6 * t18);
+    let t22 = t5 * t17 + t7 * t18 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
     let t23 = 1.0_f64 / t21;
     let t24 = t22 * t23;
-    let t25 = 1.0_f64 / (p.k13 - (t7 * t20 + t22 * t24 + t5 * t19));
+    let t25 = 1.0_f64 / (p.k15 - (t7 * t20 + t22 * t24 + t5 * t19));
     let t26 = p.k6 * t17;
     let t27 = p.k7 * t18;
     let t28 = t10 + t27;
@@ -725,15 +1073,15 @@ pub fn impact_double(
     let t30 = p.k7 * t20;
     let t31 = t25 * (t13 + t24 * (t26 - t28) - t30 + t29);
     let t32 = t23 * (t28 - t26 - t24 * t31 * t21);
-    let t33 = p.k18 * (p.k7 + p.k0 * (t18 * t32 - t20 * t31));
-    let t34 = p.k18 * (p.k6 + p.k0 * (t19 * t31 - t17 * t32));
+    let t33 = p.k80 * (p.k7 + p.k0 * (t18 * t32 - t20 * t31));
+    let t34 = p.k80 * (p.k6 + p.k0 * (t19 * t31 - t17 * t32));
     let t35 = p.k6 * t34;
     let t36 = p.k7 * t33;
     let t37 = t10 * t32 + t13 * t31 + t36 + t35;
     let t38 = t25 * (t24 * (t26 - t27) - t30 + t29);
     let t39 = t23 * (t27 - t26 - t24 * t38 * t21);
-    let t40 = p.k18 * (p.k7 + p.k0 * (t18 * t39 - t20 * t38));
-    let t41 = p.k18 * (p.k6 + p.k0 * (t19 * t38 - t17 * t39));
+    let t40 = p.k80 * (p.k7 + p.k0 * (t18 * t39 - t20 * t38));
+    let t41 = p.k80 * (p.k6 + p.k0 * (t19 * t38 - t17 * t39));
     let t42 = t35 + t36;
     let t43 = 1.0_f64 / t37;
     let t44 = t42 * t43;
@@ -824,15 +1172,15 @@ pub fn impact_coulomb(
     let t11 = p.k7 * zd;
     let t12 = t0 * p.k9 + t1 * p.k8;
     let t13 = t3 * p.k9 + t4 * p.k8;
-    let t14 = t2 * p.k18;
-    let t15 = t6 * p.k18;
-    let t16 = t5 * p.k18;
-    let t17 = t7 * p.k18;
-    let t18 = p.k14 - (t2 * t14 + t6 * t15);
-    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k15 * t0 + t4 * p.k15 * t1);
+    let t14 = t2 * p.k80;
+    let t15 = t6 * p.k80;
+    let t16 = t5 * p.k80;
+    let t17 = t7 * p.k80;
+    let t18 = p.k16 - (t2 * t14 + t6 * t15);
+    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
     let t20 = 1.0_f64 / t18;
     let t21 = t19 * t20;
-    let t22 = 1.0_f64 / (p.k13 - (t7 * t17 + t19 * t21 + t5 * t16));
+    let t22 = 1.0_f64 / (p.k15 - (t7 * t17 + t19 * t21 + t5 * t16));
     let t23 = p.k6 * t14;
     let t24 = p.k7 * t15;
     let t25 = t8 + t24;
@@ -840,20 +1188,20 @@ pub fn impact_coulomb(
     let t27 = p.k7 * t17;
     let t28 = t22 * (t9 + t21 * (t23 - t25) - t27 + t26);
     let t29 = t20 * (t25 - t23 - t21 * t28 * t18);
-    let t30 = p.k18 * (p.k7 + p.k0 * (t15 * t29 - t17 * t28));
-    let t31 = p.k18 * (p.k6 + p.k0 * (t16 * t28 - t14 * t29));
+    let t30 = p.k80 * (p.k7 + p.k0 * (t15 * t29 - t17 * t28));
+    let t31 = p.k80 * (p.k6 + p.k0 * (t16 * t28 - t14 * t29));
     let t32 = t22 * (t21 * (t23 - t24) - t27 + t26);
     let t33 = t20 * (t24 - t23 - t21 * t32 * t18);
-    let t34 = p.k18 * (p.k7 + p.k0 * (t15 * t33 - t17 * t32));
-    let t35 = p.k18 * (p.k6 + p.k0 * (t16 * t32 - t14 * t33));
+    let t34 = p.k80 * (p.k7 + p.k0 * (t15 * t33 - t17 * t32));
+    let t35 = p.k80 * (p.k6 + p.k0 * (t16 * t32 - t14 * t33));
     let t36 = p.k6 * t35;
     let t37 = p.k7 * t34;
     let t38 = p.k7 * t14;
     let t39 = t12 - p.k6 * t15;
     let t40 = t22 * (t21 * (t38 - t39) - t13 + p.k6 * t17 + p.k7 * t16);
     let t41 = t20 * (t39 - t38 - t21 * t40 * t18);
-    let t42 = p.k18 * (p.k0 * (t15 * t41 - t17 * t40) - p.k6);
-    let t43 = p.k18 * (p.k7 + p.k0 * (t16 * t40 - t14 * t41));
+    let t42 = p.k80 * (p.k0 * (t15 * t41 - t17 * t40) - p.k6);
+    let t43 = p.k80 * (p.k7 + p.k0 * (t16 * t40 - t14 * t41));
     [
         xd,
         zd,
@@ -930,6 +1278,290 @@ pub fn impact_coulomb_checked(
     KernelError::output("R21", out[18])?;
     KernelError::output("R30", out[19])?;
     KernelError::output("R31", out[20])?;
+    Ok(out)
+}
+
+/// Partial derivatives of the stuck stance's accelerations and ground force by (q, qdot).
+///
+/// Paper: stick phase; Eq. 19 with both foot coordinates held.
+///
+/// Arguments: `th_st`, `th_sw`, `th_std`, `th_swd`; parameters through `p` from [`prepare`].
+/// Returns, row-major, `[[J00, J01, J02, J03, J04, J05, J06, J07], [J10, J11, J12, J13, J14, J15, J16, J17], [J20, J21, J22, J23, J24, J25, J26, J27], [J30, J31, J32, J33, J34, J35, J36, J37], [J40, J41, J42, J43, J44, J45, J46, J47], [J50, J51, J52, J53, J54, J55, J56, J57]]`.
+///
+/// Operations per call: 205 add/sub, 321 mul, 2 div, 2 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but an
+/// argument the scene does not read has no effect); never panics. [`stick_jacobian_checked`]
+/// rejects non-finite arguments and outputs.
+#[inline]
+#[must_use]
+pub fn stick_jacobian(
+    p: &Prepared,
+    th_st: F,
+    th_sw: F,
+    th_std: F,
+    th_swd: F,
+) -> [[F; 8]; 6] {
+    let (t0, t1) = sin_cos(th_st);
+    let (t2, t3) = sin_cos(th_sw);
+    let t4 = th_swd * p.k17 * th_swd;
+    let t5 = t3 * t4;
+    let t6 = p.k5 + t5;
+    let t7 = th_std * p.k18 * th_std;
+    let t8 = th_std * p.k19 * th_std;
+    let t9 = t3 * p.k18 * t2;
+    let t10 = t2 * p.k21 * t2;
+    let t11 = t10 - p.k23;
+    let t12 = th_swd * t11 * th_swd;
+    let t13 = t3 * p.k22;
+    let t14 = th_swd * p.k21 * th_swd;
+    let t15 = th_std * p.k24 * th_std;
+    let t16 = t1 * t15;
+    let t17 = t3 * p.k21 * t2;
+    let t18 = th_swd * p.k31 * th_swd;
+    let t19 = th_swd * p.k34 * th_swd;
+    let t20 = t2 * p.k30;
+    let t21 = t3 * p.k33;
+    let t22 = th_std * (t21 - t20) * th_std;
+    let t23 = t3 * t19;
+    let t24 = t3 * t18;
+    let t25 = p.k37 + t24;
+    let t26 = th_std * p.k38 * th_std;
+    let t27 = th_std * (t2 * p.k33 + t3 * p.k30) * th_std;
+    let t28 = th_swd * p.k29 * th_swd;
+    let t29 = th_std * p.k39 * th_std;
+    let t30 = th_swd * p.k41 * th_swd;
+    let t31 = t23 + p.k47;
+    let t32 = th_std * p.k48 * th_std;
+    let t33 = th_swd * p.k32 * th_swd;
+    let t34 = th_std * p.k49 * th_std;
+    let t35 = th_swd * p.k51 * th_swd;
+    let t36 = th_std * p.k53 * th_std;
+    let t37 = t1 * t36;
+    let t38 = t0 * t36;
+    let t39 = t0 * p.k18 * t0;
+    let t40 = th_swd * p.k55 * th_swd;
+    let t41 = t3 * t40;
+    let t42 = t2 * t40;
+    let t43 = th_swd * p.k61 * th_swd;
+    let t44 = th_swd * p.k64 * th_swd;
+    let t45 = t3 * t43;
+    let t46 = t3 * t44;
+    let t47 = th_std * p.k33 * th_std;
+    let t48 = t1 * t47;
+    let t49 = th_std * p.k30 * th_std;
+    let t50 = t2 * p.k60 + t3 * p.k63;
+    let t51 = th_std * p.k60 * th_std * t1;
+    let t52 = th_std * p.k63 * th_std * t1;
+    let t53 = t1 * t49;
+    let t54 = t2 * p.k63;
+    let t55 = t3 * p.k60;
+    let t56 = t2 * p.k64 + t3 * p.k61;
+    let t57 = t2 * p.k61;
+    let t58 = t3 * p.k64;
+    let t59 = t54 - t55;
+    let t60 = 1.0_f64
+        / (t0 * (t0 * (t2 * p.k18 * t2 - p.k19) + t1 * t9) - (p.k20 + t2 * p.k19 * t2));
+    let t61 = (t0 * (t1 * t8 - t6 + t2 * (t2 * (p.k10 - t1 * t7) + t3 * t7 * t0))
+        + t2 * (t1 * (t3 * p.k10 + t4) - t3 * t8)) * t60;
+    let t62 = 1.0_f64 / (t0 * (t0 * t11 + t1 * t17) - (p.k26 + t2 * p.k23 * t2));
+    let t63 = (t0 * (t3 * t15 - t2 * (p.k22 + t3 * t14) * t0 + t1 * (t12 - t13))
+        + t2 * (p.k25 + th_swd * p.k23 * th_swd * t3 - t16)) * t62;
+    let t64 = (p.k42 + t3 * t30 - t1 * t29
+        + t2 * (t3 * p.k36 + t28 + t2 * p.k40 - t1 * t27)
+        + t0
+            * (t26 - t1 * t25 + t0 * (p.k35 - t23)
+                + t2 * (t1 * (t19 - t3 * p.k28) + t22 - t0 * (t2 * p.k28 + t18)))) * t60;
+    let t65 = (t1 * t34 - (p.k52 + t3 * t35)
+        + t2 * (t3 * p.k46 + t33 - t2 * p.k50 + th_std * (t20 - t21) * th_std * t1)
+        + t0
+            * (t32 - t1 * t31 + t0 * (t24 + p.k45)
+                + t2 * (t1 * (t3 * p.k44 - t18) - t27 + t0 * (t2 * p.k44 - t19)))) * t60;
+    let t66 = p.k53 * t61;
+    let t67 = t0 * t66;
+    let t68 = t1 * t66;
+    let t69 = p.k18 * t61;
+    let t70 = t3 * t69;
+    let t71 = t0 * t69;
+    let t72 = p.k55 * t63;
+    let t73 = t2 * t72;
+    let t74 = t3 * t72;
+    let t75 = p.k21 * t63;
+    let t76 = t1 * t75;
+    let t77 = t2 * t75;
+    let t78 = p.k58 + p.k53 * t64;
+    let t79 = t3 * t78;
+    let t80 = t2 * t78;
+    let t81 = p.k18 * t64;
+    let t82 = p.k28 + t81;
+    let t83 = p.k53 * t65;
+    let t84 = t83 - p.k71;
+    let t85 = p.k71 - t83;
+    let t86 = p.k18 * t65;
+    let t87 = p.k44 - t86;
+    [
+        [0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
+        [0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
+        [
+            0.0_f64,
+            0.0_f64,
+            t60
+                * (th_std * (p.k19 - t39) * th_std + t1 * (t71 - t6)
+                    + t2
+                        * (t2 * (t1 * p.k10 - t7) - t70
+                            + t0 * (t2 * (t38 - t68) - t4 + t3 * (t37 - p.k10 + t67)))),
+            t60
+                * (th_std * (t39 - p.k19) * th_std + t1 * (p.k10 + t5 - t71)
+                    + t2
+                        * (t2 * (t7 - t1 * p.k11) + t70
+                            + t0 * (t4 + t2 * (t68 - t38) + t3 * (p.k11 - t37 - t67)))),
+            0.0_f64,
+            0.0_f64,
+            th_std * (t0 * (t1 * (p.k18 - t2 * p.k53 * t2) + t3 * p.k53 * t2 * t0) - t9)
+                * t60,
+            th_swd * (t2 * p.k54 * t1 - t3 * p.k54 * t0) * t60,
+        ],
+        [
+            0.0_f64,
+            0.0_f64,
+            t62
+                * (t12 + t3 * (t16 - (p.k22 + t77))
+                    + t0
+                        * (t0 * (t14 + t3 * p.k56) + t76
+                            + t2 * (t15 + t0 * (t74 - t42) - t1 * (p.k56 + t41 + t73)))),
+            t62
+                * (th_swd * (p.k23 - t10) * th_swd + t3 * (p.k25 + t77 - t16)
+                    + t0
+                        * (t2 * (t0 * (t42 - t74) - t15 + t1 * (p.k22 + t41 + t73))
+                            - (t0 * (t13 + t14) + t76))),
+            0.0_f64,
+            0.0_f64,
+            th_std * (t3 * p.k57 * t0 - t2 * p.k57 * t1) * t62,
+            th_swd * (t17 + t0 * (t1 * (t2 * p.k55 * t2 - p.k21) - t3 * p.k55 * t2 * t0))
+                * t62,
+        ],
+        [
+            0.0_f64,
+            0.0_f64,
+            t60
+                * (t1 * t26 - t25 + t2 * (t19 - t2 * t49 * t1 + t3 * (t48 - t82))
+                    + t0
+                        * (t29 + t0 * (p.k65 + t46) + t1 * (p.k66 + t81 - t45)
+                            + t2 * (t27 - t1 * (t44 + t80) + t0 * (t79 - t43)))),
+            t60
+                * (p.k36 + t3 * t28 - t53 + t0 * (t47 - t0 * t24 + t1 * (t23 - t82))
+                    + t2
+                        * (t2 * (t52 - p.k43) - t30 + t3 * (p.k67 + t81 - t51)
+                            + t0
+                                * (t1 * (t18 + t80) - th_std * t50 * th_std
+                                    + t0 * (t19 - t79)))),
+            0.0_f64,
+            0.0_f64,
+            th_std * (t0 * p.k68 - t1 * p.k69 + t2 * (t0 * (t55 - t54) - t1 * t50))
+                * t60,
+            th_swd * (t2 * p.k62 + t3 * p.k70 + t0 * (t1 * (t57 - t58) - t0 * t56)) * t60,
+        ],
+        [
+            0.0_f64,
+            0.0_f64,
+            t60
+                * (t1 * t32 - t31 + t2 * (t3 * (t87 - t53) - (t18 + t2 * t47 * t1))
+                    + t0
+                        * (t0 * (t45 + p.k72) - t34 + t1 * (p.k73 + t86 + t46)
+                            + t2
+                                * (t22 + t1 * (t2 * t85 - t43) + t0 * (t44 + t3 * t84)))),
+            t60
+                * (p.k46 + t3 * t33 - t48 + t0 * (t1 * (t87 - t24) - (t49 + t0 * t23))
+                    + t2
+                        * (t35 + t2 * (t51 - p.k27) + t3 * (t86 - p.k74 + t52)
+                            + t0
+                                * (th_std * t59 * th_std + t1 * (t19 + t2 * t84)
+                                    + t0 * (t3 * t85 - t18)))),
+            0.0_f64,
+            0.0_f64,
+            th_std * (t0 * p.k75 + t1 * p.k76 + t2 * (t1 * t59 - t0 * t50)) * t60,
+            th_swd * (t2 * p.k59 - t3 * p.k77 + t0 * (t0 * (t58 - t57) - t1 * t56)) * t60,
+        ],
+    ]
+}
+
+/// Checked variant of [`stick_jacobian`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 52
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th_st`, `th_sw`,
+/// `th_std`, `th_swd`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`] naming
+/// the first output (in the order `J00`, `J01`, `J02`, `J03`, `J04`, `J05`, `J06`, `J07`, `J10`,
+/// `J11`, `J12`, `J13`, `J14`, `J15`, `J16`, `J17`, `J20`, `J21`, `J22`, `J23`, `J24`, `J25`,
+/// `J26`, `J27`, `J30`, `J31`, `J32`, `J33`, `J34`, `J35`, `J36`, `J37`, `J40`, `J41`, `J42`,
+/// `J43`, `J44`, `J45`, `J46`, `J47`, `J50`, `J51`, `J52`, `J53`, `J54`, `J55`, `J56`, `J57`) that
+/// is NaN or infinite, for example where a denominator vanishes or a parameter given to [`prepare`]
+/// is not finite.
+#[inline]
+pub fn stick_jacobian_checked(
+    p: &Prepared,
+    th_st: F,
+    th_sw: F,
+    th_std: F,
+    th_swd: F,
+) -> Result<[[F; 8]; 6], KernelError> {
+    KernelError::argument("th_st", th_st)?;
+    KernelError::argument("th_sw", th_sw)?;
+    KernelError::argument("th_std", th_std)?;
+    KernelError::argument("th_swd", th_swd)?;
+    let out = stick_jacobian(p, th_st, th_sw, th_std, th_swd);
+    KernelError::output("J00", out[0][0])?;
+    KernelError::output("J01", out[0][1])?;
+    KernelError::output("J02", out[0][2])?;
+    KernelError::output("J03", out[0][3])?;
+    KernelError::output("J04", out[0][4])?;
+    KernelError::output("J05", out[0][5])?;
+    KernelError::output("J06", out[0][6])?;
+    KernelError::output("J07", out[0][7])?;
+    KernelError::output("J10", out[1][0])?;
+    KernelError::output("J11", out[1][1])?;
+    KernelError::output("J12", out[1][2])?;
+    KernelError::output("J13", out[1][3])?;
+    KernelError::output("J14", out[1][4])?;
+    KernelError::output("J15", out[1][5])?;
+    KernelError::output("J16", out[1][6])?;
+    KernelError::output("J17", out[1][7])?;
+    KernelError::output("J20", out[2][0])?;
+    KernelError::output("J21", out[2][1])?;
+    KernelError::output("J22", out[2][2])?;
+    KernelError::output("J23", out[2][3])?;
+    KernelError::output("J24", out[2][4])?;
+    KernelError::output("J25", out[2][5])?;
+    KernelError::output("J26", out[2][6])?;
+    KernelError::output("J27", out[2][7])?;
+    KernelError::output("J30", out[3][0])?;
+    KernelError::output("J31", out[3][1])?;
+    KernelError::output("J32", out[3][2])?;
+    KernelError::output("J33", out[3][3])?;
+    KernelError::output("J34", out[3][4])?;
+    KernelError::output("J35", out[3][5])?;
+    KernelError::output("J36", out[3][6])?;
+    KernelError::output("J37", out[3][7])?;
+    KernelError::output("J40", out[4][0])?;
+    KernelError::output("J41", out[4][1])?;
+    KernelError::output("J42", out[4][2])?;
+    KernelError::output("J43", out[4][3])?;
+    KernelError::output("J44", out[4][4])?;
+    KernelError::output("J45", out[4][5])?;
+    KernelError::output("J46", out[4][6])?;
+    KernelError::output("J47", out[4][7])?;
+    KernelError::output("J50", out[5][0])?;
+    KernelError::output("J51", out[5][1])?;
+    KernelError::output("J52", out[5][2])?;
+    KernelError::output("J53", out[5][3])?;
+    KernelError::output("J54", out[5][4])?;
+    KernelError::output("J55", out[5][5])?;
+    KernelError::output("J56", out[5][6])?;
+    KernelError::output("J57", out[5][7])?;
     Ok(out)
 }
 
@@ -1056,7 +1688,7 @@ pub fn impact_double_rows_checked(
 #[must_use]
 pub fn events(p: &Prepared, x: F, z: F, th_st: F, th_sw: F) -> [F; 2] {
     let (t0, t1) = sin_cos(th_st);
-    [p.k10 - th_sw - th_st, p.k6 * x + p.k7 * z + t1 * p.k8 + t0 * p.k9]
+    [p.k12 - th_sw - th_st, p.k6 * x + p.k7 * z + t1 * p.k8 + t0 * p.k9]
 }
 
 /// Checked variant of [`events`]: the same value, or why it would not be finite.
@@ -1121,11 +1753,11 @@ pub fn relabel(
 ) -> [F; 8] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = th_std * p.k11;
-    let t5 = th_swd * p.k11;
+    let t4 = th_std * p.k13;
+    let t5 = th_swd * p.k13;
     [
-        x - t2 * p.k11 + t0 * p.k11,
-        z - t3 * p.k11 + t1 * p.k11,
+        x - t2 * p.k13 + t0 * p.k13,
+        z - t3 * p.k13 + t1 * p.k13,
         th_sw,
         th_st,
         xd - t3 * t5 + t1 * t4,
@@ -1208,12 +1840,12 @@ pub fn relabel_jacobian(
 ) -> [[F; 8]; 8] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = t2 * p.k11;
-    let t5 = t1 * p.k11;
-    let t6 = -(t3 * p.k11);
-    let t7 = th_std * p.k11;
-    let t8 = th_swd * p.k11;
-    let t9 = -(t0 * p.k11);
+    let t4 = t2 * p.k13;
+    let t5 = t1 * p.k13;
+    let t6 = -(t3 * p.k13);
+    let t7 = th_std * p.k13;
+    let t8 = th_swd * p.k13;
+    let t9 = -(t0 * p.k13);
     [
         [1.0_f64, 0.0_f64, t5, t6, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
         [0.0_f64, 1.0_f64, t9, t4, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
@@ -1340,9 +1972,9 @@ pub fn relabel_jacobian_checked(
 pub fn points(p: &Prepared, x: F, z: F, th_st: F, th_sw: F) -> [F; 4] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = t0 * p.k11;
-    let t5 = t1 * p.k11;
-    [x + t4, z + t5, x - t2 * p.k11 + t4, z - t3 * p.k11 + t5]
+    let t4 = t0 * p.k13;
+    let t5 = t1 * p.k13;
+    [x + t4, z + t5, x - t2 * p.k13 + t4, z - t3 * p.k13 + t5]
 }
 
 /// Checked variant of [`points`]: the same value, or why it would not be finite.
@@ -1407,12 +2039,12 @@ pub fn energy(
 ) -> [F; 2] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = th_swd * p.k15;
+    let t4 = th_swd * p.k17;
     [
-        xd * p.k12 * xd + zd * p.k12 * zd
-            + th_swd * (th_swd * p.k16 - p.k1 * xd * t3 + p.k1 * zd * t2)
+        xd * p.k14 * xd + zd * p.k14 * zd
+            + th_swd * (th_swd * p.k78 - p.k1 * xd * t3 + p.k1 * zd * t2)
             + th_std
-                * (t1 * (p.k2 * xd - t3 * t4) + th_std * p.k17
+                * (t1 * (p.k2 * xd - t3 * t4) + th_std * p.k79
                     - t0 * (p.k2 * zd + t2 * t4)),
         p.k3 * z - t3 * p.k4 + t1 * p.k5,
     ]

@@ -37,6 +37,24 @@ pub enum MapError {
         /// Time of the heel strike.
         t: f64,
     },
+    /// An event that switches the stance phase (the foot comes to rest or starts to slip) is
+    /// grazed: its saltation matrix divides by the guard's rate, which vanishes.
+    #[error(
+        "Poincare map failed at t = {t}: a stick-slip event is grazed (its guard's rate is zero)"
+    )]
+    GrazingEvent {
+        /// Time of the event.
+        t: f64,
+    },
+    /// A foot at rest can neither stick nor slide (Painleve's paradox under exact Coulomb
+    /// friction).
+    #[error(
+        "Poincare map failed at t = {t}: contact-inconsistent (the foot at rest can neither stick nor slide)"
+    )]
+    ContactInconsistent {
+        /// Time of the event.
+        t: f64,
+    },
     /// The state or the Jacobian after the impact and the reset is not finite.
     #[error("Poincare map failed at t = {t}: non-finite impact or reset")]
     NonFiniteImpact {

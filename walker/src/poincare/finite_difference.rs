@@ -1,13 +1,14 @@
-//! The Poincare map of a model without generated Jacobian kernels (exact Coulomb friction in
-//! stance, or physical parameters other than Table 1's): one step of the simulator
+//! The Poincare map with its Jacobian by central differences: the independent check of the
+//! exact Jacobian (with a step study, [`finite_difference_map_with_step`]), and the fallback
+//! where a phase of a step has no Jacobian kernel: one step of the simulator
 //! ([`crate::sim::walk`], so every event, stick-slip transition and validity test of the walk
 //! applies) and its Jacobian by central differences.
 //!
 //! Accuracy: the steps are integrated at `rtol = min(rtol, 1e-12)`, `atol = min(atol, 1e-14)`
 //! so that the map's own error `delta` is about `1e-12`; with the difference step
-//! `h = 1e-4 max(1, |s_j|)` the Jacobian's error is about `delta / h + h^2 |P'''| / 6`, about
-//! `1e-8`, and so are the multipliers' (a test checks the rimless wheel's against its closed
-//! form). Where one side of a difference has no step (a stuck foot pushed into a slide that
+//! `h = 1e-4 max(1, |s_j|)` the Jacobian's error is about `delta / h + h^2 |P'''| / 6`: about
+//! `1e-8` where the map's third derivative is of order one, but `1e-4` on the simplest walking
+//! model, whose third derivative is not (`docs/poincare.md`, `tests/poincare_exact.rs`). Where one side of a difference has no step (a stuck foot pushed into a slide that
 //! Painleve's paradox forbids), the difference is one-sided, with an error of about `h`
 //! (`1e-4`) in that column; where a foot at rest can slide neither way, the map exists only with
 //! the foot at rest and the columns of its velocity (`xd`, `zd`) are left zero: perturbations
@@ -68,6 +69,22 @@ pub(crate) fn finite_difference_map(
     cfg: &SimConfig,
     s: &[f64],
 ) -> Result<MapResult, MapError> {
+    finite_difference_map_with_step(model, cfg, s, 1e-4)
+}
+
+/// [`poincare_map`](super::poincare_map) with its Jacobian by central differences of relative
+/// step `step` (`h = step max(1, |s_j|)`; the default is `1e-4`): the independent check of the
+/// exact Jacobian, and its step study (the error falls as `h^2` until the map's own error
+/// `delta / h` takes over).
+///
+/// # Errors
+/// [`MapError`]: the step from `s` could not be taken.
+pub fn finite_difference_map_with_step(
+    model: &Model,
+    cfg: &SimConfig,
+    s: &[f64],
+    step: f64,
+) -> Result<MapResult, MapError> {
     let cfg = tight(cfg);
     let n = model.n();
     let m = 2 * n;
@@ -75,7 +92,7 @@ pub(crate) fn finite_difference_map(
     let mut jacobian = vec![vec![0.0; m]; m];
     let foot_at_rest = model.friction_law() == FrictionLaw::Coulomb && s[n] == 0.0;
     for j in 2..m {
-        let h = 1e-4 * s[j].abs().max(1.0);
+        let h = step * s[j].abs().max(1.0);
         let (mut up, mut down) = (Vector::from_slice(s), Vector::from_slice(s));
         up[j] += h;
         down[j] -= h;

@@ -3,17 +3,15 @@
 //! and the Jacobians of the impact and of the relabelling.
 
 use crate::jacobian::StanceJacobian;
-use crate::model::{Contact, ImpactRegime, KernelId, Model};
-use crate::ode::{
-    Direction, Event, GaveUp, Integrator, NoObserver, OdeSystem, Outcome, Tolerances,
-};
+use crate::model::{ImpactRegime, KernelId, Model};
 use crate::sim::SimConfig;
 use crate::vector::{MAX_LEN, Vector};
 
 use super::error::MapError;
 use super::finite_difference::finite_difference_map;
-use super::impact_jacobian::coulomb_impact_jacobian;
+use super::impact_jacobian::{coulomb_impact_jacobian, frictionless_impact_jacobian};
 use super::result::{JacobianMethod, MapResult};
+use super::variational::{PhaseError, StanceEnd, field, stance};
 
 /// Evaluates `$body` with `$na` set to the size `2n + (2n)^2` of the state with the
 /// variational equations, for the sizes of the models with Jacobian kernels (`n` from 3 to 5);
@@ -36,49 +34,6 @@ macro_rules! with_variational_size {
             _ => $other,
         }
     };
-}
-
-/// The stance phase with the variational equations appended: `[s, Phi]`, `s = [q, qd]` (`2n`
-/// numbers) and the `2n x 2n` sensitivity `Phi` row-major.
-struct Variational<'a> {
-    model: &'a Model,
-    jac: StanceJacobian<'a>,
-}
-
-impl Variational<'_> {
-    /// `[qd, qdd]` at `(t, y)`.
-    fn mech_rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
-        let n = self.model.n();
-        let mut a = [0.0; Model::STANCE_LEN];
-        self.model.stance(t, y, Contact::Smooth, &mut a);
-        out[..n].copy_from_slice(&y[n..2 * n]);
-        out[n..2 * n].copy_from_slice(&a[..n]);
-    }
-}
-
-impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
-    fn rhs(&mut self, t: f64, y: &[f64; NA], dy: &mut [f64; NA]) {
-        let n = self.model.n();
-        let m = 2 * n;
-        self.mech_rhs(t, y, &mut dy[..m]);
-        let mut a = [0.0; MAX_LEN * MAX_LEN];
-        self.jac
-            .accel(t, y, &mut a[..(n + self.model.inputs()) * m]);
-        for j in 0..m {
-            for i in 0..n {
-                dy[m + m * i + j] = y[m + m * (i + n) + j];
-                let mut s = 0.0;
-                for k in 0..m {
-                    s += a[i * m + k] * y[m + m * k + j];
-                }
-                dy[m + m * (i + n) + j] = s;
-            }
-        }
-    }
-
-    fn next_breakpoint(&self, t: f64) -> Option<f64> {
-        self.model.next_breakpoint(t)
-    }
 }
 
 /// The strike guard's gradient `d g / d [q, qd]` at the coordinates `q` (the model file's
@@ -114,24 +69,65 @@ fn guard_gradient(model: &Model, q: &[f64]) -> Vector {
 }
 
 /// One step of the hybrid walker from the post-impact state `s` (time 0), with its Jacobian
-/// (see the module documentation). Failures of the stance phase (no strike within
+/// (see the module documentation) by the default method: the variational equations wherever
+/// the model's kernels differentiate every phase the step goes through, central differences
+/// otherwise ([`poincare_map_with`]). Failures of the stance phase (no strike within
 /// [`SimConfig::max_step_time`], integrator failures, non-finite values) are errors; the
 /// physical validity tests of [`crate::sim`] (lift-off, double support) are not applied here.
-/// Models without Jacobian kernels (exact Coulomb friction in stance, parameters at run time,
-/// models without closed forms) take one step of the simulator instead and their Jacobian by
-/// central differences (`poincare::finite_difference`).
 ///
 /// # Errors
 /// [`MapError`]: the step could not be taken.
 pub fn poincare_map(model: &Model, cfg: &SimConfig, s: &[f64]) -> Result<MapResult, MapError> {
+    poincare_map_with(model, cfg, s, JacobianMethod::Variational)
+}
+
+/// [`poincare_map`] with the Jacobian by `method`: [`JacobianMethod::Variational`] (the
+/// default: variational equations, saltation at every event that switches a phase, the
+/// impact's Jacobian in its regime; falls back to central differences where a phase has no
+/// Jacobian kernel or the model has more than five coordinates) or
+/// [`JacobianMethod::FiniteDifferences`] (central differences of one simulated step with the
+/// step `1e-4`, `poincare::finite_difference`: the independent check).
+///
+/// The paper's compiled variants with the tanh law (their Jacobian kernels generated with
+/// Table 1 fixed) integrate at the configuration's tolerances, as they always have; every
+/// other model integrates at `rtol = min(rtol, 1e-12)`, `atol = min(atol, 1e-14)`, the
+/// tolerances its map had by finite differences, so that its fixed points keep their accuracy.
+///
+/// # Errors
+/// [`MapError`]: the step could not be taken.
+pub fn poincare_map_with(
+    model: &Model,
+    cfg: &SimConfig,
+    s: &[f64],
+    method: JacobianMethod,
+) -> Result<MapResult, MapError> {
     if s.len() != 2 * model.n() || !s.iter().all(|v| v.is_finite()) {
         return Err(MapError::NonFiniteStart);
     }
-    let Ok(jac) = StanceJacobian::new(model) else {
+    if method == JacobianMethod::FiniteDifferences {
         return finite_difference_map(model, cfg, s);
+    }
+    let (jac, cfg) = match StanceJacobian::new(model) {
+        Ok(jac) => (jac, *cfg),
+        Err(_) => (StanceJacobian::any_law(model), tight(cfg)),
     };
-    with_variational_size!(model.n(), NA => variational_map::<NA>(model, cfg, s, jac),
-        _ => finite_difference_map(model, cfg, s))
+    let out = with_variational_size!(model.n(), NA => variational_map::<NA>(model, &cfg, s, jac),
+        _ => Err(PhaseError::NoKernel));
+    match out {
+        Ok(r) => Ok(r),
+        Err(PhaseError::Map(e)) => Err(e),
+        Err(PhaseError::NoKernel) => finite_difference_map(model, &cfg, s),
+    }
+}
+
+/// The tolerances of the maps of models other than the Table-1 variants (see
+/// [`poincare_map_with`]).
+pub(super) fn tight(cfg: &SimConfig) -> SimConfig {
+    SimConfig {
+        rtol: cfg.rtol.min(1e-12),
+        atol: cfg.atol.min(1e-14),
+        ..*cfg
+    }
 }
 
 /// [`poincare_map`] by the variational equations.
@@ -140,79 +136,25 @@ fn variational_map<const NA: usize>(
     cfg: &SimConfig,
     s: &[f64],
     jac: StanceJacobian<'_>,
-) -> Result<MapResult, MapError> {
+) -> Result<MapResult, PhaseError> {
     let n = model.n();
     let m = 2 * n;
-    let mut y = [0.0; NA];
-    y[..m].copy_from_slice(s);
-    for i in 0..m {
-        y[m + (m + 1) * i] = 1.0;
-    }
-    let mut guard_values = [0.0; 1 + crate::sim::MAX_FALLS];
-    let k = model.event_count().min(guard_values.len());
-    let mut events = [Event::terminal(
-        Direction::Falling,
-        move |_, y: &[f64; NA]| {
-            model.events(&y[..n], &mut guard_values[..k]);
-            guard_values[0]
-        },
-    )];
-    let mut sys = Variational { model, jac };
-    let mut integ = Integrator::<NA>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
-    let mut t = 0.0;
-    // One budget of attempted steps for the whole stance phase, as in the simulation
-    // (`sim/step.rs`): each call after a breakpoint gets what the earlier ones left, and every
-    // call spends at least one attempt, so the loop ends with `TooManySteps` at the latest.
-    let budget = integ.config().max_steps;
-    let (te, ye) = loop {
-        let spent = integ.stats().accepted_steps + integ.stats().rejected_steps;
-        integ.config_mut().max_steps =
-            budget.saturating_sub(usize::try_from(spent).unwrap_or(usize::MAX));
-        match integ.integrate(
-            &mut sys,
-            t,
-            &y,
-            cfg.max_step_time,
-            &mut events,
-            &mut NoObserver,
-        ) {
-            Outcome::Breakpoint { t: tb, y: yb } => {
-                t = tb;
-                y = yb;
-            }
-            // A zero of the guard with the striking point behind the stance foot is no strike.
-            Outcome::Event { t: te, y: ye, .. } if !model.strike_ahead(&ye[..n]) => {
-                t = te;
-                y = ye;
-            }
-            Outcome::Event { t, y, .. } => break (t, y),
-            Outcome::Reached { t, .. } => return Err(MapError::NoHeelStrike { t }),
-            Outcome::NonFinite { t, .. } => return Err(MapError::NonFinite { t }),
-            Outcome::StepSizeTooSmall { t, h, .. } => {
-                let cause = GaveUp::StepSizeTooSmall { h };
-                return Err(MapError::Integrator { t, cause });
-            }
-            Outcome::MaxSteps { t, .. } => {
-                let cause = GaveUp::TooManySteps;
-                return Err(MapError::Integrator { t, cause });
-            }
-            Outcome::InvalidInput { t, reason, .. } => {
-                let cause = GaveUp::InvalidInput(reason);
-                return Err(MapError::Integrator { t, cause });
-            }
-        }
-    };
+    let StanceEnd {
+        t: te,
+        y: ye,
+        contact,
+    } = stance::<NA>(model, cfg, s, jac)?;
     let pre = Vector::from_slice(&ye[..m]);
     let mut phi: Vec<Vec<f64>> = (0..m)
         .map(|i| ye[m + m * i..m + m * (i + 1)].to_vec())
         .collect();
     // Saltation: Phi+ = (I - f g_y^T / (g_y . f)) Phi for the guard g.
     let mut f = [0.0; MAX_LEN];
-    sys.mech_rhs(te, &ye, &mut f[..m]);
+    field(model, te, &ye, contact, &mut f[..m]);
     let g = guard_gradient(model, &pre[..n]);
     let gf: f64 = (0..m).map(|k| g[k] * f[k]).sum();
     if gf.abs() < 1e-12 {
-        return Err(MapError::GrazingHeelStrike { t: te });
+        return Err(MapError::GrazingHeelStrike { t: te }.into());
     }
     let g_row: Vec<f64> = (0..m)
         .map(|j| (0..m).map(|k| g[k] * phi[k][j]).sum())
@@ -226,14 +168,20 @@ fn variational_map<const NA: usize>(
     let imp = model
         .impact(&pre)
         .map_err(|_| MapError::NonFiniteImpact { t: te })?;
-    let mut k = vec![0.0; n * m];
-    match imp.regime {
-        ImpactRegime::Frictionless => sys.jac.impact(&pre, &mut k),
-        regime => {
-            k = coulomb_impact_jacobian(model, &pre, regime)
-                .ok_or(MapError::NonFiniteImpact { t: te })?;
+    let k = match imp.regime {
+        ImpactRegime::Frictionless if model.kernels().has(KernelId::ImpactJacobian) => {
+            let mut k = vec![0.0; n * m];
+            model.kernels().eval(
+                KernelId::ImpactJacobian,
+                &crate::model::Args::state(&pre[..n], &pre[n..]),
+                &mut k,
+            );
+            k
         }
-    }
+        ImpactRegime::Frictionless => frictionless_impact_jacobian(model, &pre),
+        regime => coulomb_impact_jacobian(model, &pre, regime)
+            .ok_or(MapError::NonFiniteImpact { t: te })?,
+    };
     let mut dimp = vec![vec![0.0; m]; m];
     for (i, row) in dimp.iter_mut().enumerate().take(n) {
         row[i] = 1.0;
@@ -245,7 +193,13 @@ fn variational_map<const NA: usize>(
     // from the new foot: `x` and `z` are cyclic and reduced to zero.
     let post = model.reset(&pre, &imp);
     let dres = relabel_jacobian(model, &pre, &imp.qd);
-    let product = matmul(&dres, &matmul(&dimp, &phi));
+    let mut product = matmul(&dres, &matmul(&dimp, &phi));
+    if imp.regime == ImpactRegime::Stick {
+        // The new foot is at rest exactly (`Model::reset`): its velocity's rows are zero, not
+        // the rounding of the regime's `v_t+ = v_n+ = 0`.
+        product[n].fill(0.0);
+        product[n + 1].fill(0.0);
+    }
     let mut state_plus = Vector::concat(&post.q_plus, &post.qd_plus);
     (state_plus[0], state_plus[1]) = (0.0, 0.0);
     let dx = (post.q_plus[0] - s[0]) / model.phi().cos();
@@ -254,7 +208,7 @@ fn variational_map<const NA: usize>(
         .chain(product.iter().flatten())
         .all(|v| v.is_finite());
     if !ok || !dx.is_finite() {
-        return Err(MapError::NonFiniteImpact { t: te });
+        return Err(MapError::NonFiniteImpact { t: te }.into());
     }
     Ok(MapResult {
         state_plus,

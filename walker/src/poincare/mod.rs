@@ -25,6 +25,15 @@
 //! `zd_f = zd - l th1d (sin th1 - sin(th1 - alpha))`; positions: `th1+ = th1 - alpha`,
 //! `x+ = z+ = 0` after the reduction); a test checks it against the `fore_foot` kernel.
 //!
+//! Every other model and friction law takes the same path wherever its kernels differentiate
+//! the phases a step goes through (`variational.rs`): exact Coulomb friction's sliding phases
+//! (`mu = -mu0 sigma`, constant) and stuck phases (`stick_jacobian`), with the saltation matrix
+//! at each event that switches the phase (a foot comes to rest, a foot starts to slip), and the
+//! impact's Jacobian in the regime it takes (`impact_jacobian.rs`). Central differences
+//! ([`poincare_map_with`] with [`JacobianMethod::FiniteDifferences`],
+//! [`finite_difference_map_with_step`]) remain the independent check and the fallback where a
+//! phase has no Jacobian kernel. Method and accuracy: `docs/poincare.md`.
+//!
 //! # Coordinates of the fixed-point problem
 //!
 //! The full 8x8 map has trivial multipliers: `x`, `z` (reduced to zero: multiplier 0), `th1`
@@ -58,11 +67,13 @@ mod map;
 mod multipliers;
 mod result;
 mod section;
+mod variational;
 
 pub use continuation::{ContinuationPoint, continuation};
 pub use error::{FixedPointError, MapError};
+pub use finite_difference::finite_difference_map_with_step;
 pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
-pub use map::poincare_map;
+pub use map::{poincare_map, poincare_map_with};
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
 pub use result::{JacobianMethod, MapResult};
 pub use section::Section;

@@ -1,0 +1,359 @@
+//! The stance phase of the Poincare map with the variational equations appended
+//! ([`Variational`]), integrated phase by phase: under exact Coulomb friction the stance foot
+//! slides or sticks, and each event that switches the phase (a sliding foot comes to rest, a
+//! stuck foot starts to slip) applies its saltation matrix to the sensitivity `Phi`.
+//!
+//! # Saltation
+//!
+//! At an event `g(y) = 0` crossed with the field `f-`, followed by the reset `y+ = R(y)` and the
+//! field `f+`, a perturbed trajectory reaches the event earlier or later by
+//! `dt = -g_y dy / (g_y f-)`, so the sensitivity jumps by the saltation matrix
+//! `Xi = DR + (f+ - DR f-) g_y^T / (g_y f-)`, `Phi+ = Xi Phi` (Aizerman and Gantmacher 1958;
+//! Hiskens and Pai 2000):
+//!
+//! - the foot comes to rest (`g = sigma xd`, `g_y = sigma e_xd`): `R` sets `xd = zd = 0`
+//!   (`DR` the identity with those rows zero), `f+` the stuck field (or the slide back, where
+//!   the cone cannot hold the foot). A stuck foot has `xd = zd = 0` exactly, so the rows of
+//!   `xd`, `zd` of `Phi` are zero after it, and stay zero (the stuck field's `xdd = zdd = 0`);
+//! - the stuck foot starts to slip (`g = |lambda_t| - mu0 lambda_n`, its gradient from the rows
+//!   of the ground force in `stick_jacobian`): no reset; the force is continuous across the
+//!   switch (on the cone's edge the held force is the sliding one), so `f+ - f-` is zero up to
+//!   the event's location and `Xi` is the identity to that accuracy; it is applied as computed.
+//! - the strike: in [`super::map`], before the impact's Jacobian (`f+` is replaced by the
+//!   impact, `Xi = I - f- g_y^T / (g_y f-)`).
+//!
+//! The ends of the desired trajectories' ramps (`T_set`) are breakpoints where the field jumps
+//! in time only: the guard `g = t - T_set` has `g_y = 0`, so `Xi = I` and `Phi` is continuous
+//! there. The power kink the simulator stops at concerns the input power's quadrature only (the
+//! mechanical field is smooth there), which the map does not integrate.
+//!
+//! A stance phase that starts with the foot at rest and stuck (after a sticking impact) starts
+//! with the rows of `xd` and `zd` of `Phi(0)` zero: a perturbation off `xd = 0` is no motion of
+//! the walker there (the map exists only with the foot at rest), as the finite differences
+//! leave those columns zero.
+
+use std::cell::Cell;
+
+use crate::jacobian::StanceJacobian;
+use crate::model::{Contact, FrictionLaw, Model, Slide};
+use crate::ode::{Direction, Event, GaveUp, Integrator, NoObserver, OdeSystem, Outcome};
+use crate::sim::SimConfig;
+use crate::vector::MAX_LEN;
+
+use super::error::MapError;
+
+/// Why the variational stance could not be integrated: a failure of the map, or a contact whose
+/// Jacobian the model's kernels do not give (the caller falls back to finite differences).
+#[derive(Debug)]
+pub(super) enum PhaseError {
+    /// The map failed.
+    Map(MapError),
+    /// No Jacobian kernel for a contact the stance reaches.
+    NoKernel,
+}
+
+impl From<MapError> for PhaseError {
+    fn from(e: MapError) -> Self {
+        PhaseError::Map(e)
+    }
+}
+
+/// The stance phase with the variational equations appended: `[s, Phi]`, `s = [q, qd]` (`2n`
+/// numbers) and the `2n x 2n` sensitivity `Phi` row-major, in the contact of the current phase.
+pub(super) struct Variational<'a> {
+    pub(super) model: &'a Model,
+    pub(super) jac: StanceJacobian<'a>,
+    pub(super) contact: &'a Cell<Contact>,
+}
+
+impl Variational<'_> {
+    /// `[qd, qdd]` at `(t, y)` in the current contact.
+    pub(super) fn mech_rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
+        field(self.model, t, y, self.contact.get(), out);
+    }
+}
+
+/// `[qd, qdd]` at `(t, y)` in the contact `contact` (`2n` numbers into `out`).
+pub(super) fn field(model: &Model, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
+    let n = model.n();
+    let mut a = [0.0; Model::STANCE_LEN];
+    model.stance(t, y, contact, &mut a);
+    out[..n].copy_from_slice(&y[n..2 * n]);
+    out[n..2 * n].copy_from_slice(&a[..n]);
+}
+
+impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
+    fn rhs(&mut self, t: f64, y: &[f64; NA], dy: &mut [f64; NA]) {
+        let n = self.model.n();
+        let m = 2 * n;
+        self.mech_rhs(t, y, &mut dy[..m]);
+        let mut a = [0.0; MAX_LEN * MAX_LEN];
+        self.jac.accel_in(
+            t,
+            y,
+            self.contact.get(),
+            &mut a[..(n + self.model.inputs()) * m],
+        );
+        for j in 0..m {
+            for i in 0..n {
+                dy[m + m * i + j] = y[m + m * (i + n) + j];
+                let mut s = 0.0;
+                for k in 0..m {
+                    s += a[i * m + k] * y[m + m * k + j];
+                }
+                dy[m + m * (i + n) + j] = s;
+            }
+        }
+    }
+
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        self.model.next_breakpoint(t)
+    }
+}
+
+/// The contact of a foot at rest (`xd = 0`) under exact Coulomb friction at `(t, y)`, as the
+/// simulator chooses it (`sim/foot.rs`): stuck where the force that holds it lies in the cone,
+/// else sliding the way the unbalanced force pushes it where that slide is consistent.
+///
+/// # Errors
+/// [`MapError::ContactInconsistent`]: neither (Painleve's paradox), or non-finite forces.
+pub(super) fn contact_at_rest(model: &Model, t: f64, y: &[f64]) -> Result<Contact, MapError> {
+    let held = model.reaction(t, y, Contact::Stuck);
+    if !(held.normal.is_finite() && held.tangential.is_finite()) {
+        return Err(MapError::NonFinite { t });
+    }
+    if held.tangential.abs() <= model.mu0() * held.normal {
+        return Ok(Contact::Stuck);
+    }
+    let slide = Slide::of(-held.tangential);
+    let mut qdd = [0.0; Model::STANCE_LEN];
+    model.stance(t, y, Contact::Sliding(slide), &mut qdd);
+    if qdd[0] * slide.sigma() > 0.0 {
+        Ok(Contact::Sliding(slide))
+    } else {
+        Err(MapError::ContactInconsistent { t })
+    }
+}
+
+/// The contact at the start of a stance phase from the state `y`, as the simulator's.
+fn initial_contact(model: &Model, y: &[f64]) -> Result<Contact, MapError> {
+    let xd = y[model.n()];
+    match model.friction_law() {
+        FrictionLaw::Tanh => Ok(Contact::Smooth),
+        FrictionLaw::Coulomb if xd != 0.0 => Ok(Contact::Sliding(Slide::of(xd))),
+        FrictionLaw::Coulomb => contact_at_rest(model, 0.0, y),
+    }
+}
+
+/// `Phi <- DR Phi + (f+ - DR f-) (g_y^T Phi) / (g_y f-)` on the sensitivity `phi` (`m x m`
+/// row-major), `DR` the identity with the rows `reset_rows` zero.
+///
+/// # Errors
+/// [`MapError::GrazingEvent`]: `g_y f-` vanishes (the event is grazed).
+fn saltation(
+    phi: &mut [f64],
+    m: usize,
+    reset_rows: &[usize],
+    f_minus: &[f64],
+    f_plus: &[f64],
+    g: &[f64],
+    t: f64,
+) -> Result<(), MapError> {
+    let gf: f64 = (0..m).map(|k| g[k] * f_minus[k]).sum();
+    if gf.abs() < 1e-12 || !gf.is_finite() {
+        return Err(MapError::GrazingEvent { t });
+    }
+    let g_row: Vec<f64> = (0..m)
+        .map(|j| (0..m).map(|k| g[k] * phi[k * m + j]).sum())
+        .collect();
+    for i in 0..m {
+        let reset = reset_rows.contains(&i);
+        let d = f_plus[i] - if reset { 0.0 } else { f_minus[i] };
+        for j in 0..m {
+            let kept = if reset { 0.0 } else { phi[i * m + j] };
+            phi[i * m + j] = kept + d * g_row[j] / gf;
+        }
+    }
+    Ok(())
+}
+
+/// The end of the stance phase: the strike's time, the state with `Phi` there, and the contact
+/// of the last phase.
+pub(super) struct StanceEnd<const NA: usize> {
+    pub(super) t: f64,
+    pub(super) y: [f64; NA],
+    pub(super) contact: Contact,
+}
+
+/// Integrates the stance phase from the post-impact state `s` with the variational equations,
+/// phase by phase, until the strike (see the module documentation).
+///
+/// # Errors
+/// [`PhaseError::NoKernel`] for a contact without Jacobian kernels, [`PhaseError::Map`] where
+/// the map fails.
+pub(super) fn stance<const NA: usize>(
+    model: &Model,
+    cfg: &SimConfig,
+    s: &[f64],
+    jac: StanceJacobian<'_>,
+) -> Result<StanceEnd<NA>, PhaseError> {
+    let n = model.n();
+    let m = 2 * n;
+    let mut y = [0.0; NA];
+    y[..m].copy_from_slice(s);
+    for i in 0..m {
+        y[m + (m + 1) * i] = 1.0;
+    }
+    let contact = Cell::new(initial_contact(model, &y)?);
+    if !jac.has_contact(contact.get()) {
+        return Err(PhaseError::NoKernel);
+    }
+    if contact.get() == Contact::Stuck {
+        // The foot at rest: no perturbation of its velocity (the module documentation).
+        y[m + m * n..m + m * (n + 2)].fill(0.0);
+    }
+    let coulomb = model.friction_law() == FrictionLaw::Coulomb;
+    let mu0 = model.mu0();
+    let mut guard_values = [0.0; 1 + crate::sim::MAX_FALLS];
+    let k = model.event_count().min(guard_values.len());
+    let mut events = [
+        Event::terminal(Direction::Falling, move |_, y: &[f64; NA]| {
+            model.events(&y[..n], &mut guard_values[..k]);
+            guard_values[0]
+        }),
+        // The sliding foot comes to rest (zero while stuck).
+        Event::terminal(Direction::Falling, |_, y: &[f64; NA]| {
+            contact.get().sigma() * y[n]
+        }),
+        // The stuck foot's force leaves the friction cone.
+        Event::terminal(Direction::Rising, |t, y: &[f64; NA]| {
+            if contact.get() == Contact::Stuck {
+                let r = model.reaction(t, &y[..m], Contact::Stuck);
+                r.tangential.abs() - mu0 * r.normal
+            } else {
+                -1.0
+            }
+        }),
+    ];
+    let watched = if coulomb { 3 } else { 1 };
+    let mut sys = Variational {
+        model,
+        jac,
+        contact: &contact,
+    };
+    let mut integ =
+        Integrator::<NA>::new(cfg.method, crate::ode::Tolerances::new(cfg.rtol, cfg.atol));
+    let mut t = 0.0;
+    // One budget of attempted steps for the whole stance phase, as in the simulation
+    // (`sim/step.rs`): each call after a breakpoint gets what the earlier ones left, and every
+    // call spends at least one attempt, so the loop ends with `TooManySteps` at the latest.
+    let budget = integ.config().max_steps;
+    loop {
+        let spent = integ.stats().accepted_steps + integ.stats().rejected_steps;
+        integ.config_mut().max_steps =
+            budget.saturating_sub(usize::try_from(spent).unwrap_or(usize::MAX));
+        match integ.integrate(
+            &mut sys,
+            t,
+            &y,
+            cfg.max_step_time,
+            &mut events[..watched],
+            &mut NoObserver,
+        ) {
+            Outcome::Breakpoint { t: tb, y: yb } => (t, y) = (tb, yb),
+            // A zero of the guard with the striking point behind the stance foot is no strike.
+            Outcome::Event {
+                index: 0,
+                t: te,
+                y: ye,
+            } if !model.strike_ahead(&ye[..n]) => (t, y) = (te, ye),
+            Outcome::Event {
+                index: 0,
+                t: te,
+                y: ye,
+            } => {
+                return Ok(StanceEnd {
+                    t: te,
+                    y: ye,
+                    contact: contact.get(),
+                });
+            }
+            Outcome::Event {
+                index: 1,
+                t: te,
+                y: mut ye,
+            } => {
+                // The foot comes to rest: xd = zd = 0, then stuck or sliding back.
+                let before = contact.get();
+                let mut f_minus = [0.0; MAX_LEN];
+                field(model, te, &ye, before, &mut f_minus[..m]);
+                ye[n] = 0.0;
+                ye[n + 1] = 0.0;
+                let after = contact_at_rest(model, te, &ye)?;
+                if !sys.jac.has_contact(after) {
+                    return Err(PhaseError::NoKernel);
+                }
+                let mut f_plus = [0.0; MAX_LEN];
+                field(model, te, &ye, after, &mut f_plus[..m]);
+                let mut g = [0.0; MAX_LEN];
+                g[n] = before.sigma();
+                saltation(
+                    &mut ye[m..m + m * m],
+                    m,
+                    &[n, n + 1],
+                    &f_minus[..m],
+                    &f_plus[..m],
+                    &g[..m],
+                    te,
+                )?;
+                contact.set(after);
+                (t, y) = (te, ye);
+            }
+            Outcome::Event {
+                t: te, y: mut ye, ..
+            } => {
+                // The stuck foot slips, the way the force that held it no longer can.
+                let held = model.reaction(te, &ye[..m], Contact::Stuck);
+                let after = Contact::Sliding(Slide::of(-held.tangential));
+                if !sys.jac.has_contact(after) {
+                    return Err(PhaseError::NoKernel);
+                }
+                let mut f_minus = [0.0; MAX_LEN];
+                field(model, te, &ye, Contact::Stuck, &mut f_minus[..m]);
+                let mut f_plus = [0.0; MAX_LEN];
+                field(model, te, &ye, after, &mut f_plus[..m]);
+                let mut dforce = [0.0; (MAX_LEN / 2 + 2) * MAX_LEN];
+                sys.jac.stick(&ye, &mut dforce[..(n + 2) * m]);
+                let sign = held.tangential.signum();
+                let g: Vec<f64> = (0..m)
+                    .map(|j| sign * dforce[n * m + j] - mu0 * dforce[(n + 1) * m + j])
+                    .collect();
+                saltation(
+                    &mut ye[m..m + m * m],
+                    m,
+                    &[],
+                    &f_minus[..m],
+                    &f_plus[..m],
+                    &g,
+                    te,
+                )?;
+                contact.set(after);
+                (t, y) = (te, ye);
+            }
+            Outcome::Reached { t, .. } => return Err(MapError::NoHeelStrike { t }.into()),
+            Outcome::NonFinite { t, .. } => return Err(MapError::NonFinite { t }.into()),
+            Outcome::StepSizeTooSmall { t, h, .. } => {
+                let cause = GaveUp::StepSizeTooSmall { h };
+                return Err(MapError::Integrator { t, cause }.into());
+            }
+            Outcome::MaxSteps { t, .. } => {
+                let cause = GaveUp::TooManySteps;
+                return Err(MapError::Integrator { t, cause }.into());
+            }
+            Outcome::InvalidInput { t, reason, .. } => {
+                let cause = GaveUp::InvalidInput(reason);
+                return Err(MapError::Integrator { t, cause }.into());
+            }
+        }
+    }
+}
