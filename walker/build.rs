@@ -41,9 +41,14 @@ fn run() -> Result<(), walker_gen::Error> {
                     .jacobians(true),
             );
         }
+        // Under exact Coulomb friction the Jacobians are compiled too: the Poincare map's
+        // variational equations need them (the stuck stance's `stick_jacobian`, the sliding
+        // stance's), and no integrator reads them, so no walk changes. The tanh variants with
+        // every parameter at run time go without (the stiff integrator would read them and
+        // change its walks; their maps take differences).
         compile
             .variant(VariantSpec::new(Friction::Tanh))
-            .variant(VariantSpec::new(Friction::Coulomb));
+            .variant(VariantSpec::new(Friction::Coulomb).jacobians(true));
     }
     compile.generate()?;
     Ok(())
