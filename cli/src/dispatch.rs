@@ -283,8 +283,9 @@ pub fn main() -> ExitCode {
 /// `walker_gen::Compile`) registered beside the library's own ([`walker::setup::register`]):
 /// every model file with the canonical content of one of them runs its compiled kernels.
 ///
-/// ```no_run
-/// // src/main.rs of a crate that compiles its own walker:
+/// ```ignore
+/// // src/main.rs of a crate that compiles its own walker (its build script writes
+/// // compiled.rs; `examples/own-walker/` is this, built and tested):
 /// include!(concat!(env!("OUT_DIR"), "/compiled.rs"));
 /// fn main() -> std::process::ExitCode {
 ///     walker_cli::main_with(MODELS)
