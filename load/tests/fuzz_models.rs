@@ -288,9 +288,9 @@ fn fuzz(name: &str, cases: usize, seed: u64) -> Vec<String> {
         // 4. The emit path, on the first mutant of every `emit_every`-th derivation.
         let key = derivation_key(&model);
         let seen = derivations.len();
-        if !derivations.contains_key(&key) {
-            derivations.insert(key, case);
-            if seen % emit_every == 0 {
+        if let std::collections::hash_map::Entry::Vacant(e) = derivations.entry(key) {
+            e.insert(case);
+            if seen.is_multiple_of(emit_every) {
                 let t = Instant::now();
                 let emitted = catch_unwind(AssertUnwindSafe(|| {
                     walker_gen::Config::new()

@@ -25,12 +25,15 @@ pub fn derivation_key(model: &Model) -> String {
     key
 }
 
+/// A derivation's kernel source, or its error.
+type Derivation = Result<Arc<dyn KernelSource>, String>;
+
 /// The run-time kernel source of the walks, as `walker_load::runtime_source` gives it, with
 /// each derivation kept by [`derivation_key`]: a model derived once serves every mutant with
 /// its key (its own parameters, ranges and start applied by the simulator as for any model).
 #[derive(Default)]
 pub struct SharedSource {
-    kept: Mutex<HashMap<String, Result<Arc<dyn KernelSource>, String>>>,
+    kept: Mutex<HashMap<String, Derivation>>,
     /// Derivations made (distinct keys).
     pub derived: Mutex<usize>,
     /// Time spent deriving.
