@@ -10,7 +10,7 @@ use walker::ode::Method;
 use walker::setup::Overrides;
 use walker::sim::SimConfig;
 
-use crate::input::{InputError, assignments};
+use crate::input::{InputError, assignments, number};
 
 /// Command-line interface.
 #[derive(Parser, Debug)]
@@ -95,18 +95,18 @@ pub struct Common {
     #[arg(long, value_enum)]
     pub impact: Option<ImpactArg>,
     /// Friction law sharpness c (s/m), > 0.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(value_parser = number::positive, long, allow_hyphen_values = true)]
     pub c: Option<f64>,
     /// Integrator.
     #[arg(long, value_enum, default_value = "dop853")]
     pub method: MethodArg,
     /// Relative tolerance of the integrator, in [2.2e-15, 1) (ten machine epsilons and more;
     /// default 1e-10; 1e-8 with rodas4).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(value_parser = number::rtol, long, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
     /// Absolute tolerance of the integrator, in [2.2e-308, 1) (a normal number; default
     /// 1e-12; 1e-10 with rodas4).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(value_parser = number::atol, long, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]
@@ -154,17 +154,17 @@ impl Common {
 #[derive(clap::Args, Debug)]
 pub struct WalkFlags {
     /// Friction coefficient mu0, >= 0.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(value_parser = number::mu0, long, allow_hyphen_values = true)]
     pub mu0: Option<f64>,
     /// Ramp duration T_set (s), > 0 (active walker).
-    #[arg(long = "t-set", allow_hyphen_values = true)]
+    #[arg(value_parser = number::positive, long = "t-set", allow_hyphen_values = true)]
     pub t_set: Option<f64>,
     /// Initial angular velocity omega0 (rad/s) of the paper's walkers (a parameter of their
     /// start).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(value_parser = number::finite, long, allow_hyphen_values = true)]
     pub omega0: Option<f64>,
     /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(value_parser = number::slope, long, allow_hyphen_values = true)]
     pub phi: Option<f64>,
     /// Start from this value of a coordinate or velocity instead of the model's start:
     /// NAME=VALUE (repeat for others; each once), e.g. --init th1d=0.7.
@@ -184,7 +184,7 @@ pub enum Command {
         #[command(flatten)]
         walk: WalkFlags,
         /// Stop after the step that passes this time (s), in (0, 1e9].
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::duration, long, allow_hyphen_values = true)]
         duration: Option<f64>,
         /// Stop after this many steps: a whole number in [0, 1000000].
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "100")]
@@ -200,25 +200,25 @@ pub enum Command {
         #[arg(long)]
         param: Option<String>,
         /// First value.
-        #[arg(long, visible_alias = "mu0-from", allow_hyphen_values = true)]
+        #[arg(value_parser = number::finite, long, visible_alias = "mu0-from", allow_hyphen_values = true)]
         from: f64,
         /// Last value.
-        #[arg(long, visible_alias = "mu0-to", allow_hyphen_values = true)]
+        #[arg(value_parser = number::finite, long, visible_alias = "mu0-to", allow_hyphen_values = true)]
         to: f64,
         /// Increment, > 0; at most 100000 points in all (values times chains).
-        #[arg(long, visible_alias = "mu0-step", allow_hyphen_values = true)]
+        #[arg(value_parser = number::positive, long, visible_alias = "mu0-step", allow_hyphen_values = true)]
         step: f64,
         /// T_set values (active walker; repeat for several chains, at most 64).
-        #[arg(long = "t-set", allow_hyphen_values = true)]
+        #[arg(value_parser = number::positive, long = "t-set", allow_hyphen_values = true)]
         t_set: Vec<f64>,
         /// Slope angles (passive wheel; repeat for several chains, at most 64).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::slope, long, allow_hyphen_values = true)]
         phi: Vec<f64>,
         /// Start every value from the initial condition instead of the previous steady state.
         #[arg(long)]
         restart: bool,
         /// Walk each value for this long (s), in (0, 1e9].
-        #[arg(long, default_value_t = 100.0, allow_hyphen_values = true)]
+        #[arg(value_parser = number::duration, long, default_value_t = 100.0, allow_hyphen_values = true)]
         duration: f64,
         /// At most this many steps per value: a whole number in [0, 1000000].
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "1000")]
@@ -226,7 +226,7 @@ pub enum Command {
         /// Stop a value early once its gait is periodic: when the step-to-step change of T, dx
         /// and p, continued geometrically, adds up to at most this (relative; in (0, 1)). The
         /// last step then stands for the rest of the duration.
-        #[arg(long = "until-periodic", allow_hyphen_values = true)]
+        #[arg(value_parser = number::fraction, long = "until-periodic", allow_hyphen_values = true)]
         until_periodic: Option<f64>,
     },
     /// Find the limit cycle (fixed point of the Poincare map) and its Floquet multipliers.
@@ -235,16 +235,16 @@ pub enum Command {
         #[command(flatten)]
         common: Common,
         /// Friction coefficient mu0, >= 0.
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::mu0, long, allow_hyphen_values = true)]
         mu0: Option<f64>,
         /// Ramp duration T_set (s), > 0 (active walker).
-        #[arg(long = "t-set", allow_hyphen_values = true)]
+        #[arg(value_parser = number::positive, long = "t-set", allow_hyphen_values = true)]
         t_set: Option<f64>,
         /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::slope, long, allow_hyphen_values = true)]
         phi: Option<f64>,
         /// Initial angular velocity omega0 of the warm-up walk (rad/s; the paper's walkers).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::finite, long, allow_hyphen_values = true)]
         omega0: Option<f64>,
         /// Start the warm-up walk from this value of a coordinate or velocity: NAME=VALUE
         /// (repeat).
@@ -264,14 +264,14 @@ pub enum Command {
         #[arg(long, allow_hyphen_values = true)]
         steps: Option<String>,
         /// Walk for this long instead (s), in (0, 600].
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::animate_duration, long, allow_hyphen_values = true)]
         duration: Option<f64>,
         /// Playback speed: seconds of the walk per second of playback, in [0.01, 100].
-        #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
+        #[arg(value_parser = number::speed, long, allow_hyphen_values = true, default_value_t = 1.0)]
         speed: f64,
         /// Frames per second of playback, in [1, 50] (default 30; with --strobe, poses per
         /// second of playback, default 10: a pose every 0.1 s of the walk at --speed 1).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::fps, long, allow_hyphen_values = true)]
         fps: Option<f64>,
         /// The file to write: FILE.svg or FILE.gif (with --strobe, FILE.svg or FILE.png).
         #[arg(short = 'o', long)]
@@ -292,20 +292,20 @@ pub enum Command {
         #[arg(long)]
         param: String,
         /// Start of the range (within the parameter's valid range).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::value, long, allow_hyphen_values = true)]
         from: f64,
         /// End of the range (within the parameter's valid range, not equal to --from).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::value, long, allow_hyphen_values = true)]
         to: f64,
         /// Also place a point exactly at this parameter value (repeat; within the range).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(value_parser = number::value, long, allow_hyphen_values = true)]
         at: Vec<f64>,
         /// Also follow the period-two branch born at each period doubling.
         #[arg(long = "period-two")]
         period_two: bool,
         /// Largest continuation step in the scaled arclength, in (0, 1] (default 0.2; the
         /// whole range has length 1).
-        #[arg(long = "max-step", allow_hyphen_values = true)]
+        #[arg(value_parser = number::max_step, long = "max-step", allow_hyphen_values = true)]
         max_step: Option<f64>,
         /// Write the points as CSV to FILE.
         #[arg(long)]

@@ -213,3 +213,72 @@ pub fn tolerance(field: &str, x: f64) -> Result<f64, InputError> {
 pub fn duration(field: &str, x: f64) -> Result<f64, InputError> {
     check(field, x, x > 0.0, "finite and > 0")
 }
+
+/// Parsers of the command line's number flags for clap: each reads a number as clap's own
+/// `f64` parser does (`f64`'s `FromStr`: `1e-3`, `inf`, `NaN` are numbers), and refuses text
+/// that is not a number with the flag's valid range (clap names the flag; exit code 2). The
+/// range itself is checked after parsing, by the library ([`walker::request`]) or the command,
+/// where a number out of it is named with the same words.
+pub mod number {
+    /// `text` as a number; else why not, with `range` (what the flag accepts).
+    fn parse(text: &str, range: &str) -> Result<f64, String> {
+        text.parse::<f64>()
+            .map_err(|_| format!("not a number; expected {range}"))
+    }
+
+    macro_rules! parsers {
+        ($($(#[$doc:meta])* $name:ident => $range:expr;)*) => {$(
+            $(#[$doc])*
+            ///
+            /// # Errors
+            /// `text` is not a number (the message states the range).
+            pub fn $name(text: &str) -> Result<f64, String> {
+                parse(text, $range)
+            }
+        )*};
+    }
+
+    parsers! {
+        /// A friction coefficient (`--mu0`).
+        mu0 => "a number >= 0";
+        /// A positive number (`--c`, `--t-set`, `--step`).
+        positive => "a number > 0";
+        /// A relative tolerance (`--rtol`).
+        rtol => "a number in [2.2e-15, 1)";
+        /// An absolute tolerance (`--atol`).
+        atol => "a number in [2.2e-308, 1)";
+        /// A start parameter (`--omega0`).
+        finite => "a finite number";
+        /// A slope angle in radians (`--phi`).
+        slope => "a number in [0, pi/2) (radians)";
+        /// The length of a walk (`--duration` of `simulate` and `sweep`).
+        duration => "a number in (0, 1e9] (seconds)";
+        /// The periodic-gait tolerance (`--until-periodic`).
+        fraction => "a number in (0, 1)";
+        /// A value of a parameter's range (`--from`, `--to`, `--at`).
+        value => "a finite number within the parameter's range";
+        /// The length of an animated walk (`animate --duration`).
+        animate_duration => "a number in (0, 600] (seconds)";
+        /// The playback speed (`--speed`).
+        speed => "a number in [0.01, 100]";
+        /// Frames per second (`--fps`).
+        fps => "a number in [1, 50]";
+        /// The continuation's largest step (`--max-step`).
+        max_step => "a number in (0, 1]";
+    }
+
+    #[cfg(test)]
+    mod tests {
+        #[test]
+        fn a_number_parses_as_clap_parses_it_and_text_names_the_range() {
+            assert_eq!(super::mu0("0.3"), Ok(0.3));
+            assert_eq!(super::mu0("-1e3"), Ok(-1000.0));
+            assert!(super::mu0("inf").is_ok_and(f64::is_infinite));
+            assert_eq!(
+                super::mu0("abc"),
+                Err("not a number; expected a number >= 0".to_owned())
+            );
+            assert!(super::speed("").is_err_and(|e| e.contains("[0.01, 100]")));
+        }
+    }
+}

@@ -132,12 +132,11 @@ pub fn model(setup: &Setup) -> Result<Model, InputError> {
 /// (a coordinate or a velocity by name).
 ///
 /// # Errors
-/// A malformed pair, an unknown component, a component given twice, or a value that is not
-/// finite ([`walker::request::start_components`]).
+/// A malformed pair, an unknown component, a component given twice, a value that is not
+/// finite, or a stance foot moved off the floor ([`walker::request::start()`]).
 pub fn start(model: &Model, init: &[String]) -> Result<Vector, InputError> {
     let pairs = assignments("init", init)?;
-    let components = walker::request::start_components(model.spec(), &pairs)?;
-    Ok(model.start_state_replacing(&components))
+    Ok(walker::request::start(model, &pairs)?)
 }
 
 /// Run `walker simulate` from `start`.

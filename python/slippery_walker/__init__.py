@@ -320,9 +320,9 @@ def simulate(
             scene's.
         impact: ``"frictionless"`` (the paper's) or ``"coulomb"``; default: the scene's.
         method: ``"dop853"`` or ``"rodas4"`` (stiff friction, large ``mu0 c``).
-        rtol, atol: integrator tolerances, in (0, 1) (default 1e-10 and 1e-12; 1e-8 and 1e-10
-            with rodas4).
-        duration: stop after the step that passes this time (s, > 0; default: no limit).
+        rtol, atol: integrator tolerances, ``rtol`` in [2.2e-15, 1), ``atol`` in [2.2e-308, 1)
+            (default 1e-10 and 1e-12; 1e-8 and 1e-10 with rodas4).
+        duration: stop after the step that passes this time (s, in (0, 1e9]; default: no limit).
         max_steps: stop after this many steps (at most :data:`MAX_STEPS`).
         trajectory: also sample the motion at ``0, dt, 2 dt, ...`` from the dense output.
         dt: the interval of the trajectory's frames (s, > 0).

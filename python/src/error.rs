@@ -7,6 +7,7 @@
 use pyo3::PyErr;
 use pyo3::exceptions::PyValueError;
 use walker::model::{NoKernels, ParamError};
+use walker::request::{Field, RequestError, Role};
 use walker::setup::SetupError;
 
 /// A bad argument: its keyword and what is valid.
@@ -73,6 +74,55 @@ pub fn keyword(name: &str) -> &str {
     }
 }
 
+/// The keyword argument (or key of `set`/`init`) that gives `field` of the library's
+/// requests ([`walker::request`]): `t_set` for the role `T_set`, `dt` for the trajectory's
+/// sampling, `from_` for the first value of a sweep, `set['K_P']` for a parameter given by
+/// name, `init['th1d']` for a component of the start.
+#[must_use]
+pub fn keyword_of(field: &Field) -> String {
+    match field {
+        Field::Method => "method".into(),
+        Field::Friction => "friction".into(),
+        Field::Impact => "impact".into(),
+        Field::Rtol => "rtol".into(),
+        Field::Atol => "atol".into(),
+        Field::MaxSteps => "max_steps".into(),
+        Field::Duration => "duration".into(),
+        Field::UntilPeriodic => "until_periodic".into(),
+        Field::TrajectoryDt => "dt".into(),
+        Field::MaxFrames => "max_frames".into(),
+        Field::From => "from_".into(),
+        Field::To => "to".into(),
+        Field::Step => "step".into(),
+        Field::Param => "param".into(),
+        Field::Role(Role::Mu0) => "mu0".into(),
+        Field::Role(Role::C) => "c".into(),
+        Field::Role(Role::TSet) => "t_set".into(),
+        Field::Role(Role::Slope) => "phi".into(),
+        Field::StartParameter(name) if name == "omega0" => "omega0".into(),
+        Field::Parameter(name) | Field::StartParameter(name) => crate::walker_args::set_key(name),
+        Field::Init(name) => crate::walker_args::init_key(name),
+    }
+}
+
+/// A field as a message mentions it, the way a caller typed it: `t_set=`, `set['K_P']`.
+#[must_use]
+pub fn mention(field: &Field) -> String {
+    match field {
+        Field::Parameter(_) | Field::StartParameter(_) | Field::Init(_) if !matches!(field, Field::StartParameter(n) if n == "omega0") => {
+            keyword_of(field)
+        }
+        other => format!("{}=", keyword_of(other)),
+    }
+}
+
+impl From<RequestError> for ArgError {
+    /// Named by the keyword of the field, the other fields it mentions by theirs.
+    fn from(e: RequestError) -> Self {
+        ArgError::new(&keyword_of(e.field()), e.detail(&mention))
+    }
+}
+
 impl From<ParamError> for ArgError {
     /// Named by the keyword of the parameter, with the valid range of its model file.
     fn from(e: ParamError) -> Self {
@@ -91,6 +141,7 @@ impl From<SetupError> for ArgError {
     fn from(e: SetupError) -> Self {
         match e {
             SetupError::Param(p) => p.into(),
+            SetupError::Request(r) => r.into(),
             SetupError::NoKernels(k) => k.into(),
             SetupError::Model(_) | SetupError::Spec(_) | SetupError::NotCompiled { .. } => {
                 ArgError::new("model", e.to_string())

@@ -7,14 +7,10 @@ use pyo3::types::PyDict;
 use walker::sim::{trajectory_stoppable, walk_stoppable};
 
 use crate::chunks::{asked, stoppable};
-use crate::error::check;
+use crate::error::ArgError;
 use crate::options;
 use crate::table::steps_dict;
 use crate::walker_args::{self, overrides};
-
-/// The most frames a trajectory may have (`max_frames`): a frame is a few dozen numbers, so
-/// this bounds the memory of a call as [`options::MAX_STEPS`] bounds the steps.
-pub const MAX_FRAMES: usize = 1_000_000;
 
 /// Simulate one walk (see the Python docstring of `slippery_walker.simulate`).
 ///
@@ -62,8 +58,8 @@ pub fn simulate<'py>(
         };
         return steps_dict(py, &model, &w);
     };
-    check("dt", dt, dt > 0.0, "finite and > 0")?;
-    let max_frames = options::count("max_frames", max_frames, 1, MAX_FRAMES)?;
+    let (dt, max_frames) = walker::request::trajectory(duration, dt, i128::from(max_frames))
+        .map_err(ArgError::from)?;
     let tr = stoppable(py, |stop| {
         trajectory_stoppable(&model, &cfg, &start, &limits, dt, max_frames, &|| {
             asked(stop)

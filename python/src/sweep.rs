@@ -12,22 +12,17 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 use walker::model::Model;
+use walker::request::{Field, Role, SweepRange};
 use walker::setup::Setup;
 use walker::sim::{SimConfig, Stopped, WalkLimits};
-use walker::sweep::{Carry, mu0_grid};
+use walker::sweep::Carry;
 use walker::vector::Vector;
 
 use crate::chunks::{asked, stoppable};
-use crate::error::{ArgError, check};
+use crate::error::{ArgError, keyword_of, mention};
 use crate::options;
 use crate::table::{Outcome, RESULT_COLUMNS, Rows, names_dict};
 use crate::walker_args::{self, overrides};
-
-/// The most chains a sweep may have, as the command line's.
-pub const MAX_SWEEP_CHAINS: usize = 64;
-
-/// The most points a sweep may have in all, as the command line's.
-pub const MAX_SWEEP_POINTS: usize = 100_000;
 
 /// A chain of a sweep on its way along the grid.
 struct Chain {
@@ -141,14 +136,6 @@ pub fn sweep<'py>(
     walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
     let cfg = options::config(method, rtol, atol)?;
     let limits = options::limits(Some(duration), max_steps, until_periodic)?;
-    check(from_name, from_, true, "finite")?;
-    check(
-        to_name,
-        to,
-        to >= from_,
-        &format!("finite and >= {from_name}"),
-    )?;
-    check(step_name, step, step > 0.0, "finite and > 0")?;
     let spec = std::sync::Arc::clone(setup.walker.spec());
     let param = param.unwrap_or_else(|| {
         spec.mu0.map_or_else(
@@ -182,32 +169,39 @@ pub fn sweep<'py>(
         }
         (chain_param, values) = (None, vec![f64::NAN]);
     }
-    if values.len() > MAX_SWEEP_CHAINS {
-        return Err(ArgError::new(
-            chain_arg,
-            format!("{} values: at most {MAX_SWEEP_CHAINS} chains", values.len()),
-        )
-        .into());
-    }
     // The ends in the parameter's range before the count, so that a value far out of it is
     // named as itself, not as a step that would give too many points.
     for (name, v) in [(from_name, from_), (to_name, to)] {
-        setup
-            .params
-            .with(&param, v)
-            .map_err(|e| ArgError::new(name, ArgError::from(e).message))?;
+        if v.is_finite() {
+            setup
+                .params
+                .with(&param, v)
+                .map_err(|e| ArgError::new(name, ArgError::from(e).message))?;
+        }
     }
-    // Count the points before making them, as the command line does (`mu0_grid`'s count).
-    let per_chain = ((to - from_) / step + 1e-9).floor() + 1.0;
-    let total = per_chain * values.len() as f64;
-    if total > MAX_SWEEP_POINTS as f64 {
-        return Err(ArgError::new(
-            step_name,
-            format!("{step:e} gives {total:.3e} points; at most {MAX_SWEEP_POINTS} points in all"),
-        )
-        .into());
+    // The range and the count of points, checked before any is made (the library's check
+    // for every front end), named by the caller's names of the range.
+    let chain_field = Field::Role(if chain_arg == "phi" {
+        Role::Slope
+    } else {
+        Role::TSet
+    });
+    let grid = SweepRange {
+        from: from_,
+        to,
+        step,
     }
-    let grid = mu0_grid(from_, to, step);
+    .grid(values.len(), chain_field)
+    .map_err(|e| {
+        let arg = match e.field() {
+            Field::From => from_name.clone(),
+            Field::To => to_name.clone(),
+            Field::Step => step_name.clone(),
+            Field::Role(_) => chain_arg.to_owned(),
+            other => keyword_of(other),
+        };
+        ArgError::new(&arg, e.detail(&mention))
+    })?;
     let init = walker_args::check_init(&spec, &init)?;
     let initial = |m: &Model| m.start_state_replacing(&init);
     // Every point's model, built before any walk: a value out of its range or kernels that
@@ -270,7 +264,7 @@ pub fn sweep<'py>(
 mod tests {
     use super::*;
     use walker::setup::Overrides;
-    use walker::sweep::sweep_chains;
+    use walker::sweep::{mu0_grid, sweep_chains};
 
     /// The chunked sweep walks exactly what `walker::sweep::sweep_chains` (the command line's
     /// sweep) walks, in both modes, across chunk boundaries and through failures: `T_set = 0.2`

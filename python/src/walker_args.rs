@@ -7,7 +7,8 @@
 
 use std::path::Path;
 
-use walker::model::{InitError, Model, Spec};
+use walker::model::{Model, Spec};
+use walker::request::{Field, Role};
 use walker::setup::{Overrides, Setup, SetupError};
 use walker::vector::Vector;
 
@@ -80,25 +81,21 @@ pub fn setup(
         (None, Some(path)) => Setup::from_model_file(Path::new(path), ov, Some(&runtime))?,
         (scene, None) => Setup::resolve(scene.unwrap_or(DEFAULT_SCENE), ov, Some(&runtime))?,
     };
-    let spec = std::sync::Arc::clone(setup.walker.spec());
-    let role = |i: Option<usize>| i.map(|i| spec.model.parameters[i].name.name.as_str());
-    let keywords = [
-        ("mu0", ov.mu0.is_some(), role(spec.mu0)),
-        ("c", ov.c.is_some(), role(spec.c)),
-        ("phi", ov.phi.is_some(), role(spec.slope)),
-        ("t_set", ov.t_set.is_some(), Some("T_set")),
+    // Each parameter once, by its keyword or in `set` (the library's check for every front
+    // end): a second value would silently replace the first.
+    let given = [
+        (ov.mu0, Role::Mu0),
+        (ov.c, Role::C),
+        (ov.t_set, Role::TSet),
+        (ov.phi, Role::Slope),
     ];
-    for (name, _) in set {
-        if let Some((kw, ..)) = keywords
-            .iter()
-            .find(|(_, given, p)| *given && *p == Some(name.as_str()))
-        {
-            return Err(ArgError::new(
-                &set_key(name),
-                format!("{name} is also given as {kw}=; give it once"),
-            ));
-        }
-    }
+    let fields: Vec<Field> = given
+        .iter()
+        .filter(|(v, _)| v.is_some())
+        .map(|&(_, r)| Field::Role(r))
+        .chain(set.iter().map(|(n, _)| Field::Parameter(n.clone())))
+        .collect();
+    walker::request::distinct_fields(setup.walker.spec(), &fields)?;
     for (name, value) in set {
         setup
             .set(name, *value)
@@ -167,43 +164,27 @@ pub fn model(setup: &Setup) -> Result<Model, ArgError> {
 }
 
 /// The index in the state of each `(name, value)` of `init` with its value, checked against
-/// the model `spec`: a coordinate or a velocity by name, and a finite value.
+/// the model `spec` ([`walker::request::start_components`]): a coordinate or a velocity by
+/// name, each once, and a finite value.
 ///
 /// # Errors
-/// An unknown component (named `init['name']`, listing the model's), or a value that is not
-/// finite.
+/// An unknown component (named `init['name']`, listing the model's), one given twice, or a
+/// value that is not finite.
 pub fn check_init(spec: &Spec, init: &[(String, f64)]) -> Result<Vec<(usize, f64)>, ArgError> {
-    spec.start_components(init).map_err(|e| {
-        let key = init_key(e.name());
-        match e {
-            InitError::NotFinite { value, .. } => ArgError::out_of_range(&key, value, "finite"),
-            InitError::Unknown { model, known, .. } => ArgError::new(
-                &key,
-                format!("not a coordinate or velocity of model `{model}`; they are: {known}"),
-            ),
-        }
-    })
+    Ok(walker::request::start_components(spec, init)?)
 }
 
 /// The start of a walk: the model's `[start]` with the components of `init` (a coordinate or a
-/// velocity by name) replaced, as the command line's `--init`.
+/// velocity by name) replaced, as the command line's `--init` ([`walker::request::start()`]).
 ///
 /// # Errors
 /// As [`check_init`] and [`on_the_floor`].
 pub fn start(model: &Model, init: &[(String, f64)]) -> Result<Vector, ArgError> {
-    let components = check_init(model.spec(), init)?;
-    let start = model.start_state_replacing(&components);
-    on_the_floor(model, &start, &components)?;
-    Ok(start)
+    Ok(walker::request::start(model, init)?)
 }
 
-/// Checks that a start whose stance foot `init` moved is still on the floor: the first two
-/// coordinates are the stance foot's `x` and `z` (`docs/model-format.md`), held on the floor
-/// `z = -x tan(phi)` (level: `z = 0`) and moving along it (`zd = -xd tan(phi)`). A start off
-/// the floor walks as if it were on it (a foot a kilometre up walks "ok"), so it is refused,
-/// named by the `init` key that moved the foot. The tolerance is relative to the foot's
-/// distance from the origin (and 1 m, 1 m/s): rounding in `x tan(phi)`, not a displacement.
-/// A start the model file gives itself is the model's to check.
+/// Checks that a start whose stance foot `components` moved is still on the floor and moving
+/// along it ([`walker::request::on_the_floor`]), named by the `init` key that moved the foot.
 ///
 /// # Errors
 /// The stance foot given by `init` is off the floor or leaves it.
@@ -212,51 +193,7 @@ pub fn on_the_floor(
     start: &[f64],
     components: &[(usize, f64)],
 ) -> Result<(), ArgError> {
-    let n = model.n();
-    let Some(&(moved, _)) = components
-        .iter()
-        .find(|(i, _)| [0, 1, n, n + 1].contains(i))
-    else {
-        return Ok(());
-    };
-    let names = model.spec().state_names();
-    let key = init_key(&names[moved]);
-    let tan = model.phi().tan();
-    let off = |a: f64, b: f64| {
-        let scale = 1.0 + a.abs().max(b.abs());
-        (b + a * tan).abs() > 1e-9 * scale
-    };
-    if off(start[0], start[1]) {
-        return Err(ArgError::new(
-            &key,
-            format!(
-                "the stance foot ({} = {}, {} = {}) must be on the floor ({} = {})",
-                names[0],
-                start[0],
-                names[1],
-                start[1],
-                names[1],
-                if tan == 0.0 {
-                    "0".to_owned()
-                } else {
-                    format!("-{} tan(phi)", names[0])
-                }
-            ),
-        ));
-    }
-    if off(start[n], start[n + 1]) {
-        return Err(ArgError::new(
-            &key,
-            format!(
-                "the stance foot's velocity ({} = {}, {} = {}) must be along the floor",
-                names[n],
-                start[n],
-                names[n + 1],
-                start[n + 1]
-            ),
-        ));
-    }
-    Ok(())
+    Ok(walker::request::on_the_floor(model, start, components)?)
 }
 
 #[cfg(test)]

@@ -159,9 +159,9 @@ def test_two_grid_columns_setting_one_parameter_are_refused():
 
 
 def test_a_parameter_by_keyword_and_in_set_is_refused():
-    with pytest.raises(ValueError, match=r"^invalid set\['T_set'\]: T_set is also given as t_set="):
+    with pytest.raises(ValueError, match=r"^invalid set\['T_set'\]: T_set is given twice, also as t_set=; give it once$"):
         sw.simulate(t_set=0.3, set={"T_set": 0.4})
-    with pytest.raises(ValueError, match=r"^invalid set\['mu0'\]: mu0 is also given as mu0="):
+    with pytest.raises(ValueError, match=r"^invalid set\['mu0'\]: mu0 is given twice, also as mu0=; give it once$"):
         sw.fixed_point(mu0=0.3, set={"mu0": 0.4})
 
 

@@ -23,7 +23,9 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
+use toml::Spanned;
 
+use crate::model::source::SourceMap;
 use crate::model::{Model, ModelError};
 use crate::structure::{Friction, ImpactLaw};
 
@@ -59,14 +61,15 @@ struct RawModelScene {
     friction: Option<String>,
     impact: Option<String>,
     #[serde(default)]
-    fix: BTreeMap<String, f64>,
+    fix: BTreeMap<String, Spanned<f64>>,
     #[serde(default)]
-    set: BTreeMap<String, f64>,
+    set: BTreeMap<String, Spanned<f64>>,
     kernels: Option<Vec<String>>,
 }
 
-/// A model scene file, read (its model loaded and checked; its parameter names not yet checked
-/// against the model, which the generator and the simulator do, each naming the field).
+/// A model scene file, read: its model loaded and checked, and every value of `[fix]` and
+/// `[set]` a parameter of the model within the range its model file gives (refused naming
+/// the scene file, the line and column, the field and the range).
 #[derive(Clone, Debug)]
 pub struct ModelSceneFile {
     /// Where it was read from.
@@ -172,10 +175,26 @@ impl ModelSceneFile {
         }
         if let Some(name) = raw.set.keys().find(|k| raw.fix.contains_key(*k)) {
             return Err(invalid(format!(
-                "set.{name}: `{name}` is fixed at generation ([fix]); a scene sets only the \
-                 parameters it does not fix"
+                "set.{}: `{}` is fixed at generation ([fix]); a scene sets only the \
+                 parameters it does not fix",
+                echo(name),
+                echo(name)
             )));
         }
+        let source = SourceMap::new(text);
+        for (table, values) in [("fix", &raw.fix), ("set", &raw.set)] {
+            for (name, value) in values {
+                check_value(&model, &model_origin, table, name, value).map_err(|why| {
+                    let at = source.location(value.span().start);
+                    invalid(format!("line {}, column {}: {why}", at.line, at.column))
+                })?;
+            }
+        }
+        let values = |m: BTreeMap<String, Spanned<f64>>| {
+            m.into_iter()
+                .map(|(k, v)| (k, v.into_inner()))
+                .collect::<BTreeMap<_, _>>()
+        };
         Ok(ModelSceneFile {
             path: path.to_path_buf(),
             name: raw.name,
@@ -183,9 +202,100 @@ impl ModelSceneFile {
             model_text,
             friction,
             impact,
-            fix: raw.fix,
-            set: raw.set,
+            fix: values(raw.fix),
+            set: values(raw.set),
             kernels: raw.kernels,
         })
+    }
+}
+
+/// A name from a scene file as a message repeats it: control characters escaped, at most 80
+/// characters (with `...`).
+fn echo(name: &str) -> String {
+    let mut out: String = name.chars().take(80).flat_map(char::escape_debug).collect();
+    if name.chars().nth(80).is_some() {
+        out.push_str("...");
+    }
+    out
+}
+
+/// Checks `table.name = value` of a scene against `model` (read from `origin`): `name` is one
+/// of its parameters and `value` within the range its model file gives. The reason, if not.
+fn check_value(
+    model: &Model,
+    origin: &str,
+    table: &str,
+    name: &str,
+    value: &Spanned<f64>,
+) -> Result<(), String> {
+    let v = *value.get_ref();
+    let Some(p) = model.parameters.iter().find(|p| p.name.name == name) else {
+        let known: Vec<&str> = model
+            .parameters
+            .iter()
+            .map(|p| p.name.name.as_str())
+            .collect();
+        return Err(format!(
+            "{table}.{}: not a parameter of model `{}` ({origin}); its parameters: {}",
+            echo(name),
+            model.name,
+            known.join(", ")
+        ));
+    };
+    if p.range.contains(v) {
+        Ok(())
+    } else {
+        Err(format!(
+            "{table}.{name} = {v}: expected a value in {} (the range of `{name}` in {origin}, \
+             line {})",
+            p.range, p.name.location.line
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MODEL: &str = "../compass-gait.toml";
+
+    /// The scene `text` read beside the shipped models (`models/scenes/`).
+    fn scene(text: &str) -> Result<ModelSceneFile, ModelSceneError> {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/scenes");
+        ModelSceneFile::from_toml(text, &dir.join("bad.toml"), |m| {
+            let p = dir.join(m);
+            Ok((p.display().to_string(), read(&p)?))
+        })
+    }
+
+    #[test]
+    fn a_value_out_of_its_parameters_range_names_the_scene_file_line_field_and_range() {
+        let text = format!("model = \"{MODEL}\"\n\n[set]\nphi = 5.0\n");
+        let e = scene(&text)
+            .expect_err("phi = 5 is out of range")
+            .to_string();
+        assert!(e.contains("bad.toml"), "{e}");
+        assert!(e.contains("line 4, column 7"), "{e}");
+        assert!(e.contains("set.phi = 5: expected a value in ["), "{e}");
+    }
+
+    #[test]
+    fn a_non_finite_value_and_an_unknown_name_are_refused_with_their_line() {
+        let text = format!("model = \"{MODEL}\"\n[fix]\ng = nan\n");
+        let e = scene(&text).expect_err("NaN").to_string();
+        assert!(e.contains("line 3, column 5: fix.g = NaN"), "{e}");
+        let text = format!("model = \"{MODEL}\"\n[set]\n\"gr\\u001bavity\" = 9.8\n");
+        let e = scene(&text).expect_err("unknown").to_string();
+        assert!(
+            e.contains("line 3") && e.contains("set.gr\\u{1b}avity: not a parameter"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_value_of_the_wrong_type_names_the_line() {
+        let text = format!("model = \"{MODEL}\"\n[set]\nphi = \"steep\"\n");
+        let e = scene(&text).expect_err("a string").to_string();
+        assert!(e.contains("bad.toml") && e.contains("line 3"), "{e}");
     }
 }

@@ -1,6 +1,8 @@
 //! The mutations of the fuzz suite (`fuzz_models.rs`): a seeded generator and the edits of a
 //! model file's text, each with a description that names the line and the change.
 
+pub mod shared;
+
 /// A small, fast, seeded generator (SplitMix64).
 pub struct Rng(pub u64);
 

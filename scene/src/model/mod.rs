@@ -29,7 +29,7 @@ mod raw;
 pub mod reserved;
 mod sections;
 mod size;
-mod source;
+pub(crate) mod source;
 pub mod symbols;
 pub mod types;
 mod validate;

@@ -13,17 +13,23 @@ use crate::model::raw::RawModel;
 
 /// One list's check: its name, its length, its limit, the span of its first entry past the
 /// limit, and why the limit is there.
-type ListSize<'a> = (
-    &'a str,
-    usize,
-    usize,
-    Option<std::ops::Range<usize>>,
-    &'a str,
-);
+struct ListSize<'a> {
+    what: &'a str,
+    count: usize,
+    max: usize,
+    past: Option<std::ops::Range<usize>>,
+    why: &'a str,
+}
 
-/// The span of entry `i` of `list`, if it has one.
-fn span_of<T>(list: &[Spanned<T>], i: usize) -> Option<std::ops::Range<usize>> {
-    list.get(i).map(Spanned::span)
+/// The check of `list`, named `what`, against `max` (length and span from the same list).
+fn list<'a, T>(what: &'a str, list: &[Spanned<T>], max: usize, why: &'a str) -> ListSize<'a> {
+    ListSize {
+        what,
+        count: list.len(),
+        max,
+        past: list.get(max).map(Spanned::span),
+        why,
+    }
 }
 
 impl Loader<'_> {
@@ -34,68 +40,67 @@ impl Loader<'_> {
             .impact
             .as_ref()
             .map_or(&[][..], |i| i.get_ref().locks.as_slice());
-        let lists: [ListSize<'_>; 8] = [
-            (
+        let lists = [
+            list(
                 "[[coordinate]]",
-                raw.coordinate.get_ref().len(),
+                raw.coordinate.get_ref(),
                 MAX_COORDINATES,
-                span_of(raw.coordinate.get_ref(), MAX_COORDINATES),
                 "the simulator's state holds at most that many",
             ),
-            (
+            list(
                 "[[parameter]]",
-                raw.parameter.len(),
+                &raw.parameter,
                 MAX_PARAMETERS,
-                span_of(&raw.parameter, MAX_PARAMETERS),
                 "each is a symbol of every derived polynomial",
             ),
-            (
+            list(
                 "[[body]]",
-                raw.body.get_ref().len(),
+                raw.body.get_ref(),
                 MAX_BODIES,
-                span_of(raw.body.get_ref(), MAX_BODIES),
                 "each adds its energy to every entry of the mass matrix",
             ),
-            (
+            list(
                 "[[point]]",
-                raw.point.len(),
+                &raw.point,
                 MAX_POINTS,
-                span_of(&raw.point, MAX_POINTS),
                 "the simulator's strike test holds at most that many",
             ),
-            (
+            list(
                 "[[fall]]",
-                raw.fall.len(),
+                &raw.fall,
                 MAX_FALLS,
-                span_of(&raw.fall, MAX_FALLS),
                 "the simulator's event table watches at most that many",
             ),
-            (
+            list(
                 "[[input]]",
-                raw.input.len(),
+                &raw.input,
                 MAX_INPUTS,
-                span_of(&raw.input, MAX_INPUTS),
                 "the controller's A is inverted by its adjugate, derived up to 4 x 4",
             ),
-            (
+            list(
                 "[[output]]",
-                raw.output.len(),
+                &raw.output,
                 MAX_INPUTS,
-                span_of(&raw.output, MAX_INPUTS),
                 "there are as many outputs as inputs",
             ),
-            (
+            list(
                 "[impact] locks",
-                locks.len(),
+                locks,
                 MAX_LOCKS,
-                locks.get(MAX_LOCKS).map(Spanned::span),
                 "each is a row of the impact's constraints, held in fixed arrays",
             ),
         ];
-        for (what, count, max, span, why) in lists {
+        for ListSize {
+            what,
+            count,
+            max,
+            past,
+            why,
+        } in lists
+        {
             if count > max {
                 return Err(self.error(
-                    span.unwrap_or(0..0),
+                    past.unwrap_or(0..0),
                     ModelErrorKind::Limit,
                     format!("{count} {what}: expected at most {max} ({why})"),
                 ));

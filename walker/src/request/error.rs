@@ -64,6 +64,18 @@ pub enum RequestError {
         /// The most accepted.
         limit: u64,
     },
+    /// A start whose stance foot is off the floor, or whose velocity leaves it.
+    #[error("{field}: {}", self.detail(&|f: &Field| f.name()))]
+    OffTheFloor {
+        /// The start component that moved the foot.
+        field: Field,
+        /// The foot's `x` and `z` (or their velocities) by name, with their values.
+        foot: [(String, f64); 2],
+        /// Whether the velocity leaves the floor (else the position is off it).
+        velocity: bool,
+        /// Whether the floor is level (`z = 0`; else `z = -x tan(phi)`).
+        level: bool,
+    },
     /// Two inputs that cannot be given together.
     #[error("{field}: {}", self.detail(&|f: &Field| f.name()))]
     Conflict {
@@ -95,6 +107,7 @@ impl RequestError {
             | RequestError::Count { field, .. }
             | RequestError::UnknownName { field, .. }
             | RequestError::TooLarge { field, .. }
+            | RequestError::OffTheFloor { field, .. }
             | RequestError::Conflict { field, .. } => field,
             RequestError::Repeated { second, .. } => second,
         }
@@ -125,6 +138,29 @@ impl RequestError {
             RequestError::TooLarge {
                 what, count, limit, ..
             } => format!("the request has {} {what}; at most {limit}", Approx(*count)),
+            RequestError::OffTheFloor {
+                foot: [(x, xv), (z, zv)],
+                velocity,
+                level,
+                ..
+            } => {
+                let (x, z) = (shown::name(x), shown::name(z));
+                let (xv, zv) = (shown::number(*xv), shown::number(*zv));
+                if *velocity {
+                    format!(
+                        "the stance foot's velocity ({x} = {xv}, {z} = {zv}) must be along the floor"
+                    )
+                } else {
+                    let floor = if *level {
+                        "0".to_owned()
+                    } else {
+                        format!("-{x} tan(phi)")
+                    };
+                    format!(
+                        "the stance foot ({x} = {xv}, {z} = {zv}) must be on the floor ({z} = {floor})"
+                    )
+                }
+            }
             RequestError::Conflict { other, why, .. } => {
                 format!("cannot be given with {}: {why}", names(other))
             }

@@ -161,17 +161,44 @@ pub fn trajectory(
     let dt = trajectory_dt(dt)?;
     let frames = max_frames(max_frames_given)?;
     if let Some(d) = duration.filter(|d| d.is_finite()) {
-        let asked = (d / dt + 1e-9).floor() + 1.0;
-        if asked > MAX_FRAMES as f64 {
-            return Err(RequestError::TooLarge {
-                field: Field::TrajectoryDt,
-                what: "samples (duration / trajectory_dt + 1)",
-                count: asked,
-                limit: MAX_FRAMES as u64,
-            });
-        }
+        at_most(
+            Field::TrajectoryDt,
+            "samples (duration / trajectory_dt + 1)",
+            values_in(d, dt),
+            MAX_FRAMES,
+        )?;
     }
     Ok((dt, frames))
+}
+
+/// How many values `first, first + step, ..` up to `first + span` makes (the last counted
+/// when rounding leaves it within `1e-9` steps), as `f64`: a huge or infinite count is
+/// counted, never made.
+#[must_use]
+pub fn values_in(span: f64, step: f64) -> f64 {
+    (span / step + 1e-9).floor() + 1.0
+}
+
+/// `count` of `what` asked for by `field`, at most `limit` (checked before any work).
+///
+/// # Errors
+/// More than `limit` ([`RequestError::TooLarge`], naming `field`).
+pub fn at_most(
+    field: Field,
+    what: &'static str,
+    count: f64,
+    limit: usize,
+) -> Result<(), RequestError> {
+    if count > limit as f64 {
+        Err(RequestError::TooLarge {
+            field,
+            what,
+            count,
+            limit: limit as u64,
+        })
+    } else {
+        Ok(())
+    }
 }
 
 #[cfg(test)]

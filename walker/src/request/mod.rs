@@ -28,7 +28,7 @@
 //! | swept parameter | `--param` | `param` | a parameter, not also chained or set | also chained or set: silently overridden |
 //! | parameter by role | `--mu0`, `--c`, `--t-set`, `--phi` | `mu0`, `c`, `t_set`, `phi` | the model file's range, once | also by `--set`: the later won silently |
 //! | parameter by name | `--set NAME=VALUE` | `set={name: value}` | a parameter, its range, once | repeated: the last won silently |
-//! | start component | `--init NAME=VALUE` | `init={name: value}` | a coordinate or velocity, finite, once | repeated: the last won silently |
+//! | start component | `--init NAME=VALUE` | `init={name: value}` | a coordinate or velocity, finite, once; the stance foot on the floor and moving along it | repeated: the last won silently; the command line walked a foot off the floor |
 //! | start parameter | `--omega0` | `omega0` | finite (`> 0` for a fixed point), its range | checked |
 //!
 //! Inputs only one front end has are checked there: `walker animate`'s `--steps`, `--speed`,
@@ -50,7 +50,7 @@
 //!    parameter's index, as for [`Field::Param`]).
 //! 4. A sweep: [`SweepRange::grid`]`(chains, chain_field)` checks the range and counts the
 //!    points before making the grid.
-//! 5. The start: [`start_components`]`(spec, init)`.
+//! 5. The start: [`start()`]`(model, init)` ([`start_components`] and [`on_the_floor`]).
 //!
 //! Each error's [`RequestError::field`] is the input to name (the command line's
 //! `flag_of`, Python's keyword), [`RequestError::detail`] the message with every other field
@@ -72,9 +72,9 @@ pub use integrator::{
     sim_config,
 };
 pub use limits::{
-    MAX_DURATION, MAX_FRAMES, MAX_STEPS, count, count_text, duration, max_frames, max_steps,
-    trajectory, trajectory_dt, until_periodic, walk_limits,
+    MAX_DURATION, MAX_FRAMES, MAX_STEPS, at_most, count, count_text, duration, max_frames,
+    max_steps, trajectory, trajectory_dt, until_periodic, values_in, walk_limits,
 };
 pub use parameters::{distinct, distinct_fields, parameter_of, role_parameter};
-pub use start::start_components;
+pub use start::{on_the_floor, start, start_components};
 pub use sweep::{MAX_SWEEP_CHAINS, MAX_SWEEP_POINTS, SweepRange};

@@ -6,6 +6,7 @@ use crate::sweep::mu0_grid;
 
 use super::error::RequestError;
 use super::field::Field;
+use super::limits::{at_most, values_in};
 use super::shown;
 
 /// The most chains a sweep may have: without a restart each chain runs on its own thread.
@@ -31,7 +32,7 @@ impl SweepRange {
     /// infinite before it is checked).
     #[must_use]
     pub fn values(&self) -> f64 {
-        ((self.to - self.from) / self.step + 1e-9).floor() + 1.0
+        values_in(self.to - self.from, self.step)
     }
 
     /// The grid of the range for `chains` chains, checked: `from` finite, `to` finite and
@@ -60,23 +61,13 @@ impl SweepRange {
                 "finite and > 0",
             ));
         }
-        if chains > MAX_SWEEP_CHAINS {
-            return Err(RequestError::TooLarge {
-                field: chain,
-                what: "chains",
-                count: chains as f64,
-                limit: MAX_SWEEP_CHAINS as u64,
-            });
-        }
-        let total = self.values() * chains.max(1) as f64;
-        if total > MAX_SWEEP_POINTS as f64 {
-            return Err(RequestError::TooLarge {
-                field: Field::Step,
-                what: "points in all (values times chains)",
-                count: total,
-                limit: MAX_SWEEP_POINTS as u64,
-            });
-        }
+        at_most(chain, "chains", chains as f64, MAX_SWEEP_CHAINS)?;
+        at_most(
+            Field::Step,
+            "points in all (values times chains)",
+            self.values() * chains.max(1) as f64,
+            MAX_SWEEP_POINTS,
+        )?;
         Ok(mu0_grid(from, to, step))
     }
 }
