@@ -365,6 +365,26 @@ fn env(name: &str) -> Option<u64> {
     std::env::var(name).ok().and_then(|c| c.parse().ok())
 }
 
+/// The most memory the fuzzing process may have held at once (its peak resident set, bytes).
+/// A derivation is bounded by its budget of 2 million weighted term products; a polynomial's
+/// term (its exponent vector over at most a few dozen symbols and an exact rational
+/// coefficient) takes of the order of 100 to 200 bytes, so a derivation that spends its whole
+/// budget holds at most a few hundred megabytes, and the test harness runs at most one model's
+/// cases per core (two here) beside walks and tapes of a few megabytes. 2 GiB is that with a
+/// margin; a read of `/dev/zero` or a grid built whole would pass it.
+const MEMORY_BYTES: u64 = 2 << 30;
+
+/// The process's peak resident set so far (Linux: `VmHWM` of `/proc/self/status`), in bytes.
+fn peak_resident_bytes() -> u64 {
+    let status = std::fs::read_to_string("/proc/self/status").expect("/proc/self/status");
+    let kb = status
+        .lines()
+        .find_map(|l| l.strip_prefix("VmHWM:"))
+        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok())
+        .expect("VmHWM in /proc/self/status");
+    kb * 1024
+}
+
 fn check(name: &str, default_cases: usize) {
     let cases = env("FUZZ_CASES").map_or(default_cases, |c| c as usize);
     let failures = fuzz(name, cases, env("FUZZ_SEED").unwrap_or(35));
@@ -373,6 +393,17 @@ fn check(name: &str, default_cases: usize) {
         "{} failures:\n{}",
         failures.len(),
         failures.join("\n")
+    );
+    let peak = peak_resident_bytes();
+    println!(
+        "{name}: peak resident set of the process so far {} MiB",
+        peak >> 20
+    );
+    assert!(
+        peak <= MEMORY_BYTES,
+        "{name}: the process held {} MiB at its peak, over the bound of {} MiB",
+        peak >> 20,
+        MEMORY_BYTES >> 20
     );
 }
 

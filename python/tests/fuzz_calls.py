@@ -212,3 +212,7 @@ def main() -> None:
 
 if __name__ == "__main__":
     main()
+    # The child's peak resident set (Linux: kilobytes), for the parent's memory bound.
+    import resource
+    print(json.dumps({"peak_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}),
+          flush=True)

@@ -27,6 +27,12 @@ CALLS = 300
 PER_CALL_SECONDS = 5.0
 CHILD_SECONDS = 120.0
 
+# The child's peak resident set: the interpreter, NumPy and the module take of the order of
+# 100 MB; every call walks at most 3 steps or is refused before any work, and a grid streams,
+# so nothing grows with the calls. 1 GiB is far above that and far below what a file read
+# without bound (/dev/zero) or a grid built whole (a million points took 2 GB) would take.
+MAX_RSS_KB = 1 << 20
+
 # An error message repeats at most ~80 characters of a value; with the argument's name, its
 # valid range and a list of a model's names it stays well under this.
 MAX_MESSAGE = 1500
@@ -47,7 +53,8 @@ def named(arg: str, message: str) -> bool:
 
 
 @pytest.fixture(scope="module")
-def records(tmp_path_factory):
+def child(tmp_path_factory):
+    """The child's records, one per call, and its peak resident set (kilobytes)."""
     scratch = tmp_path_factory.mktemp("fuzz")
     env = dict(os.environ)
     run = subprocess.run(
@@ -55,12 +62,25 @@ def records(tmp_path_factory):
         capture_output=True, text=True, timeout=CHILD_SECONDS, env=env, cwd=HERE,
     )
     lines = [json.loads(line) for line in run.stdout.splitlines() if line.startswith("{")]
+    peaks = [r["peak_rss_kb"] for r in lines if "peak_rss_kb" in r]
+    lines = [r for r in lines if "peak_rss_kb" not in r]
     started = [r for r in lines if r.get("start")]
     done = [r for r in lines if not r.get("start")]
     assert run.returncode == 0, (f"the child ended with {run.returncode} during "
                                  f"{started[-1] if started else None}: {run.stderr[-2000:]}")
     assert len(done) == CALLS
-    return done
+    assert len(peaks) == 1, "the child reports its peak resident set once, at its end"
+    return done, peaks[0]
+
+
+@pytest.fixture(scope="module")
+def records(child):
+    return child[0]
+
+
+def test_the_calls_stay_within_a_memory_bound(child):
+    peak = child[1]
+    assert peak <= MAX_RSS_KB, f"the child held {peak // 1024} MiB at its peak"
 
 
 def test_every_adversarial_call_returns_or_raises_a_named_error(records):

@@ -7,8 +7,10 @@ mod common;
 
 use common::start;
 use walker::model::Model;
-use walker::poincare::poincare_map;
-use walker::poincare::{FixedPointError, FixedPointOptions, MapError, Section, fixed_point};
+use walker::poincare::{
+    FixedPointError, FixedPointOptions, JacobianMethod, MapError, Section, fixed_point,
+    poincare_map, poincare_map_with,
+};
 use walker::sim::SimConfig;
 use walker::vector::Vector;
 
@@ -48,14 +50,21 @@ fn no_heel_strike_within_the_step_time_reports_that_time() {
 
 #[test]
 fn a_step_that_fails_in_the_finite_difference_map_is_named() {
-    // Exact Coulomb friction has no Jacobian kernels: the map walks one step of the simulator,
-    // and a failure of that step (here no heel strike within 0.01 s) keeps its name.
+    // The map by finite differences walks one step of the simulator, and a failure of that
+    // step (here no heel strike within 0.01 s) keeps its name. (The exact-Coulomb variant
+    // now has Jacobian kernels, so the differences are asked for by name.)
     let model = common::active_coulomb(&RUNTIME);
     let cfg = SimConfig {
         max_step_time: 0.01,
         ..SimConfig::default()
     };
-    let err = poincare_map(&model, &cfg, &near_cycle(&model)).unwrap_err();
+    let err = poincare_map_with(
+        &model,
+        &cfg,
+        &near_cycle(&model),
+        JacobianMethod::FiniteDifferences,
+    )
+    .unwrap_err();
     let MapError::Walk(failure) = &err else {
         panic!("expected a failed step, got {err:?}");
     };
