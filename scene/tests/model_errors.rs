@@ -172,7 +172,7 @@ fn with_parameter(name: &str) -> Result<Model, ModelError> {
 
 #[test]
 fn parameters_that_differ_only_in_case_get_fields_of_their_own() -> Result<(), ModelError> {
-    // `M` beside `m`: the fields are `_m` and `m` (docs/model-format.md, "Names").
+    // `M` beside `m`: the fields are `mm` and `m` (docs/model-format.md, "Names").
     let model = with_parameter("M")?;
     let names: Vec<&str> = model
         .parameters
@@ -181,17 +181,17 @@ fn parameters_that_differ_only_in_case_get_fields_of_their_own() -> Result<(), M
         .collect();
     assert_eq!(
         walker_scene::model::fields::param_fields(&names)[..2],
-        ["m".to_owned(), "_m".to_owned()]
+        ["m".to_owned(), "mm".to_owned()]
     );
     Ok(())
 }
 
 #[test]
 fn parameters_whose_fields_would_really_collide_are_an_error_at_the_later() {
-    // `m__h` is the field of `m__h` and, beside `m_h`, of `m_H`.
+    // `m_hh` is the field of `m_hh` and, beside `m_h`, of `m_H`.
     let text = MINI.replacen(
         "[[parameter]]\nname = \"l\"",
-        "[[parameter]]\nname = \"m__h\"\nunit = \"kg\"\ndoc = \"a\"\nrange = \"(0, inf)\"\ndefault = 1.0\n\
+        "[[parameter]]\nname = \"m_hh\"\nunit = \"kg\"\ndoc = \"a\"\nrange = \"(0, inf)\"\ndefault = 1.0\n\
          [[parameter]]\nname = \"m_h\"\nunit = \"kg\"\ndoc = \"b\"\nrange = \"(0, inf)\"\ndefault = 1.0\n\
          [[parameter]]\nname = \"m_H\"\nunit = \"kg\"\ndoc = \"c\"\nrange = \"(0, inf)\"\ndefault = 1.0\n\
          [[parameter]]\nname = \"l\"",
@@ -202,7 +202,7 @@ fn parameters_whose_fields_would_really_collide_are_an_error_at_the_later() {
         r,
         ModelErrorKind::Duplicate,
         "36:8",
-        "`m__h` and `m_H` would both be the field `m__h`",
+        "`m_hh` and `m_H` would both be the field `m_hh`",
     );
 }
 

@@ -483,7 +483,7 @@ proptest! {
     /// Every model's kernels against the generic KKT solves at one random case.
     #[test]
     fn every_model_agrees_with_generic_linear_algebra(c in case()) {
-        prop_assert_eq!(MODELS.len(), 6);
+        prop_assert_eq!(MODELS.len(), 7);
         for m in MODELS {
             check(m, &c)?;
         }
