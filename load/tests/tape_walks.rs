@@ -82,7 +82,8 @@ fn a_model_that_is_not_compiled_needs_the_run_time_source() {
     let ov = Overrides::default();
     let err = Setup::from_model_file(&copied, &ov, None).expect_err("not compiled");
     assert!(
-        err.to_string().contains("not one of the models compiled into this program"),
+        err.to_string()
+            .contains("not one of the models compiled into this program"),
         "{err}"
     );
     let _ = std::fs::remove_file(copied);
