@@ -138,10 +138,8 @@ impl Compile {
     }
 
     /// Adds a variant to the model added last. The simulator takes the first variant that fits
-    /// a run, so give those that fix more parameters first.
-    ///
-    /// # Panics
-    /// Never; a variant before any model is reported by [`Compile::generate`].
+    /// a run, so give those that fix more parameters first. A variant added before any model
+    /// is reported by [`Compile::generate`].
     pub fn variant(&mut self, variant: VariantSpec) -> &mut Compile {
         match self.models.last_mut() {
             Some(entry) => entry.variants.push(variant),
