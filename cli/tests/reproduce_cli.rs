@@ -130,11 +130,13 @@ fn readme_quotes_the_summary(summary: &str) {
     }
 }
 
-/// The README's main command as a user types it (`cargo run --release -p walker -- reproduce
+/// The README's main command as a user types it (`cargo run --release -p walker-cli -- reproduce
 /// --out out`, read from the README's first screen) reaches the `reproduce` subcommand: `cargo
-/// run` must pick the CLI among the package's binaries (`default-run`). Run here with
-/// `--help` instead of `--out out`, and without `--release` (the end-to-end run is the test
-/// above).
+/// run -p walker-cli` runs the package's `default-run` binary, so that must be the binary this
+/// suite runs (`walker`), and its `reproduce` must take `--out`. Cargo's own metadata answers the
+/// first half; running `cargo run` itself here would compile the whole workspace a second time
+/// in another profile (3 minutes of CI) to learn the same thing. The end-to-end run is the test
+/// above.
 #[test]
 fn the_readme_main_command_runs_the_cli() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -162,13 +164,36 @@ fn the_readme_main_command_runs_the_cli() {
     );
     let o = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
         .current_dir(&root)
-        .args(["run", "-q", "-p", "walker-cli", "--", "reproduce", "--help"])
+        .args(["metadata", "--no-deps", "--format-version", "1"])
         .output()
         .expect("cargo runs");
+    assert!(
+        o.status.success(),
+        "cargo metadata failed: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let metadata: serde_json::Value = serde_json::from_slice(&o.stdout).expect("metadata is JSON");
+    let cli = metadata["packages"]
+        .as_array()
+        .and_then(|packages| packages.iter().find(|p| p["name"] == "walker-cli"))
+        .expect("the walker-cli package");
+    assert_eq!(
+        cli["default_run"], "walker",
+        "`cargo run -p walker-cli` must run `walker`"
+    );
+    let walker_bin = PathBuf::from(env!("CARGO_BIN_EXE_walker"));
+    assert_eq!(
+        walker_bin.file_stem().and_then(|s| s.to_str()),
+        Some("walker")
+    );
+    let o = Command::new(&walker_bin)
+        .args(["reproduce", "--help"])
+        .output()
+        .expect("walker runs");
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(
         o.status.success() && stdout.contains("--out"),
-        "`cargo run -p walker-cli -- reproduce --help` failed:\n{}{}",
+        "`walker reproduce --help` failed:\n{}{}",
         stdout,
         String::from_utf8_lossy(&o.stderr)
     );
