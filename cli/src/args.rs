@@ -303,6 +303,11 @@ pub enum Command {
         /// Also follow the period-two branch born at each period doubling.
         #[arg(long = "period-two")]
         period_two: bool,
+        /// Seek the branch's first gait from this start: the model's start with a coordinate
+        /// or velocity replaced, NAME=VALUE (repeat for others; each once). The warm-up walk
+        /// from it and the start itself are the guesses tried.
+        #[arg(long = "init")]
+        init: Vec<String>,
         /// Largest continuation step in the scaled arclength, in (0, 1] (default 0.2; the
         /// whole range has length 1).
         #[arg(value_parser = number::max_step, long = "max-step", allow_hyphen_values = true)]

@@ -211,13 +211,16 @@ fn run(cli: Cli) -> Result<(), CliError> {
             to,
             at,
             period_two,
+            init,
             max_step,
             csv,
             plot,
         } => {
             let setup = run::setup(&common, &common.overrides(None, None, None)?)?;
+            let init = run::start_components(&run::model(&setup)?, &init)?;
             let req =
-                continue_cmd::Request::new(setup, &param, from, to, &at, period_two, max_step)?;
+                continue_cmd::Request::new(setup, &param, from, to, &at, period_two, max_step)?
+                    .with_init(init);
             let branches = continue_cmd::run(&req, &common.config()?)?;
             let name = req.param.as_str();
             if let Some(path) = &csv {

@@ -139,6 +139,20 @@ pub fn start(model: &Model, init: &[String]) -> Result<Vector, InputError> {
     Ok(walker::request::start(model, &pairs)?)
 }
 
+/// The components `--init NAME=VALUE` replaces in the model's `[start]`, as (index into
+/// `[q, qd]`, value), checked as [`start`] checks them (on `model`, the walker at the values
+/// it starts from).
+///
+/// # Errors
+/// As [`start`].
+pub fn start_components(model: &Model, init: &[String]) -> Result<Vec<(usize, f64)>, InputError> {
+    let pairs = assignments("init", init)?;
+    let components = walker::request::start_components(model.spec(), &pairs)?;
+    let start = model.start_state_replacing(&components);
+    walker::request::on_the_floor(model, &start, &components)?;
+    Ok(components)
+}
+
 /// Run `walker simulate` from `start`.
 ///
 /// # Errors

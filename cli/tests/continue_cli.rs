@@ -268,3 +268,36 @@ fn a_max_step_below_the_default_smallest_step_is_followed_not_a_panic() {
     let p0 = points[0]["parameter"].as_f64().unwrap();
     assert!((p0 - 0.1).abs() < 1e-12, "{p0}");
 }
+
+/// `--init` reaches the branch's start: the simplest walking model's own start finds its gait,
+/// the same start with the stance leg's rate reversed (a walker falling backwards) finds none,
+/// and the error lists that start among the tries; an unknown name or a foot lifted off the
+/// slope is refused before any work, naming `init`.
+#[test]
+fn init_replaces_the_start_the_branch_is_sought_from() {
+    let base = [
+        "--model",
+        "../models/simplest-walker.toml",
+        "--param",
+        "phi",
+        "--from",
+        "0.009",
+        "--to",
+        "0.01",
+    ];
+    let with = |extra: &[&str]| run(&[&base[..], extra].concat());
+    let (code, out, err) = with(&["--init", "th_std=0.1998325"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("EP"), "{out}");
+    let (code, _, err) = with(&["--init", "th_std=-0.2"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("no fixed point found") && err.contains("from the start guess"),
+        "{err}"
+    );
+    for bad in ["bogus=1", "z=1", "th_std"] {
+        let (code, _, err) = with(&["--init", bad]);
+        assert_eq!(code, 2, "--init {bad}: {err}");
+        assert!(err.contains("init"), "--init {bad}: {err}");
+    }
+}

@@ -50,6 +50,8 @@ pub struct Request {
     pub period_two: bool,
     /// The largest continuation step in the scaled arclength (`--max-step`).
     pub max_step: Option<f64>,
+    /// The components of the start `--init` replaces: (index into `[q, qd]`, value).
+    pub init: Vec<(usize, f64)>,
 }
 
 impl Request {
@@ -130,7 +132,17 @@ impl Request {
             at: at.to_vec(),
             period_two,
             max_step,
+            init: Vec::new(),
         })
+    }
+
+    /// The same request, its branch started from the model's start with `components`
+    /// (index into `[q, qd]`, value) replaced: `--init`, checked by the caller
+    /// ([`crate::run::start_components`]).
+    #[must_use]
+    pub fn with_init(mut self, components: Vec<(usize, f64)>) -> Request {
+        self.init = components;
+        self
     }
 }
 
@@ -143,7 +155,8 @@ impl Request {
 /// fixed point anywhere in the range ([`ContinueError::NoBranch`]).
 pub fn run(req: &Request, cfg: &SimConfig) -> Result<Vec<Branch>, ContinueError> {
     let walker = WalkerProblem::new(req.setup.clone(), &req.param, *cfg)
-        .map_err(|e| InputError::new("param", e.to_string()))?;
+        .map_err(|e| InputError::new("param", e.to_string()))?
+        .with_start(req.init.clone());
     let mut opts = ContinuationOptions {
         user_points: req.at.clone(),
         ..ContinuationOptions::default()
