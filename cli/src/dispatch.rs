@@ -12,6 +12,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use walker::contract::Compiled;
+use walker::request::Field;
 
 use crate::args::{Cli, Command, WalkFlags};
 use crate::input::{self, InputError};
@@ -94,11 +95,12 @@ fn run(cli: Cli) -> Result<(), CliError> {
             let w = match floor_spec {
                 None => run::simulate(&model, &start, &limits, &cfg)?,
                 Some(spec) => {
-                    let flag = if floor_file.is_some() {
-                        "floor"
+                    let (flag, field) = if floor_file.is_some() {
+                        ("floor", Field::Floor)
                     } else {
-                        "mu0-steps"
+                        ("mu0-steps", Field::Mu0Steps)
                     };
+                    floor::mu0_once(&setup, &common.set, field)?;
                     floor::simulate_on(&setup, spec, flag, &start, &limits, &cfg)?
                 }
             };
@@ -120,6 +122,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             let spec = floor::floor_of(Some(&floor_file), None, None)?
                 .ok_or_else(|| InputError::new("floor", "a floor file is required"))?;
             let setup = run::setup(&common, &common.overrides(None, t_set, phi)?)?;
+            floor::mu0_once(&setup, &common.set, Field::Floor)?;
             let start = run::model(&setup)?.start_state();
             let r = floor::survive_on(&setup, spec, &start, &walks, &max_steps, &common.config()?)?;
             if common.json {

@@ -55,6 +55,31 @@ pub fn floor_of(
         .map_err(|(field, message)| InputError::new("mu0-steps", format!("{field} = {message}")))
 }
 
+/// Checks that `--set` does not also give the friction coefficient, which the floor (given
+/// by `floor`: [`Field::Floor`] or [`Field::Mu0Steps`]) sets per step.
+///
+/// # Errors
+/// `--set` gives the model's `mu0` parameter (the error names `--set` and the floor's flag).
+pub fn mu0_once(setup: &Setup, set: &[String], floor: Field) -> Result<(), InputError> {
+    let spec = setup.walker.spec();
+    let Some(i) = spec.mu0 else {
+        return Ok(());
+    };
+    let name = &spec.model.parameters[i].name.name;
+    if crate::input::assignments("set", set)?
+        .iter()
+        .any(|(n, _)| n == name)
+    {
+        return Err(walker::request::RequestError::Conflict {
+            field: Field::Parameter(name.clone()),
+            other: floor,
+            why: "each sets mu0; give one",
+        }
+        .into());
+    }
+    Ok(())
+}
+
 /// A floor the walker cannot take, named by the flag that gave the floor.
 fn floor_error(flag: &str, e: &FloorError) -> InputError {
     InputError::new(flag, e.to_string())

@@ -115,6 +115,10 @@ fn conflicting_and_bad_floors_exit_2_naming_the_flag_and_the_place() {
             ":2:13: field `mu0[1]`: -0.2: must be > 0 and finite",
         ),
         (
+            vec!["--set", "mu0=0.3", "--mu0-steps", "0.4"],
+            "invalid set: cannot be given with --mu0-steps: each sets mu0",
+        ),
+        (
             vec!["--friction", "none", "--mu0-steps", "0.4"],
             "invalid mu0-steps: the friction law is `none`",
         ),
@@ -144,6 +148,10 @@ fn survive_checks_its_counts_and_floor() {
         (
             vec!["--max-steps", "0"],
             "invalid max-steps: 0: must be a whole number in [1, 1000000]",
+        ),
+        (
+            vec!["--set", "mu0=0.3"],
+            "invalid set: cannot be given with --floor: each sets mu0",
         ),
         (
             vec!["--walks", "100000", "--max-steps", "1001"],
