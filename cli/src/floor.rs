@@ -52,7 +52,7 @@ pub fn floor_of(
         .collect::<Result<Vec<f64>, _>>()?;
     FloorSpec::steps(&values)
         .map(Some)
-        .map_err(|(field, message)| InputError::new("mu0-steps", format!("{field} = {message}")))
+        .map_err(|e| InputError::new("mu0-steps", e.to_string()))
 }
 
 /// Checks that `--set` does not also give the friction coefficient, which the floor (given

@@ -83,6 +83,16 @@ impl FloorFileError {
     }
 }
 
+/// Why a list of `mu0` per step is no floor ([`FloorSpec::steps`]).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{field} = {message}")]
+pub struct StepsError {
+    /// The value (`mu0[2]`), or `mu0` for the list.
+    pub field: String,
+    /// What is wrong and the valid range.
+    pub message: String,
+}
+
 /// How `mu0` is drawn per step on a random floor.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Distribution {
@@ -175,12 +185,18 @@ impl FloorSpec {
     ///
     /// # Errors
     /// An empty list, too long a list, or a value that is not `> 0` and finite.
-    pub fn steps(mu0: &[f64]) -> Result<FloorSpec, (String, String)> {
+    pub fn steps(mu0: &[f64]) -> Result<FloorSpec, StepsError> {
         if mu0.is_empty() || mu0.len() > MAX_FLOOR_STEPS {
-            return Err(("mu0".to_owned(), list_length(mu0.len())));
+            return Err(StepsError {
+                field: "mu0".to_owned(),
+                message: list_length(mu0.len()),
+            });
         }
         for (i, &x) in mu0.iter().enumerate() {
-            positive(x).map_err(|m| (format!("mu0[{i}]"), m))?;
+            positive(x).map_err(|message| StepsError {
+                field: format!("mu0[{i}]"),
+                message,
+            })?;
         }
         Ok(FloorSpec::Steps { mu0: mu0.to_vec() })
     }

@@ -217,9 +217,9 @@ fn a_quick_steps_floor_is_checked_as_a_file_is() {
             mu0: vec![0.4, 0.05]
         })
     );
-    let (field, message) = FloorSpec::steps(&[0.4, -1.0]).expect_err("negative");
-    assert_eq!(field, "mu0[1]");
-    assert!(message.contains("must be > 0 and finite"), "{message}");
+    let e = FloorSpec::steps(&[0.4, -1.0]).expect_err("negative");
+    assert_eq!(e.field, "mu0[1]");
+    assert_eq!(e.to_string(), "mu0[1] = -1: must be > 0 and finite");
     assert!(FloorSpec::steps(&[]).is_err());
 }
 
