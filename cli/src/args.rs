@@ -189,6 +189,41 @@ pub enum Command {
         /// Stop after this many steps: a whole number in [0, 1000000].
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "100")]
         max_steps: String,
+        /// Walk on the floor of FILE.toml (docs/floors.md): the friction mu0 of each step
+        /// (a random floor's walk 0); not with --mu0 or --mu0-steps.
+        #[arg(long)]
+        floor: Option<PathBuf>,
+        /// Walk on mu0 per step, comma separated, each > 0: step k on the k-th value, the last
+        /// value after the list (e.g. 0.4,0.4,0.05,0.4); not with --mu0 or --floor.
+        #[arg(long = "mu0-steps", allow_hyphen_values = true)]
+        mu0_steps: Option<String>,
+    },
+    /// Walk many times on a random floor: the steps before a failure, the survival curve, the
+    /// mean first-passage time with its confidence interval and the failures by kind
+    /// (docs/floors.md).
+    Survive {
+        /// The shared flags.
+        #[command(flatten)]
+        common: Common,
+        /// The floor FILE.toml (docs/floors.md); walk i runs on the floor's stream i.
+        #[arg(long)]
+        floor: PathBuf,
+        /// Ramp duration T_set (s), > 0 (active walker).
+        #[arg(value_parser = number::positive, long = "t-set", allow_hyphen_values = true)]
+        t_set: Option<f64>,
+        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
+        #[arg(value_parser = number::slope, long, allow_hyphen_values = true)]
+        phi: Option<f64>,
+        /// The number of walks: a whole number in [1, 100000].
+        #[arg(long, allow_hyphen_values = true, default_value = "100")]
+        walks: String,
+        /// The step limit of each walk: a whole number in [1, 1000000] (at most 1e8 steps in
+        /// all, walks times this).
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "1000")]
+        max_steps: String,
+        /// Print each walk's outcome too (JSON always has them).
+        #[arg(long)]
+        outcomes: bool,
     },
     /// Sweep a run-time parameter (mu0 by default: procedures P1a-P5a / P1b-P5b).
     Sweep {

@@ -12,10 +12,11 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use walker::contract::Compiled;
+use walker::request::Field;
 
 use crate::args::{Cli, Command, WalkFlags};
 use crate::input::{self, InputError};
-use crate::{animate, continue_cmd, gallery, report, reproduce, run};
+use crate::{animate, continue_cmd, floor, gallery, report, reproduce, run};
 
 /// Why a command did not finish, and its exit code.
 #[derive(Debug, thiserror::Error)]
@@ -80,18 +81,65 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 },
             duration,
             max_steps,
+            floor: floor_file,
+            mu0_steps,
         } => {
             let limits = run::limits(&max_steps, duration, None)?;
+            let floor_spec = floor::floor_of(floor_file.as_deref(), mu0_steps.as_deref(), mu0)?;
             let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
             run::omega0_once(&setup, &common, omega0)?;
             run::set_omega0(&mut setup, omega0, |_| true, "finite")?;
             let model = run::model(&setup)?;
             let start = run::start(&model, &init)?;
-            let w = run::simulate(&model, &start, &limits, &common.config()?)?;
+            let cfg = common.config()?;
+            let w = match floor_spec {
+                None => run::simulate(&model, &start, &limits, &cfg)?,
+                Some(spec) => {
+                    let (flag, field) = if floor_file.is_some() {
+                        ("floor", Field::Floor)
+                    } else {
+                        ("mu0-steps", Field::Mu0Steps)
+                    };
+                    floor::mu0_once(&setup, &common.set, field)?;
+                    floor::simulate_on(&setup, spec, flag, &start, &limits, &cfg)?
+                }
+            };
             if common.json {
                 emit(&format!("{}\n", report::walk_json(&w)))?;
             } else {
                 emit(&report::walk_text(&w))?;
+            }
+        }
+        Command::Survive {
+            common,
+            floor: floor_file,
+            t_set,
+            phi,
+            walks,
+            max_steps,
+            outcomes,
+        } => {
+            let spec = floor::floor_of(Some(&floor_file), None, None)?
+                .ok_or_else(|| InputError::new("floor", "a floor file is required"))?;
+            let setup = run::setup(&common, &common.overrides(None, t_set, phi)?)?;
+            floor::mu0_once(&setup, &common.set, Field::Floor)?;
+            let start = run::model(&setup)?.start_state();
+            let r = floor::survive_on(&setup, spec, &start, &walks, &max_steps, &common.config()?)?;
+            if common.json {
+                emit(&format!("{}\n", floor::survive_json(&r)))?;
+            } else {
+                let mut text = floor::survive_text(&r);
+                if outcomes {
+                    for o in &r.outcomes {
+                        text.push_str(&format!(
+                            "walk {:6}: {:7} steps, {}\n",
+                            o.walk,
+                            o.steps,
+                            o.failure.as_deref().unwrap_or("reached the limit")
+                        ));
+                    }
+                }
+                emit(&text)?;
             }
         }
         Command::Sweep {

@@ -19,19 +19,25 @@ pub fn walk_json(w: &Walk) -> serde_json::Value {
     })
 }
 
-/// A text table of a walk.
+/// A text table of a walk, with each step's `mu0` for a walk on a floor of its own.
 pub fn walk_text(w: &Walk) -> String {
-    let mut s = String::from("step          T         dx          V          p         SR\n");
+    let floored = w.steps.iter().any(|s| s.floor.is_some());
+    let mut s = String::from("step          T         dx          V          p         SR");
+    s.push_str(if floored { "        mu0\n" } else { "\n" });
     let opt = |v: Option<f64>| v.map_or_else(|| "-".to_owned(), |x| format!("{x:.6}"));
     for (k, st) in w.steps.iter().enumerate() {
         s.push_str(&format!(
-            "{k:4} {:10.6} {:10.6} {:10.6} {:>10} {:>10}\n",
+            "{k:4} {:10.6} {:10.6} {:10.6} {:>10} {:>10}",
             st.period,
             st.dx,
             st.speed,
             opt(st.p),
             opt(st.sr)
         ));
+        if floored {
+            s.push_str(&format!(" {:>10}", opt(st.floor.map(|f| f.mu0))));
+        }
+        s.push('\n');
     }
     match &w.failure {
         None => s.push_str("status: ok\n"),

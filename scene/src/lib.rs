@@ -15,6 +15,7 @@
 
 pub mod catalog;
 pub mod error;
+pub mod floor;
 pub mod limits;
 pub mod model;
 pub mod model_scene;
@@ -25,6 +26,7 @@ pub mod structure;
 
 pub use catalog::KernelName;
 pub use error::SceneError;
+pub use floor::{Distribution, FloorFile, FloorFileError, FloorSpec, StepsError};
 pub use model_scene::{ModelSceneError, ModelSceneFile, is_model_scene};
 pub use param::Param;
 pub use read::{ReadError, read_input};

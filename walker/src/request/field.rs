@@ -71,6 +71,12 @@ pub enum Field {
     /// A component of the start (a coordinate or velocity) by its name (the front ends'
     /// `init`).
     Init(String),
+    /// The number of walks of a batch (`survive`).
+    Walks,
+    /// A floor file.
+    Floor,
+    /// A floor given as a list of `mu0` per step.
+    Mu0Steps,
 }
 
 impl Field {
@@ -97,6 +103,9 @@ impl Field {
             Field::Role(r) => r.name().into(),
             Field::Parameter(n) | Field::StartParameter(n) => super::shown::name(n),
             Field::Init(n) => format!("init {}", super::shown::name(n)),
+            Field::Walks => "walks".into(),
+            Field::Floor => "floor".into(),
+            Field::Mu0Steps => "mu0_steps".into(),
         }
     }
 }

@@ -45,6 +45,18 @@ pub struct StepResult {
     pub lambda_min: f64,
     /// Time the stance foot spent stuck during the step (Coulomb friction; 0 otherwise) (s).
     pub stuck_time: f64,
+    /// The floor the step walked on (its stance and the strike that ends it), for a walk on a
+    /// floor of its own (`crate::floor`); `None` (and left out of the JSON) otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub floor: Option<StepFloor>,
+}
+
+/// The floor under one step of a walk on a changing floor: the friction coefficient its
+/// stance foot felt and its strike used.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct StepFloor {
+    /// The friction coefficient `mu0` of the step.
+    pub mu0: f64,
 }
 
 impl StepResult {

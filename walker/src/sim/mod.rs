@@ -17,7 +17,8 @@
 //! periodic stop), `foot.rs` (the stance foot, its contact and ground reaction), `stance.rs`
 //! (the stance ODE system and the sampling observer), `guard.rs` (the stance events,
 //! [`Guard`]), `blowup.rs` (which failure a blown-up `lambda` is), `step.rs` (one stance phase
-//! and its impact), `walk.rs` ([`walk()`], [`walk_with_stats`]), `trajectory.rs` (the walk
+//! and its impact), `step_models.rs` (the model of each step, [`StepModels`]), `walk.rs` ([`walk()`],
+//! [`walk_with_stats`], [`walk_by_step`]), `trajectory.rs` (the walk
 //! sampled at given times, [`trajectory()`], for animations). `frame.rs` ([`Frame`], the motion
 //! at one time, and its collector) comes after `foot.rs`: the stance observer feeds it.
 
@@ -32,6 +33,7 @@ mod periodic;
 mod stance;
 mod state;
 mod step;
+mod step_models;
 mod trajectory;
 mod walk;
 
@@ -39,7 +41,8 @@ pub use config::{SimConfig, WalkLimits};
 pub use failure::{Failure, FailureKind};
 pub use foot::{control_input, ground_reaction};
 pub use frame::Frame;
-pub use gait::{Sample, StepResult, Walk};
+pub use gait::{Sample, StepFloor, StepResult, Walk};
 pub use guard::{Guard, MAX_FALLS};
+pub use step_models::StepModels;
 pub use trajectory::{Trajectory, trajectory, trajectory_stoppable};
-pub use walk::{Stopped, walk, walk_stoppable, walk_with_stats};
+pub use walk::{Stopped, walk, walk_by_step, walk_stoppable, walk_with_stats};

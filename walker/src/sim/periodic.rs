@@ -56,6 +56,7 @@ mod tests {
                 impact: crate::model::ImpactRegime::Frictionless,
                 lambda_min: 0.0,
                 stuck_time: 0.0,
+                floor: None,
             })
             .collect()
     }

@@ -391,5 +391,6 @@ fn impact<const S: usize>(
         impact: imp.regime,
         lambda_min: strike.lambda_min,
         stuck_time: strike.stuck_time,
+        floor: None,
     })
 }

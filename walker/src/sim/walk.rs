@@ -12,6 +12,7 @@ use super::gait::Walk;
 use super::periodic::is_periodic;
 use super::state::with_state_size;
 use super::step::{Record, one_step};
+use super::step_models::{Fixed, StepModels};
 
 /// Simulate a walk of `model` from the post-impact state `initial` (`[q, qd]`, time 0 = the 0th
 /// impact).
@@ -56,6 +57,19 @@ pub fn walk_stoppable(
     }
 }
 
+/// [`walk`] with the model of each step from `models`, asked before the step (a floor whose
+/// friction changes between steps, `crate::floor`); each step's record carries the floor
+/// `models` names for it. The walk ends before a step whose model `models` cannot give (the
+/// implementation keeps why). With one model for every step and no floor this is [`walk`].
+pub fn walk_by_step(
+    models: &mut dyn StepModels,
+    cfg: &SimConfig,
+    initial: &[f64],
+    limits: &WalkLimits,
+) -> Walk {
+    walk_models(models, cfg, initial, limits, None, &|| false).0
+}
+
 /// [`walk_with_stats`], also sampling the motion into `frames` if given, and ending early
 /// (the third value true) when `stop()`, asked before every step, answers true. An initial
 /// state of the wrong length is a non-finite start (nothing to integrate).
@@ -67,17 +81,30 @@ pub(super) fn walk_recording(
     frames: Option<&mut Frames>,
     stop: &dyn Fn() -> bool,
 ) -> (Walk, Stats, bool) {
-    let n = model.n();
+    walk_models(&mut Fixed(model), cfg, initial, limits, frames, stop)
+}
+
+/// [`walk_recording`] with the model of each step from `models`; a step whose model cannot be
+/// had ends the walk as a stop does (the third value true).
+fn walk_models(
+    models: &mut dyn StepModels,
+    cfg: &SimConfig,
+    initial: &[f64],
+    limits: &WalkLimits,
+    frames: Option<&mut Frames>,
+    stop: &dyn Fn() -> bool,
+) -> (Walk, Stats, bool) {
+    let n = models.n();
     if initial.len() != 2 * n {
         let failure = FailureKind::NonFinite.at(0, 0.0, Vector::from_slice(initial));
         return (Walk::failed(failure), Stats::default(), false);
     }
-    with_state_size!(n, S => walk_sized::<S>(model, cfg, initial, limits, frames, stop),
+    with_state_size!(n, S => walk_sized::<S>(models, cfg, initial, limits, frames, stop),
         _ => (Walk::failed(FailureKind::NonFinite.at(0, 0.0, Vector::from_slice(initial))), Stats::default(), false))
 }
 
 fn walk_sized<const S: usize>(
-    model: &Model,
+    models: &mut dyn StepModels,
     cfg: &SimConfig,
     initial: &[f64],
     limits: &WalkLimits,
@@ -102,9 +129,14 @@ fn walk_sized<const S: usize>(
             frames: frames.as_deref_mut(),
             t_offset: time,
         };
+        let Some(model) = models.model(k) else {
+            stopped = true;
+            break;
+        };
         let res = one_step(model, cfg, &mut integ, k, &state, record);
         match res {
-            Ok(r) => {
+            Ok(mut r) => {
+                r.floor = models.floor();
                 time += r.period;
                 state = r.state_plus();
                 steps.push(r);

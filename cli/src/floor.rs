@@ -1,0 +1,216 @@
+//! `walker simulate --floor FILE | --mu0-steps LIST` and `walker survive`: the floor of a
+//! walk from its flags, walks on it, and the survival report of a batch (`docs/floors.md`).
+//! The library checks the floor ([`walker::floor`], the file's own checks in
+//! `walker_scene::floor`) and the counts ([`walker::request::survive_counts`]); errors are
+//! named here by their flags (exit code 2).
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use walker::floor::{FloorError, FloorFile, FloorSpec, FloorWalker, SurviveReport, survive};
+use walker::request::{Field, MAX_STEPS, MAX_WALKS};
+use walker::setup::Setup;
+use walker::sim::{SimConfig, Walk, WalkLimits};
+use walker::vector::Vector;
+
+use crate::input::InputError;
+
+/// The floor of `--floor FILE` or `--mu0-steps LIST` (at most one, and not with `--mu0`:
+/// [`walker::request::floor_once`]), `None` without either.
+///
+/// # Errors
+/// Two of them given; a floor file that cannot be read or has a bad value (named by file,
+/// line, column and field); a list that is not numbers each `> 0` and finite.
+pub fn floor_of(
+    floor: Option<&Path>,
+    mu0_steps: Option<&str>,
+    mu0: Option<f64>,
+) -> Result<Option<FloorSpec>, InputError> {
+    walker::request::floor_once(floor.is_some(), mu0_steps.is_some(), mu0.is_some())?;
+    if let Some(path) = floor {
+        let file =
+            FloorFile::from_file(path).map_err(|e| InputError::new("floor", e.to_string()))?;
+        return Ok(Some(file.spec));
+    }
+    let Some(list) = mu0_steps else {
+        return Ok(None);
+    };
+    let values = list
+        .split(',')
+        .enumerate()
+        .map(|(i, t)| {
+            t.trim().parse::<f64>().map_err(|_| {
+                InputError::new(
+                    "mu0-steps",
+                    format!(
+                        "mu0[{i}] = {}: not a number; give mu0 per step as 0.4,0.4,0.05 (each > 0)",
+                        walker::request::shown::text(t)
+                    ),
+                )
+            })
+        })
+        .collect::<Result<Vec<f64>, _>>()?;
+    FloorSpec::steps(&values)
+        .map(Some)
+        .map_err(|e| InputError::new("mu0-steps", e.to_string()))
+}
+
+/// Checks that `--set` does not also give the friction coefficient, which the floor (given
+/// by `floor`: [`Field::Floor`] or [`Field::Mu0Steps`]) sets per step.
+///
+/// # Errors
+/// `--set` gives the model's `mu0` parameter (the error names `--set` and the floor's flag).
+pub fn mu0_once(setup: &Setup, set: &[String], floor: Field) -> Result<(), InputError> {
+    let spec = setup.walker.spec();
+    let Some(i) = spec.mu0 else {
+        return Ok(());
+    };
+    let name = &spec.model.parameters[i].name.name;
+    if crate::input::assignments("set", set)?
+        .iter()
+        .any(|(n, _)| n == name)
+    {
+        return Err(walker::request::RequestError::Conflict {
+            field: Field::Parameter(name.clone()),
+            other: floor,
+            why: "each sets mu0; give one",
+        }
+        .into());
+    }
+    Ok(())
+}
+
+/// A floor the walker cannot take, named by the flag that gave the floor.
+fn floor_error(flag: &str, e: &FloorError) -> InputError {
+    InputError::new(flag, e.to_string())
+}
+
+/// The walker of `setup` on `floor` (given by the flag `flag`).
+///
+/// # Errors
+/// The floor cannot set the walker's friction ([`FloorWalker::new`]).
+pub fn walker_on<'s>(
+    setup: &'s Setup,
+    floor: FloorSpec,
+    flag: &str,
+) -> Result<FloorWalker<'s>, InputError> {
+    FloorWalker::new(setup, floor).map_err(|e| floor_error(flag, &e))
+}
+
+/// `walker simulate` on a floor: walk 0 of the floor (a random floor's first stream).
+///
+/// # Errors
+/// As [`walker_on`].
+pub fn simulate_on(
+    setup: &Setup,
+    floor: FloorSpec,
+    flag: &str,
+    start: &Vector,
+    limits: &WalkLimits,
+    cfg: &SimConfig,
+) -> Result<Walk, InputError> {
+    walker_on(setup, floor, flag)?
+        .walk(0, cfg, start, limits)
+        .map_err(|e| floor_error(flag, &e))
+}
+
+/// `walker survive`: `walks_text` walks of at most `max_steps_text` steps each on the floor,
+/// on all cores.
+///
+/// # Errors
+/// A count out of its range or too many steps in all, or as [`walker_on`].
+pub fn survive_on(
+    setup: &Setup,
+    floor: FloorSpec,
+    start: &Vector,
+    walks_text: &str,
+    max_steps_text: &str,
+    cfg: &SimConfig,
+) -> Result<SurviveReport, InputError> {
+    let walks = walker::request::count_text(Field::Walks, walks_text, 1, MAX_WALKS)?;
+    let steps = walker::request::count_text(Field::MaxSteps, max_steps_text, 1, MAX_STEPS)?;
+    let (walks, steps) = walker::request::survive_counts(walks as i128, steps as i128)?;
+    let walker = walker_on(setup, floor, "floor")?;
+    survive(&walker, cfg, start, walks, steps).map_err(|e| floor_error("floor", &e))
+}
+
+/// The JSON report of `walker survive`: `{"max_steps", "outcomes": [{"walk", "steps",
+/// "failure"}], "survival": {"walks", "failures", "censored", "curve", "mfpt",
+/// "failures_by_kind"}}`.
+#[must_use]
+pub fn survive_json(r: &SurviveReport) -> serde_json::Value {
+    serde_json::to_value(r).unwrap_or_default()
+}
+
+/// The most points of the survival curve the text report prints.
+const TEXT_CURVE_POINTS: usize = 12;
+
+/// A short text report of `walker survive`.
+#[must_use]
+pub fn survive_text(r: &SurviveReport) -> String {
+    let s = &r.survival;
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{} walks of at most {} steps: {} failed, {} reached the limit",
+        s.walks, r.max_steps, s.failures, s.censored
+    );
+    let _ = writeln!(
+        out,
+        "survival (Kaplan-Meier: fraction alive after k steps):"
+    );
+    let every = s.curve.len().div_ceil(TEXT_CURVE_POINTS).max(1);
+    for (i, p) in s.curve.iter().enumerate() {
+        if i % every == 0 || i + 1 == s.curve.len() {
+            let _ = writeln!(
+                out,
+                "  k = {:7}  alive {:.4}  at risk {}",
+                p.step, p.alive, p.at_risk
+            );
+        }
+    }
+    let m = &s.mfpt;
+    let _ = writeln!(
+        out,
+        "mean first-passage time (steps before a failure):\n  restricted mean (lower bound): {:.2}",
+        m.restricted_mean
+    );
+    if let Some(e) = &m.sample_mean {
+        let _ = writeln!(
+            out,
+            "  sample mean: {:.2}, 95% interval [{:.2}, {:.2}]",
+            e.estimate.unwrap_or(f64::NAN),
+            e.lo,
+            e.hi.unwrap_or(f64::INFINITY)
+        );
+    }
+    let e = &m.exponential;
+    match e.estimate {
+        Some(x) => {
+            let _ = writeln!(
+                out,
+                "  constant failure rate: {x:.2}, 95% interval [{:.2}, {:.2}] ({} failures in {} step attempts)",
+                e.lo,
+                e.hi.unwrap_or(f64::INFINITY),
+                s.failures,
+                m.attempts
+            );
+        }
+        None => {
+            let _ = writeln!(
+                out,
+                "  no failure in {} step attempts: above {:.2} with 95% confidence",
+                m.attempts, e.lo
+            );
+        }
+    }
+    if !s.failures_by_kind.is_empty() {
+        let kinds: Vec<String> = s
+            .failures_by_kind
+            .iter()
+            .map(|(k, n)| format!("{k} {n}"))
+            .collect();
+        let _ = writeln!(out, "failures by kind: {}", kinds.join(", "));
+    }
+    out
+}

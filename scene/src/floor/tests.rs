@@ -1,0 +1,242 @@
+//! The floor file format: what it reads, and every error naming file:line:column, the field
+//! and the valid range.
+
+use super::{Distribution, FloorFile, FloorSpec, normal_mass};
+
+fn read(text: &str) -> Result<FloorSpec, String> {
+    FloorFile::from_toml(text, "f.toml")
+        .map(|f| f.spec)
+        .map_err(|e| e.to_string())
+}
+
+fn error(text: &str) -> String {
+    read(text).expect_err("an invalid floor")
+}
+
+#[test]
+fn the_three_kinds_and_three_distributions_read_as_written() {
+    assert_eq!(
+        read("kind = \"uniform\"\nmu0 = 0.4\n"),
+        Ok(FloorSpec::Uniform { mu0: 0.4 })
+    );
+    assert_eq!(
+        read("kind = \"steps\"\nmu0 = [0.4, 0.05, 1]\n"),
+        Ok(FloorSpec::Steps {
+            mu0: vec![0.4, 0.05, 1.0]
+        })
+    );
+    assert_eq!(
+        read(
+            "kind = \"random\"\nseed = 7\n[mu0]\ndistribution = \"uniform\"\nlo = 0.1\nhi = 0.5\n"
+        ),
+        Ok(FloorSpec::Random {
+            seed: 7,
+            mu0: Distribution::Uniform { lo: 0.1, hi: 0.5 }
+        })
+    );
+    assert_eq!(
+        read(
+            "kind = \"random\"\nseed = 0\nmu0 = { distribution = \"truncated-normal\", mean = 0.3, \
+             sd = 0.1, lo = 0.05, hi = 0.6 }\n"
+        ),
+        Ok(FloorSpec::Random {
+            seed: 0,
+            mu0: Distribution::TruncatedNormal {
+                mean: 0.3,
+                sd: 0.1,
+                lo: 0.05,
+                hi: 0.6
+            }
+        })
+    );
+    assert_eq!(
+        read(
+            "kind = \"random\"\nseed = 1\n[mu0]\ndistribution = \"markov\"\ndry = 0.4\nicy = 0.05\n\
+             dry_length = 20\nicy_length = 2.5\n"
+        ),
+        Ok(FloorSpec::Random {
+            seed: 1,
+            mu0: Distribution::Markov {
+                dry: 0.4,
+                icy: 0.05,
+                dry_length: 20.0,
+                icy_length: 2.5
+            }
+        })
+    );
+}
+
+#[test]
+fn a_friction_coefficient_that_is_not_positive_and_finite_is_refused_at_its_place() {
+    let e = error("kind = \"uniform\"\nmu0 = -0.1\n");
+    assert!(
+        e.starts_with("f.toml:2:7: field `mu0`: -0.1: must be > 0 and finite"),
+        "{e}"
+    );
+    let e = error("kind = \"uniform\"\nmu0 = nan\n");
+    assert!(e.contains("f.toml:2:7: field `mu0`: NaN"), "{e}");
+    let e = error("kind = \"steps\"\nmu0 = [0.4, 0.4, 0, 0.4]\n");
+    assert!(
+        e.starts_with("f.toml:2:18: field `mu0[2]`: 0: must be > 0"),
+        "{e}"
+    );
+    let e = error("kind = \"steps\"\nmu0 = [0.4, inf]\n");
+    assert!(
+        e.contains("field `mu0[1]`: inf: must be > 0 and finite"),
+        "{e}"
+    );
+    let e = error("kind = \"steps\"\nmu0 = []\n");
+    assert!(
+        e.contains("f.toml:2:7: field `mu0`: a list of 0 values: must list 1 to"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_missing_unknown_or_mistyped_field_is_named_with_its_line() {
+    let e = error("mu0 = 0.4\n");
+    assert!(e.contains("field `kind`: missing"), "{e}");
+    let e = error("kind = \"ice\"\n");
+    assert!(
+        e.contains("f.toml:1:8: field `kind`: \"ice\": expected \"uniform\""),
+        "{e}"
+    );
+    let e = error("kind = \"uniform\"\nmu0 = 0.4\nmuu = 3\n");
+    assert!(
+        e.contains("f.toml:3:1: field `muu`: unknown field `muu`"),
+        "{e}"
+    );
+    let e = error("kind = \"uniform\"\nmu0 = \"dry\"\n");
+    assert!(e.contains("f.toml:2:7: field `mu0`"), "{e}");
+    let e = error("kind = \"uniform\"\n");
+    assert!(e.contains("missing field `mu0`"), "{e}");
+    let e = error("kind = \"steps\"\nmu0 = [0.4\n");
+    assert!(e.starts_with("f.toml:2:"), "{e}");
+}
+
+#[test]
+fn a_per_step_slope_is_refused_by_name() {
+    let e = error("kind = \"steps\"\nmu0 = [0.4]\nphi = [0.1, 0.2]\n");
+    assert!(
+        e.contains("f.toml:3:7: field `phi`: a per-step slope is not implemented"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_seed_must_be_a_whole_non_negative_number() {
+    let d = "[mu0]\ndistribution = \"uniform\"\nlo = 0.1\nhi = 0.2\n";
+    let e = error(&format!("kind = \"random\"\nseed = -1\n{d}"));
+    assert!(
+        e.contains(
+            "f.toml:2:8: field `seed`: -1: must be a whole number in [0, 9223372036854775807]"
+        ),
+        "{e}"
+    );
+    let e = error(&format!("kind = \"random\"\nseed = 1.5\n{d}"));
+    assert!(e.contains("f.toml:2:8: field `seed`"), "{e}");
+    let e = error(&format!("kind = \"random\"\n{d}"));
+    assert!(e.contains("missing field `seed`"), "{e}");
+}
+
+#[test]
+fn each_distribution_takes_exactly_its_fields_within_their_ranges() {
+    let random = |body: &str| error(&format!("kind = \"random\"\nseed = 3\n[mu0]\n{body}"));
+    let e = random("distribution = \"gamma\"\n");
+    assert!(
+        e.contains("f.toml:4:16: field `mu0.distribution`: \"gamma\": expected"),
+        "{e}"
+    );
+    let e = random("distribution = \"uniform\"\nlo = 0.1\n");
+    assert!(
+        e.contains("field `mu0.hi`: missing: distribution \"uniform\" takes lo, hi"),
+        "{e}"
+    );
+    let e = random("distribution = \"uniform\"\nlo = 0.1\nhi = 0.2\nsd = 1\n");
+    assert!(
+        e.contains("f.toml:7:6: field `mu0.sd`: not a field of distribution \"uniform\""),
+        "{e}"
+    );
+    let e = random("distribution = \"uniform\"\nlo = 0.3\nhi = 0.2\n");
+    assert!(
+        e.contains("f.toml:6:6: field `mu0.hi`: 0.2: must be > mu0.lo = 0.3"),
+        "{e}"
+    );
+    let e = random("distribution = \"uniform\"\nlo = -0.3\nhi = 0.2\n");
+    assert!(
+        e.contains("field `mu0.lo`: -0.3: must be > 0 and finite"),
+        "{e}"
+    );
+    let e = random("distribution = \"truncated-normal\"\nmean = 0.3\nsd = 0\nlo = 0.1\nhi = 0.5\n");
+    assert!(e.contains("field `mu0.sd`: 0: must be > 0"), "{e}");
+    let e = random("distribution = \"truncated-normal\"\nmean = inf\nsd = 1\nlo = 0.1\nhi = 0.5\n");
+    assert!(e.contains("field `mu0.mean`: inf: must be finite"), "{e}");
+    // Five standard deviations away: the interval holds about 3e-7 of the mass.
+    let e =
+        random("distribution = \"truncated-normal\"\nmean = 0.0\nsd = 0.01\nlo = 0.05\nhi = 0.5\n");
+    assert!(
+        e.contains("field `mu0`: [lo, hi] = [0.05, 0.5] holds 2.867e-7"),
+        "{e}"
+    );
+    let e = random(
+        "distribution = \"markov\"\ndry = 0.4\nicy = 0.05\ndry_length = 0.5\nicy_length = 2\n",
+    );
+    assert!(
+        e.contains("field `mu0.dry_length`: 0.5: must be in [1, 1e9] steps"),
+        "{e}"
+    );
+    let e =
+        random("distribution = \"markov\"\ndry = 0.4\nicy = 0\ndry_length = 5\nicy_length = 2\n");
+    assert!(e.contains("field `mu0.icy`: 0: must be > 0"), "{e}");
+}
+
+#[test]
+fn the_normal_mass_of_an_interval_matches_known_values() {
+    // Phi(1) - Phi(-1) = 0.682689492137086 and the upper tail beyond 5 sd is 2.866515719e-7
+    // (tables); erfc is accurate to a few ulps, so 1e-12 relative is generous.
+    let close = |a: f64, b: f64| ((a - b) / b).abs() < 1e-12;
+    assert!(close(
+        normal_mass(0.0, 1.0, -1.0, 1.0),
+        0.682_689_492_137_086
+    ));
+    assert!(close(
+        normal_mass(0.0, 1.0, 5.0, f64::INFINITY),
+        2.866_515_718_791_939e-7
+    ));
+    assert!(close(
+        normal_mass(0.0, 1.0, f64::NEG_INFINITY, -5.0),
+        2.866_515_718_791_939e-7
+    ));
+}
+
+#[test]
+fn a_quick_steps_floor_is_checked_as_a_file_is() {
+    assert_eq!(
+        FloorSpec::steps(&[0.4, 0.05]),
+        Ok(FloorSpec::Steps {
+            mu0: vec![0.4, 0.05]
+        })
+    );
+    let e = FloorSpec::steps(&[0.4, -1.0]).expect_err("negative");
+    assert_eq!(e.field, "mu0[1]");
+    assert_eq!(e.to_string(), "mu0[1] = -1: must be > 0 and finite");
+    assert!(FloorSpec::steps(&[]).is_err());
+}
+
+#[test]
+fn bounds_are_the_extremes_a_step_can_get() {
+    assert_eq!(
+        FloorSpec::Steps {
+            mu0: vec![0.4, 0.05, 0.3]
+        }
+        .bounds(),
+        (0.05, 0.4)
+    );
+    let markov = Distribution::Markov {
+        dry: 0.4,
+        icy: 0.05,
+        dry_length: 3.0,
+        icy_length: 1.0,
+    };
+    assert_eq!(markov.bounds(), (0.05, 0.4));
+}

@@ -1,0 +1,28 @@
+//! Floors that change under the walker (`docs/floors.md`): the friction coefficient `mu0` of
+//! each step, from a floor file (`walker_scene::floor`: uniform, a list per step, or drawn per
+//! step at random), and the walks and survival statistics on it.
+//!
+//! Step `k`'s stance and the strike that ends it run on `mu0_k`: the parameter is set between
+//! steps, never inside one, and the model prepared again when it changes. A floor is checked
+//! against the walker once ([`FloorWalker::new`]): the friction coefficient must be a
+//! run-time parameter and every value the floor gives within its range.
+//!
+//! Files, each using only those listed before it: `draw.rs` (the portable random numbers of a
+//! step), `steps.rs` ([`FloorSteps`], the values of one walk's steps), `error.rs`
+//! ([`FloorError`]), `walker.rs` ([`FloorWalker`], walks on a floor), `stats.rs` (survival
+//! statistics of walks that end by failure or at a step limit), `survive.rs` ([`survive`],
+//! many seeded walks on all cores).
+
+mod draw;
+mod error;
+mod stats;
+mod steps;
+mod survive;
+mod walker;
+
+pub use error::FloorError;
+pub use stats::{Estimate, Mfpt, Survival, SurvivalPoint, SurviveOutcome, survival};
+pub use steps::FloorSteps;
+pub use survive::{MAX_SURVIVE_STEPS, MAX_WALKS, SurviveReport, survive};
+pub use walker::FloorWalker;
+pub use walker_scene::{Distribution, FloorFile, FloorFileError, FloorSpec};

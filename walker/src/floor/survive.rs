@@ -1,0 +1,62 @@
+//! Many seeded walks on a floor ([`survive`]): walk `i` runs on the floor's stream `i`, each
+//! up to a step limit, on all cores; the outcomes in walk order and their survival statistics.
+//! The walks are independent and collected in order, so the result does not depend on the
+//! number of threads.
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::sim::{SimConfig, WalkLimits};
+
+use super::error::FloorError;
+use super::stats::{Survival, SurviveOutcome, survival};
+use super::walker::FloorWalker;
+
+pub use crate::request::{MAX_SURVIVE_STEPS, MAX_WALKS};
+
+/// The walks of a batch and their statistics.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SurviveReport {
+    /// The step limit of each walk.
+    pub max_steps: usize,
+    /// Each walk's end, in walk order.
+    pub outcomes: Vec<SurviveOutcome>,
+    /// Their statistics.
+    pub survival: Survival,
+}
+
+/// `walks` walks of `walker` from `initial`, walk `i` on the floor's stream `i`, each of at
+/// most `max_steps` steps, run on rayon's threads (all cores unless the caller installs a pool
+/// of its own). Check `walks` and `max_steps` first with
+/// [`crate::request::survive_counts`].
+///
+/// # Errors
+/// A step's kernels cannot be prepared (the first such walk's error).
+pub fn survive(
+    walker: &FloorWalker<'_>,
+    cfg: &SimConfig,
+    initial: &[f64],
+    walks: usize,
+    max_steps: usize,
+) -> Result<SurviveReport, FloorError> {
+    let limits = WalkLimits {
+        max_steps,
+        ..WalkLimits::default()
+    };
+    let outcomes = (0..walks as u64)
+        .into_par_iter()
+        .map(|i| {
+            let w = walker.walk(i, cfg, initial, &limits)?;
+            Ok(SurviveOutcome {
+                walk: i,
+                steps: w.steps.len(),
+                failure: w.failure.as_ref().map(|f| f.name().to_owned()),
+            })
+        })
+        .collect::<Result<Vec<_>, FloorError>>()?;
+    Ok(SurviveReport {
+        max_steps,
+        survival: survival(&outcomes),
+        outcomes,
+    })
+}

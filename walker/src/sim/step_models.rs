@@ -1,0 +1,39 @@
+//! The model each step of a walk runs on ([`StepModels`]): one model for the whole walk, or
+//! one per step (a floor whose friction changes between steps, `crate::floor`).
+
+use crate::model::Model;
+
+use super::gait::StepFloor;
+
+/// Gives the model of each step of a walk, in order, and the floor that step walks on. The
+/// walk asks [`StepModels::model`] once before each step (never inside one), so a parameter
+/// changes between steps only.
+pub trait StepModels {
+    /// The number of coordinates `n` (the same for every step).
+    fn n(&self) -> usize;
+
+    /// The model of step `step` (asked for steps 0, 1, 2, ... in order), or `None` when it
+    /// cannot be had: the walk ends before that step, and the implementation keeps why.
+    fn model(&mut self, step: usize) -> Option<&Model>;
+
+    /// The floor of the step last given by [`StepModels::model`], recorded with the step
+    /// (`None`: the walk has no floor of its own, and its records stay as without one).
+    fn floor(&self) -> Option<StepFloor>;
+}
+
+/// One model for every step.
+pub(super) struct Fixed<'m>(pub(super) &'m Model);
+
+impl StepModels for Fixed<'_> {
+    fn n(&self) -> usize {
+        self.0.n()
+    }
+
+    fn model(&mut self, _step: usize) -> Option<&Model> {
+        Some(self.0)
+    }
+
+    fn floor(&self) -> Option<StepFloor> {
+        None
+    }
+}
