@@ -20,6 +20,16 @@ const FIGURES: [&str; 3] = ["{}", "{}_sweep", "{}_friction"];
 /// Each model's CSV files.
 const CSVS: [&str; 3] = ["{}_sweep", "{}_held", "{}_friction"];
 
+/// The bifurcation diagrams (`cli/src/gallery/bifurcation.rs`), each `bifurcation_<stem>` as
+/// `.png`, `.svg` and `.csv`.
+const DIAGRAMS: [&str; 5] = [
+    "compass_gait_phi",
+    "compass_gait_mu0",
+    "rimless_wheel_phi",
+    "simplest_walker_phi",
+    "three_link_k_p",
+];
+
 #[test]
 fn gallery_writes_every_file_and_every_claim_holds() {
     let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gallery");
@@ -41,6 +51,11 @@ fn gallery_writes_every_file_and_every_claim_holds() {
         }
         for c in CSVS {
             nonempty(format!("{}.csv", c.replace("{}", m)));
+        }
+    }
+    for d in DIAGRAMS {
+        for ext in ["png", "svg", "csv"] {
+            nonempty(format!("bifurcation_{d}.{ext}"));
         }
     }
     let summary = std::fs::read_to_string(out.join("summary.txt")).expect("summary.txt");
@@ -66,6 +81,9 @@ fn gallery_writes_every_file_and_every_claim_holds() {
         "W_nn/|W_tn|",
         "the tanh law in stance",
         "the paper's frictionless impact: it stops only",
+        "Bifurcation diagrams by continuation",
+        "period doubling at phi = 0.015073100216016674 rad",
+        "period one doubles at 4.3909 degrees",
     ] {
         assert!(summary.contains(needle), "missing {needle:?} in\n{summary}");
     }

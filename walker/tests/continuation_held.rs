@@ -127,9 +127,11 @@ fn the_held_rimless_wheel_starts_at_phi_0_02_and_ends_at_lift_off() {
     assert_eq!(b.ends[0], EndReason::ParameterBound);
     match &b.ends[1] {
         EndReason::ParameterBound => {}
-        EndReason::MapFailed { error } => {
+        EndReason::MapFailed { error, physical_at } => {
             assert!(error.contains("lift-off"), "{error}");
             assert!(!error.contains("t = 0:"), "{error}");
+            // The typed reading of the same end: a physical failure, after the step began.
+            assert!(physical_at.is_some_and(|t| t > 0.0), "{physical_at:?}");
         }
         e => panic!("{e:?}"),
     }

@@ -10,7 +10,7 @@ use walker::continuation::{Branch, EndReason, Point, Stability};
 fn end_text(e: &EndReason) -> String {
     match e {
         EndReason::ParameterBound => "end of the range".to_owned(),
-        EndReason::MapFailed { error } => format!("the map failed ({error})"),
+        EndReason::MapFailed { error, .. } => format!("the map failed ({error})"),
         EndReason::NoConvergence => "the corrector did not converge".to_owned(),
         EndReason::Family => "a family of cycles (multiplier 1)".to_owned(),
         EndReason::MaxPoints => "the largest number of points".to_owned(),

@@ -5,14 +5,15 @@ use std::fs::{self, File};
 use std::io::Write as _;
 use std::path::Path;
 
+use super::bifurcation;
 use super::csv::write_csvs;
 use super::data::collect;
 use super::figures::write_figures;
 use super::summary::summary;
 use crate::reproduce::WriteError;
 
-/// Run every model of the gallery and write its CSV files, its figures (PNG and SVG) and
-/// `summary.txt` into `out`; returns the summary. The directory and `summary.txt` are made
+/// Run every model of the gallery and write its CSV files, its figures (PNG and SVG), the
+/// bifurcation diagrams and `summary.txt` into `out`; returns the summary. The directory and `summary.txt` are made
 /// first, so that an unwritable `out` is reported before the computing.
 ///
 /// # Errors
@@ -26,7 +27,9 @@ pub fn run(out: &Path) -> Result<String, WriteError> {
         write_csvs(out, run)?;
         write_figures(out, run)?;
     }
-    let s = summary(&runs);
+    let diagrams = bifurcation::compute();
+    bifurcation::write(out, &diagrams)?;
+    let s = summary(&runs, &diagrams);
     summary_file
         .write_all(s.as_bytes())
         .map_err(WriteError::file(&summary_path))?;

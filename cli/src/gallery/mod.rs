@@ -7,14 +7,15 @@
 //! ([`laws`]), the held gait and the friction it needs ([`held`]), the sweeps ([`data`]), what
 //! became of a walk ([`outcome`]), a claim and its verdict ([`claims`]), the claims every model
 //! gets ([`generic`]) and each model's own ([`rimless`], [`compass`], [`three_link`]), the CSV
-//! files ([`csv`]), the figures ([`figures`]), the summary ([`mod@summary`]) and the whole job
-//! ([`job`]). The figures, CSV and error machinery are `walker reproduce`'s
+//! files ([`csv`]), the figures ([`figures`]), the bifurcation diagrams by continuation and
+//! their claims ([`bifurcation`]), the summary ([`mod@summary`]) and the whole job ([`job`]). The figures, CSV and error machinery are `walker reproduce`'s
 //! ([`crate::reproduce`], [`crate::plot`]).
 //!
 //! Imports run one way: [`job`] -> [`mod@summary`] -> [`generic`], [`rimless`], [`compass`],
-//! [`three_link`] -> [`claims`]; those and [`figures`], [`csv`] -> [`data`] -> [`entries`],
+//! [`three_link`], [`bifurcation`] -> [`claims`] (and [`bifurcation`] -> [`entries`]); those and [`figures`], [`csv`] -> [`data`] -> [`entries`],
 //! [`held`], [`outcome`], [`laws`] (and [`held`] -> [`laws`]).
 
+pub mod bifurcation;
 pub mod claims;
 pub mod compass;
 pub mod csv;

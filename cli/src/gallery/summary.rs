@@ -1,8 +1,10 @@
 //! The gallery's summary (`summary.txt`): per model its held gaits and the outcomes of every
-//! sweep as ranges of `mu0`, then its claims with their verdicts, and the tally.
+//! sweep as ranges of `mu0`, then its claims with their verdicts; the bifurcation diagrams'
+//! branches and claims; and the tally.
 
 use std::fmt::Write as _;
 
+use super::bifurcation::{self, Diagram};
 use super::claims::{Claim, table, tally};
 use super::data::{DURATION, ModelRun};
 use super::generic::{self, outcomes};
@@ -79,9 +81,9 @@ fn findings(s: &mut String, run: &ModelRun) {
     }
 }
 
-/// The summary of every model's run: findings, claims, tally.
+/// The summary of every model's run and of the bifurcation diagrams: findings, claims, tally.
 #[must_use]
-pub fn summary(runs: &[ModelRun]) -> String {
+pub fn summary(runs: &[ModelRun], diagrams: &[Diagram]) -> String {
     let (first, last, step) = runs.first().map_or((0.0, 0.0, 0.0), |r| {
         let g = &r.grid;
         let step = if g.len() > 1 { g[1] - g[0] } else { 0.0 };
@@ -99,6 +101,10 @@ pub fn summary(runs: &[ModelRun]) -> String {
         s.push_str(&table(&c));
         all.extend(c);
     }
+    s.push_str(&bifurcation::findings(diagrams));
+    let c = bifurcation::claims(diagrams);
+    s.push_str(&table(&c));
+    all.extend(c);
     let _ = writeln!(s, "\n{}", tally(&all));
     s
 }

@@ -133,6 +133,12 @@ pub enum EndReason {
     MapFailed {
         /// The last failure (its text).
         error: String,
+        /// Where the walker itself failed in the step beyond this end, after the step began
+        /// ([`ProblemError::physical_at`]: a lift-off, a fall, a contact without a solution):
+        /// the time since the step's start. `None` for a numerical failure or one at the
+        /// step's start. Not in the JSON (the text says it).
+        #[serde(skip)]
+        physical_at: Option<f64>,
     },
     /// The corrector did not converge and the step size fell below the minimum.
     NoConvergence,
@@ -153,6 +159,7 @@ impl EndReason {
     pub fn map_failed(e: &ProblemError) -> Self {
         EndReason::MapFailed {
             error: e.to_string(),
+            physical_at: e.physical_at(),
         }
     }
 }

@@ -10,7 +10,7 @@ use serde::Serialize;
 
 use crate::model::ImpactRegime;
 use crate::poincare::MapError;
-use crate::sim::Failure;
+use crate::sim::{Failure, FailureKind};
 
 /// What one step of the gait from `r` looks like: the descriptors drawn in the diagrams.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -123,6 +123,33 @@ pub enum ProblemError {
         /// Why.
         message: String,
     },
+}
+
+impl ProblemError {
+    /// Where the walker itself failed during the step, after it began: the time since the
+    /// step's start of a failure of the walker's physics (it lifts off, falls, hits a contact
+    /// with no consistent solution, a singular or jammed contact, a strike out of order), as
+    /// opposed to a numerical one (non-finite, the integrator giving up, no strike) or a
+    /// failure at the step's very start (a start the map could not take). A branch that ends
+    /// at such a failure ends at a physical boundary of the walking region.
+    #[must_use]
+    pub fn physical_at(&self) -> Option<f64> {
+        let (t, physical) = match self {
+            ProblemError::Walk(f) => (
+                f.t,
+                !matches!(
+                    f.kind,
+                    FailureKind::NonFinite
+                        | FailureKind::Integrator { .. }
+                        | FailureKind::NoImpact
+                        | FailureKind::ImpactAtStart
+                ),
+            ),
+            ProblemError::Fall { t, .. } | ProblemError::ImpactJam { t } => (*t, true),
+            _ => (0.0, false),
+        };
+        (physical && t > 0.0).then_some(t)
+    }
 }
 
 /// A one-parameter family of Poincare maps `r -> P(r, p)` on the independent coordinates of a
