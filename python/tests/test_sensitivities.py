@@ -13,9 +13,10 @@ def test_the_sensitivities_to_mu0_and_t_set_come_with_their_error_estimates():
         assert set(s["d_state"]) == set(fp.section), name
         for key in ("dT", "dV", "d_dx"):
             assert s[key]["error"] >= 0 and abs(s[key]["error"]) < 1e-2 * max(1, abs(s[key]["value"]))
-        # V = dx / T: its derivative is that of the quotient (to rounding)
+        # V = dx / T: its derivative is that of the quotient. The sensitivities take T and dx
+        # from their own map at rtol 1e-12, the search's at 1e-10: 1e-8 relative covers that.
         dv = (s["d_dx"]["value"] - fp.V * s["dT"]["value"]) / fp.T
-        assert s["dV"]["value"] == pytest.approx(dv, rel=1e-12, abs=1e-12)
+        assert s["dV"]["value"] == pytest.approx(dv, rel=1e-8, abs=1e-10)
         assert len(s["d_multipliers"]) == len(fp.multipliers)
     # a longer ramp makes a slower, longer step (Fig. 8 of the paper: V falls with T_set)
     assert fp.sensitivities["T_set"]["dT"]["value"] > 0
