@@ -285,6 +285,11 @@ pub enum Command {
         /// (repeat).
         #[arg(long = "init")]
         init: Vec<String>,
+        /// Also the gait's sensitivities to these run-time parameters, comma-separated
+        /// (`mu0,T_set`): d(state)/dp, dT/dp, dV/dp, d(dx)/dp and the multipliers'
+        /// derivatives, each with an error estimate (docs/poincare.md).
+        #[arg(long = "sensitivities", value_delimiter = ',')]
+        sensitivities: Vec<String>,
     },
     /// Draw a walk to scale and play it: an animated SVG or GIF, or a stick diagram
     /// (`--strobe`, SVG or PNG).

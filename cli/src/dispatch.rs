@@ -204,14 +204,22 @@ fn run(cli: Cli) -> Result<(), CliError> {
             phi,
             omega0,
             init,
+            sensitivities,
         } => {
             let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
             run::omega0_once(&setup, &common, omega0)?;
             run::set_omega0(&mut setup, omega0, |w| w > 0.0, "finite and > 0")?;
             let model = run::model(&setup)?;
             let start = run::start(&model, &init)?;
-            let search = run::fixed_point_search(&model, &start, &common.config()?);
-            let out = report::fixed_point_report(&search, &model.spec().state_names());
+            let cfg = common.config()?;
+            let names: Vec<&str> = sensitivities.iter().map(String::as_str).collect();
+            run::check_sensitivities(&setup, &cfg, &names)?;
+            let search = run::fixed_point_search(&model, &start, &cfg);
+            let mut out = report::fixed_point_report(&search, &model.spec().state_names());
+            if let (false, Ok(fp)) = (names.is_empty(), &search) {
+                let sens = walker::sensitivity::sensitivities(&setup, &cfg, fp, &names);
+                report::add_sensitivities(&mut out, &sens);
+            }
             if common.json {
                 emit(&format!("{}\n", out.json))?;
             } else {

@@ -7,6 +7,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 use serde_json::json;
 use walker::poincare::{ContinuationPoint, FixedPoint, FixedPointError, Status};
+use walker::sensitivity::{Estimate, Sensitivity, SensitivityError};
 use walker::sim::{StepResult, Walk};
 use walker::sweep::SweepPoint;
 
@@ -152,6 +153,72 @@ pub fn fixed_point_report(
             text: format!("status: failed ({e})\n"),
         },
     }
+}
+
+/// Adds the sensitivities of `walker fixed-point --sensitivities` to its report: the JSON
+/// object `sensitivities` (per parameter: `d_state` by section coordinate, `dT`, `dV`, `d_dx`,
+/// `d_multipliers`, the map's `map_d_state` and `map_dT`, `value`, `step`; each derivative with
+/// its `error`) and a table; a failure is `sensitivities_error` with its reason.
+pub fn add_sensitivities(out: &mut Report, result: &Result<Vec<Sensitivity>, SensitivityError>) {
+    let Some(obj) = out.json.as_object_mut() else {
+        return;
+    };
+    match result {
+        Ok(list) => {
+            let map: serde_json::Map<String, serde_json::Value> = list
+                .iter()
+                .map(|s| {
+                    (
+                        s.parameter.clone(),
+                        serde_json::to_value(s).unwrap_or(serde_json::Value::Null),
+                    )
+                })
+                .collect();
+            obj.insert("sensitivities".into(), map.into());
+            out.text.push_str(&sensitivities_text(list));
+        }
+        Err(e) => {
+            obj.insert("sensitivities_error".into(), e.to_string().into());
+            let _ = writeln!(out.text, "sensitivities: failed ({e})");
+        }
+    }
+}
+
+/// The sensitivities as a table: one row per parameter, `value +- error`.
+fn sensitivities_text(list: &[Sensitivity]) -> String {
+    let mut s = String::new();
+    let e = |x: &Estimate| format!("{:+.6e} +- {:.1e}", x.value, x.error);
+    for p in list {
+        let _ = writeln!(
+            s,
+            "sensitivities to {} = {} (step {:.1e}):",
+            p.parameter, p.value, p.step
+        );
+        for (name, d) in &p.d_state {
+            let _ = writeln!(s, "  d{name}+/dp  {}", e(d));
+        }
+        let _ = writeln!(s, "  dT/dp      {}", e(&p.d_period));
+        let _ = writeln!(s, "  dV/dp      {}", e(&p.d_speed));
+        let _ = writeln!(s, "  d(dx)/dp   {}", e(&p.d_dx));
+        for (i, m) in p.d_multipliers.iter().enumerate() {
+            match m {
+                Some(m) => {
+                    let _ = writeln!(
+                        s,
+                        "  dlambda{}/dp {:+.6e} {:+.6e}i +- {:.1e}",
+                        i + 1,
+                        m.re,
+                        m.im,
+                        m.error
+                    );
+                }
+                None => {
+                    let _ = writeln!(s, "  dlambda{}/dp  - (not a simple multiplier)", i + 1);
+                }
+            }
+        }
+    }
+    s
 }
 
 fn fixed_point_text(fp: &FixedPoint, names: &[String]) -> String {

@@ -323,3 +323,27 @@ pub fn fixed_point_search(
     };
     fixed_point(model, cfg, &opts)
 }
+
+/// Check the names of `walker fixed-point --sensitivities` before the search: each a run-time
+/// parameter of the walker.
+///
+/// # Errors
+/// [`InputError`] on `--sensitivities` naming the parameter and the valid names.
+pub fn check_sensitivities(
+    setup: &Setup,
+    cfg: &SimConfig,
+    names: &[&str],
+) -> Result<(), InputError> {
+    walker::sensitivity::check_parameters(setup, cfg, names).map_err(|e| match e {
+        walker::sensitivity::SensitivityError::NotAParameter { name, model, known } => {
+            InputError::new(
+                "sensitivities",
+                format!(
+                    "{} is not a run-time parameter of model `{model}`; valid: {known}",
+                    walker::request::shown::name(&name)
+                ),
+            )
+        }
+        other => InputError::new("sensitivities", other.to_string()),
+    })
+}

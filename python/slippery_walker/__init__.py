@@ -625,6 +625,11 @@ class FixedPoint:
     Poincare section's free coordinates, named by ``section``: ``("xd", "th1d")`` for the
     paper's walkers), ``residual``, ``iterations``, ``failure`` (the name of a failure of the
     walk on the cycle, or None). ``json`` is the command line's whole JSON object.
+    ``sensitivities`` (where asked for) maps each parameter to ``walker fixed-point
+    --sensitivities``'s object: ``d_state`` (by section coordinate), ``dT``, ``dV``, ``d_dx``
+    (each ``{"value", "error"}``), ``d_multipliers`` (``{"re", "im", "error"}`` or None),
+    ``map_d_state``, ``map_dT``, ``value``, ``step``; if they could not be computed,
+    ``json["sensitivities_error"]`` says why.
     """
 
     status: str
@@ -640,6 +645,7 @@ class FixedPoint:
     failure: Optional[Dict[str, Any]] = None
     section: Tuple[str, ...] = ()
     state_names: Tuple[str, ...] = ()
+    sensitivities: Optional[Dict[str, Any]] = None
 
 
 def fixed_point(
@@ -658,20 +664,35 @@ def fixed_point(
     method: str = "dop853",
     rtol: Optional[float] = None,
     atol: Optional[float] = None,
+    sensitivities: Optional[Sequence[str]] = None,
 ) -> FixedPoint:
     """Find the limit cycle (fixed point of the Poincare map) and its Floquet multipliers.
 
     The search starts with a warm-up walk from the model's start: ``omega0`` (> 0; the
     paper's walkers) and ``init`` change it as in :func:`simulate`; the other arguments as in
     :func:`simulate`. A search that fails is a result (``status == "failed"``).
+    ``sensitivities`` (run-time parameter names, ``["mu0", "T_set"]``) adds the gait's
+    derivatives in them with error estimates (:class:`FixedPoint`; ``docs/poincare.md``).
 
     Raises:
-        ValueError: an argument out of its range (the message names it and the range).
+        ValueError: an argument out of its range (the message names it and the range), or a
+            name in ``sensitivities`` that is not a run-time parameter (with the valid names).
     """
+    if sensitivities is None:
+        wanted: List[str] = []
+    elif isinstance(sensitivities, (str, bytes)) or not isinstance(sensitivities, Sequence):
+        raise _type_error("sensitivities", sensitivities, "a list of parameter names (str)")
+    else:
+        wanted = []
+        for name in sensitivities:
+            if not isinstance(name, str):
+                raise _type_error("sensitivities", name, "a list of parameter names (str)")
+            wanted.append(name)
     text, names = _core.fixed_point(
         **_walker(scene, model, set), init=_pairs("init", init), mu0=_float("mu0", mu0),
         t_set=_float("t_set", t_set), omega0=_float("omega0", omega0), phi=_float("phi", phi),
         c=_float("c", c), **_options(method, rtol, atol, friction, impact),
+        sensitivities=wanted,
     )
     j = json.loads(text)
     names = tuple(names)
@@ -691,6 +712,7 @@ def fixed_point(
         residual=j["residual"],
         iterations=j["iterations"],
         failure=j.get("failure"),
+        sensitivities=j.get("sensitivities"),
     )
 
 

@@ -90,6 +90,7 @@ def fixed_point(
     method: str,
     rtol: Optional[float],
     atol: Optional[float],
+    sensitivities: List[str],
 ) -> Tuple[str, List[str]]: ...
 def describe(
     *,

@@ -4,18 +4,21 @@
 use pyo3::prelude::*;
 use walker::poincare::{FixedPointOptions, fixed_point as search};
 
+use crate::error::ArgError;
 use crate::options;
 use crate::walker_args::{self, overrides};
 
 /// Search the limit cycle from the start (the warm-up walk's) and return the command line's
 /// JSON report as a string (`{"status", "state_plus", "T", "V", "section", ..}`, or
-/// `{"status": "failed", "reason"}`), with the names of the model's state components.
+/// `{"status": "failed", "reason"}`), with the names of the model's state components. With
+/// `sensitivities` (run-time parameter names) the report has `sensitivities` as
+/// `walker fixed-point --sensitivities` (or `sensitivities_error`).
 ///
 /// # Errors
 /// `ValueError` naming a bad argument and its valid range.
 #[pyfunction]
 #[pyo3(signature = (*, scene, model, set, init, mu0, t_set, omega0, phi, c, friction, impact,
-    method, rtol, atol))]
+    method, rtol, atol, sensitivities))]
 #[allow(clippy::too_many_arguments)]
 pub fn fixed_point(
     py: Python<'_>,
@@ -33,6 +36,7 @@ pub fn fixed_point(
     method: &str,
     rtol: Option<f64>,
     atol: Option<f64>,
+    sensitivities: Vec<String>,
 ) -> PyResult<(String, Vec<String>)> {
     let ov = overrides(mu0, c, t_set, phi, friction, impact)?;
     let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
@@ -43,6 +47,19 @@ pub fn fixed_point(
         start: walker_args::start(&model, &init)?,
         ..FixedPointOptions::for_model(&model)
     };
+    let wanted: Vec<&str> = sensitivities.iter().map(String::as_str).collect();
+    walker::sensitivity::check_parameters(&setup, &cfg, &wanted).map_err(|e| match e {
+        walker::sensitivity::SensitivityError::NotAParameter { name, model, known } => {
+            ArgError::new(
+                "sensitivities",
+                format!(
+                    "{} is not a run-time parameter of model `{model}`; valid: {known}",
+                    walker::request::shown::name(&name)
+                ),
+            )
+        }
+        other => ArgError::new("sensitivities", other.to_string()),
+    })?;
     let names = model.spec().state_names();
     // The report is made inside, so that the (large) error never leaves the thread. The search
     // cannot be asked to stop: on Ctrl-C it is left to end on its own (it is bounded by its
@@ -51,7 +68,29 @@ pub fn fixed_point(
         let failed = |reason: String| serde_json::json!({ "status": "failed", "reason": reason });
         match search(&model, &cfg, &opts) {
             Ok(fp) => {
-                serde_json::to_string(&fp).unwrap_or_else(|e| failed(e.to_string()).to_string())
+                let mut j = serde_json::to_value(&fp).unwrap_or_else(|e| failed(e.to_string()));
+                if !sensitivities.is_empty()
+                    && let Some(obj) = j.as_object_mut()
+                {
+                    let wanted: Vec<&str> = sensitivities.iter().map(String::as_str).collect();
+                    match walker::sensitivity::sensitivities(&setup, &cfg, &fp, &wanted) {
+                        Ok(list) => {
+                            let map: serde_json::Map<String, serde_json::Value> = list
+                                .iter()
+                                .map(|s| {
+                                    let v =
+                                        serde_json::to_value(s).unwrap_or(serde_json::Value::Null);
+                                    (s.parameter.clone(), v)
+                                })
+                                .collect();
+                            obj.insert("sensitivities".into(), map.into());
+                        }
+                        Err(e) => {
+                            obj.insert("sensitivities_error".into(), e.to_string().into());
+                        }
+                    }
+                }
+                j.to_string()
             }
             Err(e) => failed(e.to_string()).to_string(),
         }

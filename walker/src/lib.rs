@@ -25,6 +25,7 @@ pub mod model;
 pub mod ode;
 pub mod poincare;
 pub mod request;
+pub mod sensitivity;
 pub mod setup;
 pub mod sim;
 pub mod sweep;
