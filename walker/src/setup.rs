@@ -244,11 +244,13 @@ pub fn walker_of(model: ModelFile, runtime: Option<&RuntimeSource>) -> Result<Wa
                 .to_owned(),
         });
     };
-    let source = runtime(&model).map_err(|message| SetupError::NotCompiled {
+    // The simulator's checks first: a model it refuses costs no derivation.
+    let spec = Spec::new(model)?;
+    let source = runtime(&spec.model).map_err(|message| SetupError::NotCompiled {
         model: name,
         message,
     })?;
-    Ok(Walker::new(Spec::new(model)?, source))
+    Ok(Walker::new(spec, source))
 }
 
 /// The shipped compiled model whose file is `models/<file name>` (for the built-in scenes,
