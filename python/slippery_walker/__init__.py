@@ -53,6 +53,7 @@ __all__ = [
     "describe",
     "fixed_point",
     "simulate",
+    "survive",
     "sweep",
     "walk_points",
 ]
@@ -204,7 +205,8 @@ class Walk:
     ``foot_impulse``, the striking foot's impulse ``[Lambda_t, Lambda_n]`` (N s) at the heel
     strike that ends each step (shape ``(steps, 2)``; ``Lambda_t = 0`` for the frictionless
     impact). ``state_names`` names the ``2 n`` state components (the coordinates, then their velocities),
-    ``input_names`` the inputs.
+    ``input_names`` the inputs. ``floor_mu0`` (a walk on ``floor=`` only, else None): each
+    step's friction coefficient ``mu0`` (``docs/floors.md``).
 
     With ``trajectory=True``: ``times`` (s since the start of the walk, exactly ``k * dt``),
     ``states`` (shape ``(frames, 2 n)``, in the order of ``state_names``, in the stance leg's
@@ -223,6 +225,7 @@ class Walk:
     q_plus: np.ndarray
     qd_plus: np.ndarray
     foot_impulse: np.ndarray
+    floor_mu0: Optional[np.ndarray] = None
     times: Optional[np.ndarray] = None
     states: Optional[np.ndarray] = None
     frame_steps: Optional[np.ndarray] = None
@@ -269,6 +272,7 @@ def _walk(d: Mapping[str, Any]) -> Walk:
         q_plus=_arr(d["q_plus"], n),
         qd_plus=_arr(d["qd_plus"], n),
         foot_impulse=_arr(d["foot_impulse"], 2),
+        floor_mu0=_arr(d["floor_mu0"]) if "floor_mu0" in d else None,
         state_names=names,
         input_names=inputs,
         **extra,
@@ -296,6 +300,7 @@ def simulate(
     trajectory: bool = False,
     dt: float = 0.01,
     max_frames: int = 100_000,
+    floor: Optional[Floor] = None,
 ) -> Walk:
     """Simulate one walk, as ``walker simulate --json``.
 
@@ -327,6 +332,11 @@ def simulate(
         trajectory: also sample the motion at ``0, dt, 2 dt, ...`` from the dense output.
         dt: the interval of the trajectory's frames (s, > 0).
         max_frames: the most frames (in [1, 1000000]).
+        floor: walk on a floor whose ``mu0`` changes between steps (``docs/floors.md``), as
+            ``walker simulate --floor FILE``: the path of a floor file or a dict of its
+            structure, ``{"kind": "steps", "mu0": [0.4, 0.05, 0.4]}``; a random floor walks its
+            walk 0. Not with ``mu0`` (or the friction coefficient in ``set``), nor with
+            ``trajectory``. Each step's ``mu0`` is :attr:`Walk.floor_mu0`.
 
     Returns:
         The :class:`Walk`; a failure is its ``status``, not an exception.
@@ -347,8 +357,82 @@ def simulate(
         max_steps=_int("max_steps", max_steps, 0, MAX_STEPS),
         trajectory_dt=dt if trajectory else None,
         max_frames=_int("max_frames", max_frames, 1, 1_000_000),
+        floor=_floor(floor),
     )
     return _walk(d)
+
+
+Floor = Union[str, "os.PathLike[str]", Mapping[str, Any]]
+"""A floor (``docs/floors.md``): a floor file's path, or a dict of the file's structure."""
+
+
+def _floor(floor: Any) -> Any:
+    """``floor`` as the core takes it: a path as a string, a mapping as a dict (the core
+    checks it with the floor file's parser), None for None."""
+    if floor is None:
+        return None
+    if isinstance(floor, Mapping):
+        return dict(floor)
+    if isinstance(floor, (str, os.PathLike)):
+        return _path("floor", floor)
+    raise _type_error("floor", floor, "a floor file's path or a dict")
+
+
+def survive(
+    *,
+    floor: Floor,
+    walks: int = 100,
+    max_steps: int = 1000,
+    scene: Optional[Path] = None,
+    model: Optional[Path] = None,
+    set: Values = None,
+    init: Values = None,
+    t_set: Optional[float] = None,
+    omega0: Optional[float] = None,
+    phi: Optional[float] = None,
+    c: Optional[float] = None,
+    friction: Optional[str] = None,
+    impact: Optional[str] = None,
+    method: str = "dop853",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+) -> Dict[str, Any]:
+    """How far the walker gets on a floor, as ``walker survive --json`` (``docs/floors.md``):
+    ``walks`` walks from the start, walk ``i`` on the floor's stream ``i``, each until it fails
+    or completes ``max_steps`` steps, on all local cores with the GIL released (Ctrl-C raises
+    :class:`KeyboardInterrupt`). The result depends only on the arguments, not on the number of
+    cores or processes.
+
+    Args:
+        floor: the path of a floor file or a dict of its structure, e.g. ``{"kind": "random",
+            "seed": 3, "mu0": {"distribution": "markov", "dry": 0.3, "icy": 0.05,
+            "dry_length": 30, "icy_length": 1.5}}``; a dict gets a file's checks, and an error
+            names its key (``floor['mu0']['hi']``).
+        walks: the number of walks, in [1, 100000].
+        max_steps: each walk's step limit, in [1, :data:`MAX_STEPS`]; ``walks * max_steps`` at
+            most 1e8.
+        scene, model, set, init, t_set, omega0, phi, c, friction, impact, method, rtol, atol:
+            as :func:`simulate` (``mu0`` is the floor's; ``set`` may not give it).
+
+    Returns:
+        The command line's JSON as a dict: ``max_steps``, ``outcomes`` (a list of ``{"walk",
+        "steps", "failure"}``, ``failure`` the failure's name or None at the limit) and
+        ``survival`` (``walks``, ``failures``, ``censored``, ``curve``: a list of ``{"step",
+        "alive", "at_risk", "failed"}`` points, ``mfpt``: ``restricted_mean``,
+        ``sample_mean``, ``exponential``, ``attempts``, and ``failures_by_kind``).
+
+    Raises:
+        ValueError: an argument out of its range, or a floor the walker cannot take (named).
+        TypeError: a floor (or a value in it) of a type no floor file has.
+    """
+    text = _core.survive(
+        **_walker(scene, model, set), init=_pairs("init", init), floor=_floor(floor),
+        t_set=_float("t_set", t_set), omega0=_float("omega0", omega0), phi=_float("phi", phi),
+        c=_float("c", c), **_options(method, rtol, atol, friction, impact),
+        walks=_int("walks", walks, 1, 100_000),
+        max_steps=_int("max_steps", max_steps, 1, MAX_STEPS),
+    )
+    return json.loads(text)
 
 
 @dataclass(frozen=True)

@@ -31,6 +31,7 @@ def simulate(
     max_steps: int,
     trajectory_dt: Optional[float],
     max_frames: int,
+    floor: Optional[Any] = ...,
 ) -> Dict[str, Any]: ...
 def sweep(
     *,
@@ -100,3 +101,22 @@ def describe(
     friction: Optional[str],
     impact: Optional[str],
 ) -> Dict[str, Any]: ...
+def survive(
+    *,
+    scene: Optional[str],
+    model: Optional[str],
+    set: List[Tuple[str, float]],
+    init: List[Tuple[str, float]],
+    floor: Any,
+    t_set: Optional[float],
+    omega0: Optional[float],
+    phi: Optional[float],
+    c: Optional[float],
+    friction: Optional[str],
+    impact: Optional[str],
+    method: str,
+    rtol: Optional[float],
+    atol: Optional[float],
+    walks: int,
+    max_steps: int,
+) -> str: ...

@@ -13,12 +13,14 @@
 //! Files: `error.rs` (bad arguments), `options.rs` (the laws, the integrator, the limits),
 //! `walker_args.rs` (the walker: scene or model, parameters, start), `table.rs` (results as
 //! columns), `chunks.rs` (work in chunks between checks for Ctrl-C), then one file per
-//! function: `simulate.rs`, `sweep.rs`, `points.rs`, `fixed_point.rs`, `describe.rs`.
+//! function: `simulate.rs`, `sweep.rs`, `points.rs`, `fixed_point.rs`, `describe.rs`,
+//! `floor.rs` (`floor=` of `simulate`, and `survive`).
 
 pub mod chunks;
 pub mod describe;
 pub mod error;
 pub mod fixed_point;
+pub mod floor;
 pub mod options;
 pub mod points;
 pub mod simulate;
@@ -38,5 +40,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(points::walk_points, m)?)?;
     m.add_function(wrap_pyfunction!(fixed_point::fixed_point, m)?)?;
     m.add_function(wrap_pyfunction!(describe::describe, m)?)?;
+    m.add_function(wrap_pyfunction!(floor::survive, m)?)?;
     Ok(())
 }

@@ -18,7 +18,7 @@ use crate::walker_args::{self, overrides};
 /// `ValueError` naming a bad argument and its valid range; a walker failure is a result.
 #[pyfunction]
 #[pyo3(signature = (*, scene, model, set, init, mu0, t_set, omega0, phi, c, friction, impact,
-    method, rtol, atol, duration, max_steps, trajectory_dt, max_frames))]
+    method, rtol, atol, duration, max_steps, trajectory_dt, max_frames, floor=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate<'py>(
     py: Python<'py>,
@@ -40,7 +40,9 @@ pub fn simulate<'py>(
     max_steps: i64,
     trajectory_dt: Option<f64>,
     max_frames: i64,
+    floor: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let floor = floor.map(crate::floor::floor_spec).transpose()?;
     let ov = overrides(mu0, c, t_set, phi, friction, impact)?;
     let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
     walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
@@ -48,6 +50,33 @@ pub fn simulate<'py>(
     let limits = options::limits(duration, max_steps, None)?;
     let model = walker_args::model(&setup)?;
     let start = walker_args::start(&model, &init)?;
+    if let Some(floor) = floor {
+        crate::floor::mu0_once(&setup, mu0, &set)?;
+        if trajectory_dt.is_some() {
+            return Err(ArgError::new(
+                "trajectory",
+                "a walk on a floor is not sampled (give trajectory=False with floor=)",
+            )
+            .into());
+        }
+        let fw = crate::floor::walker_on(&setup, floor)?;
+        let w = stoppable(py, |stop| {
+            fw.walk_stoppable(0, &cfg, &start, &limits, &|| asked(stop))
+        })?
+        .map_err(|e| ArgError::new("floor", e.to_string()))?;
+        let Some(w) = w else {
+            return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(()));
+        };
+        let d = steps_dict(py, &model, &w)?;
+        d.set_item(
+            "floor_mu0",
+            w.steps
+                .iter()
+                .map(|s| s.floor.map_or(f64::NAN, |f| f.mu0))
+                .collect::<Vec<_>>(),
+        )?;
+        return Ok(d);
+    }
     let Some(dt) = trajectory_dt else {
         let w = stoppable(py, |stop| {
             walk_stoppable(&model, &cfg, &start, &limits, &|| asked(stop))

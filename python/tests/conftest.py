@@ -36,6 +36,10 @@ CLI_COMMANDS = {
                 "--t-set 0.3 --duration 3",
     "fixed_point_compass_gait": "fixed-point --model models/compass-gait.toml "
                                 "--friction coulomb --impact frictionless",
+    "simulate_mu0_steps": "simulate --scene active-level --t-set 0.3 --friction coulomb "
+                          "--mu0-steps 0.4,0.4,0.4,0.05,0.4 --max-steps 6",
+    "survive_markov": "survive --scene passive-slope --floor python/tests/floors/markov.toml "
+                      "--walks 16 --max-steps 30",
 }
 """The ``walker`` commands the module's results are compared with, by name."""
 

@@ -2,7 +2,11 @@
 //! on any number of threads, and sane statistics where every walk fails at once and where
 //! none fails.
 
-use walker::floor::{Distribution, FloorSpec, FloorWalker, SurviveReport, survive};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use walker::floor::{
+    Distribution, FloorSpec, FloorWalker, SurviveReport, survive, survive_stoppable,
+};
 use walker::setup::Setup;
 use walker::sim::SimConfig;
 
@@ -91,4 +95,21 @@ fn a_batch_is_the_same_on_one_thread_and_on_several() {
     // comparison covers both kinds.
     let s = &one.survival;
     assert!(s.failures > 0 && s.censored > 0, "{} failed", s.failures);
+}
+
+#[test]
+fn a_batch_that_is_never_stopped_is_the_batch_and_a_stopped_one_is_abandoned() {
+    let setup = Setup::passive_slope().expect("the built-in scene");
+    let floor = uniform(5, 0.2, 0.4);
+    let walker = FloorWalker::new(&setup, floor.clone()).expect("floor");
+    let start = setup.model().expect("model").start_state();
+    let cfg = SimConfig::default();
+    let never = survive_stoppable(&walker, &cfg, &start, 4, 10, &|| false).expect("walks");
+    assert_eq!(never, Some(batch(floor, 4, 10)));
+    // Asked to stop before the third step any walk takes: the batch is abandoned, not
+    // reported with walks cut short as if they had ended on their own.
+    let asked = AtomicUsize::new(0);
+    let stop = || asked.fetch_add(1, Ordering::Relaxed) >= 2;
+    let stopped = survive_stoppable(&walker, &cfg, &start, 4, 10, &stop).expect("walks");
+    assert_eq!(stopped, None);
 }

@@ -23,6 +23,6 @@ mod walker;
 pub use error::FloorError;
 pub use stats::{Estimate, Mfpt, Survival, SurvivalPoint, SurviveOutcome, survival};
 pub use steps::FloorSteps;
-pub use survive::{MAX_SURVIVE_STEPS, MAX_WALKS, SurviveReport, survive};
+pub use survive::{MAX_SURVIVE_STEPS, MAX_WALKS, SurviveReport, survive, survive_stoppable};
 pub use walker::FloorWalker;
 pub use walker_scene::{Distribution, FloorFile, FloorFileError, FloorSpec};

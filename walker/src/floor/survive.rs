@@ -39,6 +39,30 @@ pub fn survive(
     walks: usize,
     max_steps: usize,
 ) -> Result<SurviveReport, FloorError> {
+    Ok(
+        survive_stoppable(walker, cfg, initial, walks, max_steps, &|| false)?.unwrap_or_else(
+            || SurviveReport {
+                max_steps,
+                outcomes: Vec::new(),
+                survival: survival(&[]),
+            },
+        ),
+    )
+}
+
+/// [`survive`], abandoned (`None`) when `stop()`, asked before every step of every walk,
+/// answers true.
+///
+/// # Errors
+/// As [`survive`].
+pub fn survive_stoppable(
+    walker: &FloorWalker<'_>,
+    cfg: &SimConfig,
+    initial: &[f64],
+    walks: usize,
+    max_steps: usize,
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Result<Option<SurviveReport>, FloorError> {
     let limits = WalkLimits {
         max_steps,
         ..WalkLimits::default()
@@ -46,17 +70,19 @@ pub fn survive(
     let outcomes = (0..walks as u64)
         .into_par_iter()
         .map(|i| {
-            let w = walker.walk(i, cfg, initial, &limits)?;
-            Ok(SurviveOutcome {
+            let Some(w) = walker.walk_stoppable(i, cfg, initial, &limits, stop)? else {
+                return Ok(None);
+            };
+            Ok(Some(SurviveOutcome {
                 walk: i,
                 steps: w.steps.len(),
                 failure: w.failure.as_ref().map(|f| f.name().to_owned()),
-            })
+            }))
         })
-        .collect::<Result<Vec<_>, FloorError>>()?;
-    Ok(SurviveReport {
+        .collect::<Result<Option<Vec<_>>, FloorError>>()?;
+    Ok(outcomes.map(|outcomes| SurviveReport {
         max_steps,
         survival: survival(&outcomes),
         outcomes,
-    })
+    }))
 }

@@ -5,7 +5,9 @@ use walker_scene::FloorSpec;
 
 use crate::model::{Model, Parameters};
 use crate::setup::Setup;
-use crate::sim::{SimConfig, StepFloor, StepModels, Walk, WalkLimits, walk_by_step};
+use crate::sim::{
+    SimConfig, StepFloor, StepModels, Walk, WalkLimits, walk_by_step, walk_by_step_stoppable,
+};
 
 use super::error::FloorError;
 use super::steps::FloorSteps;
@@ -122,17 +124,48 @@ impl<'s> FloorWalker<'s> {
             periodic: None,
             ..*limits
         };
-        let mut models = PerStep {
+        let mut models = self.per_step(index);
+        let walk = walk_by_step(&mut models, cfg, initial, &limits);
+        match models.error {
+            Some(e) => Err(e),
+            None => Ok(walk),
+        }
+    }
+
+    /// The models of walk `index`'s steps.
+    fn per_step(&self, index: u64) -> PerStep<'_, 's> {
+        PerStep {
             walker: self,
             params: self.setup.params.clone(),
             steps: self.steps(index),
             current: None,
             error: None,
+        }
+    }
+
+    /// [`FloorWalker::walk`], abandoned (`None`) when `stop()`, asked before every step,
+    /// answers true.
+    ///
+    /// # Errors
+    /// As [`FloorWalker::walk`].
+    pub fn walk_stoppable(
+        &self,
+        index: u64,
+        cfg: &SimConfig,
+        initial: &[f64],
+        limits: &WalkLimits,
+        stop: &dyn Fn() -> bool,
+    ) -> Result<Option<Walk>, FloorError> {
+        let limits = WalkLimits {
+            periodic: None,
+            ..*limits
         };
-        let walk = walk_by_step(&mut models, cfg, initial, &limits);
+        let mut models = self.per_step(index);
+        let (walk, stopped) = walk_by_step_stoppable(&mut models, cfg, initial, &limits, stop);
         match models.error {
             Some(e) => Err(e),
-            None => Ok(walk),
+            None if stopped => Ok(None),
+            None => Ok(Some(walk)),
         }
     }
 }

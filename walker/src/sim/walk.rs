@@ -70,6 +70,19 @@ pub fn walk_by_step(
     walk_models(models, cfg, initial, limits, None, &|| false).0
 }
 
+/// [`walk_by_step`], ending early (the second value true) when `stop()`, asked before every
+/// step, answers true, or before a step whose model `models` cannot give.
+pub fn walk_by_step_stoppable(
+    models: &mut dyn StepModels,
+    cfg: &SimConfig,
+    initial: &[f64],
+    limits: &WalkLimits,
+    stop: &dyn Fn() -> bool,
+) -> (Walk, bool) {
+    let (walk, _, stopped) = walk_models(models, cfg, initial, limits, None, stop);
+    (walk, stopped)
+}
+
 /// [`walk_with_stats`], also sampling the motion into `frames` if given, and ending early
 /// (the third value true) when `stop()`, asked before every step, answers true. An initial
 /// state of the wrong length is a non-finite start (nothing to integrate).

@@ -1,0 +1,212 @@
+//! Floors for Python (`docs/floors.md`): `floor=` of `simulate` and `survive`, a floor file's
+//! path or a dict of the file's structure. A dict is written as the TOML of a floor file and
+//! read by the file's parser (`walker_scene::floor`), so that it gets exactly a file's checks;
+//! an error names the key (`floor['mu0.hi']`). Then `survive(...)`: many seeded walks on the
+//! floor on all cores, as `walker survive --json`, with the GIL released and Ctrl-C seen.
+
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use walker::floor::{FloorFile, FloorFileError, FloorSpec, FloorWalker, survive_stoppable};
+use walker::request::{Field, RequestError};
+use walker::setup::Setup;
+
+use crate::chunks::{asked, stoppable};
+use crate::error::ArgError;
+use crate::options;
+use crate::walker_args::{self, overrides};
+
+/// The deepest nesting of lists and tables a floor dict may have (a floor file has two).
+const MAX_DEPTH: usize = 4;
+
+/// The key `path` of a floor dict as an error names it: `floor['mu0']['hi']`.
+fn key(path: &[String]) -> String {
+    let mut s = String::from("floor");
+    for p in path {
+        if p.parse::<usize>().is_ok() {
+            s.push_str(&format!("[{p}]"));
+        } else {
+            s.push_str(&format!("['{}']", crate::error::echo(p)));
+        }
+    }
+    s
+}
+
+/// A type error about the value at `path` of a floor dict.
+fn type_error(path: &[String], v: &Bound<'_, PyAny>, must_be: &str) -> PyErr {
+    let ty = v
+        .get_type()
+        .name()
+        .map_or_else(|_| "?".to_owned(), |n| n.to_string());
+    PyTypeError::new_err(format!("invalid {}: a {ty}: must be {must_be}", key(path)))
+}
+
+/// The TOML value of `v`, the value at `path` of a floor dict: a bool, an int, a float, a
+/// string, a list or tuple, or a dict with string keys.
+fn toml_value(v: &Bound<'_, PyAny>, path: &mut Vec<String>) -> PyResult<toml::Value> {
+    if path.len() > MAX_DEPTH {
+        return Err(type_error(
+            path,
+            v,
+            "a value of a floor file (nested too deep)",
+        ));
+    }
+    if v.is_instance_of::<PyBool>() {
+        return Ok(toml::Value::Boolean(v.extract()?));
+    }
+    if v.is_instance_of::<PyInt>() {
+        return match v.extract::<i64>() {
+            Ok(i) => Ok(toml::Value::Integer(i)),
+            Err(_) => {
+                Err(ArgError::new(&key(path), "an integer too large: must fit in 64 bits").into())
+            }
+        };
+    }
+    if v.is_instance_of::<PyFloat>() {
+        return Ok(toml::Value::Float(v.extract()?));
+    }
+    if v.is_instance_of::<PyString>() {
+        return Ok(toml::Value::String(v.extract()?));
+    }
+    if v.is_instance_of::<PyList>() || v.is_instance_of::<PyTuple>() {
+        let mut out = Vec::new();
+        for (i, x) in v.try_iter()?.enumerate() {
+            path.push(i.to_string());
+            out.push(toml_value(&x?, path)?);
+            path.pop();
+        }
+        return Ok(toml::Value::Array(out));
+    }
+    if let Ok(d) = v.cast::<PyDict>() {
+        let mut table = toml::Table::new();
+        for (k, x) in d.iter() {
+            let Ok(name) = k.extract::<String>() else {
+                return Err(type_error(path, &k, "a dict with string keys"));
+            };
+            path.push(name.clone());
+            let value = toml_value(&x, path)?;
+            path.pop();
+            table.insert(name, value);
+        }
+        return Ok(toml::Value::Table(table));
+    }
+    Err(type_error(
+        path,
+        v,
+        "a number, a string, a list or a dict (a value of a floor file)",
+    ))
+}
+
+/// The floor of `floor=`: a path (`str`) of a floor file, or a dict of its structure.
+///
+/// # Errors
+/// `TypeError` for another type or a value of a type no floor file has; `ValueError` naming
+/// the file (a path) or the key (a dict) for a value the file's parser refuses.
+pub fn floor_spec(floor: &Bound<'_, PyAny>) -> PyResult<FloorSpec> {
+    if let Ok(path) = floor.extract::<String>() {
+        return FloorFile::from_file(std::path::Path::new(&path))
+            .map(|f| f.spec)
+            .map_err(|e| ArgError::new("floor", e.to_string()).into());
+    }
+    if floor.cast::<PyDict>().is_err() {
+        return Err(type_error(&[], floor, "a floor file's path or a dict"));
+    }
+    let toml::Value::Table(table) = toml_value(floor, &mut Vec::new())? else {
+        return Err(type_error(&[], floor, "a floor file's path or a dict"));
+    };
+    let text = toml::to_string(&table)
+        .map_err(|e| ArgError::new("floor", format!("cannot be written as TOML: {e}")))?;
+    FloorFile::from_toml(&text, "floor")
+        .map(|f| f.spec)
+        .map_err(|e| match e {
+            FloorFileError::Invalid { field, message, .. } => {
+                let parts: Vec<String> = field
+                    .split(['.', '[', ']'])
+                    .filter(|p| !p.is_empty())
+                    .map(str::to_owned)
+                    .collect();
+                ArgError::new(&key(&parts), message).into()
+            }
+            e @ FloorFileError::Read { .. } => ArgError::new("floor", e.to_string()).into(),
+        })
+}
+
+/// Checks that neither `mu0=` nor `set` gives the friction coefficient that `floor=` sets per
+/// step.
+///
+/// # Errors
+/// Either gives it (named `mu0` or `set['name']`).
+pub fn mu0_once(setup: &Setup, mu0: Option<f64>, set: &[(String, f64)]) -> Result<(), ArgError> {
+    walker::request::floor_once(true, false, mu0.is_some()).map_err(ArgError::from)?;
+    let spec = setup.walker.spec();
+    if let Some(i) = spec.mu0 {
+        let name = &spec.model.parameters[i].name.name;
+        if set.iter().any(|(n, _)| n == name) {
+            return Err(ArgError::from(RequestError::Conflict {
+                field: Field::Parameter(name.clone()),
+                other: Field::Floor,
+                why: "each sets mu0; give one",
+            }));
+        }
+    }
+    Ok(())
+}
+
+/// The walker of `setup` on `floor`.
+///
+/// # Errors
+/// The floor cannot set the walker's friction (named `floor`).
+pub fn walker_on(setup: &Setup, floor: FloorSpec) -> Result<FloorWalker<'_>, ArgError> {
+    FloorWalker::new(setup, floor).map_err(|e| ArgError::new("floor", e.to_string()))
+}
+
+/// Many seeded walks on a floor (see the Python docstring of `slippery_walker.survive`): the
+/// JSON text of `walker survive --json`.
+///
+/// # Errors
+/// `ValueError` naming a bad argument and its valid range; `KeyboardInterrupt` on Ctrl-C.
+#[pyfunction]
+#[pyo3(signature = (*, scene, model, set, init, floor, t_set, omega0, phi, c, friction,
+    impact, method, rtol, atol, walks, max_steps))]
+#[allow(clippy::too_many_arguments)]
+pub fn survive(
+    py: Python<'_>,
+    scene: Option<&str>,
+    model: Option<&str>,
+    set: Vec<(String, f64)>,
+    init: Vec<(String, f64)>,
+    floor: &Bound<'_, PyAny>,
+    t_set: Option<f64>,
+    omega0: Option<f64>,
+    phi: Option<f64>,
+    c: Option<f64>,
+    friction: Option<&str>,
+    impact: Option<&str>,
+    method: &str,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    walks: i64,
+    max_steps: i64,
+) -> PyResult<String> {
+    let spec = floor_spec(floor)?;
+    let (walks, max_steps) =
+        walker::request::survive_counts(i128::from(walks), i128::from(max_steps))
+            .map_err(ArgError::from)?;
+    let ov = overrides(None, c, t_set, phi, friction, impact)?;
+    let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
+    mu0_once(&setup, None, &set)?;
+    walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
+    let cfg = options::config(method, rtol, atol)?;
+    let m = walker_args::model(&setup)?;
+    let start = walker_args::start(&m, &init)?;
+    let fw = walker_on(&setup, spec)?;
+    let report = stoppable(py, |stop| {
+        survive_stoppable(&fw, &cfg, &start, walks, max_steps, &|| asked(stop))
+    })?
+    .map_err(|e| ArgError::new("floor", e.to_string()))?;
+    let Some(report) = report else {
+        return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(()));
+    };
+    serde_json::to_string(&report)
+        .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))
+}

@@ -1,0 +1,103 @@
+"""Floors that change under the walker (``docs/floors.md``): ``simulate(floor=...)`` and
+``survive(...)`` equal the command line's JSON for the same arguments (exactly: the same
+library functions on the same inputs; see ``test_cli_equality.py``), and a floor given as a
+dict gets a floor file's checks, its errors naming the key."""
+
+import pytest
+import slippery_walker as sw
+from conftest import ROOT, cli_json
+from test_cli_equality import assert_steps_equal
+
+MARKOV_FILE = ROOT / "python" / "tests" / "floors" / "markov.toml"
+
+MARKOV = {
+    "kind": "random",
+    "seed": 9,
+    "mu0": {"distribution": "markov", "dry": 0.3, "icy": 0.05, "dry_length": 20,
+            "icy_length": 1.5},
+}
+"""The floor of ``floors/markov.toml`` as a dict."""
+
+
+def test_simulate_on_a_steps_floor_equals_the_cli_with_mu0_steps():
+    cli = cli_json("simulate_mu0_steps")
+    w = sw.simulate(scene="active-level", t_set=0.3, friction="coulomb", max_steps=6,
+                    floor={"kind": "steps", "mu0": [0.4, 0.4, 0.4, 0.05, 0.4]})
+    assert (w.status, w.failure) == (cli["status"], cli["failure"])
+    assert_steps_equal(w, cli["steps"])
+    assert w.floor_mu0.tolist() == [s["floor"]["mu0"] for s in cli["steps"]]
+
+
+def test_simulate_without_a_floor_has_no_floor_column():
+    w = sw.simulate(max_steps=2)
+    assert w.floor_mu0 is None
+
+
+def test_survive_equals_the_cli_for_a_file_and_for_the_same_floor_as_a_dict():
+    cli = cli_json("survive_markov")
+    by_file = sw.survive(scene="passive-slope", floor=MARKOV_FILE, walks=16, max_steps=30)
+    by_dict = sw.survive(scene="passive-slope", floor=MARKOV, walks=16, max_steps=30)
+    assert by_file == cli
+    assert by_dict == cli
+    # The batch is not trivial: some walks fail on the ice, so the comparison covers the
+    # curve, the estimates and the failures by kind, not only sixteen censored walks.
+    assert 0 < cli["survival"]["failures"] <= 16
+
+
+def test_survive_walk_zero_is_simulates_walk_on_the_same_floor():
+    s = sw.survive(scene="passive-slope", floor=MARKOV, walks=3, max_steps=30)
+    w = sw.simulate(scene="passive-slope", floor=MARKOV, max_steps=30)
+    assert s["outcomes"][0]["steps"] == w.steps
+    assert s["outcomes"][0]["failure"] == (None if w.ok else w.status)
+
+
+def with_mu0(**fields):
+    d = {**MARKOV, "mu0": {**MARKOV["mu0"], **fields}}
+    return d
+
+
+@pytest.mark.parametrize("floor, key, text", [
+    # A missing field is found by the parser at the table's start (here: the line of `kind`),
+    # so only the message names it.
+    ({"kind": "uniform"}, "floor", "missing field `mu0`"),
+    ({"kind": "wet", "mu0": 0.3}, "floor['kind']", "expected"),
+    ({"kind": "uniform", "mu0": -0.3}, "floor['mu0']", "must be > 0"),
+    ({"kind": "steps", "mu0": [0.4, 0.0]}, "floor['mu0'][1]", "must be > 0"),
+    (with_mu0(icy_length=0.5), "floor['mu0']['icy_length']", "[1, 1e9]"),
+    ({**MARKOV, "seed": -1}, "floor['seed']", "whole number"),
+    ({**MARKOV, "phi": 0.1}, "floor['phi']", "not implemented"),
+    ({"kind": "random", "seed": 1, "mu0": {"distribution": "uniform", "lo": 0.3, "hi": 0.2}},
+     "floor['mu0']['hi']", "must be > mu0.lo"),
+])
+def test_a_bad_floor_dict_raises_value_error_naming_the_key(floor, key, text):
+    with pytest.raises(ValueError) as e:
+        sw.survive(scene="passive-slope", floor=floor, walks=2, max_steps=2)
+    assert f"invalid {key}" in str(e.value)
+    assert text in str(e.value)
+
+
+@pytest.mark.parametrize("floor, key", [
+    ({"kind": "uniform", "mu0": None}, "floor['mu0']"),
+    ({"kind": "steps", "mu0": [0.4, object()]}, "floor['mu0'][1]"),
+    ({1: "uniform"}, "floor"),
+    (3.0, "floor"),
+])
+def test_a_floor_value_of_no_floor_files_type_raises_type_error_naming_the_key(floor, key):
+    with pytest.raises(TypeError) as e:
+        sw.simulate(floor=floor, max_steps=1)
+    assert f"invalid {key}" in str(e.value)
+
+
+def test_a_floor_with_mu0_or_mu0_in_set_is_refused():
+    with pytest.raises(ValueError, match="mu0"):
+        sw.simulate(floor={"kind": "uniform", "mu0": 0.3}, mu0=0.3, max_steps=1)
+    with pytest.raises(ValueError, match="floor"):
+        sw.survive(floor={"kind": "uniform", "mu0": 0.3}, set={"mu0": 0.3}, walks=1,
+                   max_steps=1)
+
+
+def test_survive_counts_out_of_range_name_their_keyword():
+    with pytest.raises(ValueError, match="invalid walks"):
+        sw.survive(floor=MARKOV, walks=0, max_steps=1)
+    with pytest.raises(ValueError, match="invalid walks"):
+        sw.survive(floor=MARKOV, walks=100_000, max_steps=1001)
