@@ -14,7 +14,7 @@ const MAX_TRIES: usize = 10_000;
 /// The friction coefficients of the steps of walk `walk` on a floor, in order: step `k`'s
 /// value is a pure function of (the floor, `walk`, `k`). A `uniform` or `steps` floor gives
 /// every walk the same values; a random floor draws step `k` of walk `walk` from the stream
-/// of (seed, walk) at step `k` ([`super::draw`]), the Markov chain's state carried from step
+/// of (seed, walk) at step `k` (`super::draw`), the Markov chain's state carried from step
 /// to step.
 #[derive(Clone, Debug)]
 pub struct FloorSteps<'f> {
