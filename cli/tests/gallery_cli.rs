@@ -83,7 +83,7 @@ fn gallery_writes_every_file_and_every_claim_holds() {
         "the paper's frictionless impact: it stops only",
         "Bifurcation diagrams by continuation",
         "period doubling at phi = 0.015073100216016674 rad",
-        "period one doubles at 4.3909 degrees",
+        "period one doubles at 4.3909 degrees, stable before it: true",
     ] {
         assert!(summary.contains(needle), "missing {needle:?} in\n{summary}");
     }

@@ -425,12 +425,22 @@ fn compass_cascade(d: Option<&Diagram>) -> Claim {
         .map(f64::to_degrees)
         .filter(|&x| pd1.first().is_some_and(|&p| x > p + 1e-9))
         .collect();
+    let stable_before = p1
+        .points
+        .iter()
+        .filter(|p| {
+            pd1.first()
+                .is_some_and(|&x| p.parameter.to_degrees() < x - 1e-6)
+        })
+        .all(|p| p.stability == Stability::Stable);
     let found = format!(
-        "period one doubles at {} degrees; period two at {} degrees",
+        "period one doubles at {} degrees, stable before it: {stable_before}; period two at {} \
+         degrees",
         list(&pd1, 4),
         list(&pd2, 4)
     );
     let holds = pd1.len() == 1
+        && stable_before
         && (pd1[0] - COMPASS_PD_DEG).abs() <= COMPASS_PD_TOL_DEG
         && !pd2.is_empty()
         && pd2.iter().all(|&x| x < 5.5);
