@@ -26,7 +26,7 @@ pub use friction_impact::{
 };
 pub use impact::{ImpactResult, PostImpact};
 pub use parameters::{ParamError, Parameters};
-pub use prepared::Model;
+pub use prepared::{Model, StanceRhs};
 pub use spec::{InitError, Spec, SpecError};
 pub use walker::{KernelSource, NoKernels, Walker};
 /// The kernel contract ([`walker_contract`]), re-exported where the simulator's code names it.

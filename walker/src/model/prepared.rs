@@ -282,11 +282,26 @@ impl Model {
     /// [`Model::stance`]), and the input power's integrand `sum |u_i w_i|` where the power
     /// counts ([`Model::power_counts`]; 0 elsewhere and for a passive walker).
     pub fn stance_rhs(&self, t: f64, y: &[f64], contact: Contact, dy: &mut [f64]) -> f64 {
-        let (stuck, sigma) = (self.is_stuck(contact), contact.sigma());
-        let p = self
-            .kernels
-            .stance_rhs(stuck, sigma, &y[..dy.len()], &self.tracking_at(t), dy);
-        if self.power_counts(t) { p } else { 0.0 }
+        self.stance_rhs_in(contact).eval(t, &y[..dy.len()], dy)
+    }
+
+    /// [`Model::stance_rhs`] in the contact `contact`, with what does not change while the
+    /// contact holds (the stuck or sliding kernel, the trajectories and gains, where the
+    /// power stops counting) looked up once: the integrator evaluates it at every stage.
+    #[must_use]
+    pub fn stance_rhs_in(&self, contact: Contact) -> StanceRhs<'_> {
+        StanceRhs {
+            kernels: &*self.kernels,
+            stuck: self.is_stuck(contact),
+            sigma: contact.sigma(),
+            desired: &self.desired,
+            gains: self.gains,
+            power_until: if self.is_active() {
+                self.power_until
+            } else {
+                f64::NEG_INFINITY
+            },
+        }
     }
 
     /// The length a buffer for [`Model::stance`] needs: the accelerations, the inputs and the
@@ -649,5 +664,35 @@ impl Model {
             .iter()
             .filter(|p| p.stage == Stage::Start)
             .map(|p| p.name.name.as_str())
+    }
+}
+
+/// The stance phase's right-hand side in one contact ([`Model::stance_rhs_in`]): the kernels
+/// and everything the right-hand side reads besides `(t, y)`, resolved for the contact.
+#[derive(Clone, Copy)]
+pub struct StanceRhs<'a> {
+    kernels: &'a dyn Kernels,
+    stuck: bool,
+    sigma: f64,
+    desired: &'a [Desired],
+    gains: (f64, f64),
+    /// The input power counts for `t` below this (minus infinity for a passive walker).
+    power_until: f64,
+}
+
+impl StanceRhs<'_> {
+    /// [`Model::stance_rhs`] at `(t, y)`: `dy = [qd, qdd]` (`2n = y.len()` numbers), and the
+    /// input power's integrand where the power counts (0 elsewhere).
+    #[inline]
+    pub fn eval(&self, t: f64, y: &[f64], dy: &mut [f64]) -> f64 {
+        let control = Tracking {
+            desired: self.desired,
+            t,
+            gains: self.gains,
+        };
+        let p = self
+            .kernels
+            .stance_rhs(self.stuck, self.sigma, y, &control, dy);
+        if t < self.power_until { p } else { 0.0 }
     }
 }

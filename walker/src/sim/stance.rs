@@ -3,7 +3,7 @@
 //! observer that samples the motion ([`Recorder`]).
 
 use crate::jacobian::StanceJacobian;
-use crate::model::Model;
+use crate::model::{Model, StanceRhs};
 use crate::ode::{Observer, OdeSystem, Step};
 use crate::vector::Vector;
 
@@ -15,20 +15,41 @@ use super::state::mech;
 /// The stance phase of `model` with the foot `foot`, as an ODE system for [`crate::ode`].
 pub(super) struct Stance<'a> {
     /// The model.
-    pub(super) model: &'a Model,
+    model: &'a Model,
     /// The state Jacobian from the model's Jacobian kernels; `None` falls back to finite
     /// differences.
-    pub(super) jac: Option<StanceJacobian<'a>>,
+    jac: Option<StanceJacobian<'a>>,
     /// The stance foot.
-    pub(super) foot: &'a Foot<'a>,
+    foot: &'a Foot<'a>,
+    /// The right-hand side in the foot's contact ([`Stance::in_contact`] after the contact
+    /// changes).
+    rhs: StanceRhs<'a>,
+}
+
+impl<'a> Stance<'a> {
+    /// The stance phase of `foot`'s model, in the foot's current contact.
+    pub(super) fn new(foot: &'a Foot<'a>) -> Self {
+        let model = foot.model;
+        Self {
+            model,
+            jac: StanceJacobian::new(model).ok(),
+            foot,
+            rhs: model.stance_rhs_in(foot.contact()),
+        }
+    }
+
+    /// Follows the foot's contact (it changes between integration segments, at stick-slip
+    /// transitions).
+    pub(super) fn in_contact(&mut self) {
+        self.rhs = self.model.stance_rhs_in(self.foot.contact());
+    }
 }
 
 impl<const S: usize> OdeSystem<S> for Stance<'_> {
     fn rhs(&mut self, t: f64, y: &[f64; S], dy: &mut [f64; S]) {
         let n = S / 2;
-        dy[2 * n] = self
-            .model
-            .stance_rhs(t, y, self.foot.contact(), &mut dy[..2 * n]);
+        let (dq, power) = dy.split_at_mut(2 * n);
+        power[0] = self.rhs.eval(t, &y[..2 * n], dq);
     }
 
     /// The error test watches the power quadrature (the last component) too, except on a step

@@ -4,7 +4,6 @@
 //! The time is reset to zero at every impact; the ends of the desired trajectories' ramps
 //! (`T_set`) are breakpoints of the integrator (the control switches there).
 
-use crate::jacobian::StanceJacobian;
 use crate::model::{Contact, Model, Reaction, Slide};
 use crate::ode::{GaveUp, Integrator, Outcome, Stats};
 use crate::vector::Vector;
@@ -174,14 +173,9 @@ fn segments<const S: usize>(
     mut obs: Recorder<'_>,
     budget: usize,
 ) -> Result<Strike<S>, Failure> {
-    let model = foot.model;
     let guards = Guards::new(foot, lambda_max);
     let mut events = guards.events::<S>();
-    let mut sys = Stance {
-        model,
-        jac: StanceJacobian::new(model).ok(),
-        foot,
-    };
+    let mut sys = Stance::new(foot);
     let mut lambda_min = lambda0;
     let mut t = 0.0;
     let mut y = y0;
@@ -192,6 +186,7 @@ fn segments<const S: usize>(
         let spent = usize::try_from(attempts(integ.stats()) - first).unwrap_or(usize::MAX);
         integ.config_mut().max_steps = budget.saturating_sub(spent);
         let (t_start, contact) = (t, foot.contact());
+        sys.in_contact();
         let out = integ.integrate(&mut sys, t, &y, t_limit, &mut events, &mut obs);
         if contact == Contact::Stuck {
             stuck_time += out.t() - t_start;
