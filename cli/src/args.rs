@@ -372,6 +372,21 @@ pub enum Command {
         #[arg(long, default_value = "gallery-out")]
         out: PathBuf,
     },
+    /// The paper's question on floors that change from step to step: which T_set walks
+    /// farthest on random floors, against uniform floors of the same range, and the longest
+    /// ice patch each T_set crosses (figures, CSV data and checked claims; docs/floors.md).
+    FloorStudy {
+        /// Output directory.
+        #[arg(long, default_value = "floor-study-out")]
+        out: PathBuf,
+        /// Seeded walks per contact law, random floor and T_set: a whole number in [1, 2000].
+        #[arg(long, allow_hyphen_values = true, default_value = "100")]
+        walks: String,
+        /// The step limit of a walk on a random or uniform floor: a whole number in
+        /// [1, 10000].
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "200")]
+        max_steps: String,
+    },
 }
 
 #[cfg(test)]

@@ -16,7 +16,7 @@ use walker::request::Field;
 
 use crate::args::{Cli, Command, WalkFlags};
 use crate::input::{self, InputError};
-use crate::{animate, continue_cmd, floor, gallery, report, reproduce, run};
+use crate::{animate, continue_cmd, floor, floor_study, gallery, report, reproduce, run};
 
 /// Why a command did not finish, and its exit code.
 #[derive(Debug, thiserror::Error)]
@@ -325,6 +325,15 @@ fn run(cli: Cli) -> Result<(), CliError> {
         }
         Command::Gallery { out } => {
             let summary = gallery::run(&out)?;
+            emit(&summary)?;
+        }
+        Command::FloorStudy {
+            out,
+            walks,
+            max_steps,
+        } => {
+            let size = floor_study::size_of(&walks, &max_steps)?;
+            let summary = floor_study::run(&out, size)?;
             emit(&summary)?;
         }
     }
