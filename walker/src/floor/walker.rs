@@ -6,7 +6,8 @@ use walker_scene::FloorSpec;
 use crate::model::{Model, Parameters};
 use crate::setup::Setup;
 use crate::sim::{
-    SimConfig, StepFloor, StepModels, Walk, WalkLimits, walk_by_step, walk_by_step_stoppable,
+    SimConfig, StepFloor, StepModels, Trajectory, Walk, WalkLimits, trajectory_by_step,
+    walk_by_step, walk_by_step_stoppable,
 };
 
 use super::error::FloorError;
@@ -129,6 +130,32 @@ impl<'s> FloorWalker<'s> {
         match models.error {
             Some(e) => Err(e),
             None => Ok(walk),
+        }
+    }
+
+    /// Walk number `index` as [`FloorWalker::walk`] walks it, sampled every `dt` from the dense
+    /// output for an animation ([`crate::sim::trajectory()`], at most `max_frames` frames).
+    ///
+    /// # Errors
+    /// As [`FloorWalker::walk`].
+    pub fn trajectory(
+        &self,
+        index: u64,
+        cfg: &SimConfig,
+        initial: &[f64],
+        limits: &WalkLimits,
+        dt: f64,
+        max_frames: usize,
+    ) -> Result<Trajectory, FloorError> {
+        let limits = WalkLimits {
+            periodic: None,
+            ..*limits
+        };
+        let mut models = self.per_step(index);
+        let tr = trajectory_by_step(&mut models, cfg, initial, &limits, dt, max_frames);
+        match models.error {
+            Some(e) => Err(e),
+            None => Ok(tr),
         }
     }
 

@@ -44,7 +44,7 @@ pub use frame::Frame;
 pub use gait::{Sample, StepFloor, StepResult, Walk};
 pub use guard::{Guard, MAX_FALLS};
 pub use step_models::StepModels;
-pub use trajectory::{Trajectory, trajectory, trajectory_stoppable};
+pub use trajectory::{Trajectory, trajectory, trajectory_by_step, trajectory_stoppable};
 pub use walk::{
     Stopped, walk, walk_by_step, walk_by_step_stoppable, walk_stoppable, walk_with_stats,
 };

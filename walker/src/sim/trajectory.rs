@@ -9,7 +9,8 @@ use crate::model::Model;
 use super::config::{SimConfig, WalkLimits};
 use super::frame::{Frame, Frames, at_failure};
 use super::gait::Walk;
-use super::walk::{Stopped, walk_recording};
+use super::step_models::StepModels;
+use super::walk::{Stopped, walk_models, walk_recording};
 
 /// A walk with its motion sampled every `dt`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -99,6 +100,33 @@ fn sampled(
 ) -> (Trajectory, bool) {
     let mut frames = Frames::new(dt, max_frames);
     let (walk, _, stopped) = walk_recording(model, cfg, initial, limits, Some(&mut frames), stop);
+    (finished(walk, frames, dt, |_| Some(model)), stopped)
+}
+
+/// [`trajectory()`] with the model of each step from `models`, asked before the step (a floor
+/// whose friction changes between steps, `crate::floor`), as [`super::walk_by_step`] walks.
+#[must_use]
+pub fn trajectory_by_step(
+    models: &mut dyn StepModels,
+    cfg: &SimConfig,
+    initial: &[f64],
+    limits: &WalkLimits,
+    dt: f64,
+    max_frames: usize,
+) -> Trajectory {
+    let mut frames = Frames::new(dt, max_frames);
+    let (walk, _, _) = walk_models(models, cfg, initial, limits, Some(&mut frames), &|| false);
+    finished(walk, frames, dt, |step| models.model(step))
+}
+
+/// The trajectory of `walk` sampled into `frames`, with the frame at its failure from the
+/// model of the failing step (`model_of(step)`).
+fn finished<'m>(
+    walk: Walk,
+    frames: Frames,
+    dt: f64,
+    model_of: impl FnOnce(usize) -> Option<&'m Model>,
+) -> Trajectory {
     let (frames, truncated) = frames.finish();
     let mut tr = Trajectory {
         walk,
@@ -107,10 +135,12 @@ fn sampled(
         truncated,
         failure_frame: None,
     };
-    if let Some(f) = &tr.walk.failure {
+    if let Some(f) = &tr.walk.failure
+        && let Some(model) = model_of(f.step)
+    {
         tr.failure_frame = Some(at_failure(model, f, tr.end_time(), tr.frames.last()));
     }
-    (tr, stopped)
+    tr
 }
 
 #[cfg(test)]

@@ -99,7 +99,7 @@ pub(super) fn walk_recording(
 
 /// [`walk_recording`] with the model of each step from `models`; a step whose model cannot be
 /// had ends the walk as a stop does (the third value true).
-fn walk_models(
+pub(super) fn walk_models(
     models: &mut dyn StepModels,
     cfg: &SimConfig,
     initial: &[f64],
