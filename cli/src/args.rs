@@ -319,6 +319,15 @@ pub enum Command {
         /// Draw a stick diagram: the walker at equal time intervals in one picture.
         #[arg(long)]
         strobe: bool,
+        /// Walk on the floor of FILE.toml (docs/floors.md), drawn as a patch of colour per step
+        /// from ice blue (its lowest mu0) to brown (its highest); a random floor's walk 0; not
+        /// with --mu0 or --mu0-steps.
+        #[arg(long)]
+        floor: Option<PathBuf>,
+        /// Walk step k on the k-th mu0 of this comma-separated list, drawn as --floor is, the
+        /// last value after the list (e.g. 0.4,0.4,0.05,0.4); not with --mu0 or --floor.
+        #[arg(long = "mu0-steps", allow_hyphen_values = true)]
+        mu0_steps: Option<String>,
     },
     /// Follow a branch of periodic gaits as a parameter moves (pseudo-arclength
     /// continuation), stable or not, with its folds, period doublings and the boundaries where

@@ -95,12 +95,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             let w = match floor_spec {
                 None => run::simulate(&model, &start, &limits, &cfg)?,
                 Some(spec) => {
-                    let (flag, field) = if floor_file.is_some() {
-                        ("floor", Field::Floor)
-                    } else {
-                        ("mu0-steps", Field::Mu0Steps)
-                    };
-                    floor::mu0_once(&setup, &common.set, field)?;
+                    let flag = floor::flag_of(&setup, &common.set, floor_file.is_some())?;
                     floor::simulate_on(&setup, spec, flag, &start, &limits, &cfg)?
                 }
             };
@@ -242,18 +237,31 @@ fn run(cli: Cli) -> Result<(), CliError> {
             fps,
             output,
             strobe,
+            floor: floor_file,
+            mu0_steps,
         } => {
             let steps = steps
                 .as_deref()
                 .map(|t| input::whole("steps", t, 1, animate::request::MAX_STEPS))
                 .transpose()?;
             let req = animate::Request::new(steps, duration, speed, fps, &output, strobe)?;
+            let floor_spec = floor::floor_of(floor_file.as_deref(), mu0_steps.as_deref(), mu0)?;
             let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
             run::omega0_once(&setup, &common, omega0)?;
             run::set_omega0(&mut setup, omega0, |_| true, "finite")?;
             let model = run::model(&setup)?;
             let start = run::start(&model, &init)?;
-            let written = animate::animate(&model, &common.config()?, &start, &req)?;
+            let cfg = common.config()?;
+            let written = match floor_spec {
+                None => animate::animate(&model, &cfg, &start, &req)?,
+                Some(spec) => {
+                    let flag = floor::flag_of(&setup, &common.set, floor_file.is_some())?;
+                    let walker = floor::walker_on(&setup, spec, flag)?;
+                    let tr = animate::sample_on_floor(&walker, &cfg, &start, &req, flag)?;
+                    let mu0: Vec<f64> = walker.steps(0).take(tr.walk.steps.len() + 1).collect();
+                    animate::write_on_floor(&model, &tr, &req, &mu0)?
+                }
+            };
             if common.json {
                 emit(&format!("{}\n", serde_json::json!(written)))?;
             } else {

@@ -55,6 +55,21 @@ pub fn floor_of(
         .map_err(|e| InputError::new("mu0-steps", e.to_string()))
 }
 
+/// The flag that gave a walk's floor (`--floor` if `from_file`, else `--mu0-steps`), after
+/// checking that `--set` does not also give the friction coefficient ([`mu0_once`]).
+///
+/// # Errors
+/// As [`mu0_once`].
+pub fn flag_of(setup: &Setup, set: &[String], from_file: bool) -> Result<&'static str, InputError> {
+    let (flag, field) = if from_file {
+        ("floor", Field::Floor)
+    } else {
+        ("mu0-steps", Field::Mu0Steps)
+    };
+    mu0_once(setup, set, field)?;
+    Ok(flag)
+}
+
 /// Checks that `--set` does not also give the friction coefficient, which the floor (given
 /// by `floor`: [`Field::Floor`] or [`Field::Mu0Steps`]) sets per step.
 ///

@@ -336,3 +336,64 @@ fn a_walk_failing_at_its_start_is_drawn_as_its_failure() {
     }
     assert!(text.contains("lift-off in step 1"));
 }
+
+/// `--mu0-steps` draws the floor as one patch per drawn step, in the list's order with its
+/// last value after the list, the icy ones in another colour than the dry; the walk is the
+/// one `walker simulate --mu0-steps` walks (the same number of steps), and the title gives
+/// the range of `mu0` instead of the model's own value.
+#[test]
+fn a_floor_is_drawn_as_a_patch_per_step_with_its_mu0() {
+    let out = tmp("floor.svg");
+    let list = "0.4,0.4,0.05,0.05,0.4";
+    let common = [
+        "--scene",
+        "active-level",
+        "--t-set",
+        "0.3",
+        "--mu0-steps",
+        list,
+    ];
+    let report = animate(&out, &[&common[..], &["--steps", "7"]].concat());
+    assert_eq!(report["steps"], 7, "{report}");
+    let svg = std::fs::read_to_string(&out).expect("the SVG is written");
+    let doc = roxmltree::Document::parse(&svg).expect("the SVG parses");
+    let patches: Vec<(String, String)> = doc
+        .descendants()
+        .filter(|n| n.attribute("class") == Some("floor-patch"))
+        .map(|n| {
+            let title = n
+                .children()
+                .find(|c| c.has_tag_name("title"))
+                .and_then(|t| t.text())
+                .unwrap_or_default();
+            (
+                title.to_owned(),
+                n.attribute("stroke").unwrap_or_default().to_owned(),
+            )
+        })
+        .collect();
+    let expected = ["0.4", "0.4", "0.05", "0.05", "0.4", "0.4", "0.4"];
+    assert_eq!(patches.len(), expected.len(), "{patches:?}");
+    for (k, ((title, _), mu0)) in patches.iter().zip(expected).enumerate() {
+        assert_eq!(title, &format!("step {}: mu0 = {mu0}", k + 1));
+    }
+    assert_eq!(patches[0].1, patches[1].1);
+    assert_ne!(
+        patches[1].1, patches[2].1,
+        "icy and dry patches share a colour"
+    );
+    assert!(
+        svg.contains("mu0 by step from 0.05 (blue) to 0.4 (brown)") && !svg.contains("mu0 = 0.4,"),
+        "the title gives the floor's range"
+    );
+    let sim = walker(&[&["simulate", "--json", "--max-steps", "7"], &common[..]].concat());
+    assert!(
+        sim.status.success(),
+        "{}",
+        String::from_utf8_lossy(&sim.stderr)
+    );
+    let walk: serde_json::Value = serde_json::from_slice(&sim.stdout).expect("JSON");
+    assert_eq!(walk["steps"].as_array().map(Vec::len), Some(7));
+    let clash = walker(&[&["animate", "-o", "x.svg", "--mu0", "0.3"], &common[..]].concat());
+    assert_eq!(clash.status.code(), Some(2));
+}

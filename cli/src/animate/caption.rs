@@ -33,9 +33,31 @@ pub const LEGEND: &str = "blue: normal force, red: friction, orange: slip of the
 /// speed.
 #[must_use]
 pub fn title(model: &Model, speed: f64) -> String {
+    title_with(model, speed, &format!("mu0 = {}", model.mu0()))
+}
+
+/// [`title`] for a walk on a floor whose step `k` has the friction coefficient `mu0[k]`: the
+/// range of `mu0` and the colours of its ends.
+#[must_use]
+pub fn title_on_floor(model: &Model, speed: f64, mu0: &[f64]) -> String {
+    let (lo, hi) = mu0
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    let text = if hi > lo {
+        format!("mu0 by step from {lo} (blue) to {hi} (brown)")
+    } else {
+        format!("mu0 = {lo}")
+    };
+    title_with(model, speed, &text)
+}
+
+/// The title with the friction coefficient given as `mu0`.
+fn title_with(model: &Model, speed: f64, mu0: &str) -> String {
     let law = match model.friction_law() {
-        FrictionLaw::Tanh => format!("mu0 = {}, c = {} s/m", model.mu0(), model.sharpness()),
-        FrictionLaw::Coulomb => format!("Coulomb friction, mu0 = {}", model.mu0()),
+        FrictionLaw::Tanh => format!("{mu0}, c = {} s/m", model.sharpness()),
+        FrictionLaw::Coulomb => format!("Coulomb friction, {mu0}"),
     };
     let floor = if model.spec().slope.is_some() {
         format!("slope phi = {} rad", model.phi())

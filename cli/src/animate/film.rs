@@ -24,6 +24,35 @@ pub struct Mark {
     pub hi: f64,
 }
 
+/// The floor under one step's stance foot on a floor whose friction changes from step to step
+/// (`walker animate --floor`): centred on where the foot landed, reaching halfway to the
+/// neighbouring steps' landings, as distances along the floor `x / cos phi` (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Patch {
+    /// The step.
+    pub step: usize,
+    /// Where the patch begins.
+    pub from: f64,
+    /// Where it ends.
+    pub to: f64,
+    /// The step's friction coefficient.
+    pub mu0: f64,
+    /// Its shade: 0 at the walk's lowest `mu0` (icy), 1 at its highest (dry).
+    pub dry: f64,
+}
+
+impl Patch {
+    /// The colour of a patch of shade `dry`: from ice blue (0) to earth brown (1).
+    #[must_use]
+    pub fn colour(dry: f64) -> (u8, u8, u8) {
+        const ICE: (f64, f64, f64) = (90.0, 165.0, 235.0);
+        const DRY: (f64, f64, f64) = (165.0, 120.0, 75.0);
+        let d = dry.clamp(0.0, 1.0);
+        let mix = |a: f64, b: f64| (a + (b - a) * d).round() as u8;
+        (mix(ICE.0, DRY.0), mix(ICE.1, DRY.1), mix(ICE.2, DRY.2))
+    }
+}
+
 /// A walk ready to be drawn.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Film {
@@ -37,6 +66,9 @@ pub struct Film {
     pub poses: Vec<Pose>,
     /// The slip mark of each frame's stance foot, as far as it has come by that frame.
     pub marks: Vec<Mark>,
+    /// The floor's patches, one per step, where its friction changes from step to step (empty
+    /// on a uniform floor; [`Film::on_floor`]).
+    pub patches: Vec<Patch>,
     /// The line printed above the walker (which walker, its parameters).
     pub title: String,
     /// Where the walk failed, if it did ([`failure_label`]).
@@ -93,11 +125,59 @@ impl Film {
             frames,
             poses,
             marks,
+            patches: Vec::new(),
             title,
             failure: failure_label(tr),
             speed,
             hold: 1.0,
         })
+    }
+
+    /// This film on a floor whose step `k` has the friction coefficient `mu0[k]`: a patch per
+    /// drawn step, shaded from the lowest `mu0` of the drawn steps to the highest.
+    #[must_use]
+    pub fn on_floor(mut self, mu0: &[f64]) -> Self {
+        let mut landed: Vec<(usize, f64)> = Vec::new();
+        for m in &self.marks {
+            if landed.last().is_none_or(|l| l.0 != m.step) {
+                landed.push((m.step, m.landed));
+            }
+        }
+        let values: Vec<f64> = landed
+            .iter()
+            .filter_map(|&(k, _)| mu0.get(k).copied())
+            .collect();
+        let (lo, hi) = values
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                (a.min(x), b.max(x))
+            });
+        let l = self.body.l;
+        for (i, &(step, s)) in landed.iter().enumerate() {
+            let Some(&value) = mu0.get(step) else {
+                continue;
+            };
+            let back = i.checked_sub(1).map(|j| 0.5 * (s - landed[j].1));
+            let ahead = landed.get(i + 1).map(|n| 0.5 * (n.1 - s));
+            let (back, ahead) = match (back, ahead) {
+                (Some(b), Some(a)) => (b, a),
+                (Some(b), None) => (b, b.max(l)),
+                (None, Some(a)) => (a.max(l), a),
+                (None, None) => (l, l),
+            };
+            self.patches.push(Patch {
+                step,
+                from: s - back,
+                to: s + ahead,
+                mu0: value,
+                dry: if hi > lo {
+                    (value - lo) / (hi - lo)
+                } else {
+                    1.0
+                },
+            });
+        }
+        self
     }
 
     /// The last slip mark of every step up to frame `i` (the marks on the floor then).

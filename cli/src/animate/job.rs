@@ -5,10 +5,11 @@
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
+use walker::floor::FloorWalker;
 use walker::model::Model;
 use walker::sim::{SimConfig, Trajectory, WalkLimits, trajectory};
 
-use super::caption::{failure_label, title};
+use super::caption::{failure_label, title, title_on_floor};
 use super::error::AnimateError;
 use super::film::Film;
 use super::gif::animated_gif;
@@ -75,6 +76,35 @@ pub fn sample(
     initial: &[f64],
     req: &Request,
 ) -> Result<Trajectory, InputError> {
+    sample_by(req, |limits, dt, frames| {
+        Ok(trajectory(model, cfg, initial, limits, dt, frames))
+    })
+}
+
+/// [`sample`] on a floor whose friction changes from step to step: walk 0 of `walker`'s floor
+/// (a random floor's first stream), as `walker simulate --floor` walks it.
+///
+/// # Errors
+/// As [`sample`], or a step's kernels cannot be prepared (named by `flag`).
+pub fn sample_on_floor(
+    walker: &FloorWalker<'_>,
+    cfg: &SimConfig,
+    initial: &[f64],
+    req: &Request,
+    flag: &str,
+) -> Result<Trajectory, InputError> {
+    sample_by(req, |limits, dt, frames| {
+        walker
+            .trajectory(0, cfg, initial, limits, dt, frames)
+            .map_err(|e| InputError::new(flag, e.to_string()))
+    })
+}
+
+/// The walk `walk(limits, dt, max_frames)` gives for `req`'s length, sampled every `req.dt()`.
+fn sample_by(
+    req: &Request,
+    walk: impl FnOnce(&WalkLimits, f64, usize) -> Result<Trajectory, InputError>,
+) -> Result<Trajectory, InputError> {
     let max = req.max_frames();
     let (limits, max_frames) = match req.length {
         Length::Steps(n) => (
@@ -94,7 +124,7 @@ pub fn sample(
             req.frames_for(d) as usize,
         ),
     };
-    let tr = trajectory(model, cfg, initial, &limits, req.dt(), max_frames);
+    let tr = walk(&limits, req.dt(), max_frames)?;
     if let (Length::Steps(n), true) = (req.length, tr.truncated) {
         return Err(InputError::new(
             "steps",
@@ -116,17 +146,40 @@ pub fn sample(
 /// # Errors
 /// The file could not be drawn or written.
 pub fn write(model: &Model, tr: &Trajectory, req: &Request) -> Result<Written, AnimateError> {
-    let film =
-        Film::new(model, tr, req.speed, req.size, title(model, req.speed)).ok_or_else(|| {
-            InputError::new(
-                "model",
-                format!(
-                    "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
+    write_on_floor(model, tr, req, &[])
+}
+
+/// [`write()`] for a walk on a floor whose step `k` has the friction coefficient `mu0[k]`
+/// (drawn as patches under the floor line; none if `mu0` is empty).
+///
+/// # Errors
+/// As [`write()`].
+pub fn write_on_floor(
+    model: &Model,
+    tr: &Trajectory,
+    req: &Request,
+    mu0: &[f64],
+) -> Result<Written, AnimateError> {
+    let title = if mu0.is_empty() {
+        title(model, req.speed)
+    } else {
+        title_on_floor(model, req.speed, mu0)
+    };
+    let film = Film::new(model, tr, req.speed, req.size, title).ok_or_else(|| {
+        InputError::new(
+            "model",
+            format!(
+                "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
                  alpha)",
-                    model.spec().name()
-                ),
-            )
-        })?;
+                model.spec().name()
+            ),
+        )
+    })?;
+    let film = if mu0.is_empty() {
+        film
+    } else {
+        film.on_floor(mu0)
+    };
     let path = &req.output;
     let draw = |message: String| AnimateError::Draw {
         path: path.clone(),

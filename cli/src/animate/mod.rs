@@ -26,5 +26,5 @@ pub mod svg;
 pub mod view;
 
 pub use error::AnimateError;
-pub use job::{Written, animate, sample, write};
+pub use job::{Written, animate, sample, sample_on_floor, write, write_on_floor};
 pub use request::Request;

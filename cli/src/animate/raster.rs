@@ -6,7 +6,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::caption::{LEGEND, frame_label};
-use super::film::Film;
+use super::film::{Film, Patch};
 use super::geometry::{Point, Pose};
 
 /// Colour of the normal force (the SVG's `NORMAL_COLOUR`).
@@ -54,6 +54,19 @@ pub fn floor<DB: DrawingBackend>(
             BLACK.stroke_width(2),
         )
     };
+    let (c, w) = (b.phi.cos(), 0.05 * b.l);
+    for p in &f.patches {
+        let (a, z) = (p.from * c, p.to * c);
+        let (r, g, bl) = Patch::colour(p.dry);
+        area.draw(&PathElement::new(
+            vec![
+                px(f, centre, (a, b.floor_z(a) - 0.5 * w)),
+                px(f, centre, (z, b.floor_z(z) - 0.5 * w)),
+            ],
+            RGBColor(r, g, bl).stroke_width(width(f, w)),
+        ))
+        .map_err(err)?;
+    }
     area.draw(&line((x0, b.floor_z(x0)), (x1, b.floor_z(x1))))
         .map_err(err)?;
     let step = 0.25 * b.l;

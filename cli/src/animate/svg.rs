@@ -9,7 +9,7 @@
 //! below a pixel) and trailing zeros cut, which keeps a walk of a few steps near 100 KB.
 
 use super::caption::{LEGEND, frame_label};
-use super::film::Film;
+use super::film::{Film, Patch};
 use super::geometry::Point;
 
 /// Colour of the normal force (Okabe-Ito blue).
@@ -69,10 +69,36 @@ pub fn floor(f: &Film, x0: f64, x1: f64) -> String {
         ));
         x += step;
     }
-    format!(
+    let mut out = patches(f);
+    out.push_str(&format!(
         "<path d=\"{d}\" stroke=\"black\" stroke-width=\"{}\" fill=\"none\"/>\n",
         num(0.012 * b.l)
-    )
+    ));
+    out
+}
+
+/// The floor's patches of friction under the floor line, each with its step (counted from 1,
+/// as the frame labels count) and `mu0` as a tooltip, in world coordinates.
+fn patches(f: &Film) -> String {
+    let b = &f.body;
+    let (c, w) = (b.phi.cos(), 0.05 * b.l);
+    let mut s = String::new();
+    for p in &f.patches {
+        let (x0, x1) = (p.from * c, p.to * c);
+        let (r, g, bl) = Patch::colour(p.dry);
+        s.push_str(&format!(
+            "<path class=\"floor-patch\" d=\"M{} {}L{} {}\" stroke=\"rgb({r},{g},{bl})\" \
+             stroke-width=\"{}\"><title>step {}: mu0 = {}</title></path>\n",
+            num(x0),
+            num(b.floor_z(x0) - 0.5 * w),
+            num(x1),
+            num(b.floor_z(x1) - 0.5 * w),
+            num(w),
+            p.step + 1,
+            p.mu0
+        ));
+    }
+    s
 }
 
 /// The wheel's spokes around a hub at the origin with spoke 0 straight down, as a path.
