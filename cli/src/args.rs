@@ -221,6 +221,11 @@ pub enum Command {
         /// all, walks times this).
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "1000")]
         max_steps: String,
+        /// The index of the first walk: the walks are first-walk .. first-walk + walks - 1,
+        /// each on its own stream of the floor, so that a batch split into ranges gives the
+        /// same walks. A whole number; the last walk's index at most 2^63 - 1.
+        #[arg(long = "first-walk", allow_hyphen_values = true, default_value = "0")]
+        first_walk: String,
         /// Print each walk's outcome too (JSON always has them).
         #[arg(long)]
         outcomes: bool,

@@ -112,6 +112,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             phi,
             walks,
             max_steps,
+            first_walk,
             outcomes,
         } => {
             let spec = floor::floor_of(Some(&floor_file), None, None)?
@@ -119,7 +120,12 @@ fn run(cli: Cli) -> Result<(), CliError> {
             let setup = run::setup(&common, &common.overrides(None, t_set, phi)?)?;
             floor::mu0_once(&setup, &common.set, Field::Floor)?;
             let start = run::model(&setup)?.start_state();
-            let r = floor::survive_on(&setup, spec, &start, &walks, &max_steps, &common.config()?)?;
+            let counts = floor::SurviveCounts {
+                walks: &walks,
+                max_steps: &max_steps,
+                first_walk: &first_walk,
+            };
+            let r = floor::survive_on(&setup, spec, &start, &counts, &common.config()?)?;
             if common.json {
                 emit(&format!("{}\n", floor::survive_json(&r)))?;
             } else {

@@ -8,7 +8,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use walker::floor::{FloorError, FloorFile, FloorSpec, FloorWalker, SurviveReport, survive};
-use walker::request::{Field, MAX_STEPS, MAX_WALKS};
+use walker::request::{Field, MAX_STEPS, MAX_WALK_INDEX, MAX_WALKS};
 use walker::setup::Setup;
 use walker::sim::{SimConfig, Walk, WalkLimits};
 use walker::vector::Vector;
@@ -129,8 +129,19 @@ pub fn simulate_on(
         .map_err(|e| floor_error(flag, &e))
 }
 
-/// `walker survive`: `walks_text` walks of at most `max_steps_text` steps each on the floor,
-/// on all cores.
+/// The counts of `walker survive` as typed: `--walks`, `--max-steps`, `--first-walk`.
+#[derive(Clone, Copy, Debug)]
+pub struct SurviveCounts<'a> {
+    /// The number of walks.
+    pub walks: &'a str,
+    /// Each walk's step limit.
+    pub max_steps: &'a str,
+    /// The first walk's index.
+    pub first_walk: &'a str,
+}
+
+/// `walker survive`: the walks `first_walk .. first_walk + walks` of at most `max_steps`
+/// steps each on the floor, on all cores.
 ///
 /// # Errors
 /// A count out of its range or too many steps in all, or as [`walker_on`].
@@ -138,15 +149,21 @@ pub fn survive_on(
     setup: &Setup,
     floor: FloorSpec,
     start: &Vector,
-    walks_text: &str,
-    max_steps_text: &str,
+    counts: &SurviveCounts<'_>,
     cfg: &SimConfig,
 ) -> Result<SurviveReport, InputError> {
-    let walks = walker::request::count_text(Field::Walks, walks_text, 1, MAX_WALKS)?;
-    let steps = walker::request::count_text(Field::MaxSteps, max_steps_text, 1, MAX_STEPS)?;
+    let walks = walker::request::count_text(Field::Walks, counts.walks, 1, MAX_WALKS)?;
+    let steps = walker::request::count_text(Field::MaxSteps, counts.max_steps, 1, MAX_STEPS)?;
     let (walks, steps) = walker::request::survive_counts(walks as i128, steps as i128)?;
+    let first = walker::request::count_text(
+        Field::FirstWalk,
+        counts.first_walk,
+        0,
+        MAX_WALK_INDEX as usize,
+    )?;
+    let range = walker::request::walk_range(first as i128, walks)?;
     let walker = walker_on(setup, floor, "floor")?;
-    survive(&walker, cfg, start, walks, steps).map_err(|e| floor_error("floor", &e))
+    survive(&walker, cfg, start, range, steps).map_err(|e| floor_error("floor", &e))
 }
 
 /// The JSON report of `walker survive`: `{"max_steps", "outcomes": [{"walk", "steps",

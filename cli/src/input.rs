@@ -56,6 +56,7 @@ pub fn flag_of(field: &Field) -> String {
         Field::TrajectoryDt => "trajectory-dt".into(),
         Field::MaxFrames => "max-frames".into(),
         Field::Walks => "walks".into(),
+        Field::FirstWalk => "first-walk".into(),
         Field::Floor => "floor".into(),
         Field::Mu0Steps => "mu0-steps".into(),
         Field::From => "from".into(),

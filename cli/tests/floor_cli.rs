@@ -1,7 +1,8 @@
 //! `walker simulate --floor | --mu0-steps` and `walker survive` through the built binary:
 //! a floor at the walker's own mu0 changes nothing but the records' `floor`, conflicting or
-//! bad floors exit 2 naming the flag (and the file's line and column), and a batch's report is
-//! the same on one thread and on all cores.
+//! bad floors exit 2 naming the flag (and the file's line and column), a batch's report is
+//! the same on one thread and on all cores, and a range of walks (`--first-walk`) has the
+//! batch's walks of those indices.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -157,6 +158,19 @@ fn survive_checks_its_counts_and_floor() {
             vec!["--walks", "100000", "--max-steps", "1001"],
             "invalid walks: the request has 100100000 steps in all",
         ),
+        (
+            vec!["--first-walk", "-1"],
+            "invalid first-walk: \"-1\": must be a whole number in [0, 9223372036854775807]",
+        ),
+        (
+            vec!["--first-walk", "x"],
+            "invalid first-walk: \"x\": must be a whole number",
+        ),
+        (
+            // The last walk's index would be 2^63.
+            vec!["--walks", "2", "--first-walk", "9223372036854775807"],
+            "invalid first-walk: 9223372036854775807: must be a whole number in [0, 9223372036854775806]",
+        ),
     ] {
         let o = walker(
             &[
@@ -216,4 +230,50 @@ fn survive_reports_the_same_batch_on_one_thread_and_on_all_cores() {
         text.contains("95% interval") || text.contains("with 95% confidence"),
         "{text}"
     );
+}
+
+#[test]
+fn survive_with_first_walk_runs_the_batchs_walks_of_those_indices() {
+    let file = floor_file(
+        "markov-range.toml",
+        "kind = \"random\"\nseed = 9\n[mu0]\ndistribution = \"markov\"\ndry = 0.3\nicy = 0.05\n\
+         dry_length = 20\nicy_length = 1.5\n",
+    );
+    let f = file.display().to_string();
+    let run = |walks: &str, first: Option<&str>| -> serde_json::Value {
+        let mut args = vec![
+            "survive",
+            "--scene",
+            "passive-slope",
+            "--floor",
+            &f,
+            "--walks",
+            walks,
+            "--max-steps",
+            "30",
+            "--json",
+        ];
+        if let Some(first) = first {
+            args.extend(["--first-walk", first]);
+        }
+        let o = walker(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        serde_json::from_slice(&o.stdout).expect("JSON")
+    };
+    let whole = run("16", None);
+    assert_eq!(run("16", Some("0")), whole);
+    let part = run("5", Some("7"));
+    let indices: Vec<u64> = part["outcomes"]
+        .as_array()
+        .expect("outcomes")
+        .iter()
+        .map(|o| o["walk"].as_u64().expect("an index"))
+        .collect();
+    assert_eq!(indices, (7..12).collect::<Vec<u64>>());
+    let whole_outcomes = whole["outcomes"].as_array().expect("outcomes");
+    assert_eq!(
+        part["outcomes"].as_array(),
+        Some(&whole_outcomes[7..12].to_vec())
+    );
+    assert_eq!(part["survival"]["walks"], 5);
 }

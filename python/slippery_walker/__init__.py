@@ -11,6 +11,9 @@ command line's flags and return NumPy arrays:
   ``t_set`` or ``phi``, procedures (P1a)-(P5a) and (P1b)-(P5b).
 - :func:`walk_points` -- independent walks at the points of a parameter grid (one process);
   :func:`slippery_walker.dask.grid_sweep` runs the same on a Dask cluster.
+- :func:`survive` -- many seeded walks on a floor whose ``mu0`` changes between steps, and
+  how far the walker gets; :func:`survival` -- the statistics of their outcomes;
+  :func:`slippery_walker.dask.survival_grid` runs batches of them on a Dask cluster.
 - :func:`fixed_point` -- the limit cycle and its Floquet multipliers.
 - :func:`describe` -- a walker's parameters, state components, inputs and start.
 
@@ -53,6 +56,7 @@ __all__ = [
     "describe",
     "fixed_point",
     "simulate",
+    "survival",
     "survive",
     "sweep",
     "walk_points",
@@ -378,11 +382,28 @@ def _floor(floor: Any) -> Any:
     raise _type_error("floor", floor, "a floor file's path or a dict")
 
 
+def _survive_options(
+    *, floor: Any, scene: Any = None, model: Any = None, set: Any = None, init: Any = None,
+    t_set: Any = None, omega0: Any = None, phi: Any = None, c: Any = None, friction: Any = None,
+    impact: Any = None, method: Any = "dop853", rtol: Any = None, atol: Any = None,
+) -> Dict[str, Any]:
+    """The core's arguments of :func:`survive` but the counts, checked for their types."""
+    return dict(
+        **_walker(scene, model, set), init=_pairs("init", init), floor=_floor(floor),
+        t_set=_float("t_set", t_set), omega0=_float("omega0", omega0), phi=_float("phi", phi),
+        c=_float("c", c), **_options(method, rtol, atol, friction, impact))
+
+
+MAX_WALK_INDEX: int = 2**63 - 1
+"""The largest index a walk may have (``first_walk + walks - 1``): the largest seed."""
+
+
 def survive(
     *,
     floor: Floor,
     walks: int = 100,
     max_steps: int = 1000,
+    first_walk: int = 0,
     scene: Optional[Path] = None,
     model: Optional[Path] = None,
     set: Values = None,
@@ -411,6 +432,12 @@ def survive(
         walks: the number of walks, in [1, 100000].
         max_steps: each walk's step limit, in [1, :data:`MAX_STEPS`]; ``walks * max_steps`` at
             most 1e8.
+        first_walk: the first walk's index: the walks are ``first_walk`` to ``first_walk +
+            walks - 1``, each on its own stream of the floor, so that the walks ``a..b`` of a
+            batch are the batch with ``first_walk=a, walks=b-a`` (as ``walker survive
+            --first-walk``); the last index at most :data:`MAX_WALK_INDEX`. Ranges of one
+            batch, their outcomes put in walk order, give the batch's statistics by
+            :func:`survival` (:func:`slippery_walker.dask.survival_grid` does this on Dask).
         scene, model, set, init, t_set, omega0, phi, c, friction, impact, method, rtol, atol:
             as :func:`simulate` (``mu0`` is the floor's; ``set`` may not give it).
 
@@ -426,13 +453,51 @@ def survive(
         TypeError: a floor (or a value in it) of a type no floor file has.
     """
     text = _core.survive(
-        **_walker(scene, model, set), init=_pairs("init", init), floor=_floor(floor),
-        t_set=_float("t_set", t_set), omega0=_float("omega0", omega0), phi=_float("phi", phi),
-        c=_float("c", c), **_options(method, rtol, atol, friction, impact),
+        **_survive_options(floor=floor, scene=scene, model=model, set=set, init=init,
+                           t_set=t_set, omega0=omega0, phi=phi, c=c, friction=friction,
+                           impact=impact, method=method, rtol=rtol, atol=atol),
         walks=_int("walks", walks, 1, 100_000),
         max_steps=_int("max_steps", max_steps, 1, MAX_STEPS),
+        first_walk=_int("first_walk", first_walk, 0, MAX_WALK_INDEX),
     )
     return json.loads(text)
+
+
+def survival(outcomes: Sequence[Mapping[str, Any]]) -> Dict[str, Any]:
+    """The survival statistics of walks' outcomes: :func:`survive`'s ``survival`` of a batch
+    with these outcomes, computed by the same library function (``walker::floor::survival``),
+    so that the outcomes of a batch's ranges of walks (``first_walk``), put back in walk order,
+    give exactly the whole batch's statistics.
+
+    Args:
+        outcomes: a list of :func:`survive`'s outcomes, dicts ``{"walk": index, "steps":
+            completed steps, "failure": a failure's name or None}``, at least one.
+
+    Returns:
+        A dict as ``survive(...)["survival"]``: ``walks``, ``failures``, ``censored``,
+        ``curve``, ``mfpt``, ``failures_by_kind``.
+
+    Raises:
+        ValueError: no outcome, or a value out of its range (named ``outcomes[i]['steps']``).
+        ArgumentTypeError: an outcome that is not such a dict, or a value of the wrong type.
+    """
+    if isinstance(outcomes, (str, bytes, Mapping)) or not isinstance(outcomes, Sequence):
+        raise _type_error("outcomes", outcomes, "a list of survive's outcomes (dicts)")
+    walks: List[int] = []
+    steps: List[int] = []
+    failures: List[Optional[str]] = []
+    for i, o in enumerate(outcomes):
+        name = f"outcomes[{i}]"
+        if not isinstance(o, Mapping):
+            raise _type_error(name, o, "a dict with keys walk, steps, failure")
+        missing = [k for k in ("walk", "steps", "failure") if k not in o]
+        if missing:
+            raise ValueError(f"invalid {name}: missing key {missing[0]!r}: an outcome has "
+                             "walk, steps and failure")
+        walks.append(_int(f"{name}['walk']", o["walk"], 0, MAX_WALK_INDEX))
+        steps.append(_int(f"{name}['steps']", o["steps"], 0, MAX_STEPS))
+        failures.append(_str(f"{name}['failure']", o["failure"]))
+    return json.loads(_core.survival(walks=walks, steps=steps, failures=failures))
 
 
 @dataclass(frozen=True)

@@ -119,4 +119,13 @@ def survive(
     atol: Optional[float],
     walks: int,
     max_steps: int,
+    first_walk: int = ...,
+    threads: Optional[int] = ...,
+    check_only: bool = ...,
+) -> str: ...
+def survival(
+    *,
+    walks: List[int],
+    steps: List[int],
+    failures: List[Optional[str]],
 ) -> str: ...

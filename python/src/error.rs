@@ -92,6 +92,7 @@ pub fn keyword_of(field: &Field) -> String {
         Field::TrajectoryDt => "dt".into(),
         Field::MaxFrames => "max_frames".into(),
         Field::Walks => "walks".into(),
+        Field::FirstWalk => "first_walk".into(),
         Field::Floor => "floor".into(),
         Field::Mu0Steps => "mu0_steps".into(),
         Field::From => "from_".into(),

@@ -1,20 +1,17 @@
 //! Floors for Python (`docs/floors.md`): `floor=` of `simulate` and `survive`, a floor file's
 //! path or a dict of the file's structure. A dict is written as the TOML of a floor file and
 //! read by the file's parser (`walker_scene::floor`), so that it gets exactly a file's checks;
-//! an error names the key (`floor['mu0.hi']`). Then `survive(...)`: many seeded walks on the
-//! floor on all cores, as `walker survive --json`, with the GIL released and Ctrl-C seen.
+//! an error names the key (`floor['mu0.hi']`). `survive(...)`, the walks on a floor, is
+//! `survive.rs`.
 
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
-use walker::floor::{FloorFile, FloorFileError, FloorSpec, FloorWalker, survive_stoppable};
+use walker::floor::{FloorFile, FloorFileError, FloorSpec, FloorWalker};
 use walker::request::{Field, RequestError};
 use walker::setup::Setup;
 
-use crate::chunks::{asked, stoppable};
 use crate::error::ArgError;
-use crate::options;
-use crate::walker_args::{self, overrides};
 
 /// The deepest nesting of lists and tables a floor dict may have (a floor file has two).
 const MAX_DEPTH: usize = 4;
@@ -158,55 +155,4 @@ pub fn mu0_once(setup: &Setup, mu0: Option<f64>, set: &[(String, f64)]) -> Resul
 /// The floor cannot set the walker's friction (named `floor`).
 pub fn walker_on(setup: &Setup, floor: FloorSpec) -> Result<FloorWalker<'_>, ArgError> {
     FloorWalker::new(setup, floor).map_err(|e| ArgError::new("floor", e.to_string()))
-}
-
-/// Many seeded walks on a floor (see the Python docstring of `slippery_walker.survive`): the
-/// JSON text of `walker survive --json`.
-///
-/// # Errors
-/// `ValueError` naming a bad argument and its valid range; `KeyboardInterrupt` on Ctrl-C.
-#[pyfunction]
-#[pyo3(signature = (*, scene, model, set, init, floor, t_set, omega0, phi, c, friction,
-    impact, method, rtol, atol, walks, max_steps))]
-#[allow(clippy::too_many_arguments)]
-pub fn survive(
-    py: Python<'_>,
-    scene: Option<&str>,
-    model: Option<&str>,
-    set: Vec<(String, f64)>,
-    init: Vec<(String, f64)>,
-    floor: &Bound<'_, PyAny>,
-    t_set: Option<f64>,
-    omega0: Option<f64>,
-    phi: Option<f64>,
-    c: Option<f64>,
-    friction: Option<&str>,
-    impact: Option<&str>,
-    method: &str,
-    rtol: Option<f64>,
-    atol: Option<f64>,
-    walks: i64,
-    max_steps: i64,
-) -> PyResult<String> {
-    let spec = floor_spec(floor)?;
-    let (walks, max_steps) =
-        walker::request::survive_counts(i128::from(walks), i128::from(max_steps))
-            .map_err(ArgError::from)?;
-    let ov = overrides(None, c, t_set, phi, friction, impact)?;
-    let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
-    mu0_once(&setup, None, &set)?;
-    walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
-    let cfg = options::config(method, rtol, atol)?;
-    let m = walker_args::model(&setup)?;
-    let start = walker_args::start(&m, &init)?;
-    let fw = walker_on(&setup, spec)?;
-    let report = stoppable(py, |stop| {
-        survive_stoppable(&fw, &cfg, &start, walks, max_steps, &|| asked(stop))
-    })?
-    .map_err(|e| ArgError::new("floor", e.to_string()))?;
-    let Some(report) = report else {
-        return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(()));
-    };
-    serde_json::to_string(&report)
-        .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))
 }

@@ -14,7 +14,8 @@
 //! `walker_args.rs` (the walker: scene or model, parameters, start), `table.rs` (results as
 //! columns), `chunks.rs` (work in chunks between checks for Ctrl-C), then one file per
 //! function: `simulate.rs`, `sweep.rs`, `points.rs`, `fixed_point.rs`, `describe.rs`,
-//! `floor.rs` (`floor=` of `simulate`, and `survive`).
+//! `floor.rs` (`floor=` of `simulate` and `survive`), `survive.rs` (`survive`, and `survival`
+//! of outcomes gathered from ranges of a batch).
 
 pub mod chunks;
 pub mod describe;
@@ -24,6 +25,7 @@ pub mod floor;
 pub mod options;
 pub mod points;
 pub mod simulate;
+pub mod survive;
 pub mod sweep;
 pub mod table;
 pub mod walker_args;
@@ -40,6 +42,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(points::walk_points, m)?)?;
     m.add_function(wrap_pyfunction!(fixed_point::fixed_point, m)?)?;
     m.add_function(wrap_pyfunction!(describe::describe, m)?)?;
-    m.add_function(wrap_pyfunction!(floor::survive, m)?)?;
+    m.add_function(wrap_pyfunction!(survive::survive, m)?)?;
+    m.add_function(wrap_pyfunction!(survive::survival, m)?)?;
     Ok(())
 }

@@ -3,6 +3,8 @@
 library functions on the same inputs; see ``test_cli_equality.py``), and a floor given as a
 dict gets a floor file's checks, its errors naming the key."""
 
+import json
+
 import pytest
 import slippery_walker as sw
 from conftest import ROOT, cli_json
@@ -101,3 +103,50 @@ def test_survive_counts_out_of_range_name_their_keyword():
         sw.survive(floor=MARKOV, walks=0, max_steps=1)
     with pytest.raises(ValueError, match="invalid walks"):
         sw.survive(floor=MARKOV, walks=100_000, max_steps=1001)
+
+
+def test_survive_from_first_walk_has_the_batchs_walks_of_those_indices():
+    whole = sw.survive(scene="passive-slope", floor=MARKOV, walks=16, max_steps=30)
+    part = sw.survive(scene="passive-slope", floor=MARKOV, walks=5, max_steps=30, first_walk=7)
+    assert part["outcomes"] == whole["outcomes"][7:12]
+    assert [o["walk"] for o in part["outcomes"]] == list(range(7, 12))
+
+
+def test_survival_of_a_batchs_outcomes_gathered_from_ranges_is_the_batchs_survival():
+    whole = sw.survive(scene="passive-slope", floor=MARKOV, walks=16, max_steps=30)
+    outcomes = []
+    for a, b in [(0, 1), (1, 9), (9, 16)]:
+        outcomes += sw.survive(scene="passive-slope", floor=MARKOV, walks=b - a, max_steps=30,
+                               first_walk=a)["outcomes"]
+    assert outcomes == whole["outcomes"]
+    # The same library function on the same outcomes: the same digits, not merely close ones.
+    assert json.dumps(sw.survival(outcomes)) == json.dumps(whole["survival"])
+    assert 0 < whole["survival"]["failures"] < 16
+
+
+@pytest.mark.parametrize("first_walk, error, text", [
+    (-1, ValueError, "invalid first_walk: -1: must be in [0, 9223372036854775807]"),
+    (2**63 - 2, ValueError, "invalid first_walk: 9223372036854775806: must be a whole number "
+                            "in [0, 9223372036854775805]"),
+    (1.0, TypeError, "invalid first_walk: 1.0 (float): must be an integer"),
+])
+def test_survive_refuses_a_first_walk_out_of_range_naming_it(first_walk, error, text):
+    with pytest.raises(error) as e:
+        sw.survive(floor=MARKOV, scene="passive-slope", walks=3, max_steps=1,
+                   first_walk=first_walk)
+    assert str(e.value) == text
+
+
+@pytest.mark.parametrize("outcomes, error, text", [
+    ([], ValueError, "invalid outcomes: empty: must hold at least one walk's outcome"),
+    ("walks", TypeError, "invalid outcomes: 'walks' (str): must be a list of survive's outcomes"),
+    ([{"walk": 0, "steps": 3}], ValueError, "invalid outcomes[0]: missing key 'failure'"),
+    ([{"walk": 0, "steps": 3, "failure": None}, {"walk": 1, "steps": -1, "failure": None}],
+     ValueError, "invalid outcomes[1]['steps']: -1: must be in [0, 1000000]"),
+    ([{"walk": 0, "steps": 3, "failure": 7}], TypeError, "invalid outcomes[0]['failure']: 7"),
+    ([3], TypeError, "invalid outcomes[0]: 3 (int): must be a dict"),
+])
+def test_survival_refuses_bad_outcomes_naming_them(outcomes, error, text):
+    with pytest.raises(error) as e:
+        sw.survival(outcomes)
+    assert str(e.value).startswith(text)

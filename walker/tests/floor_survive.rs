@@ -1,11 +1,11 @@
 //! Batches of walks on random floors (`walker::floor::survive`): the same walks and statistics
-//! on any number of threads, and sane statistics where every walk fails at once and where
-//! none fails.
+//! on any number of threads and split into ranges of walks, and sane statistics where every
+//! walk fails at once and where none fails.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use walker::floor::{
-    Distribution, FloorSpec, FloorWalker, SurviveReport, survive, survive_stoppable,
+    Distribution, FloorSpec, FloorWalker, SurviveReport, survival, survive, survive_stoppable,
 };
 use walker::setup::Setup;
 use walker::sim::SimConfig;
@@ -21,7 +21,14 @@ fn batch(floor: FloorSpec, walks: usize, max_steps: usize) -> SurviveReport {
     let setup = Setup::passive_slope().expect("the built-in scene");
     let walker = FloorWalker::new(&setup, floor).expect("floor");
     let start = setup.model().expect("model").start_state();
-    survive(&walker, &SimConfig::default(), &start, walks, max_steps).expect("walks")
+    survive(
+        &walker,
+        &SimConfig::default(),
+        &start,
+        0..walks as u64,
+        max_steps,
+    )
+    .expect("walks")
 }
 
 #[test]
@@ -104,12 +111,47 @@ fn a_batch_that_is_never_stopped_is_the_batch_and_a_stopped_one_is_abandoned() {
     let walker = FloorWalker::new(&setup, floor.clone()).expect("floor");
     let start = setup.model().expect("model").start_state();
     let cfg = SimConfig::default();
-    let never = survive_stoppable(&walker, &cfg, &start, 4, 10, &|| false).expect("walks");
+    let never = survive_stoppable(&walker, &cfg, &start, 0..4, 10, &|| false).expect("walks");
     assert_eq!(never, Some(batch(floor, 4, 10)));
     // Asked to stop before the third step any walk takes: the batch is abandoned, not
     // reported with walks cut short as if they had ended on their own.
     let asked = AtomicUsize::new(0);
     let stop = || asked.fetch_add(1, Ordering::Relaxed) >= 2;
-    let stopped = survive_stoppable(&walker, &cfg, &start, 4, 10, &stop).expect("walks");
+    let stopped = survive_stoppable(&walker, &cfg, &start, 0..4, 10, &stop).expect("walks");
     assert_eq!(stopped, None);
+}
+
+#[test]
+fn a_batch_split_into_ranges_of_walks_has_the_batchs_walks_and_statistics() {
+    let setup = Setup::passive_slope().expect("the built-in scene");
+    let floor = FloorSpec::Random {
+        seed: 11,
+        mu0: Distribution::Markov {
+            dry: 0.3,
+            icy: 0.05,
+            dry_length: 30.0,
+            icy_length: 1.5,
+        },
+    };
+    let walker = FloorWalker::new(&setup, floor).expect("floor");
+    let start = setup.model().expect("model").start_state();
+    let cfg = SimConfig::default();
+    let whole = survive(&walker, &cfg, &start, 0..10, 20).expect("walks");
+    for cuts in [vec![0, 10], vec![0, 3, 10], vec![0, 1, 2, 7, 9, 10]] {
+        let mut outcomes = Vec::new();
+        for w in cuts.windows(2) {
+            let part = survive(&walker, &cfg, &start, w[0]..w[1], 20).expect("walks");
+            // A range's walks are the batch's walks of those indices.
+            assert_eq!(part.outcomes, whole.outcomes[w[0] as usize..w[1] as usize]);
+            outcomes.extend(part.outcomes);
+        }
+        let json = |s: &walker::floor::Survival| serde_json::to_string(s).expect("json");
+        assert_eq!(
+            json(&survival(&outcomes)),
+            json(&whole.survival),
+            "{cuts:?}"
+        );
+    }
+    // Some walks fail and some reach the limit, so the statistics are not trivial.
+    assert!(whole.survival.failures > 0 && whole.survival.censored > 0);
 }

@@ -1,7 +1,11 @@
 //! Many seeded walks on a floor ([`survive`]): walk `i` runs on the floor's stream `i`, each
 //! up to a step limit, on all cores; the outcomes in walk order and their survival statistics.
 //! The walks are independent and collected in order, so the result does not depend on the
-//! number of threads.
+//! number of threads. A batch is any range of walks: the walks `a..b` of a batch are the same
+//! as a batch of those walks alone, so a large batch can be split into ranges (run anywhere)
+//! whose outcomes, put back in order, give the statistics of the whole ([`survival`]).
+
+use std::ops::Range;
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -25,10 +29,10 @@ pub struct SurviveReport {
     pub survival: Survival,
 }
 
-/// `walks` walks of `walker` from `initial`, walk `i` on the floor's stream `i`, each of at
-/// most `max_steps` steps, run on rayon's threads (all cores unless the caller installs a pool
-/// of its own). Check `walks` and `max_steps` first with
-/// [`crate::request::survive_counts`].
+/// The walks `walks` (their indices, `0..n` for a batch of `n`) of `walker` from `initial`,
+/// walk `i` on the floor's stream `i`, each of at most `max_steps` steps, run on rayon's
+/// threads (all cores unless the caller installs a pool of its own). Check the counts first
+/// with [`crate::request::survive_counts`] and [`crate::request::walk_range`].
 ///
 /// # Errors
 /// A step's kernels cannot be prepared (the first such walk's error).
@@ -36,7 +40,7 @@ pub fn survive(
     walker: &FloorWalker<'_>,
     cfg: &SimConfig,
     initial: &[f64],
-    walks: usize,
+    walks: Range<u64>,
     max_steps: usize,
 ) -> Result<SurviveReport, FloorError> {
     Ok(
@@ -59,7 +63,7 @@ pub fn survive_stoppable(
     walker: &FloorWalker<'_>,
     cfg: &SimConfig,
     initial: &[f64],
-    walks: usize,
+    walks: Range<u64>,
     max_steps: usize,
     stop: &(dyn Fn() -> bool + Sync),
 ) -> Result<Option<SurviveReport>, FloorError> {
@@ -67,7 +71,7 @@ pub fn survive_stoppable(
         max_steps,
         ..WalkLimits::default()
     };
-    let outcomes = (0..walks as u64)
+    let outcomes = walks
         .into_par_iter()
         .map(|i| {
             let Some(w) = walker.walk_stoppable(i, cfg, initial, &limits, stop)? else {

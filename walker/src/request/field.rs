@@ -73,6 +73,9 @@ pub enum Field {
     Init(String),
     /// The number of walks of a batch (`survive`).
     Walks,
+    /// The index of the first walk of a batch (`survive`): walk `first_walk + i` runs on the
+    /// floor's stream `first_walk + i`.
+    FirstWalk,
     /// A floor file.
     Floor,
     /// A floor given as a list of `mu0` per step.
@@ -104,6 +107,7 @@ impl Field {
             Field::Parameter(n) | Field::StartParameter(n) => super::shown::name(n),
             Field::Init(n) => format!("init {}", super::shown::name(n)),
             Field::Walks => "walks".into(),
+            Field::FirstWalk => "first_walk".into(),
             Field::Floor => "floor".into(),
             Field::Mu0Steps => "mu0_steps".into(),
         }

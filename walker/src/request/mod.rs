@@ -31,6 +31,7 @@
 //! | start component | `--init NAME=VALUE` | `init={name: value}` | a coordinate or velocity, finite, once; the stance foot on the floor and moving along it | repeated: the last won silently; the command line walked a foot off the floor |
 //! | start parameter | `--omega0` | `omega0` | finite (`> 0` for a fixed point), its range | checked |
 //! | walks of a batch | `--walks` (survive) | | whole, `[1, 10^5]` ([`MAX_WALKS`]), at most `10^8` steps in all ([`MAX_SURVIVE_STEPS`]) | new |
+//! | first walk of a batch | `--first-walk` (survive) | `first_walk` | whole, the last walk's index at most `2^63 - 1` ([`walk_range`]) | new |
 //! | a floor | `--floor`, `--mu0-steps` | | one of them, not with `--mu0` ([`floor_once`]); the file's own checks in `walker_scene::floor` | new |
 //!
 //! Inputs only one front end has are checked there: `walker animate`'s `--steps`, `--speed`,
@@ -80,5 +81,7 @@ pub use limits::{
 };
 pub use parameters::{distinct, distinct_fields, parameter_of, role_parameter};
 pub use start::{on_the_floor, start, start_components};
-pub use survive::{MAX_SURVIVE_STEPS, MAX_WALKS, floor_once, survive_counts};
+pub use survive::{
+    MAX_SURVIVE_STEPS, MAX_WALK_INDEX, MAX_WALKS, floor_once, survive_counts, walk_range,
+};
 pub use sweep::{MAX_SWEEP_CHAINS, MAX_SWEEP_POINTS, SweepRange};

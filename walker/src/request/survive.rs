@@ -33,6 +33,22 @@ pub fn survive_counts(walks: i128, max_steps: i128) -> Result<(usize, usize), Re
     Ok((walks, steps))
 }
 
+/// The largest index a walk of a batch may have: the largest seed, `2^63 - 1`, so that a
+/// walk's index is a whole number in the same range wherever it is written (JSON, Python).
+pub const MAX_WALK_INDEX: u64 = i64::MAX as u64;
+
+/// The walks of a batch that starts at walk `first_walk` and has `walks` walks (already
+/// checked by [`survive_counts`]): `first_walk` in `[0, MAX_WALK_INDEX + 1 - walks]`, so that
+/// the last walk's index is at most [`MAX_WALK_INDEX`].
+///
+/// # Errors
+/// `first_walk` outside its range ([`Field::FirstWalk`]).
+pub fn walk_range(first_walk: i128, walks: usize) -> Result<std::ops::Range<u64>, RequestError> {
+    let high = MAX_WALK_INDEX + 1 - (walks as u64).min(MAX_WALK_INDEX);
+    let first = count(Field::FirstWalk, first_walk, 0, high as usize)? as u64;
+    Ok(first..first + walks as u64)
+}
+
 /// Checks that a floor is given one way: a floor file (`floor`), a list of `mu0` per step
 /// (`mu0_steps`), and a uniform `mu0` (by its role) are exclusive, since each sets `mu0`.
 ///
@@ -77,6 +93,19 @@ mod tests {
         }
         let e = survive_counts(100_000, 1001).expect_err("too many steps");
         assert!(e.to_string().contains("at most 100000000"), "{e}");
+    }
+
+    #[test]
+    fn a_walk_range_starts_at_first_walk_and_ends_at_the_largest_index() {
+        assert_eq!(walk_range(0, 10), Ok(0..10));
+        assert_eq!(walk_range(30, 10), Ok(30..40));
+        let last = i128::from(MAX_WALK_INDEX);
+        assert_eq!(walk_range(last, 1), Ok(MAX_WALK_INDEX..MAX_WALK_INDEX + 1));
+        for (first, walks) in [(-1, 1), (last, 2), (last + 1, 1), (i128::MAX, 1)] {
+            let e = walk_range(first, walks).expect_err("out of range");
+            assert_eq!(e.field(), &Field::FirstWalk, "{e}");
+            assert!(e.to_string().contains("first_walk"), "{e}");
+        }
     }
 
     #[test]
