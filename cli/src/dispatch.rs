@@ -142,6 +142,33 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 emit(&text)?;
             }
         }
+        Command::Mfpt {
+            common,
+            floor: floor_file,
+            t_set,
+            phi,
+            mesh,
+            samples,
+            box_scale,
+            half_widths,
+        } => {
+            let opts = crate::mfpt::options(
+                &mesh,
+                &samples,
+                box_scale.as_deref(),
+                half_widths.as_deref(),
+            )?;
+            let spec = floor::floor_of(Some(&floor_file), None, None)?
+                .ok_or_else(|| InputError::new("floor", "a floor file is required"))?;
+            let setup = run::setup(&common, &common.overrides(None, t_set, phi)?)?;
+            floor::mu0_once(&setup, &common.set, Field::Floor)?;
+            let r = crate::mfpt::mfpt_on(&setup, spec, &opts, &common.config()?)?;
+            if common.json {
+                emit(&format!("{}\n", crate::mfpt::mfpt_json(&r)))?;
+            } else {
+                emit(&crate::mfpt::mfpt_text(&r))?;
+            }
+        }
         Command::Sweep {
             common,
             param,
