@@ -258,6 +258,14 @@ pub enum Command {
         /// > 0; not with --box-scale.
         #[arg(long = "half-widths", allow_hyphen_values = true)]
         half_widths: Option<String>,
+        /// Also walk this many times from the fixed point (Monte Carlo, as `survive`), for
+        /// a check of the mesh from the same start: a whole number in [1, 100000].
+        #[arg(long, allow_hyphen_values = true)]
+        walks: Option<String>,
+        /// The step limit of each of those walks: a whole number in [1, 1000000] (at most
+        /// 1e8 steps in all).
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "1000")]
+        max_steps: String,
     },
     /// Sweep a run-time parameter (mu0 by default: procedures P1a-P5a / P1b-P5b).
     Sweep {

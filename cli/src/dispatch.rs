@@ -151,6 +151,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
             samples,
             box_scale,
             half_widths,
+            walks,
+            max_steps,
         } => {
             let opts = crate::mfpt::options(
                 &mesh,
@@ -162,11 +164,15 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 .ok_or_else(|| InputError::new("floor", "a floor file is required"))?;
             let setup = run::setup(&common, &common.overrides(None, t_set, phi)?)?;
             floor::mu0_once(&setup, &common.set, Field::Floor)?;
-            let r = crate::mfpt::mfpt_on(&setup, spec, &opts, &common.config()?)?;
+            let check = walks
+                .as_deref()
+                .map(|w| crate::mfpt::walk_counts(w, &max_steps))
+                .transpose()?;
+            let (r, mc) = crate::mfpt::mfpt_on(&setup, spec, &opts, check, &common.config()?)?;
             if common.json {
-                emit(&format!("{}\n", crate::mfpt::mfpt_json(&r)))?;
+                emit(&format!("{}\n", crate::mfpt::mfpt_json(&r, mc.as_ref())))?;
             } else {
-                emit(&crate::mfpt::mfpt_text(&r))?;
+                emit(&crate::mfpt::mfpt_text(&r, mc.as_ref()))?;
             }
         }
         Command::Sweep {

@@ -5,11 +5,12 @@
 
 use std::fmt::Write as _;
 
-use walker::floor::FloorSpec;
 use walker::floor::mesh::{
     MAX_POINTS, MAX_SAMPLES, MeshBox, MeshError, MeshOptions, MeshReport, mesh_mfpt,
 };
-use walker::request::shown;
+use walker::floor::{FloorSpec, Survival, survive};
+use walker::poincare::Section;
+use walker::request::{Field, MAX_STEPS, MAX_WALKS, shown};
 use walker::setup::Setup;
 use walker::sim::SimConfig;
 
@@ -96,7 +97,21 @@ pub fn options(
     Ok(opts)
 }
 
-/// `walker mfpt`: the mesh estimate of the walker of `setup` on `floor`.
+/// The walks and the step limit of `--walks` and `--max-steps`.
+///
+/// # Errors
+/// A count outside its range, or too many steps in all.
+pub fn walk_counts(walks: &str, max_steps: &str) -> Result<(usize, usize), InputError> {
+    let walks = walker::request::count_text(Field::Walks, walks, 1, MAX_WALKS)?;
+    let steps = walker::request::count_text(Field::MaxSteps, max_steps, 1, MAX_STEPS)?;
+    Ok(walker::request::survive_counts(
+        walks as i128,
+        steps as i128,
+    )?)
+}
+
+/// `walker mfpt`: the mesh estimate of the walker of `setup` on `floor`, and, with `check`
+/// (walks, step limit), the statistics of that many walks from the mesh's fixed point.
 ///
 /// # Errors
 /// The floor cannot carry the walker, a `steps` floor, a mesh too large, or no gait.
@@ -104,17 +119,40 @@ pub fn mfpt_on(
     setup: &Setup,
     floor: FloorSpec,
     opts: &MeshOptions,
+    check: Option<(usize, usize)>,
     cfg: &SimConfig,
-) -> Result<MeshReport, InputError> {
+) -> Result<(MeshReport, Option<Survival>), InputError> {
     let walker = walker_on(setup, floor, "floor")?;
-    mesh_mfpt(&walker, cfg, opts).map_err(|e| named(&e))
+    let r = mesh_mfpt(&walker, cfg, opts).map_err(|e| named(&e))?;
+    let Some((walks, steps)) = check else {
+        return Ok((r, None));
+    };
+    let model = crate::run::model(setup)?;
+    let start = Section::of(&model).embed(&r.centre);
+    let mc = survive(&walker, cfg, &start, walks, steps)
+        .map_err(|e| InputError::new("floor", e.to_string()))?;
+    Ok((r, Some(mc.survival)))
 }
 
-/// The JSON report of `walker mfpt` (the fields of [`MeshReport`]; `null` for an infinite
-/// time).
+/// The JSON report of `walker mfpt`: the fields of [`MeshReport`] (`null` for an infinite
+/// time), and with `--walks` `"monte_carlo"`, the statistics of those walks (`walks`,
+/// `failures`, `censored`, `mfpt`, `failures_by_kind`; no curve).
 #[must_use]
-pub fn mfpt_json(r: &MeshReport) -> serde_json::Value {
-    serde_json::to_value(r).unwrap_or_default()
+pub fn mfpt_json(r: &MeshReport, mc: Option<&Survival>) -> serde_json::Value {
+    let mut v = serde_json::to_value(r).unwrap_or_default();
+    if let (Some(mc), Some(map)) = (mc, v.as_object_mut()) {
+        map.insert(
+            "monte_carlo".to_owned(),
+            serde_json::json!({
+                "walks": mc.walks,
+                "failures": mc.failures,
+                "censored": mc.censored,
+                "mfpt": mc.mfpt,
+                "failures_by_kind": mc.failures_by_kind,
+            }),
+        );
+    }
+    v
 }
 
 /// A number of steps, or "infinite".
@@ -124,7 +162,7 @@ fn steps(x: Option<f64>) -> String {
 
 /// A short text report of `walker mfpt`.
 #[must_use]
-pub fn mfpt_text(r: &MeshReport) -> String {
+pub fn mfpt_text(r: &MeshReport, mc: Option<&Survival>) -> String {
     let mut out = String::new();
     let coords: Vec<String> = r
         .section
@@ -164,5 +202,18 @@ pub fn mfpt_text(r: &MeshReport) -> String {
         "absorption by a fall (not by leaving the box): {:.4}; largest distance from the section: {:.1e}",
         r.fall_share, r.off_section
     );
+    if let Some(mc) = mc {
+        let e = &mc.mfpt.exponential;
+        let _ = writeln!(
+            out,
+            "Monte Carlo from the fixed point: {} walks, {} failed; constant failure rate: {}, 95% interval [{:.2}, {}]",
+            mc.walks,
+            mc.failures,
+            e.estimate
+                .map_or_else(|| "-".to_owned(), |x| format!("{x:.2}")),
+            e.lo,
+            e.hi.map_or_else(|| "unbounded".to_owned(), |x| format!("{x:.2}"))
+        );
+    }
     out
 }

@@ -159,7 +159,7 @@ impl Chain {
             steps: steps.is_finite().then_some(steps),
             lambda2: [lambda(mid), lambda(lo), lambda(hi)],
             inverse: [mid, lo, hi],
-            fall_share: at(&b).clamp(0.0, 1.0),
+            fall_share: at(&b).clamp(0.0, 1.0) + 0.0,
             iterations,
         }
     }
