@@ -25,6 +25,10 @@ use nalgebra::{DMatrix, DVector};
 const MAX_ITER: usize = 500;
 /// The relative width of `1 / (1 - lambda_2)`'s bracket at which inverse iteration stops.
 const BRACKET_TOL: f64 = 1e-12;
+/// The longest passage time the chain resolves: `1 - lambda_2` below `1e3` rounding errors
+/// (`1e3 * 2.2e-16`) is the rounding of the transition weights, not a fall, so a longer
+/// time is reported as infinite.
+pub const MAX_RESOLVED_STEPS: f64 = 4.5e12;
 
 /// The transient states of the chain: for each, the transitions to other transient states
 /// (state, probability) and the probabilities of a fall and of leaving the box in one step.
@@ -131,6 +135,9 @@ impl Chain {
         let b = solve(fall).unwrap_or_else(|| DVector::zeros(m));
         let at = |v: &DVector<f64>| -> f64 { start.iter().map(|&(s, p)| p * v[index[s]]).sum() };
         let steps = at(&t);
+        if !(steps.is_finite() && steps <= MAX_RESOLVED_STEPS) {
+            return infinite;
+        }
         // Inverse iteration, bracketed.
         let (mut x, mut bracket, mut iterations) = (t.clone(), (1.0, f64::INFINITY), 0);
         for i in 1..=MAX_ITER {
@@ -153,10 +160,13 @@ impl Chain {
         }
         let (lo, hi) = bracket;
         let mid = if hi.is_finite() { (lo * hi).sqrt() } else { lo };
+        if mid > MAX_RESOLVED_STEPS {
+            return infinite;
+        }
         let lambda = |r: f64| 1.0 - 1.0 / r;
         Passage {
             reachable: m,
-            steps: steps.is_finite().then_some(steps),
+            steps: Some(steps),
             lambda2: [lambda(mid), lambda(lo), lambda(hi)],
             inverse: [mid, lo, hi],
             fall_share: at(&b).clamp(0.0, 1.0) + 0.0,

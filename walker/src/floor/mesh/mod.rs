@@ -24,7 +24,7 @@ mod report;
 mod samples;
 
 pub use build::mesh_mfpt;
-pub use chain::{Chain, Passage};
+pub use chain::{Chain, MAX_RESOLVED_STEPS, Passage};
 pub use error::MeshError;
 pub use grid::Grid;
 pub use options::{
