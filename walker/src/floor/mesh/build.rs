@@ -114,15 +114,12 @@ pub fn mesh_mfpt(
         }
     }
     let at_centre = grid.weights(&centre).unwrap_or_default();
+    // The walker starts at the fixed point, the floor's state drawn from its stationary law.
     let start: Vec<(usize, f64)> = (0..s)
         .flat_map(|f| {
-            at_centre
-                .iter()
-                .map(move |&(q, w)| (f * p + q, w))
-                .collect::<Vec<_>>()
+            let pi = samples.start[f];
+            at_centre.iter().map(move |&(q, w)| (f * p + q, w * pi))
         })
-        .zip((0..s).flat_map(|f| std::iter::repeat_n(samples.start[f], at_centre.len())))
-        .map(|((state, w), pi)| (state, w * pi))
         .collect();
     let passage = chain.passage(&start);
     let completed = |t: f64| t.is_finite().then_some(t - 1.0);
