@@ -202,6 +202,13 @@ pub fn mfpt_text(r: &MeshReport, mc: Option<&Survival>) -> String {
         "absorption by a fall (not by leaving the box): {:.4}; largest distance from the section: {:.1e}",
         r.fall_share, r.off_section
     );
+    if r.mfpt.from_fixed_point.is_some() && r.fall_share < 0.5 {
+        let _ = writeln!(
+            out,
+            "note: most walks leave the box rather than fall: the times above are the box's, not \
+             the walker's; widen it (--box-scale, --half-widths)"
+        );
+    }
     if let Some(mc) = mc {
         let e = &mc.mfpt.exponential;
         let _ = writeln!(
