@@ -230,6 +230,48 @@ pub enum Command {
         #[arg(long)]
         outcomes: bool,
     },
+    /// The mean first-passage time on a random floor by the Markov-chain (mesh)
+    /// approximation of Byl and Tedrake: the Poincare section meshed around the gait, one
+    /// step per mesh point and floor sample, the chain's second eigenvalue (docs/floors.md).
+    /// For walkers that fall too rarely for `survive`.
+    Mfpt {
+        /// The shared flags.
+        #[command(flatten)]
+        common: Common,
+        /// The floor FILE.toml (docs/floors.md): random (or uniform), not steps.
+        #[arg(long)]
+        floor: PathBuf,
+        /// Ramp duration T_set (s), > 0 (active walker).
+        #[arg(value_parser = number::positive, long = "t-set", allow_hyphen_values = true)]
+        t_set: Option<f64>,
+        /// Slope angle phi (rad), in [0, pi/2) (passive wheel).
+        #[arg(value_parser = number::slope, long, allow_hyphen_values = true)]
+        phi: Option<f64>,
+        /// Mesh points per coordinate of the section: a whole number in [2, 129] (at most
+        /// 2048 mesh states in all; odd puts the fixed point on a point).
+        #[arg(long, allow_hyphen_values = true, default_value = "17")]
+        mesh: String,
+        /// Floor samples of a uniform or truncated-normal mu0: a whole number in [1, 256] (a
+        /// Markov floor has its two values).
+        #[arg(long, allow_hyphen_values = true, default_value = "16")]
+        samples: String,
+        /// The box: this many times the largest deviation from the fixed point seen in 32
+        /// pilot walks of 200 steps, in (0, 100]; not with --half-widths.
+        #[arg(long = "box-scale", allow_hyphen_values = true)]
+        box_scale: Option<String>,
+        /// The box's half-widths, one per coordinate of the section, comma separated, each
+        /// > 0; not with --box-scale.
+        #[arg(long = "half-widths", allow_hyphen_values = true)]
+        half_widths: Option<String>,
+        /// Also walk this many times from the fixed point (Monte Carlo, as `survive`), for
+        /// a check of the mesh from the same start: a whole number in [1, 100000].
+        #[arg(long, allow_hyphen_values = true)]
+        walks: Option<String>,
+        /// The step limit of each of those walks: a whole number in [1, 1000000] (at most
+        /// 1e8 steps in all).
+        #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "1000")]
+        max_steps: String,
+    },
     /// Sweep a run-time parameter (mu0 by default: procedures P1a-P5a / P1b-P5b).
     Sweep {
         /// The shared flags.

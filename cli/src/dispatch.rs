@@ -143,6 +143,39 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 emit(&text)?;
             }
         }
+        Command::Mfpt {
+            common,
+            floor: floor_file,
+            t_set,
+            phi,
+            mesh,
+            samples,
+            box_scale,
+            half_widths,
+            walks,
+            max_steps,
+        } => {
+            let opts = crate::mfpt::options(
+                &mesh,
+                &samples,
+                box_scale.as_deref(),
+                half_widths.as_deref(),
+            )?;
+            let spec = floor::floor_of(Some(&floor_file), None, None)?
+                .ok_or_else(|| InputError::new("floor", "a floor file is required"))?;
+            let setup = run::setup(&common, &common.overrides(None, t_set, phi)?)?;
+            floor::mu0_once(&setup, &common.set, Field::Floor)?;
+            let check = walks
+                .as_deref()
+                .map(|w| crate::mfpt::walk_counts(w, &max_steps))
+                .transpose()?;
+            let (r, mc) = crate::mfpt::mfpt_on(&setup, spec, &opts, check, &common.config()?)?;
+            if common.json {
+                emit(&format!("{}\n", crate::mfpt::mfpt_json(&r, mc.as_ref())))?;
+            } else {
+                emit(&crate::mfpt::mfpt_text(&r, mc.as_ref()))?;
+            }
+        }
         Command::Sweep {
             common,
             param,

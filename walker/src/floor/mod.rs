@@ -11,10 +11,12 @@
 //! step), `steps.rs` ([`FloorSteps`], the values of one walk's steps), `error.rs`
 //! ([`FloorError`]), `walker.rs` ([`FloorWalker`], walks on a floor), `stats.rs` (survival
 //! statistics of walks that end by failure or at a step limit), `survive.rs` ([`survive`],
-//! many seeded walks on all cores).
+//! many seeded walks on all cores), `mesh/` (the Markov-chain approximation of the mean
+//! first-passage time, [`mesh::mesh_mfpt`]).
 
 mod draw;
 mod error;
+pub mod mesh;
 mod stats;
 mod steps;
 mod survive;

@@ -159,6 +159,27 @@ impl<'s> FloorWalker<'s> {
         }
     }
 
+    /// The walker's model on a floor of friction `mu0` (the mesh of `super::mesh` prepares
+    /// one per floor sample).
+    ///
+    /// # Errors
+    /// `mu0` is outside the parameter's range or the kernels cannot take it.
+    pub(crate) fn model_at(&self, mu0: f64) -> Result<Model, FloorError> {
+        let mut params = self.setup.params.clone();
+        params
+            .set(&self.mu0.1, mu0)
+            .map_err(|source| FloorError::Kernels {
+                value: mu0,
+                source: crate::model::NoKernels::Source {
+                    model: self.setup.walker.spec().name().to_owned(),
+                    message: source.to_string(),
+                },
+            })?;
+        self.setup
+            .model_with(&params)
+            .map_err(|source| FloorError::Kernels { value: mu0, source })
+    }
+
     /// The models of walk `index`'s steps.
     fn per_step(&self, index: u64) -> PerStep<'_, 's> {
         PerStep {

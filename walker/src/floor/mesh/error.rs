@@ -1,0 +1,58 @@
+//! Why the mesh cannot be built ([`MeshError`]).
+
+use crate::poincare::FixedPointError;
+
+use super::super::error::FloorError;
+
+/// Why the Markov-chain approximation of a walker on a floor cannot be computed.
+#[derive(Debug, thiserror::Error)]
+pub enum MeshError {
+    /// The floor cannot carry the walker.
+    #[error(transparent)]
+    Floor(#[from] FloorError),
+    /// A `steps` floor lists values, it draws none: the chain needs a per-step distribution.
+    #[error(
+        "a `steps` floor has no per-step distribution for the mesh; give a `random` (or \
+         `uniform`) floor"
+    )]
+    StepsFloor,
+    /// A setting outside its range.
+    #[error("mesh field `{field}` = {value}: must be {range}")]
+    OutOfRange {
+        /// The setting (`points`, `samples`, `box_scale`, `half_widths`).
+        field: &'static str,
+        /// The value given, as text.
+        value: String,
+        /// The valid range.
+        range: String,
+    },
+    /// The mesh would be too large to build.
+    #[error("mesh field `{field}`: {count} {what} (at most {limit}); use fewer points or samples")]
+    TooLarge {
+        /// The setting that makes it so (`points`, `samples`).
+        field: &'static str,
+        /// What is counted.
+        what: &'static str,
+        /// How many there would be.
+        count: u128,
+        /// The most allowed.
+        limit: u64,
+    },
+    /// No gait to mesh around: the fixed-point search failed.
+    #[error("no gait to mesh around at mu0 = {mu0}: {source}")]
+    NoGait {
+        /// The floor value the gait was sought at.
+        mu0: f64,
+        /// Why.
+        #[source]
+        source: FixedPointError,
+    },
+    /// No gait to mesh around: the fixed point did not converge or is not a valid gait.
+    #[error("no gait to mesh around at mu0 = {mu0}: the fixed point is {status}")]
+    NotAGait {
+        /// The floor value the gait was sought at.
+        mu0: f64,
+        /// Its status (`not converged`, `not a valid gait`).
+        status: &'static str,
+    },
+}

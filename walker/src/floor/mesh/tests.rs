@@ -1,0 +1,201 @@
+//! The mesh on the paper's walkers: against Monte Carlo where both reach, and alone where
+//! only it does.
+
+use walker_scene::{Distribution, FloorSpec};
+
+use super::{MeshBox, MeshError, MeshOptions, MeshReport, mesh_mfpt};
+use crate::floor::{FloorWalker, survive};
+use crate::poincare::Section;
+use crate::setup::Setup;
+use crate::sim::SimConfig;
+
+/// The paper's active walker with `T_set` set.
+fn active(t_set: f64) -> Setup {
+    let mut s = Setup::active_level().expect("the built-in scene");
+    s.set("T_set", t_set)
+        .expect("T_set is a run-time parameter");
+    s
+}
+
+fn random(mu0: Distribution) -> FloorSpec {
+    FloorSpec::Random { seed: 11, mu0 }
+}
+
+/// The mesh report and the Monte Carlo constant-rate estimate (estimate, lo, hi) of `walks`
+/// walks of at most `max_steps` from the mesh's fixed point.
+fn both(
+    setup: &Setup,
+    floor: FloorSpec,
+    opts: &MeshOptions,
+    walks: usize,
+    max_steps: usize,
+) -> (MeshReport, [f64; 3]) {
+    let cfg = SimConfig::default();
+    let walker = FloorWalker::new(setup, floor).expect("the floor carries the walker");
+    let r = mesh_mfpt(&walker, &cfg, opts).expect("the mesh");
+    let model = setup.model().expect("kernels");
+    let start = Section::of(&model).embed(&r.centre);
+    let mc = survive(&walker, &cfg, &start, 0..walks as u64, max_steps).expect("walks");
+    let e = mc.survival.mfpt.exponential;
+    (
+        r,
+        [e.estimate.expect("failures"), e.lo, e.hi.expect("failures")],
+    )
+}
+
+/// The mesh's MFPT from the fixed point at `(N, M)` points and samples.
+fn at(setup: &Setup, floor: &FloorSpec, points: usize, samples: usize) -> f64 {
+    let walker = FloorWalker::new(setup, floor.clone()).expect("the floor carries the walker");
+    let opts = MeshOptions {
+        points,
+        samples,
+        ..MeshOptions::default()
+    };
+    mesh_mfpt(&walker, &SimConfig::default(), &opts)
+        .expect("the mesh")
+        .mfpt
+        .from_fixed_point
+        .expect("finite")
+}
+
+/// Three walkers that fall every ten to thirty steps, all the paper's active walker with
+/// `T_set = 0.2` (its steady gait lifts off below `mu0 = 0.47`, Fig. 8): `mu0` uniform on
+/// `[0.44, 0.8)`, a truncated normal about 0.6, and patches of `mu0 = 0.44` ice on a 0.8
+/// floor. The mesh (`N = 9` points per coordinate, 64 samples) and 300 walks from the same
+/// fixed point agree within their stated errors: the walks' 95% interval (constant failure
+/// rate) widened by the mesh's own convergence error, estimated as its change from `N = 5`
+/// and from 32 samples (docs/floors.md: the full tables, where finer meshes and 2000 walks
+/// agree to a few percent). The walks and the mesh are deterministic (seeded, collected in
+/// order), so the test cannot fail by chance; it fails if either method is wrong by more than
+/// the other's error.
+#[test]
+fn mesh_and_monte_carlo_agree_on_three_walkers_that_fall_every_few_dozen_steps() {
+    let setup = active(0.2);
+    let ice = Distribution::Markov {
+        dry: 0.8,
+        icy: 0.44,
+        dry_length: 10.0,
+        icy_length: 2.0,
+    };
+    for floor in [
+        random(Distribution::Uniform { lo: 0.44, hi: 0.8 }),
+        random(Distribution::TruncatedNormal {
+            mean: 0.6,
+            sd: 0.1,
+            lo: 0.3,
+            hi: 0.9,
+        }),
+        random(ice),
+    ] {
+        let opts = MeshOptions {
+            points: 9,
+            samples: 64,
+            ..MeshOptions::default()
+        };
+        let (r, [mc, lo, hi]) = both(&setup, floor.clone(), &opts, 300, 20_000);
+        let t = r.mfpt.from_fixed_point.expect("finite");
+        let error = (t - at(&setup, &floor, 5, 64)).abs() + (t - at(&setup, &floor, 9, 32)).abs();
+        assert!(
+            t + error >= lo && t - error <= hi,
+            "{floor:?}: mesh {t} +- {error}, Monte Carlo {mc} [{lo}, {hi}]"
+        );
+        // The eigenvalue's estimate forgets the start; here the start is the gait, so the
+        // two differ by about the transient (a step or two).
+        let eigen = r.mfpt.eigen.expect("finite");
+        assert!((eigen - t).abs() < 0.1 * t + error, "{eigen} vs {t}");
+    }
+}
+
+/// On a floor that never changes, a stable gait never falls: the chain started at its fixed
+/// point stays in the box (the tiny box a floor without spread gets) and the MFPT is
+/// infinite, eigenvalue 1.
+#[test]
+fn a_stable_gait_on_a_uniform_floor_never_falls_in_the_chain() {
+    let setup = active(0.3);
+    let walker = FloorWalker::new(&setup, FloorSpec::Uniform { mu0: 0.4 })
+        .expect("the floor carries the walker");
+    let r = mesh_mfpt(&walker, &SimConfig::default(), &MeshOptions::default()).expect("mesh");
+    assert_eq!(r.mfpt.from_fixed_point, None, "{r:?}");
+    assert_eq!(r.mfpt.eigen, None);
+    assert_eq!(r.lambda2, 1.0);
+    assert_eq!(r.samples, vec![0.4]);
+}
+
+#[test]
+fn a_steps_floor_and_oversized_meshes_are_refused_by_name() {
+    let setup = active(0.3);
+    let cfg = SimConfig::default();
+    let steps = FloorWalker::new(
+        &setup,
+        FloorSpec::Steps {
+            mu0: vec![0.4, 0.1],
+        },
+    )
+    .expect("the floor carries the walker");
+    assert!(matches!(
+        mesh_mfpt(&steps, &cfg, &MeshOptions::default()),
+        Err(MeshError::StepsFloor)
+    ));
+    let floor = random(Distribution::Uniform { lo: 0.3, hi: 0.5 });
+    let w = FloorWalker::new(&setup, floor).expect("the floor carries the walker");
+    for (opts, field) in [
+        (
+            MeshOptions {
+                points: 1,
+                ..MeshOptions::default()
+            },
+            "points",
+        ),
+        (
+            MeshOptions {
+                points: 65,
+                ..MeshOptions::default()
+            },
+            "points",
+        ),
+        (
+            MeshOptions {
+                samples: 0,
+                ..MeshOptions::default()
+            },
+            "samples",
+        ),
+        (
+            MeshOptions {
+                points: 45,
+                samples: 256,
+                ..MeshOptions::default()
+            },
+            "samples",
+        ),
+        (
+            MeshOptions {
+                bounds: MeshBox::Spread { scale: 0.0 },
+                ..MeshOptions::default()
+            },
+            "box_scale",
+        ),
+        (
+            MeshOptions {
+                bounds: MeshBox::HalfWidths(vec![0.1]),
+                ..MeshOptions::default()
+            },
+            "half_widths",
+        ),
+        (
+            MeshOptions {
+                bounds: MeshBox::HalfWidths(vec![0.1, f64::NAN]),
+                ..MeshOptions::default()
+            },
+            "half_widths",
+        ),
+    ] {
+        let got = match mesh_mfpt(&w, &cfg, &opts) {
+            Err(MeshError::OutOfRange { field: f, .. } | MeshError::TooLarge { field: f, .. }) => {
+                Some(f)
+            }
+            _ => None,
+        };
+        assert_eq!(got, Some(field), "{opts:?}");
+    }
+}
