@@ -36,15 +36,21 @@ pub fn title(model: &Model, speed: f64) -> String {
     title_with(model, speed, &format!("mu0 = {}", model.mu0()))
 }
 
-/// [`title`] for a walk on a floor whose step `k` has the friction coefficient `mu0[k]`: the
-/// range of `mu0` and the colours of its ends.
+/// The smallest and the largest of `values` (infinities of the wrong sign if there are none).
 #[must_use]
-pub fn title_on_floor(model: &Model, speed: f64, mu0: &[f64]) -> String {
-    let (lo, hi) = mu0
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+pub fn mu0_range(values: impl IntoIterator<Item = f64>) -> (f64, f64) {
+    values
+        .into_iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
             (a.min(x), b.max(x))
-        });
+        })
+}
+
+/// [`title`] for a walk on a floor whose drawn steps have the friction coefficients `mu0`:
+/// their range and the colours of its ends.
+#[must_use]
+pub fn title_on_floor(model: &Model, speed: f64, mu0: impl IntoIterator<Item = f64>) -> String {
+    let (lo, hi) = mu0_range(mu0);
     let text = if hi > lo {
         format!("mu0 by step from {lo} (blue) to {hi} (brown)")
     } else {

@@ -6,7 +6,7 @@
 use walker::model::Model;
 use walker::sim::{Frame, Trajectory};
 
-use super::caption::failure_label;
+use super::caption::{failure_label, mu0_range};
 use super::geometry::{Body, Point, Pose};
 use super::view::View;
 
@@ -143,15 +143,7 @@ impl Film {
                 landed.push((m.step, m.landed));
             }
         }
-        let values: Vec<f64> = landed
-            .iter()
-            .filter_map(|&(k, _)| mu0.get(k).copied())
-            .collect();
-        let (lo, hi) = values
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                (a.min(x), b.max(x))
-            });
+        let (lo, hi) = mu0_range(landed.iter().filter_map(|&(k, _)| mu0.get(k).copied()));
         let l = self.body.l;
         for (i, &(step, s)) in landed.iter().enumerate() {
             let Some(&value) = mu0.get(step) else {

@@ -160,25 +160,26 @@ pub fn write_on_floor(
     req: &Request,
     mu0: &[f64],
 ) -> Result<Written, AnimateError> {
-    let title = if mu0.is_empty() {
-        title(model, req.speed)
-    } else {
-        title_on_floor(model, req.speed, mu0)
-    };
-    let film = Film::new(model, tr, req.speed, req.size, title).ok_or_else(|| {
-        InputError::new(
-            "model",
-            format!(
-                "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
+    let film =
+        Film::new(model, tr, req.speed, req.size, title(model, req.speed)).ok_or_else(|| {
+            InputError::new(
+                "model",
+                format!(
+                    "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
                  alpha)",
-                model.spec().name()
-            ),
-        )
-    })?;
+                    model.spec().name()
+                ),
+            )
+        })?;
     let film = if mu0.is_empty() {
         film
     } else {
-        film.on_floor(mu0)
+        // The title's range of mu0 is the drawn patches', the one their shades span.
+        let film = film.on_floor(mu0);
+        Film {
+            title: title_on_floor(model, req.speed, film.patches.iter().map(|p| p.mu0)),
+            ..film
+        }
     };
     let path = &req.output;
     let draw = |message: String| AnimateError::Draw {
