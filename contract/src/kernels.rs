@@ -12,7 +12,7 @@
 //! ([`Kernels::power_sign`]) and the sliding foot's ground reaction
 //! ([`Kernels::sliding_lambda`]). Their provided methods assemble them from `eval`; a compiled
 //! variant overrides each with one generated function of the same arithmetic
-//! (`walker/tests/compiled_fused.rs` holds them equal bit for bit), so that no argument struct,
+//! (`walker/tests/it/compiled_fused.rs` holds them equal bit for bit), so that no argument struct,
 //! slice or dispatch stands between the integrator and the kernels.
 
 use crate::MAX_COORDINATES;

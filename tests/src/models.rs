@@ -237,7 +237,7 @@ pub fn reference_name(kernel: &str, name: &str, inputs: usize) -> Option<String>
 /// The kernels whose outputs the reference does not list at all (the matrices `S`, `J_I`; see
 /// [`reference_name`]): every other kernel of a model is compared with it. `stick_jacobian` is
 /// checked exactly instead, entry by entry, as the derivatives of `stick`'s outputs
-/// (`derive/tests/model_stick_jacobian.rs`).
+/// (`derive/tests/it/model_stick_jacobian.rs`).
 pub const UNREFERENCED: &[&str] = &[
     "input_map",
     "impact_rows",

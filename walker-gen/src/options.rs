@@ -54,7 +54,7 @@ pub enum FloatFunctions {
     /// default): fdlibm's `__kernel_sin`/`__kernel_cos` with one shared Cody-Waite reduction
     /// (std's `sin_cos` above `2^20 pi/2`), and Cephes' rational for `|x| < 0.625`,
     /// `1 - 2/(exp(2|x|) + 1)` above. Measured errors: at most 0.78 ulp (sin, cos) and 1.32 ulp
-    /// (tanh); the tests assert 1 and 2 (`tests/fastmath_accuracy.rs`). Other float functions
+    /// (tanh); the tests assert 1 and 2 (`tests/it/fastmath_accuracy.rs`). Other float functions
     /// (`sqrt`, a lone `sin` or `cos`) stay std methods.
     /// Applies only to `f64` in std mode; `f32` and no-std code are as with [`Self::Std`].
     #[default]

@@ -372,7 +372,7 @@ const SIMPLEST_PD: f64 = 0.015_073_100_216_016_674;
 /// per radian of slope there (-0.8647 at 0.0145, -1.0896 at 0.0155 in the reference), so a
 /// multiplier error `e` moves the crossing by `e / 225`: the reference's multipliers carry
 /// about 1e-10 (integration at 1e-13, complex-step derivatives), ours at most 1e-8 (their
-/// test against the reference, `walker/tests/poincare_exact.rs`), together under 5e-11 rad,
+/// test against the reference, `walker/tests/it/poincare_exact.rs`), together under 5e-11 rad,
 /// and the located point's own bracket is about 1e-11. Differences of the map (error about
 /// 1e-6 in the multipliers) would miss it by 1e-6 rad.
 const SIMPLEST_PD_TOL: f64 = 1e-10;

@@ -3,7 +3,7 @@
 //! start): the stable period-one gait its start lies on, the friction its grazing heel strike
 //! needs and where it therefore walks, how it fails below that, and why neither the tanh law
 //! nor the frictionless impact walks it. Every bound is argued in its claim's text; the numbers
-//! are the run's (`walker/tests/three_link.rs` checks the same walker against a reference).
+//! are the run's (`walker/tests/it/three_link.rs` checks the same walker against a reference).
 
 use walker::model::{Contact, Friction, ImpactLaw, ImpactRegime, Model, Slide};
 use walker::poincare::{FixedPointOptions, Section, Status, newton};

@@ -203,7 +203,7 @@ pub fn equations_markdown(d: &Derivation) -> Result<String> {
          Derived from the paper's model files (`models/paper-active.toml`, `models/paper-passive.toml`)\n\
          and written in the paper's notation by\n\
          `cargo run -p walker-symbolic --bin walker-equations --release`; do not edit by hand\n\
-         (`derive/tests/equations_doc.rs` fails when this file and the derivation differ).\n\
+         (`derive/tests/it/equations_doc.rs` fails when this file and the derivation differ).\n\
          The paper's equations are checked one by one in [errata.md](errata.md); the kernel\n\
          contract (names, inputs, conventions) is [kernels.md](kernels.md).\n\n\
          Notation, as the engine holds the expressions (canonical form, see `derive/src/poly.rs`):\n\n\

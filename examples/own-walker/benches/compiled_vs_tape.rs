@@ -2,7 +2,7 @@
 //! run time and evaluated by the tape (`walker-load`), side by side in one run: a 100 s walk,
 //! and a 100-point sweep of `mu0` (one chain, each point continuing from the last, 10 s each).
 //! Both sides do the same arithmetic (the walks are equal bit for bit,
-//! `tests/compiled_vs_tape.rs`); the ratio is the price of evaluating kernels by
+//! `tests/it/compiled_vs_tape.rs`); the ratio is the price of evaluating kernels by
 //! interpretation.
 //!
 //! `cargo bench -p own-walker --bench compiled_vs_tape`

@@ -13,7 +13,7 @@ use crate::plan::{Block, Plan, Step};
 
 /// The private float functions of [`crate::FloatFunctions::Inline`]: name and source, in the order
 /// they are appended to a file. The source is written verbatim (it is `rustfmt`-formatted, and
-/// its comments carry fdlibm's notice); `tests/fastmath_accuracy.rs` includes the same files.
+/// its comments carry fdlibm's notice); `tests/it/fastmath_accuracy.rs` includes the same files.
 pub(super) const INLINE_HELPERS: [(&str, &str); 2] = [
     ("sin_cos", include_str!("../fastmath/sin_cos.rs")),
     ("tanh", include_str!("../fastmath/tanh.rs")),

@@ -19,7 +19,7 @@
 //! functions written into the file when a kernel uses them, `fn sin_cos` (fdlibm's kernels with
 //! one shared argument reduction) and `fn tanh` (Cephes' rational below 0.625, `exp` above):
 //! their source is `src/fastmath/{sin_cos,tanh}.rs`, appended verbatim (comments, licence notice
-//! and measured accuracy included) and tested as such by `tests/fastmath_accuracy.rs`. Constants are
+//! and measured accuracy included) and tested as such by `tests/it/fastmath_accuracy.rs`. Constants are
 //! written with the shortest digits that round-trip (`{:?}`), suffixed with the float type;
 //! a constant equal to one of `core::f64::consts` is written by that name.
 

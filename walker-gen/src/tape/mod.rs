@@ -37,7 +37,7 @@
 //! Only NaNs may differ in sign and payload: Rust does not specify the bits of a NaN an
 //! operation returns (x86's `addsd` returns the first operand's payload, and the compiler may
 //! swap the operands of a commutative operation), so equality is of the value, NaN matching
-//! NaN. The tests (`tests/tests/tape_vs_compiled.rs` in the workspace) check all this against
+//! NaN. The tests (`tests/tests/it/tape_vs_compiled.rs` in the workspace) check all this against
 //! the compiled kernels of every model file and of the simulator's scenes, at ordinary points
 //! and at zeros, subnormals, infinities, NaN and the branch points of the inline functions.
 //!

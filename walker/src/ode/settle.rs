@@ -23,7 +23,7 @@ use super::system::OdeSystem;
 /// error control, and where a fast, strongly damped mode sets the step size (the walker's foot
 /// creeping under the `tanh` law) they are far less accurate than the steps' ends: the
 /// walker's post-impact velocities were off by up to 4.3e-7 at `rtol = atol = 1e-8` with the
-/// interpolated state, and are within 1.0e-8 with this (`walker/tests/sim_stiff.rs`).
+/// interpolated state, and are within 1.0e-8 with this (`walker/tests/it/sim_stiff.rs`).
 /// The usual cost is two steps (26 evaluations with DOP853) per event.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn settle<const N: usize, St: Stepper<N>, S: OdeSystem<N>>(

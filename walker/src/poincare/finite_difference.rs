@@ -8,7 +8,7 @@
 //! so that the map's own error `delta` is about `1e-12`; with the difference step
 //! `h = 1e-4 max(1, |s_j|)` the Jacobian's error is about `delta / h + h^2 |P'''| / 6`: about
 //! `1e-8` where the map's third derivative is of order one, but `1e-4` on the simplest walking
-//! model, whose third derivative is not (`docs/poincare.md`, `tests/poincare_exact.rs`). Where one side of a difference has no step (a stuck foot pushed into a slide that
+//! model, whose third derivative is not (`docs/poincare.md`, `tests/it/poincare_exact.rs`). Where one side of a difference has no step (a stuck foot pushed into a slide that
 //! Painleve's paradox forbids), the difference is one-sided, with an error of about `h`
 //! (`1e-4`) in that column; where a foot at rest can slide neither way, the map exists only with
 //! the foot at rest and the columns of its velocity (`xd`, `zd`) are left zero: perturbations
