@@ -128,10 +128,6 @@ impl Ramp {
 pub struct Bezier {
     /// The control points (the first `len` used).
     points: [f64; MAX_BEZIER_POINTS],
-    /// The first differences of the points, times `M / duration`.
-    d1: [f64; MAX_BEZIER_POINTS],
-    /// The second differences, times `M (M - 1) / duration^2`.
-    d2: [f64; MAX_BEZIER_POINTS],
     /// `M + 1`.
     len: usize,
     duration: f64,
@@ -146,19 +142,8 @@ impl Bezier {
         let len = points.len().clamp(1, MAX_BEZIER_POINTS);
         let mut p = [0.0; MAX_BEZIER_POINTS];
         p[..len].copy_from_slice(&points[..len]);
-        let m = (len - 1) as f64;
-        let mut d1 = [0.0; MAX_BEZIER_POINTS];
-        let mut d2 = [0.0; MAX_BEZIER_POINTS];
-        for k in 0..len.saturating_sub(1) {
-            d1[k] = m / duration * (p[k + 1] - p[k]);
-        }
-        for k in 0..len.saturating_sub(2) {
-            d2[k] = m * (m - 1.0) / (duration * duration) * (p[k + 2] - 2.0 * p[k + 1] + p[k]);
-        }
         Self {
             points: p,
-            d1,
-            d2,
             len,
             duration,
             inv_duration: 1.0 / duration,
@@ -170,16 +155,26 @@ impl Bezier {
     #[inline]
     #[must_use]
     pub fn at(&self, t: f64) -> [f64; 3] {
-        let last = self.points[self.len - 1];
+        let n = self.len;
         if t >= self.duration {
-            return [last, 0.0, 0.0];
+            return [self.points[n - 1], 0.0, 0.0];
         }
         let s = t.max(0.0) * self.inv_duration;
-        let n = self.len;
+        let m = (n - 1) as f64;
+        let p = &self.points;
+        let mut d1 = [0.0; MAX_BEZIER_POINTS];
+        let mut d2 = [0.0; MAX_BEZIER_POINTS];
+        for k in 0..n - 1 {
+            d1[k] = p[k + 1] - p[k];
+        }
+        for k in 0..n.saturating_sub(2) {
+            d2[k] = d1[k + 1] - d1[k];
+        }
+        let inv = self.inv_duration;
         [
-            casteljau(&self.points[..n], s),
-            casteljau(&self.d1[..n.saturating_sub(1)], s),
-            casteljau(&self.d2[..n.saturating_sub(2)], s),
+            casteljau(&p[..n], s),
+            m * inv * casteljau(&d1[..n - 1], s),
+            m * (m - 1.0) * inv * inv * casteljau(&d2[..n.saturating_sub(2)], s),
         ]
     }
 }
