@@ -6,7 +6,8 @@
 //! the periodic gait at `p`, subject to
 //!
 //! - a periodic gait: a fixed point `r*(p)` of the reduced Poincare map, found for each `p` by
-//!   Newton's method with the exact state Jacobian ([`crate::poincare::newton`]), warm-started
+//!   Newton's method with the map's state Jacobian ([`crate::poincare::newton`]: exact where the
+//!   model's kernels differentiate every phase, else central differences), warm-started
 //!   from the last design's fixed point (the *nested*, or reduced-space, formulation);
 //! - stability with a margin: every multiplier's modulus `<= 1 - margin`;
 //! - the foot held: the friction ratio `|lambda_t| / lambda_n` along the whole stance (sampled
@@ -14,14 +15,18 @@
 //!   Lambda_n`, each `<= mu0 - margin`;
 //! - the normal force `lambda_n >= margin` along the stance.
 //!
+//! Under Coulomb friction the gait is that of the walker with its foot held (`mu0` raised out
+//! of reach), so that the friction constraints are smooth in `p`; the stance's sampled ratios
+//! enter as one Kreisselmeier-Steinhauser aggregate.
+//!
 //! The nonlinear program is solved by SLSQP (Kraft's sequential least squares programming, the
 //! `slsqp` crate: NLopt's implementation in pure Rust). Its gradients are central differences
-//! of the nested functions (each difference re-solves the fixed point with the exact
-//! Jacobian): the module [`crate::sensitivity`] gives `dr*/dp`, `dT/dp` and the multipliers'
-//! derivatives, but neither the specific resistance's nor the path friction's, so the design
-//! takes all its columns the same way (see `docs/design.md` for the argument and the cost).
-//! The result ([`Design`]) carries the parameters, the gait, the objective, every constraint
-//! with its slack, the solver's status and a KKT residual.
+//! of the nested functions (each difference re-solves the fixed point): the module
+//! [`crate::sensitivity`] gives `dr*/dp`, `dT/dp` and the multipliers' derivatives, but
+//! neither the specific resistance's nor the path friction's, so the design takes all its
+//! columns the same way (see `docs/design.md` for the argument and the cost). The result
+//! ([`Design`]) carries the parameters, the gait, the objective, every constraint with its
+//! slack, the solver's status and a KKT residual.
 
 mod error;
 mod evaluate;
