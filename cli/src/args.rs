@@ -230,6 +230,10 @@ pub enum Command {
         #[arg(long)]
         outcomes: bool,
     },
+    /// Design a gait: the run-time parameters (within bounds) whose periodic gait minimises
+    /// an objective, with the friction it needs, its multipliers and its normal force as
+    /// constraints (docs/design.md).
+    Design(crate::design::DesignArgs),
     /// The mean first-passage time on a random floor by the Markov-chain (mesh)
     /// approximation of Byl and Tedrake: the Poincare section meshed around the gait, one
     /// step per mesh point and floor sample, the chain's second eigenvalue (docs/floors.md).

@@ -36,6 +36,9 @@ enum CliError {
     /// A continuation found no branch (1) or was given bad input (2).
     #[error(transparent)]
     Continue(#[from] continue_cmd::ContinueError),
+    /// `walker design` found no periodic gait to start from: exit code 1.
+    #[error("no design: {0}")]
+    Design(String),
     /// Writing a file of `walker continue` failed: exit code 1.
     #[error("cannot write {path}: {message}")]
     File {
@@ -53,7 +56,7 @@ impl CliError {
             CliError::Write(_) | CliError::Stdout(_) => 1,
             CliError::Animate(e) => e.exit_code(),
             CliError::Continue(e) => e.exit_code(),
-            CliError::File { .. } => 1,
+            CliError::File { .. } | CliError::Design(_) => 1,
         }
     }
 }
@@ -143,6 +146,11 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 emit(&text)?;
             }
         }
+        Command::Design(args) => match crate::design::run(&args) {
+            Ok(text) => emit(&text)?,
+            Err(crate::design::DesignCliError::Input(e)) => return Err(e.into()),
+            Err(crate::design::DesignCliError::NoGait(m)) => return Err(CliError::Design(m)),
+        },
         Command::Mfpt {
             common,
             floor: floor_file,

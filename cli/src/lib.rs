@@ -6,7 +6,7 @@
 //! ([`reproduce`]), the gallery of the shipped walkers on a slippery floor ([`gallery`]), the
 //! paper's question on floors that change under the walker ([`floor_study`]) and
 //! animations and stick diagrams of a walk ([`animate`]), and the continuation of gaits
-//! ([`continue_cmd`]).
+//! ([`continue_cmd`]), and gait design ([`design`]).
 //! [`main`] parses the arguments and dispatches to these (`src/main.rs` calls it), and
 //! [`main_with`] does the same over a program's own compiled models.
 //!
@@ -16,6 +16,7 @@
 pub mod animate;
 pub mod args;
 pub mod continue_cmd;
+pub mod design;
 mod dispatch;
 pub mod floor;
 pub mod floor_study;

@@ -8,7 +8,7 @@
 //! every impact. The quintic has zero first and second derivatives at both ends (the
 //! derivation checks these boundary conditions symbolically).
 
-use walker_scene::model::Desired as DesiredSpec;
+use walker_scene::model::{Desired as DesiredSpec, MAX_BEZIER_POINTS};
 
 /// A desired trajectory, evaluated for one set of parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -18,6 +18,8 @@ pub enum Desired {
     Quintic(Ramp),
     /// A constant.
     Hold(f64),
+    /// A Bezier polynomial in time, then held at its last point.
+    Bezier(Bezier),
 }
 
 impl Desired {
@@ -28,6 +30,10 @@ impl Desired {
                 Desired::Quintic(Ramp::new(eval(from), eval(to), eval(duration)))
             }
             DesiredSpec::Hold { value } => Desired::Hold(eval(value)),
+            DesiredSpec::Bezier { points, duration } => {
+                let a: Vec<f64> = points.iter().map(&eval).collect();
+                Desired::Bezier(Bezier::new(&a, eval(duration)))
+            }
         }
     }
 
@@ -38,6 +44,7 @@ impl Desired {
         match self {
             Desired::Quintic(r) => r.at(t),
             Desired::Hold(v) => [*v, 0.0, 0.0],
+            Desired::Bezier(b) => b.at(t),
         }
     }
 
@@ -48,6 +55,7 @@ impl Desired {
         match self {
             Desired::Quintic(r) => Some(r.duration),
             Desired::Hold(_) => None,
+            Desired::Bezier(b) => Some(b.duration),
         }
     }
 
@@ -110,6 +118,85 @@ impl Ramp {
     }
 }
 
+/// A Bezier polynomial of order `M` (`M + 1` control points `a_k`, at most
+/// [`MAX_BEZIER_POINTS`]) in `s = t / duration`: `y_d = sum_k a_k B_k^M(s)` with the Bernstein
+/// basis `B_k^M(s) = C(M, k) s^k (1 - s)^(M - k)`, then held at `a_M` from `duration` on. The
+/// derivatives are the Bezier polynomials of the differences: `yd_d = (M / duration) sum_k
+/// (a_{k+1} - a_k) B_k^{M-1}(s)`, `ydd_d = (M (M - 1) / duration^2) sum_k (a_{k+2} - 2 a_{k+1}
+/// + a_k) B_k^{M-2}(s)`, each evaluated by de Casteljau's algorithm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bezier {
+    /// The control points (the first `len` used).
+    points: [f64; MAX_BEZIER_POINTS],
+    /// `M + 1`.
+    len: usize,
+    duration: f64,
+    inv_duration: f64,
+}
+
+impl Bezier {
+    /// The Bezier with control points `points` (2 to [`MAX_BEZIER_POINTS`]; more are ignored,
+    /// which the model file's check rules out) over `duration`.
+    #[must_use]
+    pub fn new(points: &[f64], duration: f64) -> Self {
+        let len = points.len().clamp(1, MAX_BEZIER_POINTS);
+        let mut p = [0.0; MAX_BEZIER_POINTS];
+        p[..len].copy_from_slice(&points[..len]);
+        Self {
+            points: p,
+            len,
+            duration,
+            inv_duration: 1.0 / duration,
+        }
+    }
+
+    /// `[y_d, yd_d, ydd_d]` at time `t` since the last impact; `[a_M, 0, 0]` from `duration`
+    /// on.
+    #[inline]
+    #[must_use]
+    pub fn at(&self, t: f64) -> [f64; 3] {
+        let n = self.len;
+        if t >= self.duration {
+            return [self.points[n - 1], 0.0, 0.0];
+        }
+        let s = t.max(0.0) * self.inv_duration;
+        let m = (n - 1) as f64;
+        let p = &self.points;
+        let mut d1 = [0.0; MAX_BEZIER_POINTS];
+        let mut d2 = [0.0; MAX_BEZIER_POINTS];
+        for k in 0..n - 1 {
+            d1[k] = p[k + 1] - p[k];
+        }
+        for k in 0..n.saturating_sub(2) {
+            d2[k] = d1[k + 1] - d1[k];
+        }
+        let inv = self.inv_duration;
+        [
+            casteljau(&p[..n], s),
+            m * inv * casteljau(&d1[..n - 1], s),
+            m * (m - 1.0) * inv * inv * casteljau(&d2[..n.saturating_sub(2)], s),
+        ]
+    }
+}
+
+/// The Bezier polynomial with control points `c` at `s` by de Casteljau's algorithm (0 for no
+/// points).
+#[inline]
+fn casteljau(c: &[f64], s: f64) -> f64 {
+    let mut b = [0.0; MAX_BEZIER_POINTS];
+    let n = c.len();
+    if n == 0 {
+        return 0.0;
+    }
+    b[..n].copy_from_slice(c);
+    for r in 1..n {
+        for k in 0..n - r {
+            b[k] = (1.0 - s) * b[k] + s * b[k + 1];
+        }
+    }
+    b[0]
+}
+
 /// The auxiliary input `v = ydd_d + K_D (yd_d - ydot) + K_P (y_d - y)` (Eq. 32).
 #[inline]
 #[must_use]
@@ -139,6 +226,41 @@ mod tests {
         let (dp, dm, d) = (r.at(t + e), r.at(t - e), r.at(t));
         assert!(((dp[0] - dm[0]) / (2.0 * e) - d[1]).abs() < 1e-6);
         assert!(((dp[1] - dm[1]) / (2.0 * e) - d[2]).abs() < 1e-5);
+    }
+
+    /// The paper's quintic is the Bezier of order 5 with the points `from` three times and
+    /// `to` three times (`10 s^3 - 15 s^4 + 6 s^5 = B_3 + B_4 + B_5`): the same values and
+    /// derivatives to rounding (1e-12 relative to the scales `a`, `30 a / T`, `60 a / T^2`:
+    /// a few ulps of sums of terms of those sizes).
+    #[test]
+    fn the_quintic_is_a_bezier_of_order_five() {
+        let (a, ts) = (0.5235987755982988, 0.3);
+        let r = Ramp::new(-a / 2.0, a / 2.0, ts);
+        let b = super::Bezier::new(
+            &[-a / 2.0, -a / 2.0, -a / 2.0, a / 2.0, a / 2.0, a / 2.0],
+            ts,
+        );
+        for k in 0..=40 {
+            let t = ts * 1.1 * f64::from(k) / 40.0;
+            let (x, y) = (r.at(t), b.at(t));
+            let scale = [a, 30.0 * a / ts, 60.0 * a / (ts * ts)];
+            for i in 0..3 {
+                assert!(
+                    (x[i] - y[i]).abs() <= 1e-12 * scale[i],
+                    "t = {t}, {i}: {x:?} {y:?}"
+                );
+            }
+        }
+    }
+
+    /// A Bezier of order 1 is the straight line between its points, with the constant slope
+    /// and no curvature.
+    #[test]
+    fn a_bezier_of_order_one_is_a_line() {
+        let b = super::Bezier::new(&[1.0, 3.0], 2.0);
+        assert_eq!(b.at(0.0), [1.0, 1.0, 0.0]);
+        assert_eq!(b.at(1.0), [2.0, 1.0, 0.0]);
+        assert_eq!(b.at(2.0), [3.0, 0.0, 0.0]);
     }
 
     /// A ramp between any two values is the paper's shape shifted and scaled.

@@ -25,7 +25,7 @@ mod registry;
 
 pub use args::{Args, Tracking};
 pub use binding::{BindError, Binding, SIGMA};
-pub use desired::{Desired, Ramp, aux_input};
+pub use desired::{Bezier, Desired, Ramp, aux_input};
 pub use kernel_id::KernelId;
 pub use kernels::{Kernels, power};
 pub use registry::{Compiled, Prepare, Variant};

@@ -14,11 +14,12 @@
 //! for every front end.
 //!
 //! Imports run one way, from the analyses down to the integrators:
-//! [`continuation`] -> [`poincare`]; [`sweep`], [`poincare`], [`floor`] -> [`sim`] -> [`setup`] ->
+//! [`design`] -> [`poincare`], [`sim`]; [`continuation`] -> [`poincare`]; [`sweep`], [`poincare`], [`floor`] -> [`sim`] -> [`setup`] ->
 //! [`model`] ([`jacobian`], [`compiled`]) -> [`ode`], [`vector`].
 
 pub mod compiled;
 pub mod continuation;
+pub mod design;
 pub mod floor;
 pub mod jacobian;
 pub mod model;

@@ -7,7 +7,9 @@ use std::collections::HashSet;
 use crate::model::error::{ModelError, ModelErrorKind};
 use crate::model::load::{Loader, Use};
 use crate::model::raw::{RawModel, Str};
-use crate::model::types::{Control, Descriptor, Desired, Input, ModelExpr, Name, Output};
+use crate::model::types::{
+    Control, Descriptor, Desired, Input, MAX_BEZIER_POINTS, ModelExpr, Name, Output,
+};
 
 /// Inputs, control, outputs and descriptors, checked.
 pub(crate) struct Actuation {
@@ -131,8 +133,50 @@ impl Loader<'_> {
                     None => Ok(()),
                 }
             };
+            let no_points = || match &d.points {
+                Some(p) => Err(self.error(
+                    p.span(),
+                    ModelErrorKind::Toml,
+                    format!(
+                        "{what} desired: `points` does not belong to shape \"{}\"",
+                        d.shape.get_ref()
+                    ),
+                )),
+                None => Ok(()),
+            };
             let desired = match d.shape.get_ref().as_str() {
+                "bezier" => {
+                    extra(&[(&d.from, "from"), (&d.to, "to"), (&d.value, "value")])?;
+                    let Some(points) = &d.points else {
+                        return Err(self.error(
+                            o.desired.span(),
+                            ModelErrorKind::Toml,
+                            format!("{what} desired: missing field `points` for shape \"bezier\" (2 to {MAX_BEZIER_POINTS} expressions of the parameters)"),
+                        ));
+                    };
+                    let n = points.get_ref().len();
+                    if !(2..=MAX_BEZIER_POINTS).contains(&n) {
+                        return Err(self.error(
+                            points.span(),
+                            ModelErrorKind::Count,
+                            format!("{what} desired points: {n} given; expected 2 to {MAX_BEZIER_POINTS} (a Bezier of order 1 to {})", MAX_BEZIER_POINTS - 1),
+                        ));
+                    }
+                    let points = points
+                        .get_ref()
+                        .iter()
+                        .enumerate()
+                        .map(|(k, p)| {
+                            self.expr(p, &format!("{what} desired points[{k}]"), Use::Constant)
+                        })
+                        .collect::<Result<Vec<_>, _>>()?;
+                    Desired::Bezier {
+                        points,
+                        duration: field(&d.duration, "duration")?,
+                    }
+                }
                 "quintic" => {
+                    no_points()?;
                     extra(&[(&d.value, "value")])?;
                     Desired::Quintic {
                         from: field(&d.from, "from")?,
@@ -141,6 +185,7 @@ impl Loader<'_> {
                     }
                 }
                 "hold" => {
+                    no_points()?;
                     extra(&[(&d.from, "from"), (&d.to, "to"), (&d.duration, "duration")])?;
                     Desired::Hold {
                         value: field(&d.value, "value")?,
@@ -151,7 +196,7 @@ impl Loader<'_> {
                         d.shape.span(),
                         ModelErrorKind::Toml,
                         format!(
-                            "{what} desired shape `{}`: expected \"quintic\" or \"hold\"",
+                            "{what} desired shape `{}`: expected \"quintic\", \"bezier\" or \"hold\"",
                             crate::limits::echo(other)
                         ),
                     ));

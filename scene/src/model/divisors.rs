@@ -86,6 +86,10 @@ impl Model {
                     out.extend([from, to, duration].map(|e| (ExprRole::Desired, e)));
                 }
                 Desired::Hold { value } => out.push((ExprRole::Desired, value)),
+                Desired::Bezier { points, duration } => {
+                    out.extend(points.iter().map(|e| (ExprRole::Desired, e)));
+                    out.push((ExprRole::Desired, duration));
+                }
             }
         }
         out

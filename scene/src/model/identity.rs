@@ -115,6 +115,10 @@ impl Model {
                     format!("quintic {} {} {}", e(from), e(to), e(duration))
                 }
                 Desired::Hold { value } => format!("hold {}", e(value)),
+                Desired::Bezier { points, duration } => {
+                    let p: Vec<String> = points.iter().map(e).collect();
+                    format!("bezier [{}] {}", p.join(", "), e(duration))
+                }
             };
             line(format!(
                 "output {} {} {} {desired}",

@@ -43,6 +43,6 @@ pub use rational::Rational;
 pub use symbols::{Symbol, SymbolKind};
 pub use types::{
     Body, Control, Coordinate, CoordinateUnit, Descriptor, Desired, Fall, FallCondition, Floor,
-    Impact, Input, Model, ModelExpr, Name, Output, Parameter, Point, Relabel, Section, Stage,
-    Stance, StartValue, Strike,
+    Impact, Input, MAX_BEZIER_POINTS, Model, ModelExpr, Name, Output, Parameter, Point, Relabel,
+    Section, Stage, Stance, StartValue, Strike,
 };

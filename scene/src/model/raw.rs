@@ -187,6 +187,8 @@ pub(crate) struct RawDesired {
     pub(crate) duration: Option<Str>,
     #[serde(default)]
     pub(crate) value: Option<Str>,
+    #[serde(default)]
+    pub(crate) points: Option<Spanned<Vec<Str>>>,
 }
 
 #[derive(Deserialize)]

@@ -285,7 +285,19 @@ pub enum Desired {
         /// The value.
         value: ModelExpr,
     },
+    /// The Bezier polynomial of order `points.len() - 1` in `s = t / duration` with these
+    /// control points, `y_d = sum_k points[k] C(M, k) s^k (1 - s)^(M - k)`, over `[0,
+    /// duration]`, then held at its last point.
+    Bezier {
+        /// The control points `a_0 .. a_M` (2 to [`MAX_BEZIER_POINTS`]).
+        points: Vec<ModelExpr>,
+        /// The duration.
+        duration: ModelExpr,
+    },
 }
+
+/// The most control points of a Bezier desired trajectory (order 15).
+pub const MAX_BEZIER_POINTS: usize = 16;
 
 /// A controlled output (`[[output]]`).
 #[derive(Clone, Debug)]

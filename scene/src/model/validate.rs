@@ -62,6 +62,12 @@ pub(crate) fn validate(model: &Model) -> Result<(), ModelError> {
             Desired::Hold { value } => {
                 v.finite(value, &format!("{what} value"))?;
             }
+            Desired::Bezier { points, duration } => {
+                for (k, p) in points.iter().enumerate() {
+                    v.finite(p, &format!("{what} points[{k}]"))?;
+                }
+                v.constant_positive(duration, &format!("{what} duration"), "a duration")?;
+            }
         }
     }
     if let Some(p) = &model.power_until {

@@ -809,3 +809,90 @@ fn the_power_is_counted_until_a_time_in_the_parameters_and_only_with_inputs() {
         "needs inputs",
     );
 }
+
+/// Line 83 of `MINI` + `CONTROLLED` with the desired trajectory `desired` (inline table body).
+fn with_desired(desired: &str) -> Result<Model, ModelError> {
+    load_with(
+        &format!("{MINI}{CONTROLLED}"),
+        "shape = \"hold\", value = \"alpha/2\"",
+        desired,
+    )
+}
+
+#[test]
+fn a_bezier_desired_trajectory_loads_with_its_points() -> Result<(), ModelError> {
+    let m = with_desired(
+        "shape = \"bezier\", points = [\"-alpha/2\", \"0\", \"alpha/2\"], duration = \"l\"",
+    )?;
+    let desired = &m.outputs[0].desired;
+    assert!(matches!(
+        desired,
+        walker_scene::model::Desired::Bezier { .. }
+    ));
+    if let walker_scene::model::Desired::Bezier { points, duration } = desired {
+        assert_eq!(points.len(), 3);
+        assert_eq!(points[0].text, "-alpha/2");
+        assert_eq!(duration.text, "l");
+    }
+    Ok(())
+}
+
+#[test]
+fn a_bezier_needs_two_points_at_least() {
+    // Column 40: the `[` of the points.
+    let r = with_desired("shape = \"bezier\", points = [\"0\"], duration = \"l\"");
+    assert_error(
+        r,
+        ModelErrorKind::Count,
+        "83:40",
+        "1 given; expected 2 to 16",
+    );
+}
+
+#[test]
+fn a_bezier_needs_its_points() {
+    let r = with_desired("shape = \"bezier\", duration = \"l\"");
+    assert_error(r, ModelErrorKind::Toml, "83:11", "missing field `points`");
+}
+
+#[test]
+fn a_bezier_point_must_not_be_empty() {
+    let r = with_desired("shape = \"bezier\", points = [\"0\", \"\"], duration = \"l\"");
+    assert_error(r, ModelErrorKind::Syntax, "83:47", "points[1]");
+}
+
+#[test]
+fn a_bezier_point_is_an_expression_of_parameters() {
+    // Column 47: `th` inside the second point's string.
+    let r = with_desired("shape = \"bezier\", points = [\"0\", \"th\"], duration = \"l\"");
+    assert_error(
+        r,
+        ModelErrorKind::SymbolNotAllowed,
+        "83:47",
+        "`th` is a coordinate; expected a parameter",
+    );
+}
+
+#[test]
+fn a_bezier_duration_must_be_positive() {
+    let r = with_desired("shape = \"bezier\", points = [\"0\", \"1\"], duration = \"-l\"");
+    assert_error(
+        r,
+        ModelErrorKind::Physics,
+        "83:64",
+        "expected a duration > 0",
+    );
+}
+
+#[test]
+fn points_do_not_belong_to_a_quintic() {
+    let r = with_desired(
+        "shape = \"quintic\", from = \"0\", to = \"1\", duration = \"l\", points = [\"0\", \"1\"]",
+    );
+    assert_error(
+        r,
+        ModelErrorKind::Toml,
+        "83:79",
+        "`points` does not belong to shape \"quintic\"",
+    );
+}

@@ -1,0 +1,206 @@
+//! `walker design`: the run-time parameters that make the best periodic gait of a model on its
+//! floor, with the friction the gait needs as a constraint (the library's
+//! [`walker::design`]; `docs/design.md`). This module parses the flags into a
+//! [`DesignRequest`] and formats the [`Design`] as a table or JSON.
+
+use walker::design::{Design, DesignError, DesignRequest, Margins, Objective, Vary};
+
+use crate::args::Common;
+use crate::input::{InputError, number};
+use crate::run;
+
+/// The objective, as the command line spells it.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum ObjectiveArg {
+    /// Specific resistance `SR = p / (m_t g V)` of the periodic gait.
+    #[value(name = "specific_resistance")]
+    SpecificResistance,
+    /// Mean input power `p` of the periodic gait (W).
+    #[value(name = "power")]
+    Power,
+    /// The friction the gait needs: max of `|lambda_t|/lambda_n` over the stance and the
+    /// heel strike's impulse ratio.
+    #[value(name = "friction")]
+    Friction,
+}
+
+/// The flags of `walker design`.
+#[derive(clap::Args, Debug)]
+pub struct DesignArgs {
+    /// The shared flags (`--model`, `--set`, `--friction`, `--impact`, tolerances, `--json`).
+    #[command(flatten)]
+    pub common: Common,
+    /// The parameters to vary, comma-separated, each NAME=LO:HI or NAME=LO:HI:START (the
+    /// start defaults to the model's value, with --set), e.g. `T_set=0.1:0.6`.
+    #[arg(long, value_delimiter = ',', required = true)]
+    pub vary: Vec<String>,
+    /// What to minimise.
+    #[arg(long, value_enum, default_value = "specific_resistance")]
+    pub objective: ObjectiveArg,
+    /// Every multiplier's modulus at most 1 minus this, in [0, 1).
+    #[arg(value_parser = number::finite, long = "multiplier-margin", default_value_t = 0.05, allow_hyphen_values = true)]
+    pub multiplier_margin: f64,
+    /// The friction ratios (stance and strike) at most mu0 minus this, >= 0.
+    #[arg(value_parser = number::finite, long = "friction-margin", default_value_t = 0.01, allow_hyphen_values = true)]
+    pub friction_margin: f64,
+    /// The normal force at least this (N), >= 0.
+    #[arg(value_parser = number::finite, long = "normal-margin", default_value_t = 0.0, allow_hyphen_values = true)]
+    pub normal_margin: f64,
+    /// The solver's limit on objective evaluations: a whole number in [1, 10000].
+    #[arg(
+        long = "max-evaluations",
+        default_value = "100",
+        allow_hyphen_values = true
+    )]
+    pub max_evaluations: String,
+    /// The solver's relative tolerance on the objective and the parameters, in (0, 1).
+    #[arg(value_parser = number::fraction, long, default_value_t = 1e-10, allow_hyphen_values = true)]
+    pub tol: f64,
+}
+
+/// Why `walker design` did not give a design.
+#[derive(Debug, thiserror::Error)]
+pub enum DesignCliError {
+    /// A bad request (exit code 2).
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// No periodic gait at the start (exit code 1).
+    #[error("{0}")]
+    NoGait(String),
+}
+
+/// One `NAME=LO:HI[:START]` of `--vary`, the start defaulting to `current(NAME)`.
+///
+/// # Errors
+/// [`InputError`] on `vary` for a malformed item or a bound that is not a number.
+pub fn parse_vary(item: &str, current: impl Fn(&str) -> Option<f64>) -> Result<Vary, InputError> {
+    let bad = || {
+        InputError::new(
+            "vary",
+            format!(
+                "`{}`: expected NAME=LO:HI or NAME=LO:HI:START with numbers",
+                walker::request::shown::name(item)
+            ),
+        )
+    };
+    let (name, range) = item.split_once('=').ok_or_else(bad)?;
+    let parts: Vec<f64> = range
+        .split(':')
+        .map(|t| t.trim().parse::<f64>().map_err(|_| bad()))
+        .collect::<Result<_, _>>()?;
+    let name = name.trim().to_owned();
+    let (lo, hi, start) = match parts[..] {
+        [lo, hi] => (lo, hi, current(&name).unwrap_or(f64::NAN)),
+        [lo, hi, s] => (lo, hi, s),
+        _ => return Err(bad()),
+    };
+    Ok(Vary {
+        name,
+        lo,
+        hi,
+        start,
+    })
+}
+
+/// Run `walker design`: the text (a table, or one JSON object with `--json`) to print.
+///
+/// # Errors
+/// [`DesignCliError::Input`] for a bad request, naming the flag and the valid range;
+/// [`DesignCliError::NoGait`] where the start has no periodic gait.
+pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
+    let common = &args.common;
+    let setup = run::setup(common, &common.overrides(None, None, None)?)?;
+    let cfg = common.config()?;
+    let vary = args
+        .vary
+        .iter()
+        .map(|v| parse_vary(v, |n| setup.params.get(n)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let max_evaluations = crate::input::whole("max-evaluations", &args.max_evaluations, 1, 10_000)?;
+    let tol = crate::input::check(
+        "tol",
+        args.tol,
+        args.tol > 0.0 && args.tol < 1.0,
+        "in (0, 1)",
+    )?;
+    let req = DesignRequest {
+        vary,
+        objective: match args.objective {
+            ObjectiveArg::SpecificResistance => Objective::SpecificResistance,
+            ObjectiveArg::Power => Objective::Power,
+            ObjectiveArg::Friction => Objective::Friction,
+        },
+        margins: Margins {
+            multiplier: args.multiplier_margin,
+            friction: args.friction_margin,
+            normal: args.normal_margin,
+        },
+        max_evaluations,
+        tol,
+    };
+    let d = walker::design::design(&setup, &cfg, &req).map_err(|e| match e {
+        DesignError::NoGaitAtStart { .. } => DesignCliError::NoGait(e.to_string()),
+        DesignError::Margin { which, .. } => {
+            InputError::new(&format!("{which}-margin"), e.to_string()).into()
+        }
+        other => InputError::new("vary", other.to_string()).into(),
+    })?;
+    Ok(if common.json {
+        format!("{}\n", json(&d))
+    } else {
+        text(&d)
+    })
+}
+
+/// The design as one JSON object.
+#[must_use]
+pub fn json(d: &Design) -> String {
+    serde_json::to_string(d).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+}
+
+/// The design as a table.
+#[must_use]
+pub fn text(d: &Design) -> String {
+    let mut s = String::new();
+    s.push_str(&format!(
+        "design: {:?} (solver: {}), {} gait evaluations\n",
+        d.status, d.solver, d.evaluations
+    ));
+    if let Some(v) = d.violated {
+        s.push_str(&format!("violated: {v}\n"));
+    }
+    s.push_str(&format!(
+        "objective {} = {:.12} (start {:.12}), KKT residual {:.3e}\n",
+        d.objective, d.value, d.start_value, d.kkt_residual
+    ));
+    s.push_str("parameter        value            lo        hi        d(objective)\n");
+    for p in &d.parameters {
+        s.push_str(&format!(
+            "{:<16} {:<16.12} {:<9} {:<9} {:+.6e}\n",
+            p.name, p.value, p.lo, p.hi, p.gradient
+        ));
+    }
+    let fp = &d.gait.fixed_point;
+    s.push_str(&format!(
+        "gait: T = {:.10} s, dx = {:.10} m, V = {:.10} m/s, p = {:.10} W, SR = {:.12}\n",
+        fp.period, fp.dx, fp.speed, d.gait.power, d.gait.specific_resistance
+    ));
+    s.push_str(&format!("fixed point: {:?}\n", fp.state_plus.as_slice()));
+    for m in &fp.multipliers {
+        s.push_str(&format!(
+            "multiplier {:+.10} {:+.10}i |.| = {:.10}\n",
+            m.re,
+            m.im,
+            m.modulus()
+        ));
+    }
+    s.push_str(&format!("constraints (mu0 = {}):\n", d.mu0));
+    s.push_str("name              value          sense limit          slack          holds\n");
+    for c in &d.constraints {
+        s.push_str(&format!(
+            "{:<17} {:<14.10} {:<5} {:<14.10} {:<+14.6e} {}\n",
+            c.name, c.value, c.sense, c.limit, c.slack, c.holds
+        ));
+    }
+    s
+}

@@ -1,0 +1,99 @@
+//! Why a design request is invalid, or why no design could start.
+
+/// A design request that cannot be run.
+#[derive(Debug, thiserror::Error)]
+pub enum DesignError {
+    /// No parameter to vary.
+    #[error("no parameter to vary: give at least one NAME=LO:HI")]
+    NoParameters,
+    /// A varied name is not a run-time parameter of the model.
+    #[error("`{name}` is not a run-time parameter of model `{model}`; valid: {known}")]
+    NotAParameter {
+        /// The name given.
+        name: String,
+        /// The model.
+        model: String,
+        /// The valid names.
+        known: String,
+    },
+    /// A parameter varied twice.
+    #[error("`{name}` is varied twice")]
+    Twice {
+        /// The parameter.
+        name: String,
+    },
+    /// A bound or start that is not a finite number.
+    #[error("{what} of `{name}` is {value}: must be finite")]
+    NotFinite {
+        /// The parameter.
+        name: String,
+        /// `lower bound`, `upper bound` or `start`.
+        what: &'static str,
+        /// The value.
+        value: f64,
+    },
+    /// Bounds with `lo >= hi`.
+    #[error("bounds of `{name}` are [{lo}, {hi}]: the lower bound must be below the upper")]
+    EmptyRange {
+        /// The parameter.
+        name: String,
+        /// Lower bound.
+        lo: f64,
+        /// Upper bound.
+        hi: f64,
+    },
+    /// The start lies outside the bounds.
+    #[error("start of `{name}` is {start}: must be in [{lo}, {hi}]")]
+    StartOutside {
+        /// The parameter.
+        name: String,
+        /// The start.
+        start: f64,
+        /// Lower bound.
+        lo: f64,
+        /// Upper bound.
+        hi: f64,
+    },
+    /// A bound outside the parameter's own valid range.
+    #[error("bound {value} of `{name}`: {message}")]
+    BoundOutsideRange {
+        /// The parameter.
+        name: String,
+        /// The bound.
+        value: f64,
+        /// The parameter's range, as the model states it.
+        message: String,
+    },
+    /// A margin out of range.
+    #[error("{which} margin is {value}: must be {must_be}")]
+    Margin {
+        /// `multiplier`, `friction` or `normal`.
+        which: &'static str,
+        /// The value.
+        value: f64,
+        /// The valid range.
+        must_be: &'static str,
+    },
+    /// The objective needs the control inputs of an actuated walker.
+    #[error("objective `{objective}` needs an actuated walker; model `{model}` has no inputs")]
+    NoInputs {
+        /// The objective.
+        objective: &'static str,
+        /// The model.
+        model: String,
+    },
+    /// The model has no friction coefficient `mu0` to hold the foot against.
+    #[error("model `{model}` has no parameter `mu0`: the friction constraints need one")]
+    NoMu0 {
+        /// The model.
+        model: String,
+    },
+    /// No periodic gait at the start: nothing to design from.
+    #[error("no periodic gait at the start ({at}): {message}")]
+    NoGaitAtStart {
+        /// The start, as `NAME=VALUE, ...`.
+        at: String,
+        /// Why.
+        message: String,
+    },
+}

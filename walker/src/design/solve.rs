@@ -1,0 +1,407 @@
+//! The nonlinear program of a design and its solution by SLSQP: the nested functions (the
+//! objective and constraints of the periodic gait at `p`), their central-difference gradients
+//! and the bookkeeping of the best feasible point.
+
+use std::cell::RefCell;
+
+use slsqp::{Func, StopTols, minimize};
+
+use crate::setup::Setup;
+use crate::sim::SimConfig;
+
+use super::error::DesignError;
+use super::evaluate::{Evaluation, evaluate};
+use super::kkt::kkt;
+use super::request::{DesignRequest, Objective};
+use super::result::{ConstraintSlack, Design, DesignStatus, VariedValue};
+
+/// The constraints, in this order.
+const NAMES: [&str; 4] = [
+    "multipliers",
+    "impact-friction",
+    "normal-force",
+    "stance-friction",
+];
+/// The number of constraints of the program.
+const COUNT: usize = NAMES.len();
+/// The sharpness `rho` of the Kreisselmeier-Steinhauser aggregate of the stance's samples
+/// ([`ks`]): it exceeds their largest value by at most `ln(400) / rho = 0.015` (by 0.0017 at
+/// the paper walker's shaped design; `rho` 100 and 200 gave 0.012 and 0.004 and a worse
+/// design, 1000 a constraint too sharp for the solver to converge on).
+const RHO: f64 = 400.0;
+/// A constraint's value where there is no gait (every constraint reads as violated by this).
+const NO_GAIT: f64 = 1.0;
+/// Ratios beyond this (a normal force at or below zero) are capped so the solver sees numbers.
+const CAP: f64 = 1e3;
+/// A violation the solver sees as none (see the constraints' callbacks).
+const SNAP: f64 = 1e-10;
+/// A constraint holds with a slack of at least `-FEASIBLE`.
+const FEASIBLE: f64 = 1e-8;
+/// A design is optimal where the KKT residual is at most this times `1 + |grad f|`: the
+/// central differences of nested functions solved to `rtol` carry errors of about `rtol /
+/// STEP` (1e-6 at the defaults), and the solver stops on the objective's change.
+const KKT_TOL: f64 = 1e-4;
+/// The difference step, relative to each parameter's range.
+const STEP: f64 = 1e-4;
+
+/// The program: the walker, the request, and a cache of evaluations by parameter vector.
+struct Program<'a> {
+    setup: &'a Setup,
+    cfg: &'a SimConfig,
+    req: &'a DesignRequest,
+    names: Vec<&'a str>,
+    /// The floor's friction coefficient, which the constraints hold the foot against.
+    floor_mu0: f64,
+    /// Evaluated points: the parameters and the evaluation (or why there was none).
+    seen: RefCell<Vec<(Vec<f64>, Option<Evaluation>)>>,
+    /// The last fixed point found, Newton's next guess.
+    guess: RefCell<Option<Vec<f64>>>,
+    /// The gradients at the last point asked (the solver asks for each constraint's).
+    grads: RefCell<Option<Gradients>>,
+}
+
+/// A point and the gradients there: `df` and `dg[j][i] = d g_j / d x_i`.
+type Gradients = (Vec<f64>, Vec<f64>, Vec<Vec<f64>>);
+
+impl Program<'_> {
+    /// The floor's `mu0` at `x` (varied or the request's).
+    fn mu0(&self, x: &[f64]) -> f64 {
+        self.names
+            .iter()
+            .position(|n| *n == "mu0")
+            .map_or(self.floor_mu0, |i| x[i])
+    }
+
+    /// The evaluation at `x`, from the cache or computed (warm-started from the last gait).
+    fn at(&self, x: &[f64]) -> Option<Evaluation> {
+        if let Some((_, e)) = self.seen.borrow().iter().rev().find(|(y, _)| y == x) {
+            return e.clone();
+        }
+        let guess = self.guess.borrow().clone();
+        let e = evaluate(self.setup, self.cfg, &self.names, x, guess.as_deref()).ok();
+        if let Some(e) = &e {
+            *self.guess.borrow_mut() = Some(e.reduced.clone());
+        }
+        self.seen.borrow_mut().push((x.to_vec(), e.clone()));
+        e
+    }
+
+    /// The objective at an evaluation.
+    fn objective(&self, e: &Evaluation) -> f64 {
+        match self.req.objective {
+            Objective::SpecificResistance => e.specific_resistance,
+            Objective::Power => e.power,
+            Objective::Friction => e.required_friction().min(CAP),
+        }
+    }
+
+    /// The constraints `g <= 0` at `x` (all [`NO_GAIT`] without a gait): the multipliers,
+    /// the strike's ratio, the normal force, and the stance's ratios aggregated by [`ks`].
+    fn constraints(&self, x: &[f64], e: Option<&Evaluation>) -> Vec<f64> {
+        let m = &self.req.margins;
+        let mu = self.mu0(x) - m.friction;
+        match e {
+            None => vec![NO_GAIT; COUNT],
+            Some(e) => {
+                let ratios: Vec<f64> = e.stance_ratios.iter().map(|r| r.min(CAP)).collect();
+                vec![
+                    e.fixed_point.max_modulus() - (1.0 - m.multiplier),
+                    e.impact_friction.min(CAP) - mu,
+                    m.normal - e.min_normal.max(-CAP),
+                    ks(&ratios) - mu,
+                ]
+            }
+        }
+    }
+
+    /// The objective and constraints at `x`; without a gait the objective of the nearest
+    /// point with one (so that only the constraints tell the solver it has left the gaits).
+    fn values(&self, x: &[f64]) -> (f64, Vec<f64>) {
+        let e = self.at(x);
+        let f = match &e {
+            Some(e) => self.objective(e),
+            None => self
+                .seen
+                .borrow()
+                .iter()
+                .filter_map(|(y, e)| e.as_ref().map(|e| (dist(x, y), self.objective(e))))
+                .min_by(|a, b| a.0.total_cmp(&b.0))
+                .map_or(0.0, |(_, f)| f),
+        };
+        (f, self.constraints(x, e.as_ref()))
+    }
+
+    /// Central differences of the objective and the constraints at `x` (one-sided at a bound
+    /// or where one side has no gait), cached for the last point.
+    fn gradients(&self, x: &[f64]) -> (Vec<f64>, Vec<Vec<f64>>) {
+        if let Some((y, df, dg)) = self.grads.borrow().as_ref()
+            && y == x
+        {
+            return (df.clone(), dg.clone());
+        }
+        let n = x.len();
+        let base = self.values(x);
+        let mut df = vec![0.0; n];
+        let mut dg = vec![vec![0.0; n]; COUNT];
+        for (i, v) in self.req.vary.iter().enumerate() {
+            let h = STEP * (v.hi - v.lo);
+            let side = |s: f64| {
+                let mut y = x.to_vec();
+                y[i] += s;
+                (y[i] >= v.lo && y[i] <= v.hi && self.at(&y).is_some()).then(|| self.values(&y))
+            };
+            let (plus, minus) = (side(h), side(-h));
+            let (a, b, w) = match (plus, minus) {
+                (Some(p), Some(m)) => (p, m, 2.0 * h),
+                (Some(p), None) => (p, base.clone(), h),
+                (None, Some(m)) => (base.clone(), m, h),
+                (None, None) => continue,
+            };
+            df[i] = (a.0 - b.0) / w;
+            for (j, row) in dg.iter_mut().enumerate() {
+                row[i] = (a.1[j] - b.1[j]) / w;
+            }
+        }
+        *self.grads.borrow_mut() = Some((x.to_vec(), df.clone(), dg.clone()));
+        (df, dg)
+    }
+
+    /// Whether every constraint holds at `x`.
+    fn feasible(&self, x: &[f64]) -> bool {
+        self.at(x).is_some() && self.values(x).1.iter().all(|g| *g <= FEASIBLE)
+    }
+}
+
+/// The friction coefficient of the held walker: far above any ratio a gait needs (the
+/// constraints cap ratios at [`CAP`]), so that under Coulomb friction no sample slips.
+pub const HELD_MU0: f64 = 1e4;
+
+/// `setup` with its foot held: under Coulomb friction `mu0 = HELD_MU0` (the stuck stance and
+/// the sticking impact do not depend on `mu0`, so the gait is the one the floor's `mu0` walks
+/// wherever the constraints hold); under a smooth law the setup itself (its foot always
+/// creeps; the constraints bound the ratio it draws).
+fn held_setup(setup: &Setup) -> Setup {
+    let mut held = setup.clone();
+    if setup.friction == crate::model::Friction::Coulomb && held.set("mu0", HELD_MU0).is_err() {
+        return setup.clone();
+    }
+    held
+}
+
+/// The Kreisselmeier-Steinhauser aggregate `max + ln(sum_k exp(rho (v_k - max))) / rho` of
+/// `v`: a smooth upper bound of its largest value, by at most `ln(len) / rho`. One smooth
+/// constraint on the whole stance, where one constraint per sample gives linearisations that
+/// contradict each other when a peak moves in time with the parameters, and the plain maximum
+/// has a kink where two peaks are equal (as at a design whose friction is shaped).
+fn ks(v: &[f64]) -> f64 {
+    let top = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    top + v.iter().map(|x| (RHO * (x - top)).exp()).sum::<f64>().ln() / RHO
+}
+
+/// Euclidean distance.
+fn dist(a: &[f64], b: &[f64]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}
+
+/// Run the design `req` on `setup`'s walker with the integrator settings `cfg` (module
+/// documentation). An infeasible design is a result ([`DesignStatus::Infeasible`]).
+///
+/// # Errors
+/// An invalid request ([`DesignRequest::check`]), or no periodic gait at the start.
+pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Design, DesignError> {
+    req.check(setup, cfg)?;
+    // The gait with the foot held: under Coulomb friction the design's walker has a friction
+    // coefficient no gait reaches, so its stance foot sticks and its strikes stick; the
+    // constraints then ask that the friction the held gait needs stay below the floor's.
+    let floor_mu0 = setup.params.get("mu0").unwrap_or(0.0);
+    let held = held_setup(setup);
+    let setup = &held;
+    let names: Vec<&str> = req.vary.iter().map(|v| v.name.as_str()).collect();
+    let x0: Vec<f64> = req.vary.iter().map(|v| v.start).collect();
+    let prog = Program {
+        setup,
+        cfg,
+        req,
+        names: names.clone(),
+        floor_mu0,
+        seen: RefCell::new(Vec::new()),
+        guess: RefCell::new(None),
+        grads: RefCell::new(None),
+    };
+    let start =
+        evaluate(setup, cfg, &names, &x0, None).map_err(|message| DesignError::NoGaitAtStart {
+            at: names
+                .iter()
+                .zip(&x0)
+                .map(|(n, v)| format!("{n}={v}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            message,
+        })?;
+    *prog.guess.borrow_mut() = Some(start.reduced.clone());
+    prog.seen
+        .borrow_mut()
+        .push((x0.clone(), Some(start.clone())));
+    let start_value = prog.objective(&start);
+
+    let objective = |x: &[f64], grad: Option<&mut [f64]>, _: &mut ()| -> f64 {
+        if let Some(g) = grad {
+            g.copy_from_slice(&prog.gradients(x).0);
+        }
+        prog.values(x).0
+    };
+    let cons: Vec<Box<dyn Func<()> + '_>> = (0..COUNT)
+        .map(|j| {
+            let p = &prog;
+            Box::new(
+                move |x: &[f64], grad: Option<&mut [f64]>, _: &mut ()| -> f64 {
+                    if let Some(g) = grad {
+                        g.copy_from_slice(&p.gradients(x).1[j]);
+                    }
+                    // NLopt's SLSQP counts a point feasible only at `g <= 0` exactly, and stops
+                    // only at a feasible one; iterates that converge onto an active constraint
+                    // miss it by rounding, so a violation below `SNAP` reads as 0.
+                    let g = p.values(x).1[j];
+                    if g > 0.0 && g <= SNAP { 0.0 } else { g }
+                },
+            ) as Box<dyn Func<()> + '_>
+        })
+        .collect();
+    let cons_ref: Vec<&dyn Func<()>> = cons.iter().map(|c| c.as_ref()).collect();
+    let bounds: Vec<(f64, f64)> = req.vary.iter().map(|v| (v.lo, v.hi)).collect();
+    let stop = StopTols {
+        ftol_rel: req.tol,
+        xtol_rel: req.tol,
+        ..StopTols::default()
+    };
+    let outcome = minimize(
+        objective,
+        &x0,
+        &bounds,
+        &cons_ref,
+        (),
+        req.max_evaluations,
+        Some(stop),
+    );
+    let (solver, converged, x_solver) = match outcome {
+        Ok((s, x, _)) => (
+            format!("{s:?}"),
+            !matches!(s, slsqp::SuccessStatus::MaxEvalReached),
+            x,
+        ),
+        Err((e, x, _)) => (format!("{e:?}"), false, x),
+    };
+    // The solver's point if it meets every constraint (to [`FEASIBLE`]), else the best point
+    // visited that does (the solver's point is its best feasible one to [`SNAP`], or its last
+    // one where it found none), else the solver's point, infeasible.
+    let candidates: Vec<(Vec<f64>, f64)> = {
+        let seen = prog.seen.borrow();
+        seen.iter()
+            .filter_map(|(y, e)| e.as_ref().map(|e| (y.clone(), prog.objective(e))))
+            .collect()
+    };
+    let best_feasible = candidates
+        .into_iter()
+        .filter(|(y, _)| prog.feasible(y))
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    let x = if prog.feasible(&x_solver) {
+        x_solver
+    } else {
+        best_feasible.map_or(x_solver, |(y, _)| y)
+    };
+    let (f, g) = prog.values(&x);
+    let e = prog.at(&x).unwrap_or(start);
+    let (df, dg) = prog.gradients(&x);
+    let near = |y: f64, b: f64, v: &super::request::Vary| (y - b).abs() <= 1e-9 * (v.hi - v.lo);
+    let at_lo: Vec<bool> = req
+        .vary
+        .iter()
+        .zip(&x)
+        .map(|(v, y)| near(*y, v.lo, v))
+        .collect();
+    let at_hi: Vec<bool> = req
+        .vary
+        .iter()
+        .zip(&x)
+        .map(|(v, y)| near(*y, v.hi, v))
+        .collect();
+    let (kkt_residual, lagrange) = kkt(&df, &g, &dg, &at_lo, &at_hi);
+    let m = &req.margins;
+    let mu = prog.mu0(&x);
+    let rows = [
+        (
+            e.fixed_point.max_modulus(),
+            1.0 - m.multiplier,
+            "<=",
+            lagrange[0],
+        ),
+        (e.impact_friction, mu - m.friction, "<=", lagrange[1]),
+        (e.min_normal, m.normal, ">=", lagrange[2]),
+        (e.stance_friction, mu - m.friction, "<=", lagrange[3]),
+    ];
+    let constraints: Vec<ConstraintSlack> = rows
+        .iter()
+        .zip(NAMES)
+        .map(|(&(value, limit, sense, l), name)| {
+            let slack = if sense == "<=" {
+                limit - value
+            } else {
+                value - limit
+            };
+            ConstraintSlack {
+                name,
+                value,
+                limit,
+                sense,
+                slack,
+                holds: slack >= -FEASIBLE,
+                lagrange: l,
+            }
+        })
+        .collect();
+    let feasible = constraints.iter().all(|c| c.holds);
+    let violated = (!feasible).then(|| {
+        constraints
+            .iter()
+            .min_by(|a, b| a.slack.total_cmp(&b.slack))
+            .map_or("multipliers", |c| c.name)
+    });
+    let scale = 1.0 + df.iter().fold(0.0_f64, |m, d| m.max(d.abs()));
+    let stationary = kkt_residual <= KKT_TOL * scale;
+    let status = match (feasible, converged && stationary) {
+        (false, _) => DesignStatus::Infeasible,
+        (true, true) => DesignStatus::Optimal,
+        (true, false) => DesignStatus::Feasible,
+    };
+    let evaluations = prog.seen.borrow().len();
+    Ok(Design {
+        status,
+        violated,
+        solver,
+        objective: req.objective.name(),
+        value: f,
+        start_value,
+        parameters: req
+            .vary
+            .iter()
+            .zip(&x)
+            .zip(&df)
+            .map(|((v, &value), &gradient)| VariedValue {
+                name: v.name.clone(),
+                value,
+                lo: v.lo,
+                hi: v.hi,
+                gradient,
+            })
+            .collect(),
+        mu0: mu,
+        gait: e,
+        constraints,
+        kkt_residual,
+        evaluations,
+    })
+}
