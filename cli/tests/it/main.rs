@@ -9,6 +9,7 @@ mod cli_extremes;
 mod cli_fuzz;
 mod common;
 mod continue_cli;
+mod design_cli;
 mod floor_cli;
 mod floor_study_cli;
 mod front_end_checks;
