@@ -41,6 +41,19 @@ pub trait OdeSystem<const N: usize> {
         N
     }
 
+    /// The values of all the event functions handed to
+    /// [`Integrator::integrate`](super::Integrator::integrate) with this system at `(t, y)`,
+    /// in one call, into `out` (one per event, in their order; each equal to what the event's
+    /// own function gives there). The integrator asks at every accepted step's end, where a
+    /// system whose events share work (a kernel several guards read) evaluates it once.
+    ///
+    /// Return `false` (the default) to have each event's function called instead; `out` is
+    /// then ignored.
+    fn event_values(&mut self, t: f64, y: &[f64; N], out: &mut [f64]) -> bool {
+        let _ = (t, y, out);
+        false
+    }
+
     /// The first time strictly after `t` at which the right-hand side is not
     /// smooth (for example the end of a ramp), if any.
     ///
