@@ -3,7 +3,8 @@
 /// A system of ordinary differential equations `y' = f(t, y)` with `N`
 /// components.
 pub trait OdeSystem<const N: usize> {
-    /// Evaluate the right-hand side: `dy = f(t, y)`.
+    /// Evaluate the right-hand side: `dy = f(t, y)`, every component (`dy` comes holding
+    /// whatever it held before: a stage of the method writes into its storage directly).
     fn rhs(&mut self, t: f64, y: &[f64; N], dy: &mut [f64; N]);
 
     /// Evaluate the Jacobian `jac[i][j] = d f_i / d y_j` at `(t, y)`.

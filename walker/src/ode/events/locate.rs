@@ -58,7 +58,7 @@ pub(crate) fn start<const N: usize>(
 
 /// The most events whose values at a step's end a system gives in one call
 /// ([`OdeSystem::event_values`]); with more, each event's function is called.
-const MAX_BATCH: usize = 32;
+const MAX_BATCH: usize = 24;
 
 /// Evaluate every `g` at the end of an accepted step: all at once where the system gives
 /// them ([`OdeSystem::event_values`]), otherwise one by one. Returns whether some
