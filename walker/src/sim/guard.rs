@@ -113,8 +113,8 @@ impl<'a> Guards<'a> {
         match guard {
             Guard::Strike | Guard::Fall(_) => {
                 let mut e = [0.0; 1 + MAX_FALLS];
-                let k = self.model_events(y, &mut e);
-                Self::event_value(guard, &e[..k])
+                self.model_events(y, &mut e);
+                Self::event_value(guard, &e)
             }
             Guard::LiftOff | Guard::LambdaBlowUp | Guard::FootSlips => {
                 self.reaction_value(guard, || foot.reaction(t, y))
@@ -133,11 +133,11 @@ impl<'a> Guards<'a> {
             return false;
         }
         let mut e = [0.0; 1 + MAX_FALLS];
-        let k = self.model_events(y, &mut e);
+        self.model_events(y, &mut e);
         let mut reaction = None;
         for (v, &guard) in out.iter_mut().zip(&self.list) {
             *v = match guard {
-                Guard::Strike | Guard::Fall(_) => Self::event_value(guard, &e[..k]),
+                Guard::Strike | Guard::Fall(_) => Self::event_value(guard, &e),
                 Guard::LiftOff | Guard::LambdaBlowUp | Guard::FootSlips => {
                     self.reaction_value(guard, || {
                         *reaction.get_or_insert_with(|| {
@@ -152,16 +152,15 @@ impl<'a> Guards<'a> {
     }
 
     /// The model's `events` kernel (the strike guard and the falls) at the coordinates of `y`,
-    /// into `e`; returns how many values it wrote.
-    fn model_events<const S: usize>(&self, y: &[f64; S], e: &mut [f64; 1 + MAX_FALLS]) -> usize {
+    /// into the first of `e` (the rest stays zero).
+    fn model_events<const S: usize>(&self, y: &[f64; S], e: &mut [f64; 1 + MAX_FALLS]) {
         let model = self.foot.model;
         let k = model.event_count().min(e.len());
         model.events(&y[..model.n()], &mut e[..k]);
-        k
     }
 
     /// The value of the strike or fall guard `guard` from the `events` kernel's values `e`.
-    fn event_value(guard: Guard, e: &[f64]) -> f64 {
+    fn event_value(guard: Guard, e: &[f64; 1 + MAX_FALLS]) -> f64 {
         match guard {
             Guard::Fall(i) => e[1 + i],
             _ => e[0],
@@ -211,8 +210,60 @@ impl<'a> Guards<'a> {
 
 #[cfg(test)]
 mod tests {
-    use super::Guard;
-    use crate::model::FrictionLaw;
+    use super::{Guard, Guards};
+    use crate::model::{Contact, Friction, FrictionLaw, Slide};
+    use crate::setup::Setup;
+    use crate::sim::foot::Foot;
+
+    /// What the integrator is given at a step's end, all the guards' values in one call
+    /// ([`Guards::values`]), is each guard's own value ([`Guards::value`], what root location
+    /// asks for) bit for bit: for the tanh law, and for Coulomb friction with the foot stuck
+    /// and sliding either way, at the start and at states and times away from it (the ramp's
+    /// middle and its end). A buffer that is not one value per guard is refused.
+    #[test]
+    fn the_guards_values_together_are_each_guards_own_value_bit_for_bit() {
+        for coulomb in [false, true] {
+            let mut setup = Setup::active_level().expect("the built-in scene");
+            if coulomb {
+                setup.friction = Friction::Coulomb;
+            }
+            let model = setup.model().expect("compiled kernels");
+            assert_eq!(
+                model.n(),
+                4,
+                "the paper's walker: a state of 8 and the power"
+            );
+            let contacts = if coulomb {
+                vec![
+                    Contact::Stuck,
+                    Contact::Sliding(Slide::of(1.0)),
+                    Contact::Sliding(Slide::of(-1.0)),
+                ]
+            } else {
+                vec![Contact::Smooth]
+            };
+            let mut y0 = [0.0; 9];
+            y0[..8].copy_from_slice(&model.start_state());
+            for contact in contacts {
+                let foot = Foot::new(&model, contact);
+                let guards = Guards::new(&foot, 1e3);
+                for (t, scale) in [(0.0, 1.0), (0.15, 0.9), (0.3, 1.1)] {
+                    let y = y0.map(|v| v * scale);
+                    let mut together = vec![f64::NAN; guards.list.len()];
+                    assert!(guards.values(t, &y, &mut together));
+                    let each: Vec<u64> = guards
+                        .list
+                        .iter()
+                        .map(|&g| guards.value(g, t, &y).to_bits())
+                        .collect();
+                    let together: Vec<u64> = together.iter().map(|v| v.to_bits()).collect();
+                    assert_eq!(together, each, "{contact:?} at t = {t}");
+                }
+                let mut short = vec![0.0; guards.list.len() - 1];
+                assert!(!guards.values(0.0, &y0, &mut short));
+            }
+        }
+    }
 
     #[test]
     fn the_list_has_the_falls_after_lift_off_and_coulomb_adds_the_stick_slip_pair() {
