@@ -294,8 +294,7 @@ impl Model {
             kernels: &*self.kernels,
             stuck: self.is_stuck(contact),
             sigma: contact.sigma(),
-            desired: &self.desired,
-            gains: self.gains,
+            control: self.tracking_at(0.0),
             power_until: if self.is_active() {
                 self.power_until
             } else {
@@ -674,8 +673,9 @@ pub struct StanceRhs<'a> {
     kernels: &'a dyn Kernels,
     stuck: bool,
     sigma: f64,
-    desired: &'a [Desired],
-    gains: (f64, f64),
+    /// What the control tracks (the trajectories and gains), its time set at each call: the
+    /// kernels are handed this one, not a copy built per call.
+    control: Tracking<'a>,
     /// The input power counts for `t` below this (minus infinity for a passive walker).
     power_until: f64,
 }
@@ -684,15 +684,11 @@ impl StanceRhs<'_> {
     /// [`Model::stance_rhs`] at `(t, y)`: `dy = [qd, qdd]` (`2n = y.len()` numbers), and the
     /// input power's integrand where the power counts (0 elsewhere).
     #[inline]
-    pub fn eval(&self, t: f64, y: &[f64], dy: &mut [f64]) -> f64 {
-        let control = Tracking {
-            desired: self.desired,
-            t,
-            gains: self.gains,
-        };
+    pub fn eval(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> f64 {
+        self.control.t = t;
         let p = self
             .kernels
-            .stance_rhs(self.stuck, self.sigma, y, &control, dy);
+            .stance_rhs(self.stuck, self.sigma, y, &self.control, dy);
         if t < self.power_until { p } else { 0.0 }
     }
 }

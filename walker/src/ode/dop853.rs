@@ -230,9 +230,7 @@ impl<const N: usize> Dop853<N> {
             }
             y1[i] = y[i] + h * s;
         }
-        let mut dy = [0.0; N];
-        rhs(sys, stats, t + c * h, &y1, &mut dy);
-        self.k[out - 1] = dy;
+        rhs(sys, stats, t + c * h, &y1, &mut self.k[out - 1]);
     }
 }
 

@@ -237,7 +237,7 @@ impl Run<'_> {
             stats.accepted_steps += 1;
             let t_new = if last { target } else { t + h };
             let y_new = *st.y_new();
-            let need_events = match events::check_end(events, t_new, &y_new) {
+            let need_events = match events::check_end(events, sys, t_new, &y_new) {
                 Ok(need) => need,
                 Err(()) => return Outcome::NonFinite { t: t_new, y: y_new },
             };

@@ -3,7 +3,8 @@
 /// A system of ordinary differential equations `y' = f(t, y)` with `N`
 /// components.
 pub trait OdeSystem<const N: usize> {
-    /// Evaluate the right-hand side: `dy = f(t, y)`.
+    /// Evaluate the right-hand side: `dy = f(t, y)`, every component (`dy` comes holding
+    /// whatever it held before: a stage of the method writes into its storage directly).
     fn rhs(&mut self, t: f64, y: &[f64; N], dy: &mut [f64; N]);
 
     /// Evaluate the Jacobian `jac[i][j] = d f_i / d y_j` at `(t, y)`.
@@ -39,6 +40,19 @@ pub trait OdeSystem<const N: usize> {
     fn controlled_components(&mut self, t0: f64, y0: &[f64; N], t1: f64, y1: &[f64; N]) -> usize {
         let _ = (t0, y0, t1, y1);
         N
+    }
+
+    /// The values of all the event functions handed to
+    /// [`Integrator::integrate`](super::Integrator::integrate) with this system at `(t, y)`,
+    /// in one call, into `out` (one per event, in their order; each equal to what the event's
+    /// own function gives there). The integrator asks at every accepted step's end, where a
+    /// system whose events share work (a kernel several guards read) evaluates it once.
+    ///
+    /// Return `false` (the default) to have each event's function called instead; `out` is
+    /// then ignored.
+    fn event_values(&mut self, t: f64, y: &[f64; N], out: &mut [f64]) -> bool {
+        let _ = (t, y, out);
+        false
     }
 
     /// The first time strictly after `t` at which the right-hand side is not

@@ -49,8 +49,9 @@ pub(super) struct Foot<'a> {
     /// The last ground reaction: the lift-off, blow-up and slip guards share it.
     reaction: RefCell<Option<Memo<Reaction>>>,
     /// The last two values of the power's sign function (a step's start is the previous
-    /// step's end, and the error test and the kink guard ask about the same ends).
-    power: RefCell<[Option<Memo<f64>>; 2]>,
+    /// step's end, and the error test and the kink guard ask about the same ends), with the
+    /// slot the next value goes to (the older one: slots are overwritten in turn, not moved).
+    power: RefCell<([Option<Memo<f64>>; 2], usize)>,
 }
 
 impl<'a> Foot<'a> {
@@ -60,7 +61,7 @@ impl<'a> Foot<'a> {
             model,
             contact: Cell::new(contact),
             reaction: RefCell::new(None),
-            power: RefCell::new([None; 2]),
+            power: RefCell::new(([None; 2], 0)),
         }
     }
 
@@ -99,23 +100,24 @@ impl<'a> Foot<'a> {
     /// for two points).
     pub(super) fn power<const S: usize>(&self, t: f64, y: &[f64; S]) -> f64 {
         let contact = self.contact();
-        if let Some(g) = self
-            .power
-            .borrow()
-            .iter()
-            .find_map(|m| m.as_ref().and_then(|m| m.at(t, y, contact)))
+        let mut memo = self.power.borrow_mut();
+        let (slots, next) = &mut *memo;
+        // The newer slot first (a value is stored only where neither slot has its point).
+        let newer = *next ^ 1;
+        if let Some(g) = [newer, *next]
+            .into_iter()
+            .find_map(|i| slots[i].as_ref().and_then(|m| m.at(t, y, contact)))
         {
             return g;
         }
         let value = self.model.power_sign_function(t, y, contact);
-        let mut memo = self.power.borrow_mut();
-        memo[1] = memo[0];
-        memo[0] = Some(Memo {
+        slots[*next] = Some(Memo {
             t,
             state: mech(y),
             contact,
             value,
         });
+        *next = newer;
         value
     }
 

@@ -4,10 +4,10 @@
 
 use std::cell::Cell;
 
-use crate::model::{Contact, FrictionLaw, Model};
+use crate::model::{Contact, FrictionLaw, Model, Reaction};
 use crate::ode::{Direction, Event};
 
-use super::foot::Foot;
+use super::foot::{Foot, ground_reaction};
 
 /// The most falls a model's stance watches (its `[[fall]]` entries): the loader's limit, so
 /// that a model with more is refused at load rather than cut here.
@@ -102,22 +102,92 @@ impl<'a> Guards<'a> {
         self.kinks.set(false);
     }
 
+    /// The stance foot the guards watch.
+    pub(super) fn foot(&self) -> &'a Foot<'a> {
+        self.foot
+    }
+
     /// The value of the guard function of `guard` at `(t, y)`.
     fn value<const S: usize>(&self, guard: Guard, t: f64, y: &[f64; S]) -> f64 {
         let foot = self.foot;
-        let n = foot.model.n();
         match guard {
             Guard::Strike | Guard::Fall(_) => {
                 let mut e = [0.0; 1 + MAX_FALLS];
-                let k = foot.model.event_count().min(e.len());
-                foot.model.events(&y[..n], &mut e[..k]);
-                match guard {
-                    Guard::Fall(i) => e[1 + i],
-                    _ => e[0],
+                self.model_events(y, &mut e);
+                Self::event_value(guard, &e)
+            }
+            Guard::LiftOff | Guard::LambdaBlowUp | Guard::FootSlips => {
+                self.reaction_value(guard, || foot.reaction(t, y))
+            }
+            Guard::PowerKink | Guard::FootStops => self.own_value(guard, t, y),
+        }
+    }
+
+    /// The values of every guard at `(t, y)`, in the order of the event list, into `out`:
+    /// each what [`Guards::value`] gives, with the model's `events` kernel and the ground
+    /// reaction evaluated once for all the guards that read them (the integrator asks at every
+    /// accepted step's end). Returns `false`, writing nothing, where `out` is not one value
+    /// per guard.
+    pub(super) fn values<const S: usize>(&self, t: f64, y: &[f64; S], out: &mut [f64]) -> bool {
+        if out.len() != self.list.len() {
+            return false;
+        }
+        let mut e = [0.0; 1 + MAX_FALLS];
+        self.model_events(y, &mut e);
+        let mut reaction = None;
+        for (v, &guard) in out.iter_mut().zip(&self.list) {
+            *v = match guard {
+                Guard::Strike | Guard::Fall(_) => Self::event_value(guard, &e),
+                Guard::LiftOff | Guard::LambdaBlowUp | Guard::FootSlips => {
+                    self.reaction_value(guard, || {
+                        *reaction.get_or_insert_with(|| {
+                            ground_reaction(self.foot.model, t, y, self.foot.contact())
+                        })
+                    })
+                }
+                Guard::PowerKink | Guard::FootStops => self.own_value(guard, t, y),
+            };
+        }
+        true
+    }
+
+    /// The model's `events` kernel (the strike guard and the falls) at the coordinates of `y`,
+    /// into the first of `e` (the rest stays zero).
+    fn model_events<const S: usize>(&self, y: &[f64; S], e: &mut [f64; 1 + MAX_FALLS]) {
+        let model = self.foot.model;
+        let k = model.event_count().min(e.len());
+        model.events(&y[..model.n()], &mut e[..k]);
+    }
+
+    /// The value of the strike or fall guard `guard` from the `events` kernel's values `e`.
+    fn event_value(guard: Guard, e: &[f64; 1 + MAX_FALLS]) -> f64 {
+        match guard {
+            Guard::Fall(i) => e[1 + i],
+            _ => e[0],
+        }
+    }
+
+    /// The value of the lift-off, blow-up or slip guard `guard` from the ground reaction
+    /// (`reaction` gives it; the slip guard of a foot that is not stuck does not ask).
+    fn reaction_value(&self, guard: Guard, reaction: impl FnOnce() -> Reaction) -> f64 {
+        match guard {
+            Guard::LiftOff => reaction().normal,
+            Guard::LambdaBlowUp => reaction().lambda.abs() - self.lambda_max,
+            _ => {
+                if self.foot.contact() == Contact::Stuck {
+                    let r = reaction();
+                    r.tangential.abs() - self.foot.model.mu0() * r.normal
+                } else {
+                    -1.0
                 }
             }
-            Guard::LiftOff => foot.reaction(t, y).normal,
-            Guard::LambdaBlowUp => foot.reaction(t, y).lambda.abs() - self.lambda_max,
+        }
+    }
+
+    /// The value of the power-kink or foot-stops guard `guard` at `(t, y)`.
+    fn own_value<const S: usize>(&self, guard: Guard, t: f64, y: &[f64; S]) -> f64 {
+        let foot = self.foot;
+        match guard {
             Guard::PowerKink => {
                 if self.kinks.get() {
                     foot.power(t, y)
@@ -125,15 +195,7 @@ impl<'a> Guards<'a> {
                     1.0
                 }
             }
-            Guard::FootStops => foot.contact().sigma() * y[n],
-            Guard::FootSlips => {
-                if foot.contact() == Contact::Stuck {
-                    let r = foot.reaction(t, y);
-                    r.tangential.abs() - foot.model.mu0() * r.normal
-                } else {
-                    -1.0
-                }
-            }
+            _ => foot.contact().sigma() * y[foot.model.n()],
         }
     }
 
@@ -148,8 +210,60 @@ impl<'a> Guards<'a> {
 
 #[cfg(test)]
 mod tests {
-    use super::Guard;
-    use crate::model::FrictionLaw;
+    use super::{Guard, Guards};
+    use crate::model::{Contact, Friction, FrictionLaw, Slide};
+    use crate::setup::Setup;
+    use crate::sim::foot::Foot;
+
+    /// What the integrator is given at a step's end, all the guards' values in one call
+    /// ([`Guards::values`]), is each guard's own value ([`Guards::value`], what root location
+    /// asks for) bit for bit: for the tanh law, and for Coulomb friction with the foot stuck
+    /// and sliding either way, at the start and at states and times away from it (the ramp's
+    /// middle and its end). A buffer that is not one value per guard is refused.
+    #[test]
+    fn the_guards_values_together_are_each_guards_own_value_bit_for_bit() {
+        for coulomb in [false, true] {
+            let mut setup = Setup::active_level().expect("the built-in scene");
+            if coulomb {
+                setup.friction = Friction::Coulomb;
+            }
+            let model = setup.model().expect("compiled kernels");
+            assert_eq!(
+                model.n(),
+                4,
+                "the paper's walker: a state of 8 and the power"
+            );
+            let contacts = if coulomb {
+                vec![
+                    Contact::Stuck,
+                    Contact::Sliding(Slide::of(1.0)),
+                    Contact::Sliding(Slide::of(-1.0)),
+                ]
+            } else {
+                vec![Contact::Smooth]
+            };
+            let mut y0 = [0.0; 9];
+            y0[..8].copy_from_slice(&model.start_state());
+            for contact in contacts {
+                let foot = Foot::new(&model, contact);
+                let guards = Guards::new(&foot, 1e3);
+                for (t, scale) in [(0.0, 1.0), (0.15, 0.9), (0.3, 1.1)] {
+                    let y = y0.map(|v| v * scale);
+                    let mut together = vec![f64::NAN; guards.list.len()];
+                    assert!(guards.values(t, &y, &mut together));
+                    let each: Vec<u64> = guards
+                        .list
+                        .iter()
+                        .map(|&g| guards.value(g, t, &y).to_bits())
+                        .collect();
+                    let together: Vec<u64> = together.iter().map(|v| v.to_bits()).collect();
+                    assert_eq!(together, each, "{contact:?} at t = {t}");
+                }
+                let mut short = vec![0.0; guards.list.len() - 1];
+                assert!(!guards.values(0.0, &y0, &mut short));
+            }
+        }
+    }
 
     #[test]
     fn the_list_has_the_falls_after_lift_off_and_coulomb_adds_the_stick_slip_pair() {

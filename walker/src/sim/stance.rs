@@ -10,6 +10,7 @@ use crate::vector::Vector;
 use super::foot::{Foot, control_input, ground_reaction};
 use super::frame::Frames;
 use super::gait::Sample;
+use super::guard::Guards;
 use super::state::mech;
 
 /// The stance phase of `model` with the foot `foot`, as an ODE system for [`crate::ode`].
@@ -24,17 +25,23 @@ pub(super) struct Stance<'a> {
     /// The right-hand side in the foot's contact ([`Stance::in_contact`] after the contact
     /// changes).
     rhs: StanceRhs<'a>,
+    /// The stance's guards, whose values the integrator asks for together at every step's end
+    /// (the events handed to it are theirs, [`Guards::events`]).
+    guards: &'a Guards<'a>,
 }
 
 impl<'a> Stance<'a> {
-    /// The stance phase of `foot`'s model, in the foot's current contact.
-    pub(super) fn new(foot: &'a Foot<'a>) -> Self {
+    /// The stance phase of the foot `guards` watch, in the foot's current contact, to be
+    /// integrated with the guards' events ([`Guards::events`]).
+    pub(super) fn new(guards: &'a Guards<'a>) -> Self {
+        let foot = guards.foot();
         let model = foot.model;
         Self {
             model,
             jac: StanceJacobian::new(model).ok(),
             foot,
             rhs: model.stance_rhs_in(foot.contact()),
+            guards,
         }
     }
 
@@ -78,6 +85,12 @@ impl<const S: usize> OdeSystem<S> for Stance<'_> {
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
         self.model.next_breakpoint(t)
+    }
+
+    /// The guards' values at a step's end, the kernels they share evaluated once
+    /// ([`Guards::values`]).
+    fn event_values(&mut self, t: f64, y: &[f64; S], out: &mut [f64]) -> bool {
+        self.guards.values(t, y, out)
     }
 }
 

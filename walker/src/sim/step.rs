@@ -175,7 +175,7 @@ fn segments<const S: usize>(
 ) -> Result<Strike<S>, Failure> {
     let guards = Guards::new(foot, lambda_max);
     let mut events = guards.events::<S>();
-    let mut sys = Stance::new(foot);
+    let mut sys = Stance::new(&guards);
     let mut lambda_min = lambda0;
     let mut t = 0.0;
     let mut y = y0;

@@ -5,6 +5,7 @@ use super::event::{Direction, Event, sign_of};
 use super::root::find_root;
 use crate::ode::observer::Observer;
 use crate::ode::stepper::Dense;
+use crate::ode::system::OdeSystem;
 
 /// An accepted step with its interpolant.
 pub(crate) struct Span<'a, const N: usize> {
@@ -55,17 +56,25 @@ pub(crate) fn start<const N: usize>(
     Ok(())
 }
 
-/// Evaluate every `g` at the end of an accepted step. Returns whether some
+/// The most events whose values at a step's end a system gives in one call
+/// ([`OdeSystem::event_values`]); with more, each event's function is called.
+const MAX_BATCH: usize = 24;
+
+/// Evaluate every `g` at the end of an accepted step: all at once where the system gives
+/// them ([`OdeSystem::event_values`]), otherwise one by one. Returns whether some
 /// event needs the dense output of the step (a matching crossing to locate,
 /// or an event still on the guard). `Err` if some `g` is not finite.
-pub(crate) fn check_end<const N: usize>(
+pub(crate) fn check_end<const N: usize, S: OdeSystem<N>>(
     events: &mut [Event<'_, N>],
+    sys: &mut S,
     t1: f64,
     y1: &[f64; N],
 ) -> Result<bool, ()> {
+    let mut values = [0.0; MAX_BATCH];
+    let batch = events.len() <= MAX_BATCH && sys.event_values(t1, y1, &mut values[..events.len()]);
     let mut need = false;
-    for ev in events.iter_mut() {
-        let g1 = (ev.g)(t1, y1);
+    for (i, ev) in events.iter_mut().enumerate() {
+        let g1 = if batch { values[i] } else { (ev.g)(t1, y1) };
         if !g1.is_finite() {
             return Err(());
         }
