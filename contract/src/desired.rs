@@ -152,7 +152,12 @@ impl Bezier {
 
     /// `[y_d, yd_d, ydd_d]` at time `t` since the last impact; `[a_M, 0, 0]` from `duration`
     /// on.
-    #[inline]
+    ///
+    /// Never inlined: inlined into [`Desired::at`], its loops made the auxiliary input too large
+    /// to be inlined into the generated stance right-hand side, and the paper's quintic walk
+    /// (which never takes this branch) then took 217.3 M instructions instead of 209.7 M
+    /// (`valgrind --tool=callgrind`, BENCHMARKS section 9).
+    #[inline(never)]
     #[must_use]
     pub fn at(&self, t: f64) -> [f64; 3] {
         let n = self.len;
