@@ -3,7 +3,7 @@
 //! [`walker::design`]; `docs/design.md`). This module parses the flags into a
 //! [`DesignRequest`] and formats the [`Design`] as a table or JSON.
 
-use walker::design::{Design, DesignError, DesignRequest, Margins, Objective, Vary};
+use walker::design::{Design, DesignError, DesignRequest, MAX_RESTARTS, Margins, Objective, Vary};
 
 use crate::args::Common;
 use crate::input::{InputError, number};
@@ -56,6 +56,13 @@ pub struct DesignArgs {
     /// The solver's relative tolerance on the objective and the parameters, in (0, 1).
     #[arg(value_parser = number::fraction, long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub tol: f64,
+    /// Random restarts: this many more solves, from starts drawn uniformly within the bounds
+    /// (a whole number in [0, 100]); the best design is reported, with every solve's outcome.
+    #[arg(long, default_value = "0", allow_hyphen_values = true)]
+    pub restarts: String,
+    /// The seed of the restarts' starts: a whole number in [0, 2^64 - 1].
+    #[arg(long, default_value = "0", allow_hyphen_values = true)]
+    pub seed: String,
 }
 
 /// Why `walker design` did not give a design.
@@ -138,11 +145,28 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
         max_evaluations,
         tol,
     };
-    let d = walker::design::design(&setup, &cfg, &req).map_err(|e| match e {
+    let restarts = crate::input::whole("restarts", &args.restarts, 0, MAX_RESTARTS)?;
+    let seed = args.seed.trim().parse::<u64>().map_err(|_| {
+        InputError::new(
+            "seed",
+            format!(
+                "`{}`: expected a whole number in [0, {}]",
+                walker::request::shown::name(&args.seed),
+                u64::MAX
+            ),
+        )
+    })?;
+    let d = if restarts == 0 {
+        walker::design::design(&setup, &cfg, &req)
+    } else {
+        walker::design::design_with_restarts(&setup, &cfg, &req, restarts, seed)
+    };
+    let d = d.map_err(|e| match e {
         DesignError::NoGaitAtStart { .. } => DesignCliError::NoGait(e.to_string()),
         DesignError::Margin { which, .. } => {
             InputError::new(&format!("{which}-margin"), e.to_string()).into()
         }
+        DesignError::Restarts { .. } => InputError::new("restarts", e.to_string()).into(),
         other => InputError::new("vary", other.to_string()).into(),
     })?;
     Ok(if common.json {
@@ -201,6 +225,22 @@ pub fn text(d: &Design) -> String {
             "{:<17} {:<14.10} {:<5} {:<14.10} {:<+14.6e} {}\n",
             c.name, c.value, c.sense, c.limit, c.slack, c.holds
         ));
+    }
+    if !d.restarts.is_empty() {
+        s.push_str("restarts (the request's start first):\n");
+        for (i, r) in d.restarts.iter().enumerate() {
+            match (&r.status, r.value) {
+                (Some(status), Some(value)) => s.push_str(&format!(
+                    "{i:>3} from {:?}: {status:?}, {value:.12} at {:?}\n",
+                    r.start, r.parameters
+                )),
+                _ => s.push_str(&format!(
+                    "{i:>3} from {:?}: {}\n",
+                    r.start,
+                    r.error.as_deref().unwrap_or("no design")
+                )),
+            }
+        }
     }
     s
 }

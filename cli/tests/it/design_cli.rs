@@ -264,7 +264,7 @@ fn a_floor_too_slippery_for_every_ramp_is_an_infeasible_design_naming_the_fricti
 fn bad_design_requests_exit_2_naming_the_field_and_the_range() {
     let paper = paper_active();
     let p = paper.to_str().unwrap();
-    let cases: [(&[&str], &str); 6] = [
+    let cases: [(&[&str], &str); 8] = [
         (
             &["--vary", "T_sat=0.2:0.4"],
             "`T_sat` is not a run-time parameter",
@@ -285,6 +285,14 @@ fn bad_design_requests_exit_2_naming_the_field_and_the_range() {
         (
             &["--vary", "T_set=0.2:0.4", "--multiplier-margin", "1"],
             "must be in [0, 1)",
+        ),
+        (
+            &["--vary", "T_set=0.2:0.4", "--restarts", "101"],
+            "invalid restarts: 101: must be a whole number in [0, 100]",
+        ),
+        (
+            &["--vary", "T_set=0.2:0.4", "--restarts", "2", "--seed", "-1"],
+            "invalid seed: `-1`: expected a whole number in [0, 18446744073709551615]",
         ),
     ];
     for (flags, fragment) in cases {
@@ -317,8 +325,10 @@ fn the_three_link_biped_walks_below_its_hand_made_friction() {
     let d = json(&args);
     assert_ne!(d["status"], "infeasible", "{d}");
     let need = num(&d["value"]);
-    // The hand-made gait needs 0.5748 at its strike (README); the design asks 0.5003.
-    assert!(need < 0.55, "{d}");
+    // The hand-made gait needs 0.5748 at its strike (README). In epigraph form the design
+    // asks 0.4750 after 40 evaluations; the plain maximum of the two ratios reached only
+    // 0.5003 there, so this bound fails if the kink comes back.
+    assert!(need < 0.48, "{d}");
     // `walker simulate` alone on a floor 0.01 above what the design needs: 100 steps, the
     // foot stuck through every stance and every strike sticking.
     let floor = format!("mu0={}", need + 0.01);
@@ -353,4 +363,66 @@ fn the_three_link_biped_walks_below_its_hand_made_friction() {
         assert_eq!(num(&s["stuck_time"]), num(&s["T"]), "{s}");
         assert_eq!(s["impact"]["regime"], "stick");
     }
+}
+
+/// The three-link biped's friction design with at most `evals` evaluations, and `extra` flags.
+fn three_link_friction(evals: &str, extra: &[&str]) -> String {
+    let model = Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/three-link.toml");
+    let mut args = vec![
+        "design",
+        "--model",
+        model.to_str().unwrap(),
+        "--friction",
+        "coulomb",
+        "--impact",
+        "coulomb",
+        "--objective",
+        "friction",
+        "--vary",
+        "T_set=0.2:1.0,th_T=0.1:0.8,beta=0.2:0.5",
+        "--max-evaluations",
+        evals,
+        "--json",
+    ];
+    args.extend(extra);
+    let (code, out, err) = walker(&args);
+    assert_eq!(code, 0, "{err}");
+    out
+}
+
+#[test]
+fn restarts_are_no_worse_than_the_single_solve_and_the_same_seed_gives_the_same_design() {
+    let single: Value = serde_json::from_str(&three_link_friction("20", &[])).unwrap();
+    let flags = ["--restarts", "3", "--seed", "2"];
+    let first = three_link_friction("20", &flags);
+    // Deterministic from the seed: the same text, every digit.
+    assert_eq!(first, three_link_friction("20", &flags));
+    let d: Value = serde_json::from_str(&first).unwrap();
+    let restarts = d["restarts"].as_array().unwrap();
+    assert_eq!(restarts.len(), 4, "{d}");
+    // The request's own start comes first and is the single solve.
+    assert_eq!(restarts[0]["value"], single["value"]);
+    assert_eq!(
+        restarts[0]["parameters"][0],
+        single["parameters"][0]["value"]
+    );
+    // The best is no worse than any solve (the single one among them) and is one of them.
+    let values: Vec<f64> = restarts
+        .iter()
+        .filter(|r| r["status"] == "feasible" || r["status"] == "optimal")
+        .map(|r| num(&r["value"]))
+        .collect();
+    assert!(num(&d["value"]) <= num(&single["value"]), "{d}");
+    assert!(values.iter().all(|v| num(&d["value"]) <= *v), "{d}");
+    assert!(values.contains(&num(&d["value"])), "{d}");
+    // Every start lies within the bounds; one without a gait says why.
+    for r in restarts {
+        let x = r["start"].as_array().unwrap();
+        for (v, (lo, hi)) in x.iter().zip([(0.2, 1.0), (0.1, 0.8), (0.2, 0.5)]) {
+            assert!((lo..=hi).contains(&num(v)), "{r}");
+        }
+        assert_eq!(r["status"].is_null(), r["error"].is_string(), "{r}");
+    }
+    // Without --restarts the JSON has no `restarts` (a design's JSON is unchanged).
+    assert!(single.get("restarts").is_none());
 }

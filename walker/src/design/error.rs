@@ -96,4 +96,12 @@ pub enum DesignError {
         /// Why.
         message: String,
     },
+    /// Too many restarts.
+    #[error("{count} restarts: the number of restarts must be a whole number in [0, {max}]")]
+    Restarts {
+        /// The number asked.
+        count: usize,
+        /// The most allowed.
+        max: usize,
+    },
 }

@@ -32,11 +32,13 @@ mod error;
 mod evaluate;
 mod kkt;
 mod request;
+mod restarts;
 mod result;
 mod solve;
 
 pub use error::DesignError;
 pub use evaluate::{Evaluation, evaluate};
 pub use request::{DesignRequest, Margins, Objective, Vary};
-pub use result::{ConstraintSlack, Design, DesignStatus, VariedValue};
+pub use restarts::{MAX_RESTARTS, design_with_restarts, restart_starts};
+pub use result::{ConstraintSlack, Design, DesignStatus, Restart, VariedValue};
 pub use solve::design;

@@ -83,4 +83,27 @@ pub struct Design {
     pub kkt_residual: f64,
     /// Gait evaluations (fixed-point solves and sampled steps) the design took.
     pub evaluations: usize,
+    /// With restarts, every solve in order (the request's start first), so that one sees
+    /// whether the design is a local optimum; empty (and left out of the JSON) without.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub restarts: Vec<Restart>,
+}
+
+/// One solve of a design with restarts: where it started and how it ended.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Restart {
+    /// The parameters it started from, in the order of the request's `vary`.
+    pub start: Vec<f64>,
+    /// How it ended; `None` where the start has no periodic gait.
+    pub status: Option<DesignStatus>,
+    /// The objective at its design (`None` without a gait at the start).
+    pub value: Option<f64>,
+    /// The designed parameters (empty without a gait at the start).
+    pub parameters: Vec<f64>,
+    /// The KKT residual at its design (`None` without a gait at the start).
+    pub kkt_residual: Option<f64>,
+    /// Why there was no design from this start, if there was none.
+    pub error: Option<String>,
+    /// Gait evaluations it took.
+    pub evaluations: usize,
 }

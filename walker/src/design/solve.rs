@@ -50,6 +50,11 @@ struct Program<'a> {
     cfg: &'a SimConfig,
     req: &'a DesignRequest,
     names: Vec<&'a str>,
+    /// The number of varied parameters (the program's first variables).
+    n: usize,
+    /// Whether the objective is the friction the gait needs, in epigraph form: one more
+    /// variable `s` (the program's last), minimised subject to both ratios `<= s`.
+    epi: bool,
     /// The floor's friction coefficient, which the constraints hold the foot against.
     floor_mu0: f64,
     /// Evaluated points: the parameters and the evaluation (or why there was none).
@@ -86,6 +91,18 @@ impl Program<'_> {
         e
     }
 
+    /// The program's constraints: the four of the design, and with [`Program::epi`] the
+    /// epigraph's two (the stance's aggregate and the strike's ratio `<= s`).
+    fn count(&self) -> usize {
+        if self.epi { COUNT + 2 } else { COUNT }
+    }
+
+    /// The epigraph's level at an evaluation: the larger of the stance's aggregate and the
+    /// strike's ratio, the least `s` meeting both epigraph constraints.
+    fn level(e: &Evaluation) -> f64 {
+        stance_ks(e).max(e.impact_friction.min(CAP))
+    }
+
     /// The objective at an evaluation.
     fn objective(&self, e: &Evaluation) -> f64 {
         match self.req.objective {
@@ -102,37 +119,53 @@ impl Program<'_> {
         let mu = self.mu0(x) - m.friction;
         match e {
             None => vec![NO_GAIT; COUNT],
-            Some(e) => {
-                let ratios: Vec<f64> = e.stance_ratios.iter().map(|r| r.min(CAP)).collect();
-                vec![
-                    e.fixed_point.max_modulus() - (1.0 - m.multiplier),
-                    e.impact_friction.min(CAP) - mu,
-                    m.normal - e.min_normal.max(-CAP),
-                    ks(&ratios) - mu,
-                ]
-            }
+            Some(e) => vec![
+                e.fixed_point.max_modulus() - (1.0 - m.multiplier),
+                e.impact_friction.min(CAP) - mu,
+                m.normal - e.min_normal.max(-CAP),
+                stance_ks(e) - mu,
+            ],
         }
     }
 
-    /// The objective and constraints at `x`; without a gait the objective of the nearest
-    /// point with one (so that only the constraints tell the solver it has left the gaits).
+    /// The program's constraints at the program's point `x` (the parameters, then `s` with
+    /// [`Program::epi`]).
+    fn program_constraints(&self, x: &[f64], e: Option<&Evaluation>) -> Vec<f64> {
+        let mut g = self.constraints(&x[..self.n], e);
+        if self.epi {
+            let s = x[self.n];
+            match e {
+                None => g.extend([NO_GAIT, NO_GAIT]),
+                Some(e) => g.extend([stance_ks(e) - s, e.impact_friction.min(CAP) - s]),
+            }
+        }
+        g
+    }
+
+    /// The program's objective and constraints at its point `x`; without a gait the objective
+    /// of the nearest point with one (so that only the constraints tell the solver it has
+    /// left the gaits). In epigraph form the objective is `s` itself.
     fn values(&self, x: &[f64]) -> (f64, Vec<f64>) {
-        let e = self.at(x);
+        let p = &x[..self.n];
+        let e = self.at(p);
         let f = match &e {
+            _ if self.epi => x[self.n],
             Some(e) => self.objective(e),
             None => self
                 .seen
                 .borrow()
                 .iter()
-                .filter_map(|(y, e)| e.as_ref().map(|e| (dist(x, y), self.objective(e))))
+                .filter_map(|(y, e)| e.as_ref().map(|e| (dist(p, y), self.objective(e))))
                 .min_by(|a, b| a.0.total_cmp(&b.0))
                 .map_or(0.0, |(_, f)| f),
         };
-        (f, self.constraints(x, e.as_ref()))
+        (f, self.program_constraints(x, e.as_ref()))
     }
 
-    /// Central differences of the objective and the constraints at `x` (one-sided at a bound
-    /// or where one side has no gait), cached for the last point.
+    /// Central differences of the objective and the constraints at the program's point `x` in
+    /// the parameters (one-sided at a bound or where one side has no gait), cached for the
+    /// last point; in epigraph form the column of `s` is exact (`1` in the objective, `-1` in
+    /// the epigraph's constraints).
     fn gradients(&self, x: &[f64]) -> (Vec<f64>, Vec<Vec<f64>>) {
         if let Some((y, df, dg)) = self.grads.borrow().as_ref()
             && y == x
@@ -142,13 +175,14 @@ impl Program<'_> {
         let n = x.len();
         let base = self.values(x);
         let mut df = vec![0.0; n];
-        let mut dg = vec![vec![0.0; n]; COUNT];
+        let mut dg = vec![vec![0.0; n]; self.count()];
         for (i, v) in self.req.vary.iter().enumerate() {
             let h = STEP * (v.hi - v.lo);
             let side = |s: f64| {
                 let mut y = x.to_vec();
                 y[i] += s;
-                (y[i] >= v.lo && y[i] <= v.hi && self.at(&y).is_some()).then(|| self.values(&y))
+                (y[i] >= v.lo && y[i] <= v.hi && self.at(&y[..self.n]).is_some())
+                    .then(|| self.values(&y))
             };
             let (plus, minus) = (side(h), side(-h));
             let (a, b, w) = match (plus, minus) {
@@ -162,13 +196,54 @@ impl Program<'_> {
                 row[i] = (a.1[j] - b.1[j]) / w;
             }
         }
+        if self.epi {
+            df[self.n] = 1.0;
+            dg[COUNT][self.n] = -1.0;
+            dg[COUNT + 1][self.n] = -1.0;
+        }
         *self.grads.borrow_mut() = Some((x.to_vec(), df.clone(), dg.clone()));
         (df, dg)
     }
 
-    /// Whether every constraint holds at `x`.
-    fn feasible(&self, x: &[f64]) -> bool {
-        self.at(x).is_some() && self.values(x).1.iter().all(|g| *g <= FEASIBLE)
+    /// Whether every constraint of the design holds at the parameters `p`.
+    fn feasible(&self, p: &[f64]) -> bool {
+        let e = self.at(p);
+        e.is_some()
+            && self
+                .constraints(p, e.as_ref())
+                .iter()
+                .all(|g| *g <= FEASIBLE)
+    }
+
+    /// Central differences of the design's own objective in the parameters at `p` (as
+    /// [`Program::gradients`] takes them), for the report in epigraph form, where the
+    /// program's objective is `s`.
+    fn objective_gradient(&self, p: &[f64]) -> Vec<f64> {
+        let f = |y: &[f64]| self.at(y).map(|e| self.objective(&e));
+        let base = f(p);
+        self.req
+            .vary
+            .iter()
+            .enumerate()
+            .map(|(i, v)| {
+                let h = STEP * (v.hi - v.lo);
+                let side = |s: f64| {
+                    let mut y = p.to_vec();
+                    y[i] += s;
+                    if y[i] >= v.lo && y[i] <= v.hi {
+                        f(&y)
+                    } else {
+                        None
+                    }
+                };
+                match (side(h), side(-h), base) {
+                    (Some(a), Some(b), _) => (a - b) / (2.0 * h),
+                    (Some(a), None, Some(b)) => (a - b) / h,
+                    (None, Some(b), Some(a)) => (a - b) / h,
+                    _ => 0.0,
+                }
+            })
+            .collect()
     }
 }
 
@@ -198,6 +273,12 @@ fn ks(v: &[f64]) -> f64 {
     top + v.iter().map(|x| (RHO * (x - top)).exp()).sum::<f64>().ln() / RHO
 }
 
+/// The stance's friction ratios (capped at [`CAP`]) aggregated by [`ks`].
+fn stance_ks(e: &Evaluation) -> f64 {
+    let ratios: Vec<f64> = e.stance_ratios.iter().map(|r| r.min(CAP)).collect();
+    ks(&ratios)
+}
+
 /// Euclidean distance.
 fn dist(a: &[f64], b: &[f64]) -> f64 {
     a.iter()
@@ -214,6 +295,22 @@ fn dist(a: &[f64], b: &[f64]) -> f64 {
 /// An invalid request ([`DesignRequest::check`]), or no periodic gait at the start.
 pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Design, DesignError> {
     req.check(setup, cfg)?;
+    let x0: Vec<f64> = req.vary.iter().map(|v| v.start).collect();
+    solve_from(setup, cfg, req, &x0)
+}
+
+/// The design of a checked request `req` from the parameters `x0` (within the bounds) in
+/// place of the request's starts: [`design`] and each restart of
+/// [`super::design_with_restarts`].
+///
+/// # Errors
+/// No periodic gait at `x0`.
+pub(super) fn solve_from(
+    setup: &Setup,
+    cfg: &SimConfig,
+    req: &DesignRequest,
+    x0: &[f64],
+) -> Result<Design, DesignError> {
     // The gait with the foot held: under Coulomb friction the design's walker has a friction
     // coefficient no gait reaches, so its stance foot sticks and its strikes stick; the
     // constraints then ask that the friction the held gait needs stay below the floor's.
@@ -221,22 +318,24 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
     let held = held_setup(setup);
     let setup = &held;
     let names: Vec<&str> = req.vary.iter().map(|v| v.name.as_str()).collect();
-    let x0: Vec<f64> = req.vary.iter().map(|v| v.start).collect();
+    let n = x0.len();
     let prog = Program {
         setup,
         cfg,
         req,
         names: names.clone(),
+        n,
+        epi: req.objective == Objective::Friction,
         floor_mu0,
         seen: RefCell::new(Vec::new()),
         guess: RefCell::new(None),
         grads: RefCell::new(None),
     };
     let start =
-        evaluate(setup, cfg, &names, &x0, None).map_err(|message| DesignError::NoGaitAtStart {
+        evaluate(setup, cfg, &names, x0, None).map_err(|message| DesignError::NoGaitAtStart {
             at: names
                 .iter()
-                .zip(&x0)
+                .zip(x0)
                 .map(|(n, v)| format!("{n}={v}"))
                 .collect::<Vec<_>>()
                 .join(", "),
@@ -245,8 +344,13 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
     *prog.guess.borrow_mut() = Some(start.reduced.clone());
     prog.seen
         .borrow_mut()
-        .push((x0.clone(), Some(start.clone())));
+        .push((x0.to_vec(), Some(start.clone())));
     let start_value = prog.objective(&start);
+    // The program's start: the parameters, and in epigraph form the least `s` there.
+    let mut x0 = x0.to_vec();
+    if prog.epi {
+        x0.push(Program::level(&start));
+    }
 
     let objective = |x: &[f64], grad: Option<&mut [f64]>, _: &mut ()| -> f64 {
         if let Some(g) = grad {
@@ -254,7 +358,7 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
         }
         prog.values(x).0
     };
-    let cons: Vec<Box<dyn Func<()> + '_>> = (0..COUNT)
+    let cons: Vec<Box<dyn Func<()> + '_>> = (0..prog.count())
         .map(|j| {
             let p = &prog;
             Box::new(
@@ -272,7 +376,10 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
         })
         .collect();
     let cons_ref: Vec<&dyn Func<()>> = cons.iter().map(|c| c.as_ref()).collect();
-    let bounds: Vec<(f64, f64)> = req.vary.iter().map(|v| (v.lo, v.hi)).collect();
+    let mut bounds: Vec<(f64, f64)> = req.vary.iter().map(|v| (v.lo, v.hi)).collect();
+    if prog.epi {
+        bounds.push((0.0, CAP));
+    }
     let stop = StopTols {
         ftol_rel: req.tol,
         xtol_rel: req.tol,
@@ -308,13 +415,26 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
         .into_iter()
         .filter(|(y, _)| prog.feasible(y))
         .min_by(|a, b| a.1.total_cmp(&b.1));
-    let x = if prog.feasible(&x_solver) {
-        x_solver
+    let p_solver = x_solver[..n].to_vec();
+    // In epigraph form the solver's point is its best one meeting the epigraph's constraints
+    // too, which iterates converging from outside them miss (by 1e-3 on the three-link
+    // biped): the best point visited that meets the design's constraints is taken instead.
+    let p = if prog.epi {
+        best_feasible.map_or(p_solver, |(y, _)| y)
+    } else if prog.feasible(&p_solver) {
+        p_solver
     } else {
-        best_feasible.map_or(x_solver, |(y, _)| y)
+        best_feasible.map_or(p_solver, |(y, _)| y)
     };
+    let e = prog.at(&p).unwrap_or(start);
+    // The program's point: the parameters, and in epigraph form the least `s` there (so the
+    // larger of the two ratios is exactly active in the KKT measure).
+    let mut x = p.clone();
+    if prog.epi {
+        x.push(Program::level(&e));
+    }
     let (f, g) = prog.values(&x);
-    let e = prog.at(&x).unwrap_or(start);
+    let f = if prog.epi { prog.objective(&e) } else { f };
     let (df, dg) = prog.gradients(&x);
     let near = |y: f64, b: f64, v: &super::request::Vary| (y - b).abs() <= 1e-9 * (v.hi - v.lo);
     let at_lo: Vec<bool> = req
@@ -322,16 +442,18 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
         .iter()
         .zip(&x)
         .map(|(v, y)| near(*y, v.lo, v))
+        .chain(prog.epi.then_some(false))
         .collect();
     let at_hi: Vec<bool> = req
         .vary
         .iter()
         .zip(&x)
         .map(|(v, y)| near(*y, v.hi, v))
+        .chain(prog.epi.then_some(false))
         .collect();
     let (kkt_residual, lagrange) = kkt(&df, &g, &dg, &at_lo, &at_hi);
     let m = &req.margins;
-    let mu = prog.mu0(&x);
+    let mu = prog.mu0(&p);
     let rows = [
         (
             e.fixed_point.max_modulus(),
@@ -377,6 +499,13 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
         (true, true) => DesignStatus::Optimal,
         (true, false) => DesignStatus::Feasible,
     };
+    // The objective's derivatives reported: the program's own, or in epigraph form (where the
+    // program's objective is `s`) the friction's.
+    let reported = if prog.epi {
+        prog.objective_gradient(&p)
+    } else {
+        df.clone()
+    };
     let evaluations = prog.seen.borrow().len();
     Ok(Design {
         status,
@@ -388,8 +517,8 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
         parameters: req
             .vary
             .iter()
-            .zip(&x)
-            .zip(&df)
+            .zip(&p)
+            .zip(&reported)
             .map(|((v, &value), &gradient)| VariedValue {
                 name: v.name.clone(),
                 value,
@@ -403,5 +532,6 @@ pub fn design(setup: &Setup, cfg: &SimConfig, req: &DesignRequest) -> Result<Des
         constraints,
         kkt_residual,
         evaluations,
+        restarts: Vec::new(),
     })
 }

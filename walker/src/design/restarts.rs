@@ -1,0 +1,167 @@
+//! Random restarts of a design: the request's start and `count` more, drawn uniformly within
+//! the bounds from a seed, each solved; the best design is returned with every solve's
+//! outcome, so that one sees whether the optimum found is local.
+
+use chacha20::ChaCha8Rng;
+use chacha20::rand_core::{Rng, SeedableRng};
+
+use crate::setup::Setup;
+use crate::sim::SimConfig;
+
+use super::error::DesignError;
+use super::request::DesignRequest;
+use super::result::{Design, DesignStatus, Restart};
+use super::solve::solve_from;
+
+/// The most restarts a design takes.
+pub const MAX_RESTARTS: usize = 100;
+
+/// The starts of `count` restarts under `seed`: each parameter uniform in `[lo, hi]`, drawn in
+/// the order of the request's `vary`, restart after restart, from the ChaCha8 stream of the
+/// seed (its 8 bytes little-endian, then zeros, as the key), the same on every machine.
+#[must_use]
+pub fn restart_starts(req: &DesignRequest, count: usize, seed: u64) -> Vec<Vec<f64>> {
+    let mut key = [0u8; 32];
+    key[..8].copy_from_slice(&seed.to_le_bytes());
+    let mut rng = ChaCha8Rng::from_seed(key);
+    // 53 random bits as a fraction in [0, 1).
+    let scale = 1.0 / (1u64 << 53) as f64;
+    (0..count)
+        .map(|_| {
+            req.vary
+                .iter()
+                .map(|v| {
+                    let u = (rng.next_u64() >> 11) as f64 * scale;
+                    (v.lo + u * (v.hi - v.lo)).clamp(v.lo, v.hi)
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// How good a design is, for choosing the best of the restarts: a feasible design (optimal
+/// or not) before an infeasible one, then the smaller objective.
+fn rank(d: &Design) -> (bool, f64) {
+    (d.status == DesignStatus::Infeasible, d.value)
+}
+
+/// The design `req` from its own start and from `count` starts drawn within the bounds under
+/// `seed` ([`restart_starts`]); the best one ([`rank`], the earliest among equals), with
+/// [`Design::restarts`] listing every solve in order. A start without a periodic gait is
+/// recorded with its error and skipped.
+///
+/// # Errors
+/// An invalid request ([`DesignRequest::check`]), `count` above [`MAX_RESTARTS`], or no
+/// periodic gait at any start (the request's own start's error).
+pub fn design_with_restarts(
+    setup: &Setup,
+    cfg: &SimConfig,
+    req: &DesignRequest,
+    count: usize,
+    seed: u64,
+) -> Result<Design, DesignError> {
+    req.check(setup, cfg)?;
+    if count > MAX_RESTARTS {
+        return Err(DesignError::Restarts {
+            count,
+            max: MAX_RESTARTS,
+        });
+    }
+    let own: Vec<f64> = req.vary.iter().map(|v| v.start).collect();
+    let starts = std::iter::once(own).chain(restart_starts(req, count, seed));
+    let mut best: Option<Design> = None;
+    let mut first_error = None;
+    let mut restarts = Vec::new();
+    for x0 in starts {
+        match solve_from(setup, cfg, req, &x0) {
+            Ok(d) => {
+                restarts.push(Restart {
+                    start: x0,
+                    status: Some(d.status),
+                    value: Some(d.value),
+                    parameters: d.parameters.iter().map(|p| p.value).collect(),
+                    kkt_residual: Some(d.kkt_residual),
+                    error: None,
+                    evaluations: d.evaluations,
+                });
+                if best.as_ref().is_none_or(|b| rank(&d) < rank(b)) {
+                    best = Some(d);
+                }
+            }
+            Err(e) => {
+                restarts.push(Restart {
+                    start: x0,
+                    status: None,
+                    value: None,
+                    parameters: Vec::new(),
+                    kkt_residual: None,
+                    error: Some(e.to_string()),
+                    evaluations: 0,
+                });
+                first_error.get_or_insert(e);
+            }
+        }
+    }
+    match (best, first_error) {
+        (Some(mut d), _) => {
+            d.restarts = restarts;
+            Ok(d)
+        }
+        (None, Some(e)) => Err(e),
+        (None, None) => unreachable!("the request's own start is always solved"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::design::{Margins, Objective, Vary};
+
+    fn request() -> DesignRequest {
+        DesignRequest {
+            vary: vec![
+                Vary {
+                    name: "a".into(),
+                    lo: -1.0,
+                    hi: 2.0,
+                    start: 0.0,
+                },
+                Vary {
+                    name: "b".into(),
+                    lo: 0.5,
+                    hi: 0.6,
+                    start: 0.55,
+                },
+            ],
+            objective: Objective::Friction,
+            margins: Margins::default(),
+            max_evaluations: 10,
+            tol: 1e-10,
+        }
+    }
+
+    #[test]
+    fn restart_starts_lie_within_the_bounds_and_depend_on_the_seed_alone() {
+        let req = request();
+        let a = restart_starts(&req, 50, 7);
+        assert_eq!(a, restart_starts(&req, 50, 7));
+        assert_ne!(a, restart_starts(&req, 50, 8));
+        assert_eq!(a.len(), 50);
+        for x in &a {
+            assert!(
+                (-1.0..=2.0).contains(&x[0]) && (0.5..=0.6).contains(&x[1]),
+                "{x:?}"
+            );
+        }
+        // Uniform over the range: 50 draws spread over more than half of each range (the
+        // chance of 50 uniform draws within one half-width window is below 1e-13).
+        for (i, v) in req.vary.iter().enumerate() {
+            let (lo, hi) = a
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+                    (l.min(x[i]), h.max(x[i]))
+                });
+            assert!(hi - lo > 0.5 * (v.hi - v.lo), "{lo} {hi}");
+        }
+    }
+}
