@@ -51,7 +51,7 @@ impl Evaluation {
 /// The periodic gait of `setup` with `names` set to `values`: Newton's method on the reduced
 /// map from `guess` (section coordinates) where given and converging, else the fixed-point
 /// search of `walker fixed-point` from the model's start; then one step from the fixed point
-/// sampled [`SAMPLES`] times on the dense output.
+/// sampled `SAMPLES` (400) times on the dense output.
 ///
 /// # Errors
 /// A text saying why there is no valid periodic gait there (a parameter out of range, no

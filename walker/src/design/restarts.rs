@@ -46,7 +46,7 @@ fn rank(d: &Design) -> (bool, f64) {
 }
 
 /// The design `req` from its own start and from `count` starts drawn within the bounds under
-/// `seed` ([`restart_starts`]); the best one ([`rank`], the earliest among equals), with
+/// `seed` ([`restart_starts`]); the best one (by `rank`: the earliest among equals), with
 /// [`Design::restarts`] listing every solve in order. A start without a periodic gait is
 /// recorded with its error and skipped.
 ///
