@@ -2,9 +2,7 @@
 //! the bounds from a seed, each solved; the best design is returned with every solve's
 //! outcome, so that one sees whether the optimum found is local.
 
-use chacha20::ChaCha8Rng;
-use chacha20::rand_core::{Rng, SeedableRng};
-
+use crate::floor::draw::StepDraws;
 use crate::setup::Setup;
 use crate::sim::SimConfig;
 
@@ -17,23 +15,17 @@ use super::solve::solve_from;
 pub const MAX_RESTARTS: usize = 100;
 
 /// The starts of `count` restarts under `seed`: each parameter uniform in `[lo, hi]`, drawn in
-/// the order of the request's `vary`, restart after restart, from the ChaCha8 stream of the
-/// seed (its 8 bytes little-endian, then zeros, as the key), the same on every machine.
+/// the order of the request's `vary`, restart after restart, from the random floors' generator
+/// at (seed, stream 0, word 0) (`crate::floor::draw`: ChaCha8 keyed by the seed), the same on
+/// every machine.
 #[must_use]
 pub fn restart_starts(req: &DesignRequest, count: usize, seed: u64) -> Vec<Vec<f64>> {
-    let mut key = [0u8; 32];
-    key[..8].copy_from_slice(&seed.to_le_bytes());
-    let mut rng = ChaCha8Rng::from_seed(key);
-    // 53 random bits as a fraction in [0, 1).
-    let scale = 1.0 / (1u64 << 53) as f64;
+    let mut draws = StepDraws::new(seed, 0, 0);
     (0..count)
         .map(|_| {
             req.vary
                 .iter()
-                .map(|v| {
-                    let u = (rng.next_u64() >> 11) as f64 * scale;
-                    (v.lo + u * (v.hi - v.lo)).clamp(v.lo, v.hi)
-                })
+                .map(|v| (v.lo + draws.uniform() * (v.hi - v.lo)).clamp(v.lo, v.hi))
                 .collect()
         })
         .collect()

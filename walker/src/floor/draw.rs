@@ -1,6 +1,6 @@
-//! The random numbers of a random floor: a stream per walk and a block of it per step, so that
-//! a step's draws are a pure function of (seed, walk, step), the same on every machine and in
-//! every process.
+//! The random numbers of a random floor (and of a design's restarts, `crate::design`): a
+//! stream per walk and a block of it per step, so that a step's draws are a pure function of
+//! (seed, walk, step), the same on every machine and in every process.
 //!
 //! The generator is ChaCha8 (the `chacha20` crate, RustCrypto): its key is the seed (the
 //! seed's 8 bytes, little-endian, then zeros), its stream (nonce) the walk's index, and step

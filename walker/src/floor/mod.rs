@@ -14,7 +14,7 @@
 //! many seeded walks on all cores), `mesh/` (the Markov-chain approximation of the mean
 //! first-passage time, [`mesh::mesh_mfpt`]).
 
-mod draw;
+pub(crate) mod draw;
 mod error;
 pub mod mesh;
 mod stats;
