@@ -12,7 +12,7 @@ use crate::sim::SimConfig;
 use super::error::DesignError;
 use super::evaluate::{Evaluation, evaluate};
 use super::kkt::kkt;
-use super::request::{DesignRequest, Objective};
+use super::request::{DesignRequest, Objective, Vary};
 use super::result::{ConstraintSlack, Design, DesignStatus, VariedValue};
 
 /// The constraints, in this order.
@@ -173,27 +173,21 @@ impl Program<'_> {
             return (df.clone(), dg.clone());
         }
         let n = x.len();
-        let base = self.values(x);
+        // The objective and the constraints in one vector, as `difference` takes them.
+        let flat = |(f, g): (f64, Vec<f64>)| [vec![f], g].concat();
+        let base = flat(self.values(x));
         let mut df = vec![0.0; n];
         let mut dg = vec![vec![0.0; n]; self.count()];
         for (i, v) in self.req.vary.iter().enumerate() {
-            let h = STEP * (v.hi - v.lo);
-            let side = |s: f64| {
-                let mut y = x.to_vec();
-                y[i] += s;
-                (y[i] >= v.lo && y[i] <= v.hi && self.at(&y[..self.n]).is_some())
-                    .then(|| self.values(&y))
-            };
-            let (plus, minus) = (side(h), side(-h));
-            let (a, b, w) = match (plus, minus) {
-                (Some(p), Some(m)) => (p, m, 2.0 * h),
-                (Some(p), None) => (p, base.clone(), h),
-                (None, Some(m)) => (base.clone(), m, h),
-                (None, None) => continue,
-            };
-            df[i] = (a.0 - b.0) / w;
+            let column = difference(x, i, v, Some(&base), |y| {
+                self.at(&y[..self.n])
+                    .is_some()
+                    .then(|| flat(self.values(y)))
+            });
+            let Some(column) = column else { continue };
+            df[i] = column[0];
             for (j, row) in dg.iter_mut().enumerate() {
-                row[i] = (a.1[j] - b.1[j]) / w;
+                row[i] = column[j + 1];
             }
         }
         if self.epi {
@@ -219,32 +213,47 @@ impl Program<'_> {
     /// [`Program::gradients`] takes them), for the report in epigraph form, where the
     /// program's objective is `s`.
     fn objective_gradient(&self, p: &[f64]) -> Vec<f64> {
-        let f = |y: &[f64]| self.at(y).map(|e| self.objective(&e));
+        let f = |y: &[f64]| self.at(y).map(|e| vec![self.objective(&e)]);
         let base = f(p);
         self.req
             .vary
             .iter()
             .enumerate()
-            .map(|(i, v)| {
-                let h = STEP * (v.hi - v.lo);
-                let side = |s: f64| {
-                    let mut y = p.to_vec();
-                    y[i] += s;
-                    if y[i] >= v.lo && y[i] <= v.hi {
-                        f(&y)
-                    } else {
-                        None
-                    }
-                };
-                match (side(h), side(-h), base) {
-                    (Some(a), Some(b), _) => (a - b) / (2.0 * h),
-                    (Some(a), None, Some(b)) => (a - b) / h,
-                    (None, Some(b), Some(a)) => (a - b) / h,
-                    _ => 0.0,
-                }
-            })
+            .map(|(i, v)| difference(p, i, v, base.as_deref(), f).map_or(0.0, |c| c[0]))
             .collect()
     }
+}
+
+/// The difference quotient of `f` in component `i` of `x`, the varied parameter `v`: central,
+/// `(f(x + h e_i) - f(x - h e_i)) / 2h` with `h = STEP (hi - lo)`, or one-sided against `base`
+/// (`f(x)`) where one side leaves `v`'s bounds or `f` has no value there; `None` where neither
+/// side has one, or one has and there is no `base`. The side `+h` is evaluated first (the
+/// evaluations warm-start each other's fixed point).
+fn difference(
+    x: &[f64],
+    i: usize,
+    v: &Vary,
+    base: Option<&[f64]>,
+    f: impl Fn(&[f64]) -> Option<Vec<f64>>,
+) -> Option<Vec<f64>> {
+    let h = STEP * (v.hi - v.lo);
+    let side = |s: f64| {
+        let mut y = x.to_vec();
+        y[i] += s;
+        if y[i] >= v.lo && y[i] <= v.hi {
+            f(&y)
+        } else {
+            None
+        }
+    };
+    let (plus, minus) = (side(h), side(-h));
+    let (a, b, w) = match (plus, minus) {
+        (Some(p), Some(m)) => (p, m, 2.0 * h),
+        (Some(p), None) => (p, base?.to_vec(), h),
+        (None, Some(m)) => (base?.to_vec(), m, h),
+        (None, None) => return None,
+    };
+    Some(a.iter().zip(&b).map(|(a, b)| (a - b) / w).collect())
 }
 
 /// The friction coefficient of the held walker: far above any ratio a gait needs (the
