@@ -2,6 +2,7 @@
 # The Python tests: make a virtual environment (python/.venv, git-ignored), install the pinned
 # test requirements and this package (built by maturin from the Rust crate), and run pytest.
 # Usage: bash python/run-tests.sh [pytest arguments]
+#        bash python/run-tests.sh --environment-only   (the environment and requirements only)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 cd "$here"
@@ -11,7 +12,12 @@ if [ ! -x .venv/bin/python ]; then
 fi
 .venv/bin/python -m pip install --quiet --upgrade pip
 .venv/bin/python -m pip install --quiet -r requirements-test.txt
-.venv/bin/python -m pip install --quiet --force-reinstall --no-deps .
+if [ "${1:-}" = "--environment-only" ]; then
+    exit 0
+fi
+# The pinned maturin of the requirements builds the package (no isolated build environment to
+# fetch a second copy into).
+.venv/bin/python -m pip install --quiet --force-reinstall --no-deps --no-build-isolation .
 # From tests/, so that the installed package is imported, not the source folder.
 cd tests
 exec ../.venv/bin/python -m pytest -q -p no:cacheprovider "$@"

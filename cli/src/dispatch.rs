@@ -103,7 +103,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 }
             };
             if common.json {
-                emit(&format!("{}\n", report::walk_json(&w)))?;
+                emit(&(report::walk_json(&w) + "\n"))?;
             } else {
                 emit(&report::walk_text(&w))?;
             }

@@ -11,13 +11,26 @@ use walker::sensitivity::{Estimate, Sensitivity, SensitivityError};
 use walker::sim::{StepResult, Walk};
 use walker::sweep::SweepPoint;
 
-/// The JSON report of a walk: `{"status", "failure", "steps"}`.
-pub fn walk_json(w: &Walk) -> serde_json::Value {
-    json!({
-        "status": w.failure.as_ref().map_or("ok", |f| f.name()),
-        "failure": w.failure,
-        "steps": w.steps,
-    })
+/// The JSON report of a walk, `{"failure", "status", "steps"}`, as one line of text.
+///
+/// Keys are in byte order at every level, as a sorted map writes them: the steps are written
+/// straight from [`StepResult`], whose fields are declared in that order (a test compares the
+/// two), so a walk of many steps builds no map per step. The failure, at most one per walk and
+/// a flattened enum, goes through a sorted map.
+pub fn walk_json(w: &Walk) -> String {
+    /// The report's top level, its fields in key order.
+    #[derive(Serialize)]
+    struct Report<'a> {
+        failure: Option<serde_json::Value>,
+        status: &'a str,
+        steps: &'a [StepResult],
+    }
+    let report = Report {
+        failure: w.failure.as_ref().map(|f| serde_json::to_value(f).unwrap_or_default()),
+        status: w.failure.as_ref().map_or("ok", |f| f.name()),
+        steps: &w.steps,
+    };
+    serde_json::to_string(&report).unwrap_or_default()
 }
 
 /// A text table of a walk, with each step's `mu0` for a walk on a floor of its own.
