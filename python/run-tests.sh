@@ -16,8 +16,9 @@ if [ "${1:-}" = "--environment-only" ]; then
     exit 0
 fi
 # The pinned maturin of the requirements builds the package (no isolated build environment to
-# fetch a second copy into).
-.venv/bin/python -m pip install --quiet --force-reinstall --no-deps --no-build-isolation .
+# fetch a second copy into; maturin's build hook runs the `maturin` on the PATH).
+PATH="$here/.venv/bin:$PATH" .venv/bin/python -m pip install --quiet --force-reinstall --no-deps \
+    --no-build-isolation .
 # From tests/, so that the installed package is imported, not the source folder.
 cd tests
 exec ../.venv/bin/python -m pytest -q -p no:cacheprovider "$@"

@@ -258,6 +258,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
             run::check_sensitivities(&setup, &cfg, &names)?;
             let search = run::fixed_point_search(&model, &start, &cfg);
             let mut out = report::fixed_point_report(&search, &model.spec().state_names());
+            if let Ok(fp) = &search {
+                let bounds = walker::poincare::multiplier_errors(&model, &cfg, fp);
+                report::add_multiplier_errors(&mut out, &bounds);
+            }
             if let (false, Ok(fp)) = (names.is_empty(), &search) {
                 let sens = walker::sensitivity::sensitivities(&setup, &cfg, fp, &names);
                 report::add_sensitivities(&mut out, &sens);

@@ -6,7 +6,9 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 use serde_json::json;
-use walker::poincare::{ContinuationPoint, FixedPoint, FixedPointError, Status};
+use walker::poincare::{
+    ContinuationPoint, FixedPoint, FixedPointError, MapError, MultiplierBound, Status,
+};
 use walker::sensitivity::{Estimate, Sensitivity, SensitivityError};
 use walker::sim::{StepResult, Walk};
 use walker::sweep::SweepPoint;
@@ -26,7 +28,10 @@ pub fn walk_json(w: &Walk) -> String {
         steps: &'a [StepResult],
     }
     let report = Report {
-        failure: w.failure.as_ref().map(|f| serde_json::to_value(f).unwrap_or_default()),
+        failure: w
+            .failure
+            .as_ref()
+            .map(|f| serde_json::to_value(f).unwrap_or_default()),
         status: w.failure.as_ref().map_or("ok", |f| f.name()),
         steps: &w.steps,
     };
@@ -165,6 +170,37 @@ pub fn fixed_point_report(
             json: json!({ "status": "failed", "reason": e.to_string() }),
             text: format!("status: failed ({e})\n"),
         },
+    }
+}
+
+/// Adds each multiplier's error bound to the report of `walker fixed-point`: the JSON array
+/// `multiplier_errors`, in the order of `multipliers` (the bound on `|lambda - lambda_exact|`,
+/// `null` for a multiplier that is not simple; `walker::poincare::multiplier_errors`), and a
+/// line per multiplier in the text; a failure is `multiplier_errors_error` with its reason.
+pub fn add_multiplier_errors(out: &mut Report, result: &Result<Vec<MultiplierBound>, MapError>) {
+    let Some(obj) = out.json.as_object_mut() else {
+        return;
+    };
+    match result {
+        Ok(bounds) => {
+            let errors: Vec<Option<f64>> = bounds.iter().map(|b| b.error).collect();
+            obj.insert("multiplier_errors".into(), json!(errors));
+            out.text.push_str("multipliers' error bounds:\n");
+            for b in bounds {
+                let bound = b
+                    .error
+                    .map_or_else(|| "- (not simple)".to_owned(), |e| format!("{e:.1e}"));
+                let _ = writeln!(
+                    out.text,
+                    "  {:+.10} {:+.10}i  +- {bound}",
+                    b.multiplier.re, b.multiplier.im
+                );
+            }
+        }
+        Err(e) => {
+            obj.insert("multiplier_errors_error".into(), e.to_string().into());
+            let _ = writeln!(out.text, "multipliers' error bounds: failed ({e})");
+        }
     }
 }
 

@@ -772,8 +772,10 @@ class FixedPoint:
     was found: ``state_plus`` (the post-impact state, ``2 n`` values named by
     ``state_names``), ``T``, ``V``, ``dx``, ``multipliers`` (complex, of the map reduced to the
     Poincare section's free coordinates, named by ``section``: ``("xd", "th1d")`` for the
-    paper's walkers), ``residual``, ``iterations``, ``failure`` (the name of a failure of the
-    walk on the cycle, or None). ``json`` is the command line's whole JSON object.
+    paper's walkers), ``multiplier_errors`` (each multiplier's error bound, in the same order;
+    None for a multiplier that is not simple; ``docs/poincare.md``), ``residual``,
+    ``iterations``, ``failure`` (the name of a failure of the walk on the cycle, or None).
+    ``json`` is the command line's whole JSON object.
     ``sensitivities`` (where asked for) maps each parameter to ``walker fixed-point
     --sensitivities``'s object: ``d_state`` (by section coordinate), ``dT``, ``dV``, ``d_dx``
     (each ``{"value", "error"}``), ``d_multipliers`` (``{"re", "im", "error"}`` or None),
@@ -789,6 +791,7 @@ class FixedPoint:
     V: Optional[float] = None
     dx: Optional[float] = None
     multipliers: Optional[np.ndarray] = None
+    multiplier_errors: Tuple[Optional[float], ...] = ()
     residual: Optional[float] = None
     iterations: Optional[int] = None
     failure: Optional[Dict[str, Any]] = None
@@ -857,6 +860,7 @@ def fixed_point(
         V=j["V"],
         dx=j["dx"],
         multipliers=mult,
+        multiplier_errors=tuple(j.get("multiplier_errors", ())),
         section=tuple(j["section"]),
         residual=j["residual"],
         iterations=j["iterations"],

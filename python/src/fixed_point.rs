@@ -69,6 +69,18 @@ pub fn fixed_point(
         match search(&model, &cfg, &opts) {
             Ok(fp) => {
                 let mut j = serde_json::to_value(&fp).unwrap_or_else(|e| failed(e.to_string()));
+                // Each multiplier's error bound, as `walker fixed-point --json` reports it.
+                if let Some(obj) = j.as_object_mut() {
+                    match walker::poincare::multiplier_errors(&model, &cfg, &fp) {
+                        Ok(bounds) => {
+                            let errors: Vec<Option<f64>> = bounds.iter().map(|b| b.error).collect();
+                            obj.insert("multiplier_errors".into(), serde_json::json!(errors));
+                        }
+                        Err(e) => {
+                            obj.insert("multiplier_errors_error".into(), e.to_string().into());
+                        }
+                    }
+                }
                 if !sensitivities.is_empty()
                     && let Some(obj) = j.as_object_mut()
                 {

@@ -99,11 +99,18 @@ def assert_fixed_point_equal(fp, cli):
     assert fp.T == cli["T"] and fp.V == cli["V"]
     assert fp.state_plus.tolist() == cli["state_plus"]
     assert fp.multipliers.tolist() == [complex(m["re"], m["im"]) for m in cli["multipliers"]]
+    # Each multiplier has its error bound, a number for the simple multipliers of these gaits.
+    assert list(fp.multiplier_errors) == cli["multiplier_errors"]
+    assert len(fp.multiplier_errors) == len(fp.multipliers)
+    assert all(e is None or e >= 0 for e in fp.multiplier_errors)
     assert list(fp.section) == cli["section"]
 
 
 def test_fixed_point_equals_the_cli():
-    assert_fixed_point_equal(sw.fixed_point(mu0=0.4), cli_json("fixed_point_active"))
+    fp = sw.fixed_point(mu0=0.4)
+    assert_fixed_point_equal(fp, cli_json("fixed_point_active"))
+    # The compiled walker's exact Jacobian: its multipliers good to 1.8e-11 (docs/poincare.md).
+    assert max(fp.multiplier_errors) < 1e-9
 
 
 def test_fixed_point_of_a_model_file_equals_the_cli():

@@ -62,6 +62,9 @@ fn one_step(model: &Model, cfg: &SimConfig, s: &[f64]) -> Result<(State, f64, f6
     Ok((state, step.period, step.dx))
 }
 
+/// The relative difference step of [`finite_difference_map`].
+pub(super) const DEFAULT_STEP: f64 = 1e-4;
+
 /// The Poincare map at `s` with its Jacobian by central differences (see the module
 /// documentation).
 pub(crate) fn finite_difference_map(
@@ -69,7 +72,7 @@ pub(crate) fn finite_difference_map(
     cfg: &SimConfig,
     s: &[f64],
 ) -> Result<MapResult, MapError> {
-    finite_difference_map_with_step(model, cfg, s, 1e-4)
+    finite_difference_map_with_step(model, cfg, s, DEFAULT_STEP)
 }
 
 /// [`poincare_map`](super::poincare_map) with its Jacobian by central differences of relative

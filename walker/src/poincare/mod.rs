@@ -58,6 +58,7 @@
 //! This is detected (a multiplier within [`UNIT_MULTIPLIER_TOL`] of 1) and Newton's method takes
 //! least-norm steps (truncated SVD), which converge to the family member nearest to the guess.
 
+mod accuracy;
 mod continuation;
 mod error;
 mod finite_difference;
@@ -69,11 +70,15 @@ mod result;
 mod section;
 mod variational;
 
+pub use accuracy::{
+    EstimatedJacobian, MultiplierBound, jacobian_error, multiplier_bounds, multiplier_errors,
+};
 pub use continuation::{ContinuationPoint, continuation};
 pub use error::{FixedPointError, MapError};
 pub use finite_difference::finite_difference_map_with_step;
 pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
 pub use map::{poincare_map, poincare_map_with};
+pub(crate) use multipliers::{Eigenvectors, eigenvectors};
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
 pub use result::{JacobianMethod, MapResult};
 pub use section::Section;

@@ -5,7 +5,7 @@ use nalgebra::{Complex, DMatrix, DVector};
 
 use crate::continuation::{ProblemError, WalkerProblem};
 use crate::model::Model;
-use crate::poincare::{FixedPoint, Section, eigenvalues, poincare_map};
+use crate::poincare::{Eigenvectors, FixedPoint, Section, eigenvalues, eigenvectors, poincare_map};
 use crate::setup::Setup;
 use crate::sim::SimConfig;
 
@@ -229,19 +229,6 @@ pub fn sensitivities(
     Ok(out)
 }
 
-/// The unit null vector of the complex square matrix `a` (the right singular vector of its
-/// smallest singular value) and that singular value.
-fn null_vector(a: &DMatrix<Complex<f64>>) -> Option<(DVector<Complex<f64>>, f64)> {
-    let svd = a.clone().svd(false, true);
-    let v_t = svd.v_t?;
-    let (k, s) = svd
-        .singular_values
-        .iter()
-        .enumerate()
-        .min_by(|x, y| x.1.total_cmp(y.1))?;
-    Some((v_t.row(k).adjoint(), *s))
-}
-
 /// `d lambda / dp = u^H (dJ/dp) w / (u^H w)` for the simple eigenvalue `lambda` of `jac`, with
 /// the error `|E|_F / |u^H w|` (`E` the estimate of `dJ/dp`'s error, unit `u`, `w`); `None`
 /// where `lambda` is not simple (`u^H w` below `1e-8`) or not finite.
@@ -251,15 +238,12 @@ fn multiplier_derivative(
     dj_err: f64,
     lambda: Complex<f64>,
 ) -> Option<MultiplierSensitivity> {
-    let d = jac.nrows();
-    let a = jac.map(|x| Complex::new(x, 0.0)) - DMatrix::identity(d, d) * lambda;
-    let (w, _) = null_vector(&a)?;
-    let (u, _) = null_vector(&a.adjoint())?;
+    let Eigenvectors {
+        right: w,
+        left: u,
+        overlap: uw,
+    } = eigenvectors(jac, lambda)?;
     let djc = dj.map(|x| Complex::new(x, 0.0));
-    let uw = u.dotc(&w);
-    if uw.norm() < 1e-8 {
-        return None;
-    }
     let dl = u.dotc(&(djc * &w)) / uw;
     let error = dj_err / uw.norm();
     (dl.re.is_finite() && dl.im.is_finite() && error.is_finite()).then_some(MultiplierSensitivity {

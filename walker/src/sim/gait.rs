@@ -149,10 +149,19 @@ mod tests {
     fn a_step_serialises_with_its_keys_in_sorted_order() {
         let step = full_step();
         let direct = serde_json::to_string(&step).expect("a step serialises");
-        let sorted = serde_json::to_value(step).expect("a step serialises").to_string();
+        let sorted = serde_json::to_value(step)
+            .expect("a step serialises")
+            .to_string();
         assert_eq!(direct, sorted);
-        let plain = StepResult { floor: None, impact: ImpactRegime::Frictionless, ..step };
+        let plain = StepResult {
+            floor: None,
+            impact: ImpactRegime::Frictionless,
+            ..step
+        };
         let direct = serde_json::to_string(&plain).expect("a step serialises");
-        assert_eq!(direct, serde_json::to_value(plain).expect("serialises").to_string());
+        assert_eq!(
+            direct,
+            serde_json::to_value(plain).expect("serialises").to_string()
+        );
     }
 }

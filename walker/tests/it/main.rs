@@ -13,6 +13,7 @@ mod continuation_walkers;
 mod floor_survive;
 mod floor_walks;
 mod model_identity;
+mod multiplier_bounds;
 mod ode_accuracy;
 mod ode_crosscheck;
 mod ode_events;
