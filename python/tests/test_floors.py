@@ -178,3 +178,23 @@ def test_a_floor_that_sets_phi_refuses_phi_and_a_level_walker():
                    walks=1, max_steps=1)
     with pytest.raises(ValueError, match="no slope angle"):
         sw.survive(scene="active-level", floor=SLOPES, walks=1, max_steps=1)
+
+
+WHEEL_ICE = {"kind": "random", "seed": 5,
+             "mu0": {"distribution": "uniform", "lo": 0.05, "hi": 0.5}}
+"""The rimless wheel's slippery floor of ``docs/floors.md`` ("The mesh on a passive walker")."""
+
+
+def test_mfpt_equals_the_cli_and_checks_its_arguments_by_name():
+    kw = dict(model=WHEEL, friction="coulomb", impact="coulomb", floor=WHEEL_ICE, mesh=5,
+              samples=4)
+    r = sw.mfpt(**kw, walks=20, max_steps=200)
+    cli = cli_json("mfpt_wheel")
+    assert r == cli
+    assert r["monte_carlo"]["walks"] == 20
+    with pytest.raises(ValueError, match="invalid mesh"):
+        sw.mfpt(**{**kw, "mesh": 1})
+    with pytest.raises(ValueError, match="invalid half_widths: cannot be given with box_scale"):
+        sw.mfpt(**kw, box_scale=1.0, half_widths=[0.1, 0.1])
+    with pytest.raises(ValueError, match="friction only"):
+        sw.mfpt(**{**kw, "floor": SLOPES}, set={"mu0": 0.8})
