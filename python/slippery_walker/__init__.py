@@ -429,8 +429,9 @@ def survive(
     Args:
         floor: the path of a floor file or a dict of its structure, e.g. ``{"kind": "random",
             "seed": 3, "mu0": {"distribution": "markov", "dry": 0.3, "icy": 0.05,
-            "dry_length": 30, "icy_length": 1.5}}``; a dict gets a file's checks, and an error
-            names its key (``floor['mu0']['hi']``).
+            "dry_length": 30, "icy_length": 1.5}}``, or with a slope per step ``"phi": {...}``
+            beside or instead of ``"mu0"``; a dict gets a file's checks, and an error names its
+            key (``floor['mu0']['hi']``).
         walks: the number of walks, in [1, 100000].
         max_steps: each walk's step limit, in [1, :data:`MAX_STEPS`]; ``walks * max_steps`` at
             most 1e8.
@@ -441,7 +442,8 @@ def survive(
             batch, their outcomes put in walk order, give the batch's statistics by
             :func:`survival` (:func:`slippery_walker.dask.survival_grid` does this on Dask).
         scene, model, set, init, t_set, omega0, phi, c, friction, impact, method, rtol, atol:
-            as :func:`simulate` (``mu0`` is the floor's; ``set`` may not give it).
+            as :func:`simulate` (``mu0``, and ``phi`` for a floor that sets the slope, are the
+            floor's; ``set`` may not give them).
 
     Returns:
         The command line's JSON as a dict: ``max_steps``, ``outcomes`` (a list of ``{"walk",
