@@ -247,7 +247,7 @@ pub enum Command {
         /// The shared flags.
         #[command(flatten)]
         common: Common,
-        /// The floor FILE.toml (docs/floors.md): random (or uniform), not steps.
+        /// The floor FILE.toml (docs/floors.md): random (or uniform), not steps, of friction only.
         #[arg(long)]
         floor: PathBuf,
         /// Ramp duration T_set (s), > 0 (active walker).
