@@ -22,7 +22,7 @@ pub trait StepModels {
     fn floor(&self) -> Option<StepFloor>;
 
     /// The point `o` of the floor from which step `step`'s model sees the walker, asked once
-    /// per step after [`StepModels::model`] with the state at the step's start: the walk
+    /// per step before [`StepModels::model`] with the state at the step's start: the walk
     /// subtracts `o` from the stance foot's position `(q[0], q[1])` before the step and adds it
     /// back to every position the step reports (a floor whose slope changes between steps,
     /// `crate::floor`, puts the step's floor through the model's origin so). `None` (the
