@@ -32,6 +32,19 @@ fn wheel(impact: ImpactLaw) -> Setup {
     Setup::from_model_file(&path, &ov, None).expect("the shipped model")
 }
 
+/// The compass gait of `models/compass-gait.toml` on its 3 degree slope under exact Coulomb
+/// friction in stance and at the strike with `mu0 = 0.8` (its strikes stick there).
+fn compass() -> Setup {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/compass-gait.toml");
+    let ov = Overrides {
+        friction: Some(Friction::Coulomb),
+        impact: Some(ImpactLaw::Coulomb),
+        set: vec![("mu0".into(), 0.8)],
+        ..Overrides::default()
+    };
+    Setup::from_model_file(&path, &ov, None).expect("the shipped model")
+}
+
 fn on(setup: &Setup, floor: FloorPlan, steps: usize) -> Walk {
     let start = setup.model().expect("model").start_state();
     FloorWalker::new(setup, floor)
@@ -132,6 +145,29 @@ fn a_walk_on_changing_slopes_is_the_same_walk_run_one_step_at_a_time() {
         assert_eq!(a.period.to_bits(), b.period.to_bits(), "step {k}");
         let f = a.floor.expect("a floor step");
         assert_eq!((f.mu0, f.phi), (mu0[k], Some(phi[k])));
+    }
+}
+
+#[test]
+fn the_compass_gait_on_changing_slopes_is_the_same_walk_run_one_step_at_a_time() {
+    // Four coordinates and a fall that watches a point (the hip's height above the floor):
+    // the same construction, the same bound as for the wheel.
+    let setup = compass();
+    let phi = [0.0524, 0.056, 0.05, 0.05, 0.054, 0.0524];
+    let mu0 = [0.8; 6];
+    let floored = on(&setup, slopes(&phi), phi.len());
+    assert_eq!(floored.steps.len(), phi.len(), "{:?}", floored.failure);
+    for (k, (a, b)) in floored
+        .steps
+        .iter()
+        .zip(&pieces(&setup, &phi, &mu0))
+        .enumerate()
+    {
+        let (sa, sb) = (a.state_plus(), b.state_plus());
+        let scale = sa.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+        for (x, y) in sa.iter().zip(sb.iter()) {
+            assert!((x - y).abs() <= 1e-12 * scale, "step {k}: {sa:?} vs {sb:?}");
+        }
     }
 }
 
