@@ -189,14 +189,19 @@ pub enum Command {
         /// Stop after this many steps: a whole number in [0, 1000000].
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "100")]
         max_steps: String,
-        /// Walk on the floor of FILE.toml (docs/floors.md): the friction mu0 of each step
-        /// (a random floor's walk 0); not with --mu0 or --mu0-steps.
+        /// Walk on the floor of FILE.toml (docs/floors.md): the friction mu0 and the slope phi
+        /// of each step (a random floor's walk 0); not with --mu0, --mu0-steps or --phi-steps.
         #[arg(long)]
         floor: Option<PathBuf>,
         /// Walk on mu0 per step, comma separated, each > 0: step k on the k-th value, the last
         /// value after the list (e.g. 0.4,0.4,0.05,0.4); not with --mu0 or --floor.
         #[arg(long = "mu0-steps", allow_hyphen_values = true)]
         mu0_steps: Option<String>,
+        /// Walk step k on the line of slope phi_k (rad) through its stance foot, comma
+        /// separated, the last value after the list (e.g. 0.2,0.25,0.15); with --mu0-steps or
+        /// alone; not with --phi or --floor (docs/floors.md, "A slope per step").
+        #[arg(long = "phi-steps", allow_hyphen_values = true)]
+        phi_steps: Option<String>,
     },
     /// Walk many times on a random floor: the steps before a failure, the survival curve, the
     /// mean first-passage time with its confidence interval and the failures by kind
@@ -242,7 +247,7 @@ pub enum Command {
         /// The shared flags.
         #[command(flatten)]
         common: Common,
-        /// The floor FILE.toml (docs/floors.md): random (or uniform), not steps.
+        /// The floor FILE.toml (docs/floors.md): random (or uniform), not steps, of friction only.
         #[arg(long)]
         floor: PathBuf,
         /// Ramp duration T_set (s), > 0 (active walker).

@@ -86,9 +86,15 @@ fn run(cli: Cli) -> Result<(), CliError> {
             max_steps,
             floor: floor_file,
             mu0_steps,
+            phi_steps,
         } => {
             let limits = run::limits(&max_steps, duration, None)?;
-            let floor_spec = floor::floor_of(floor_file.as_deref(), mu0_steps.as_deref(), mu0)?;
+            let floor_spec = floor::floor_of(
+                floor_file.as_deref(),
+                mu0_steps.as_deref(),
+                phi_steps.as_deref(),
+                mu0,
+            )?;
             let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
             run::omega0_once(&setup, &common, omega0)?;
             run::set_omega0(&mut setup, omega0, |_| true, "finite")?;
@@ -98,7 +104,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
             let w = match floor_spec {
                 None => run::simulate(&model, &start, &limits, &cfg)?,
                 Some(spec) => {
-                    let flag = floor::flag_of(&setup, &common.set, floor_file.is_some())?;
+                    let flag =
+                        floor::flag_of(&setup, &common.set, phi, &spec, floor_file.is_some())?;
                     floor::simulate_on(&setup, spec, flag, &start, &limits, &cfg)?
                 }
             };
@@ -118,10 +125,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
             first_walk,
             outcomes,
         } => {
-            let spec = floor::floor_of(Some(&floor_file), None, None)?
+            let spec = floor::floor_of(Some(&floor_file), None, None, None)?
                 .ok_or_else(|| InputError::new("floor", "a floor file is required"))?;
             let setup = run::setup(&common, &common.overrides(None, t_set, phi)?)?;
-            floor::mu0_once(&setup, &common.set, Field::Floor)?;
+            floor::params_once(&setup, &common.set, phi, &spec, Field::Floor)?;
             let start = run::model(&setup)?.start_state();
             let counts = floor::SurviveCounts {
                 walks: &walks,
@@ -169,10 +176,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 box_scale.as_deref(),
                 half_widths.as_deref(),
             )?;
-            let spec = floor::floor_of(Some(&floor_file), None, None)?
+            let spec = floor::floor_of(Some(&floor_file), None, None, None)?
                 .ok_or_else(|| InputError::new("floor", "a floor file is required"))?;
             let setup = run::setup(&common, &common.overrides(None, t_set, phi)?)?;
-            floor::mu0_once(&setup, &common.set, Field::Floor)?;
+            floor::params_once(&setup, &common.set, phi, &spec, Field::Floor)?;
             let check = walks
                 .as_deref()
                 .map(|w| crate::mfpt::walk_counts(w, &max_steps))
@@ -296,7 +303,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 .map(|t| input::whole("steps", t, 1, animate::request::MAX_STEPS))
                 .transpose()?;
             let req = animate::Request::new(steps, duration, speed, fps, &output, strobe)?;
-            let floor_spec = floor::floor_of(floor_file.as_deref(), mu0_steps.as_deref(), mu0)?;
+            let floor_spec =
+                floor::floor_of(floor_file.as_deref(), mu0_steps.as_deref(), None, mu0)?;
             let mut setup = run::setup(&common, &common.overrides(mu0, t_set, phi)?)?;
             run::omega0_once(&setup, &common, omega0)?;
             run::set_omega0(&mut setup, omega0, |_| true, "finite")?;
@@ -306,7 +314,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
             let written = match floor_spec {
                 None => animate::animate(&model, &cfg, &start, &req)?,
                 Some(spec) => {
-                    let flag = floor::flag_of(&setup, &common.set, floor_file.is_some())?;
+                    let flag =
+                        floor::flag_of(&setup, &common.set, phi, &spec, floor_file.is_some())?;
                     let walker = floor::walker_on(&setup, spec, flag)?;
                     let tr = animate::sample_on_floor(&walker, &cfg, &start, &req, flag)?;
                     let mu0: Vec<f64> = walker.steps(0).take(tr.walk.steps.len() + 1).collect();

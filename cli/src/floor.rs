@@ -1,5 +1,5 @@
 //! `walker simulate --floor FILE | --mu0-steps LIST` and `walker survive`: the floor of a
-//! walk from its flags, walks on it, and the survival report of a batch (`docs/floors.md`).
+//! walk (its friction and slope per step) from its flags, walks on it, and the survival report of a batch (`docs/floors.md`).
 //! The library checks the floor ([`walker::floor`], the file's own checks in
 //! `walker_scene::floor`) and the counts ([`walker::request::survive_counts`]); errors are
 //! named here by their flags (exit code 2).
@@ -7,7 +7,9 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use walker::floor::{FloorError, FloorFile, FloorSpec, FloorWalker, SurviveReport, survive};
+use walker::floor::{
+    FloorError, FloorFile, FloorPlan, FloorSpec, FloorWalker, SurviveReport, survive,
+};
 use walker::request::{Field, MAX_STEPS, MAX_WALK_INDEX, MAX_WALKS};
 use walker::setup::Setup;
 use walker::sim::{SimConfig, Walk, WalkLimits};
@@ -15,82 +17,144 @@ use walker::vector::Vector;
 
 use crate::input::InputError;
 
-/// The floor of `--floor FILE` or `--mu0-steps LIST` (at most one, and not with `--mu0`:
-/// [`walker::request::floor_once`]), `None` without either.
+/// The floor of `--floor FILE`, or of `--mu0-steps LIST` and `--phi-steps LIST` (either or
+/// both), not with `--mu0` ([`walker::request::floor_once`]); `None` without any.
 ///
 /// # Errors
-/// Two of them given; a floor file that cannot be read or has a bad value (named by file,
-/// line, column and field); a list that is not numbers each `> 0` and finite.
+/// A file with a list; `--mu0` with a floor; a floor file that cannot be read or has a bad
+/// value (named by file, line, column and field); a list that is not numbers each `> 0` (mu0)
+/// or finite (phi).
 pub fn floor_of(
     floor: Option<&Path>,
     mu0_steps: Option<&str>,
+    phi_steps: Option<&str>,
     mu0: Option<f64>,
-) -> Result<Option<FloorSpec>, InputError> {
+) -> Result<Option<FloorPlan>, InputError> {
     walker::request::floor_once(floor.is_some(), mu0_steps.is_some(), mu0.is_some())?;
     if let Some(path) = floor {
+        if phi_steps.is_some() {
+            return Err(InputError::new(
+                "phi-steps",
+                "cannot be given with --floor: each sets the floor; give one (a floor file \
+                 may give phi)",
+            ));
+        }
         let file =
             FloorFile::from_file(path).map_err(|e| InputError::new("floor", e.to_string()))?;
         return Ok(Some(file.spec));
     }
-    let Some(list) = mu0_steps else {
-        return Ok(None);
-    };
-    let values = list
-        .split(',')
-        .enumerate()
-        .map(|(i, t)| {
-            t.trim().parse::<f64>().map_err(|_| {
-                InputError::new(
-                    "mu0-steps",
-                    format!(
-                        "mu0[{i}] = {}: not a number; give mu0 per step as 0.4,0.4,0.05 (each > 0)",
-                        walker::request::shown::text(t)
-                    ),
-                )
+    let list = |flag: &str, name: &str, text: &str| {
+        text.split(',')
+            .enumerate()
+            .map(|(i, t)| {
+                t.trim().parse::<f64>().map_err(|_| {
+                    InputError::new(
+                        flag,
+                        format!(
+                            "{name}[{i}] = {}: not a number; give {name} per step as \
+                             0.4,0.4,0.05 (each {})",
+                            walker::request::shown::text(t),
+                            if name == "mu0" { "> 0" } else { "finite" }
+                        ),
+                    )
+                })
             })
+            .collect::<Result<Vec<f64>, _>>()
+    };
+    let mu0 = mu0_steps
+        .map(|t| {
+            FloorSpec::steps(&list("mu0-steps", "mu0", t)?)
+                .map_err(|e| InputError::new("mu0-steps", e.to_string()))
         })
-        .collect::<Result<Vec<f64>, _>>()?;
-    FloorSpec::steps(&values)
-        .map(Some)
-        .map_err(|e| InputError::new("mu0-steps", e.to_string()))
+        .transpose()?;
+    let phi = phi_steps
+        .map(|t| {
+            FloorSpec::phi_steps(&list("phi-steps", "phi", t)?)
+                .map_err(|e| InputError::new("phi-steps", e.to_string()))
+        })
+        .transpose()?;
+    Ok((mu0.is_some() || phi.is_some()).then_some(FloorPlan { mu0, phi }))
 }
 
-/// The flag that gave a walk's floor (`--floor` if `from_file`, else `--mu0-steps`), after
-/// checking that `--set` does not also give the friction coefficient ([`mu0_once`]).
+/// The flag that gave a walk's floor (`--floor` if `from_file`, else `--mu0-steps` or
+/// `--phi-steps`), after checking that `--set` and `--phi` do not also give what the floor
+/// sets ([`params_once`]).
 ///
 /// # Errors
-/// As [`mu0_once`].
-pub fn flag_of(setup: &Setup, set: &[String], from_file: bool) -> Result<&'static str, InputError> {
+/// As [`params_once`].
+pub fn flag_of(
+    setup: &Setup,
+    set: &[String],
+    phi: Option<f64>,
+    floor: &FloorPlan,
+    from_file: bool,
+) -> Result<&'static str, InputError> {
     let (flag, field) = if from_file {
         ("floor", Field::Floor)
-    } else {
+    } else if floor.mu0.is_some() {
         ("mu0-steps", Field::Mu0Steps)
+    } else {
+        ("phi-steps", Field::Mu0Steps)
     };
-    mu0_once(setup, set, field)?;
+    params_once(setup, set, phi, floor, field)?;
     Ok(flag)
 }
 
-/// Checks that `--set` does not also give the friction coefficient, which the floor (given
-/// by `floor`: [`Field::Floor`] or [`Field::Mu0Steps`]) sets per step.
+/// Checks that `--set` does not also give the friction coefficient or the slope that the
+/// floor (given by `field`: [`Field::Floor`] or a list) sets per step, nor `--phi` (`phi`) the
+/// slope. What the floor does not set, the flags may give.
 ///
 /// # Errors
-/// `--set` gives the model's `mu0` parameter (the error names `--set` and the floor's flag).
-pub fn mu0_once(setup: &Setup, set: &[String], floor: Field) -> Result<(), InputError> {
+/// `--set` gives the model's `mu0` or slope parameter that the floor sets, or `--phi` the
+/// slope (the error names the flag and the floor's).
+pub fn params_once(
+    setup: &Setup,
+    set: &[String],
+    phi: Option<f64>,
+    floor: &FloorPlan,
+    field: Field,
+) -> Result<(), InputError> {
     let spec = setup.walker.spec();
-    let Some(i) = spec.mu0 else {
-        return Ok(());
+    let assigned = crate::input::assignments("set", set)?;
+    // The flag that gave what conflicts: the file, or the list of that quantity.
+    let other = |list: &str| match field {
+        Field::Floor => "--floor".to_owned(),
+        _ => format!("--{list}"),
     };
-    let name = &spec.model.parameters[i].name.name;
-    if crate::input::assignments("set", set)?
-        .iter()
-        .any(|(n, _)| n == name)
-    {
-        return Err(walker::request::RequestError::Conflict {
-            field: Field::Parameter(name.clone()),
-            other: floor,
-            why: "each sets mu0; give one",
+    let parts = [
+        (
+            floor.mu0.is_some(),
+            spec.mu0,
+            "each sets mu0; give one",
+            "mu0-steps",
+        ),
+        (
+            floor.phi.is_some(),
+            spec.slope,
+            "each sets phi; give one",
+            "phi-steps",
+        ),
+    ];
+    for (sets, index, why, list) in parts {
+        let Some(i) = index.filter(|_| sets) else {
+            continue;
+        };
+        let name = &spec.model.parameters[i].name.name;
+        if assigned.iter().any(|(n, _)| n == name) {
+            return Err(InputError::new(
+                "set",
+                format!("cannot be given with {}: {why}", other(list)),
+            ));
         }
-        .into());
+    }
+    if floor.phi.is_some() && phi.is_some() {
+        return Err(InputError::new(
+            "phi",
+            format!(
+                "cannot be given with {}: each sets phi; give one",
+                other("phi-steps")
+            ),
+        ));
     }
     Ok(())
 }
@@ -106,7 +170,7 @@ fn floor_error(flag: &str, e: &FloorError) -> InputError {
 /// The floor cannot set the walker's friction ([`FloorWalker::new`]).
 pub fn walker_on<'s>(
     setup: &'s Setup,
-    floor: FloorSpec,
+    floor: FloorPlan,
     flag: &str,
 ) -> Result<FloorWalker<'s>, InputError> {
     FloorWalker::new(setup, floor).map_err(|e| floor_error(flag, &e))
@@ -118,7 +182,7 @@ pub fn walker_on<'s>(
 /// As [`walker_on`].
 pub fn simulate_on(
     setup: &Setup,
-    floor: FloorSpec,
+    floor: FloorPlan,
     flag: &str,
     start: &Vector,
     limits: &WalkLimits,
@@ -147,7 +211,7 @@ pub struct SurviveCounts<'a> {
 /// A count out of its range or too many steps in all, or as [`walker_on`].
 pub fn survive_on(
     setup: &Setup,
-    floor: FloorSpec,
+    floor: FloorPlan,
     start: &Vector,
     counts: &SurviveCounts<'_>,
     cfg: &SimConfig,

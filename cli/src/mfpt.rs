@@ -8,7 +8,7 @@ use std::fmt::Write as _;
 use walker::floor::mesh::{
     MAX_POINTS, MAX_SAMPLES, MeshBox, MeshError, MeshOptions, MeshReport, mesh_mfpt,
 };
-use walker::floor::{FloorSpec, Survival, survive};
+use walker::floor::{FloorPlan, Survival, survive};
 use walker::poincare::Section;
 use walker::request::{Field, MAX_STEPS, MAX_WALKS, shown};
 use walker::setup::Setup;
@@ -117,7 +117,7 @@ pub fn walk_counts(walks: &str, max_steps: &str) -> Result<(usize, usize), Input
 /// The floor cannot carry the walker, a `steps` floor, a mesh too large, or no gait.
 pub fn mfpt_on(
     setup: &Setup,
-    floor: FloorSpec,
+    floor: FloorPlan,
     opts: &MeshOptions,
     check: Option<(usize, usize)>,
     cfg: &SimConfig,

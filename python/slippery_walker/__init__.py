@@ -11,9 +11,10 @@ command line's flags and return NumPy arrays:
   ``t_set`` or ``phi``, procedures (P1a)-(P5a) and (P1b)-(P5b).
 - :func:`walk_points` -- independent walks at the points of a parameter grid (one process);
   :func:`slippery_walker.dask.grid_sweep` runs the same on a Dask cluster.
-- :func:`survive` -- many seeded walks on a floor whose ``mu0`` changes between steps, and
-  how far the walker gets; :func:`survival` -- the statistics of their outcomes;
-  :func:`slippery_walker.dask.survival_grid` runs batches of them on a Dask cluster.
+- :func:`survive` -- many seeded walks on a floor whose ``mu0`` (or slope ``phi``) changes
+  between steps, and how far the walker gets; :func:`survival` -- the statistics of their
+  outcomes; :func:`slippery_walker.dask.survival_grid` runs batches of them on a Dask cluster;
+  :func:`mfpt` -- the same time by the Markov-chain (mesh) approximation.
 - :func:`fixed_point` -- the limit cycle and its Floquet multipliers.
 - :func:`describe` -- a walker's parameters, state components, inputs and start.
 
@@ -58,6 +59,7 @@ __all__ = [
     "simulate",
     "survival",
     "survive",
+    "mfpt",
     "sweep",
     "walk_points",
 ]
@@ -427,8 +429,9 @@ def survive(
     Args:
         floor: the path of a floor file or a dict of its structure, e.g. ``{"kind": "random",
             "seed": 3, "mu0": {"distribution": "markov", "dry": 0.3, "icy": 0.05,
-            "dry_length": 30, "icy_length": 1.5}}``; a dict gets a file's checks, and an error
-            names its key (``floor['mu0']['hi']``).
+            "dry_length": 30, "icy_length": 1.5}}``, or with a slope per step ``"phi": {...}``
+            beside or instead of ``"mu0"``; a dict gets a file's checks, and an error names its
+            key (``floor['mu0']['hi']``).
         walks: the number of walks, in [1, 100000].
         max_steps: each walk's step limit, in [1, :data:`MAX_STEPS`]; ``walks * max_steps`` at
             most 1e8.
@@ -439,7 +442,8 @@ def survive(
             batch, their outcomes put in walk order, give the batch's statistics by
             :func:`survival` (:func:`slippery_walker.dask.survival_grid` does this on Dask).
         scene, model, set, init, t_set, omega0, phi, c, friction, impact, method, rtol, atol:
-            as :func:`simulate` (``mu0`` is the floor's; ``set`` may not give it).
+            as :func:`simulate` (``mu0``, and ``phi`` for a floor that sets the slope, are the
+            floor's; ``set`` may not give them).
 
     Returns:
         The command line's JSON as a dict: ``max_steps``, ``outcomes`` (a list of ``{"walk",
@@ -459,6 +463,79 @@ def survive(
         walks=_int("walks", walks, 1, 100_000),
         max_steps=_int("max_steps", max_steps, 1, MAX_STEPS),
         first_walk=_int("first_walk", first_walk, 0, MAX_WALK_INDEX),
+    )
+    return json.loads(text)
+
+
+def mfpt(
+    *,
+    floor: Floor,
+    mesh: int = 17,
+    samples: int = 16,
+    box_scale: Optional[float] = None,
+    half_widths: Optional[Sequence[float]] = None,
+    walks: Optional[int] = None,
+    max_steps: int = 1000,
+    scene: Optional[Path] = None,
+    model: Optional[Path] = None,
+    set: Values = None,
+    init: Values = None,
+    t_set: Optional[float] = None,
+    omega0: Optional[float] = None,
+    phi: Optional[float] = None,
+    c: Optional[float] = None,
+    friction: Optional[str] = None,
+    impact: Optional[str] = None,
+    method: str = "dop853",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+) -> Dict[str, Any]:
+    """The mean first-passage time by the Markov-chain (mesh) approximation, as ``walker mfpt
+    --json`` (``docs/floors.md``): the Poincare section meshed around the gait's fixed point,
+    one step per mesh point and floor sample, the chain's second eigenvalue. Runs with the GIL
+    released (Ctrl-C is raised when the mesh ends).
+
+    Args:
+        floor: as :func:`survive`: a random (or uniform) floor of friction; a ``steps`` floor
+            and a floor that sets the slope are refused (named).
+        mesh: points per coordinate of the section, in [2, 129] (odd puts one on the fixed
+            point).
+        samples: floor samples of an independent distribution, in [1, 256].
+        box_scale: the box as this factor times the spread of pilot walks, in (0, 100]
+            (default 1.5); not with ``half_widths``.
+        half_widths: the box's half-widths, one per coordinate of the section, each > 0.
+        walks: also walk this many times from the fixed point (each of at most ``max_steps``
+            steps) and report their statistics as ``monte_carlo``.
+        max_steps: the step limit of those walks.
+        scene, model, set, init, t_set, omega0, phi, c, friction, impact, method, rtol, atol:
+            as :func:`survive`.
+
+    Returns:
+        The command line's JSON as a dict (``lambda2``, ``mfpt``: ``eigen`` and
+        ``from_fixed_point``, None for an infinite time, ``fall_share``, ``centre``, ...), and
+        with ``walks`` ``monte_carlo``: ``walks``, ``failures``, ``censored``, ``mfpt``,
+        ``failures_by_kind``.
+
+    Raises:
+        ValueError: an argument out of its range, a floor the mesh cannot take, a mesh too
+            large, or no gait to mesh around (named).
+        TypeError: a floor (or a value in it) of a type no floor file has.
+    """
+    widths = None
+    if half_widths is not None:
+        if isinstance(half_widths, (str, bytes)) or not isinstance(half_widths, Sequence):
+            raise _type_error("half_widths", half_widths, "a list of numbers")
+        widths = [_float(f"half_widths[{i}]", w) for i, w in enumerate(half_widths)]
+    text = _core.mfpt(
+        **_survive_options(floor=floor, scene=scene, model=model, set=set, init=init,
+                           t_set=t_set, omega0=omega0, phi=phi, c=c, friction=friction,
+                           impact=impact, method=method, rtol=rtol, atol=atol),
+        mesh=_int("mesh", mesh, 2, 129),
+        samples=_int("samples", samples, 1, 256),
+        box_scale=_float("box_scale", box_scale),
+        half_widths=widths,
+        walks=None if walks is None else _int("walks", walks, 1, 100_000),
+        max_steps=_int("max_steps", max_steps, 1, MAX_STEPS),
     )
     return json.loads(text)
 

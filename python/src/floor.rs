@@ -7,8 +7,8 @@
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
-use walker::floor::{FloorFile, FloorFileError, FloorSpec, FloorWalker};
-use walker::request::{Field, RequestError};
+use walker::floor::{FloorFile, FloorFileError, FloorPlan, FloorWalker};
+use walker::request::{Field, RequestError, Role};
 use walker::setup::Setup;
 
 use crate::error::ArgError;
@@ -99,7 +99,7 @@ fn toml_value(v: &Bound<'_, PyAny>, path: &mut Vec<String>) -> PyResult<toml::Va
 /// # Errors
 /// `TypeError` for another type or a value of a type no floor file has; `ValueError` naming
 /// the file (a path) or the key (a dict) for a value the file's parser refuses.
-pub fn floor_spec(floor: &Bound<'_, PyAny>) -> PyResult<FloorSpec> {
+pub fn floor_spec(floor: &Bound<'_, PyAny>) -> PyResult<FloorPlan> {
     if let Ok(path) = floor.extract::<String>() {
         return FloorFile::from_file(std::path::Path::new(&path))
             .map(|f| f.spec)
@@ -129,22 +129,43 @@ pub fn floor_spec(floor: &Bound<'_, PyAny>) -> PyResult<FloorSpec> {
 }
 
 /// Checks that neither `mu0=` nor `set` gives the friction coefficient that `floor=` sets per
-/// step.
+/// step, and neither `phi=` nor `set` the slope it sets. `mu0=` with any floor is refused (as
+/// `--mu0` with `--floor`); `set` may give what the floor does not set.
 ///
 /// # Errors
-/// Either gives it (named `mu0` or `set['name']`).
-pub fn mu0_once(setup: &Setup, mu0: Option<f64>, set: &[(String, f64)]) -> Result<(), ArgError> {
+/// Either gives it (named `mu0`, `phi` or `set['name']`).
+pub fn mu0_once(
+    setup: &Setup,
+    floor: &FloorPlan,
+    mu0: Option<f64>,
+    phi: Option<f64>,
+    set: &[(String, f64)],
+) -> Result<(), ArgError> {
     walker::request::floor_once(true, false, mu0.is_some()).map_err(ArgError::from)?;
     let spec = setup.walker.spec();
-    if let Some(i) = spec.mu0 {
+    let parts = [
+        (floor.mu0.is_some(), spec.mu0, "each sets mu0; give one"),
+        (floor.phi.is_some(), spec.slope, "each sets phi; give one"),
+    ];
+    for (sets, index, why) in parts {
+        let Some(i) = index.filter(|_| sets) else {
+            continue;
+        };
         let name = &spec.model.parameters[i].name.name;
         if set.iter().any(|(n, _)| n == name) {
             return Err(ArgError::from(RequestError::Conflict {
                 field: Field::Parameter(name.clone()),
                 other: Field::Floor,
-                why: "each sets mu0; give one",
+                why,
             }));
         }
+    }
+    if floor.phi.is_some() && phi.is_some() {
+        return Err(ArgError::from(RequestError::Conflict {
+            field: Field::Role(Role::Slope),
+            other: Field::Floor,
+            why: "each sets phi; give one",
+        }));
     }
     Ok(())
 }
@@ -152,7 +173,7 @@ pub fn mu0_once(setup: &Setup, mu0: Option<f64>, set: &[(String, f64)]) -> Resul
 /// The walker of `setup` on `floor`.
 ///
 /// # Errors
-/// The floor cannot set the walker's friction (named `floor`).
-pub fn walker_on(setup: &Setup, floor: FloorSpec) -> Result<FloorWalker<'_>, ArgError> {
+/// The floor cannot set the walker's friction or slope (named `floor`).
+pub fn walker_on(setup: &Setup, floor: FloorPlan) -> Result<FloorWalker<'_>, ArgError> {
     FloorWalker::new(setup, floor).map_err(|e| ArgError::new("floor", e.to_string()))
 }

@@ -15,13 +15,14 @@
 //! columns), `chunks.rs` (work in chunks between checks for Ctrl-C), then one file per
 //! function: `simulate.rs`, `sweep.rs`, `points.rs`, `fixed_point.rs`, `describe.rs`,
 //! `floor.rs` (`floor=` of `simulate` and `survive`), `survive.rs` (`survive`, and `survival`
-//! of outcomes gathered from ranges of a batch).
+//! of outcomes gathered from ranges of a batch), `mfpt.rs` (`mfpt`, the mesh estimate).
 
 pub mod chunks;
 pub mod describe;
 pub mod error;
 pub mod fixed_point;
 pub mod floor;
+pub mod mfpt;
 pub mod options;
 pub mod points;
 pub mod simulate;
@@ -44,5 +45,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(describe::describe, m)?)?;
     m.add_function(wrap_pyfunction!(survive::survive, m)?)?;
     m.add_function(wrap_pyfunction!(survive::survival, m)?)?;
+    m.add_function(wrap_pyfunction!(mfpt::mfpt, m)?)?;
     Ok(())
 }

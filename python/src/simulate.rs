@@ -51,7 +51,7 @@ pub fn simulate<'py>(
     let model = walker_args::model(&setup)?;
     let start = walker_args::start(&model, &init)?;
     if let Some(floor) = floor {
-        crate::floor::mu0_once(&setup, mu0, &set)?;
+        crate::floor::mu0_once(&setup, &floor, mu0, phi, &set)?;
         if trajectory_dt.is_some() {
             return Err(ArgError::new(
                 "trajectory",

@@ -75,7 +75,7 @@ pub fn survive(
     };
     let ov = overrides(None, c, t_set, phi, friction, impact)?;
     let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
-    mu0_once(&setup, None, &set)?;
+    mu0_once(&setup, &spec, None, phi, &set)?;
     walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
     let cfg = options::config(method, rtol, atol)?;
     let m = walker_args::model(&setup)?;

@@ -40,6 +40,9 @@ CLI_COMMANDS = {
                           "--mu0-steps 0.4,0.4,0.4,0.05,0.4 --max-steps 6",
     "survive_markov": "survive --scene passive-slope --floor python/tests/floors/markov.toml "
                       "--walks 16 --max-steps 30",
+    "mfpt_wheel": "mfpt --model models/rimless-wheel.toml --friction coulomb --impact coulomb "
+                  "--floor python/tests/floors/wheel-ice.toml --mesh 5 --samples 4 --walks 20 "
+                  "--max-steps 200",
 }
 """The ``walker`` commands the module's results are compared with, by name."""
 

@@ -59,15 +59,16 @@ def with_mu0(**fields):
 
 
 @pytest.mark.parametrize("floor, key, text", [
-    # A missing field is found by the parser at the table's start (here: the line of `kind`),
-    # so only the message names it.
-    ({"kind": "uniform"}, "floor", "missing field `mu0`"),
+    # A floor that sets neither mu0 nor phi names mu0.
+    ({"kind": "uniform"}, "floor['mu0']", "gives mu0, phi or both"),
     ({"kind": "wet", "mu0": 0.3}, "floor['kind']", "expected"),
     ({"kind": "uniform", "mu0": -0.3}, "floor['mu0']", "must be > 0"),
     ({"kind": "steps", "mu0": [0.4, 0.0]}, "floor['mu0'][1]", "must be > 0"),
     (with_mu0(icy_length=0.5), "floor['mu0']['icy_length']", "[1, 1e9]"),
     ({**MARKOV, "seed": -1}, "floor['seed']", "whole number"),
-    ({**MARKOV, "phi": 0.1}, "floor['phi']", "not implemented"),
+    ({**MARKOV, "phi": {"distribution": "uniform", "lo": 0.1, "hi": float("inf")}},
+     "floor['phi']['hi']", "must be finite"),
+    ({"kind": "steps", "phi": [0.2, float("nan")]}, "floor['phi'][1]", "must be finite"),
     ({"kind": "random", "seed": 1, "mu0": {"distribution": "uniform", "lo": 0.3, "hi": 0.2}},
      "floor['mu0']['hi']", "must be > mu0.lo"),
 ])
@@ -150,3 +151,50 @@ def test_survival_refuses_bad_outcomes_naming_them(outcomes, error, text):
     with pytest.raises(error) as e:
         sw.survival(outcomes)
     assert str(e.value).startswith(text)
+
+
+WHEEL = ROOT / "models" / "rimless-wheel.toml"
+
+SLOPES = {"kind": "random", "seed": 4,
+          "phi": {"distribution": "uniform", "lo": 0.15, "hi": 0.25}}
+"""Slopes uniform around the rimless wheel's own 0.2 rad (``docs/floors.md``)."""
+
+
+def test_survive_on_random_slopes_walks_the_wheel_and_reports_each_walk():
+    kw = dict(model=WHEEL, friction="coulomb", impact="coulomb", set={"mu0": 0.8},
+              floor=SLOPES, walks=4, max_steps=20)
+    r = sw.survive(**kw)
+    assert [o["walk"] for o in r["outcomes"]] == [0, 1, 2, 3]
+    assert all(0 < o["steps"] <= 20 for o in r["outcomes"])
+    # Walk 0 of survive is simulate's walk on the same floor, its steps on their slopes.
+    w = sw.simulate(model=WHEEL, friction="coulomb", impact="coulomb", set={"mu0": 0.8},
+                    floor=SLOPES, max_steps=20)
+    assert r["outcomes"][0]["steps"] == w.steps
+
+
+def test_a_floor_that_sets_phi_refuses_phi_and_a_level_walker():
+    with pytest.raises(ValueError, match="phi"):
+        sw.survive(model=WHEEL, friction="coulomb", impact="coulomb", floor=SLOPES, phi=0.2,
+                   walks=1, max_steps=1)
+    with pytest.raises(ValueError, match="no slope angle"):
+        sw.survive(scene="active-level", floor=SLOPES, walks=1, max_steps=1)
+
+
+WHEEL_ICE = {"kind": "random", "seed": 5,
+             "mu0": {"distribution": "uniform", "lo": 0.05, "hi": 0.5}}
+"""The rimless wheel's slippery floor of ``docs/floors.md`` ("The mesh on a passive walker")."""
+
+
+def test_mfpt_equals_the_cli_and_checks_its_arguments_by_name():
+    kw = dict(model=WHEEL, friction="coulomb", impact="coulomb", floor=WHEEL_ICE, mesh=5,
+              samples=4)
+    r = sw.mfpt(**kw, walks=20, max_steps=200)
+    cli = cli_json("mfpt_wheel")
+    assert r == cli
+    assert r["monte_carlo"]["walks"] == 20
+    with pytest.raises(ValueError, match="invalid mesh"):
+        sw.mfpt(**{**kw, "mesh": 1})
+    with pytest.raises(ValueError, match="invalid half_widths: cannot be given with box_scale"):
+        sw.mfpt(**kw, box_scale=1.0, half_widths=[0.1, 0.1])
+    with pytest.raises(ValueError, match="friction only"):
+        sw.mfpt(**{**kw, "floor": SLOPES}, set={"mu0": 0.8})

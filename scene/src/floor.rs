@@ -1,5 +1,5 @@
-//! A floor file (`docs/floors.md`): the friction `mu0` under each step of a walk, read and
-//! checked once. Three kinds:
+//! A floor file (`docs/floors.md`): the friction `mu0` and the slope `phi` under each step of a
+//! walk (either or both), read and checked once. Three kinds:
 //!
 //! ```toml
 //! kind = "uniform"            # one mu0 for every step
@@ -24,7 +24,8 @@
 //! a patch length of at least one step, ...); an error names the file, the line and column,
 //! the field and the valid range. Whether the walker takes `mu0` at run time, and within the
 //! range its model file gives, is checked when the floor meets a walker (`walker::floor`).
-//! A per-step slope (`phi`) is refused by name: it is not implemented.
+//! The slope `phi` takes the same three forms as `mu0` (a value, a list, a `[phi]` table of
+//! a random floor), each value finite; its range is the model's, checked with the walker.
 
 use std::path::Path;
 
@@ -83,7 +84,7 @@ impl FloorFileError {
     }
 }
 
-/// Why a list of `mu0` per step is no floor ([`FloorSpec::steps`]).
+/// Why a list of values per step is no floor ([`FloorSpec::steps`], [`FloorSpec::phi_steps`]).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error("{field} = {message}")]
 pub struct StepsError {
@@ -142,7 +143,9 @@ impl Distribution {
     }
 }
 
-/// What a floor file describes: `mu0` per step.
+/// The values of one quantity per step: the friction `mu0` or the slope `phi` of a [`FloorPlan`].
+/// (The variants' field is called `mu0` after the first quantity a floor set; for a slope it
+/// holds the values of `phi`.)
 #[derive(Clone, Debug, PartialEq)]
 pub enum FloorSpec {
     /// One `mu0` for every step.
@@ -186,19 +189,84 @@ impl FloorSpec {
     /// # Errors
     /// An empty list, too long a list, or a value that is not `> 0` and finite.
     pub fn steps(mu0: &[f64]) -> Result<FloorSpec, StepsError> {
-        if mu0.is_empty() || mu0.len() > MAX_FLOOR_STEPS {
+        Quantity::Mu0.steps(mu0)
+    }
+
+    /// A `steps` floor of slopes `phi` given in a list, each checked as a file's: at least
+    /// one, each finite (the model's range is checked with the walker). The error names the
+    /// position (`phi[2]`).
+    ///
+    /// # Errors
+    /// An empty list, too long a list, or a value that is not finite.
+    pub fn phi_steps(phi: &[f64]) -> Result<FloorSpec, StepsError> {
+        Quantity::Phi.steps(phi)
+    }
+}
+
+/// What a floor file describes: the friction `mu0` and the slope `phi` per step, each given
+/// or not (at least one). A quantity the floor does not give keeps the walker's own value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FloorPlan {
+    /// The friction coefficient of each step, if the floor sets it.
+    pub mu0: Option<FloorSpec>,
+    /// The slope angle of each step (rad), if the floor sets it.
+    pub phi: Option<FloorSpec>,
+}
+
+impl From<FloorSpec> for FloorPlan {
+    /// A floor of friction only.
+    fn from(mu0: FloorSpec) -> FloorPlan {
+        FloorPlan {
+            mu0: Some(mu0),
+            phi: None,
+        }
+    }
+}
+
+/// The quantity a [`FloorSpec`] gives: its name in a file and the values it may take.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Quantity {
+    /// The friction coefficient: `> 0` and finite.
+    Mu0,
+    /// The slope angle: finite (its range is the model's).
+    Phi,
+}
+
+impl Quantity {
+    /// The field's name (`mu0`, `phi`).
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Quantity::Mu0 => "mu0",
+            Quantity::Phi => "phi",
+        }
+    }
+
+    /// `x` if the quantity can take it.
+    pub(crate) fn check(self, x: f64) -> Result<f64, String> {
+        match self {
+            Quantity::Mu0 => positive(x),
+            Quantity::Phi if x.is_finite() => Ok(x),
+            Quantity::Phi => Err(format!("{x}: must be finite")),
+        }
+    }
+
+    fn steps(self, values: &[f64]) -> Result<FloorSpec, StepsError> {
+        let name = self.name();
+        if values.is_empty() || values.len() > MAX_FLOOR_STEPS {
             return Err(StepsError {
-                field: "mu0".to_owned(),
-                message: list_length(mu0.len()),
+                field: name.to_owned(),
+                message: list_length(name, values.len()),
             });
         }
-        for (i, &x) in mu0.iter().enumerate() {
-            positive(x).map_err(|message| StepsError {
-                field: format!("mu0[{i}]"),
+        for (i, &x) in values.iter().enumerate() {
+            self.check(x).map_err(|message| StepsError {
+                field: format!("{name}[{i}]"),
                 message,
             })?;
         }
-        Ok(FloorSpec::Steps { mu0: mu0.to_vec() })
+        Ok(FloorSpec::Steps {
+            mu0: values.to_vec(),
+        })
     }
 }
 
@@ -208,7 +276,7 @@ pub struct FloorFile {
     /// Where it was read from, as given.
     pub path: String,
     /// What it describes.
-    pub spec: FloorSpec,
+    pub spec: FloorPlan,
 }
 
 #[derive(Deserialize)]
@@ -221,8 +289,8 @@ struct RawKind {
 struct RawUniform {
     #[allow(dead_code, reason = "read by `RawKind`")]
     kind: String,
-    mu0: Spanned<f64>,
-    phi: Option<Spanned<toml::Value>>,
+    mu0: Option<Spanned<f64>>,
+    phi: Option<Spanned<f64>>,
 }
 
 #[derive(Deserialize)]
@@ -230,8 +298,8 @@ struct RawUniform {
 struct RawSteps {
     #[allow(dead_code, reason = "read by `RawKind`")]
     kind: String,
-    mu0: Spanned<Vec<Spanned<f64>>>,
-    phi: Option<Spanned<toml::Value>>,
+    mu0: Option<Spanned<Vec<Spanned<f64>>>>,
+    phi: Option<Spanned<Vec<Spanned<f64>>>>,
 }
 
 #[derive(Deserialize)]
@@ -240,8 +308,8 @@ struct RawRandom {
     #[allow(dead_code, reason = "read by `RawKind`")]
     kind: String,
     seed: Spanned<i64>,
-    mu0: Spanned<RawDistribution>,
-    phi: Option<Spanned<toml::Value>>,
+    mu0: Option<Spanned<RawDistribution>>,
+    phi: Option<Spanned<RawDistribution>>,
 }
 
 /// An error at byte `offset` of the file: its field and what is wrong.
@@ -268,8 +336,13 @@ fn positive(x: f64) -> Result<f64, String> {
     }
 }
 
-fn list_length(n: usize) -> String {
-    format!("a list of {n} values: must list 1 to {MAX_FLOOR_STEPS} values of mu0 (each > 0)")
+fn list_length(name: &str, n: usize) -> String {
+    let each = if name == "mu0" {
+        "each > 0"
+    } else {
+        "each finite"
+    };
+    format!("a list of {n} values: must list 1 to {MAX_FLOOR_STEPS} values of {name} ({each})")
 }
 
 impl FloorFile {
@@ -326,7 +399,7 @@ fn syntax(text: &str, e: &toml::de::Error) -> At {
     at(offset, key, e.message().trim_end().to_owned())
 }
 
-fn parse(text: &str) -> Result<FloorSpec, At> {
+fn parse(text: &str) -> Result<FloorPlan, At> {
     let kind: RawKind = toml::from_str(text).map_err(|e| syntax(text, &e))?;
     let Some(kind) = kind.kind else {
         return Err(at(
@@ -335,42 +408,62 @@ fn parse(text: &str) -> Result<FloorSpec, At> {
             "missing: expected kind = \"uniform\", \"steps\" or \"random\"",
         ));
     };
-    let reject_phi = |phi: Option<Spanned<toml::Value>>| match phi {
-        Some(p) => Err(at(
-            p.span().start,
-            "phi",
-            "a per-step slope is not implemented; set the slope of the walk with --phi (or \
-             the scene's `phi`), the same for every step",
-        )),
-        None => Ok(()),
+    // At least one of `mu0` and `phi`: a floor that sets nothing is a mistake.
+    let neither = |what: &str| {
+        at(
+            0,
+            "mu0",
+            format!("missing: a {what} floor gives mu0, phi or both"),
+        )
+    };
+    let list = |raw: Spanned<Vec<Spanned<f64>>>, q: Quantity| -> Result<FloorSpec, At> {
+        let name = q.name();
+        let items = raw.get_ref();
+        if items.is_empty() || items.len() > MAX_FLOOR_STEPS {
+            return Err(at(raw.span().start, name, list_length(name, items.len())));
+        }
+        let mut values = Vec::with_capacity(items.len());
+        for (i, v) in items.iter().enumerate() {
+            values.push(
+                q.check(*v.get_ref())
+                    .map_err(|m| at(v.span().start, format!("{name}[{i}]"), m))?,
+            );
+        }
+        Ok(FloorSpec::Steps { mu0: values })
     };
     match kind.get_ref().as_str() {
         "uniform" => {
             let raw: RawUniform = toml::from_str(text).map_err(|e| syntax(text, &e))?;
-            reject_phi(raw.phi)?;
-            let mu0 =
-                positive(*raw.mu0.get_ref()).map_err(|m| at(raw.mu0.span().start, "mu0", m))?;
-            Ok(FloorSpec::Uniform { mu0 })
+            let one = |v: Option<Spanned<f64>>, q: Quantity| {
+                v.map(|v| {
+                    q.check(*v.get_ref())
+                        .map(|mu0| FloorSpec::Uniform { mu0 })
+                        .map_err(|m| at(v.span().start, q.name(), m))
+                })
+                .transpose()
+            };
+            let floor = FloorPlan {
+                mu0: one(raw.mu0, Quantity::Mu0)?,
+                phi: one(raw.phi, Quantity::Phi)?,
+            };
+            if floor.mu0.is_none() && floor.phi.is_none() {
+                return Err(neither("uniform"));
+            }
+            Ok(floor)
         }
         "steps" => {
             let raw: RawSteps = toml::from_str(text).map_err(|e| syntax(text, &e))?;
-            reject_phi(raw.phi)?;
-            let list = raw.mu0.get_ref();
-            if list.is_empty() || list.len() > MAX_FLOOR_STEPS {
-                return Err(at(raw.mu0.span().start, "mu0", list_length(list.len())));
+            let floor = FloorPlan {
+                mu0: raw.mu0.map(|v| list(v, Quantity::Mu0)).transpose()?,
+                phi: raw.phi.map(|v| list(v, Quantity::Phi)).transpose()?,
+            };
+            if floor.mu0.is_none() && floor.phi.is_none() {
+                return Err(neither("steps"));
             }
-            let mut mu0 = Vec::with_capacity(list.len());
-            for (i, v) in list.iter().enumerate() {
-                mu0.push(
-                    positive(*v.get_ref())
-                        .map_err(|m| at(v.span().start, format!("mu0[{i}]"), m))?,
-                );
-            }
-            Ok(FloorSpec::Steps { mu0 })
+            Ok(floor)
         }
         "random" => {
             let raw: RawRandom = toml::from_str(text).map_err(|e| syntax(text, &e))?;
-            reject_phi(raw.phi)?;
             let seed = u64::try_from(*raw.seed.get_ref()).map_err(|_| {
                 at(
                     raw.seed.span().start,
@@ -382,8 +475,18 @@ fn parse(text: &str) -> Result<FloorSpec, At> {
                     ),
                 )
             })?;
-            let mu0 = distribution(raw.mu0)?;
-            Ok(FloorSpec::Random { seed, mu0 })
+            let random = |d: Option<Spanned<RawDistribution>>, q: Quantity| {
+                d.map(|d| distribution(d, q).map(|mu0| FloorSpec::Random { seed, mu0 }))
+                    .transpose()
+            };
+            let floor = FloorPlan {
+                mu0: random(raw.mu0, Quantity::Mu0)?,
+                phi: random(raw.phi, Quantity::Phi)?,
+            };
+            if floor.mu0.is_none() && floor.phi.is_none() {
+                return Err(neither("random"));
+            }
+            Ok(floor)
         }
         other => Err(at(
             kind.span().start,

@@ -4,7 +4,7 @@
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::{At, Distribution, MIN_TRUNCATED_MASS, at, positive};
+use super::{At, Distribution, MIN_TRUNCATED_MASS, Quantity, at};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -20,10 +20,12 @@ pub(super) struct RawDistribution {
     icy_length: Option<Spanned<f64>>,
 }
 
-/// The distribution of a random floor's `[mu0]` table: its `distribution` and exactly the
-/// fields that distribution takes, each within its range.
-pub(super) fn distribution(raw: Spanned<RawDistribution>) -> Result<Distribution, At> {
+/// The distribution of a random floor's `[mu0]` or `[phi]` table (`q`): its `distribution` and
+/// exactly the fields that distribution takes, each within its range (the values `> 0` for
+/// `mu0`, finite for `phi`; the lengths of a Markov chain's patches in `[1, 1e9]`).
+pub(super) fn distribution(raw: Spanned<RawDistribution>, q: Quantity) -> Result<Distribution, At> {
     let table_at = raw.span().start;
+    let p = q.name();
     let raw = raw.into_inner();
     let fields = [
         ("lo", &raw.lo),
@@ -43,7 +45,7 @@ pub(super) fn distribution(raw: Spanned<RawDistribution>) -> Result<Distribution
         other => {
             return Err(at(
                 raw.distribution.span().start,
-                "mu0.distribution",
+                format!("{p}.distribution"),
                 format!(
                     "{:?}: expected \"uniform\", \"truncated-normal\" or \"markov\"",
                     other.chars().take(40).collect::<String>()
@@ -56,7 +58,7 @@ pub(super) fn distribution(raw: Spanned<RawDistribution>) -> Result<Distribution
             (false, Some(v)) => {
                 return Err(at(
                     v.span().start,
-                    format!("mu0.{field}"),
+                    format!("{p}.{field}"),
                     format!(
                         "not a field of distribution \"{name}\"; it takes {}",
                         takes.join(", ")
@@ -66,7 +68,7 @@ pub(super) fn distribution(raw: Spanned<RawDistribution>) -> Result<Distribution
             (true, None) => {
                 return Err(at(
                     table_at,
-                    format!("mu0.{field}"),
+                    format!("{p}.{field}"),
                     format!(
                         "missing: distribution \"{name}\" takes {}",
                         takes.join(", ")
@@ -83,7 +85,8 @@ pub(super) fn distribution(raw: Spanned<RawDistribution>) -> Result<Distribution
     };
     let value = |v: &Option<Spanned<f64>>, field: &str| {
         let (x, offset) = get(v);
-        positive(x).map_err(|m| at(offset, format!("mu0.{field}"), m))
+        q.check(x)
+            .map_err(|m| at(offset, format!("{p}.{field}"), m))
     };
     let interval = || -> Result<(f64, f64), At> {
         let lo = value(&raw.lo, "lo")?;
@@ -93,8 +96,8 @@ pub(super) fn distribution(raw: Spanned<RawDistribution>) -> Result<Distribution
         } else {
             Err(at(
                 get(&raw.hi).1,
-                "mu0.hi",
-                format!("{hi}: must be > mu0.lo = {lo}"),
+                format!("{p}.hi"),
+                format!("{hi}: must be > {p}.lo = {lo}"),
             ))
         }
     };
@@ -107,14 +110,18 @@ pub(super) fn distribution(raw: Spanned<RawDistribution>) -> Result<Distribution
             let (lo, hi) = interval()?;
             let (mean, mean_at) = get(&raw.mean);
             if !mean.is_finite() {
-                return Err(at(mean_at, "mu0.mean", format!("{mean}: must be finite")));
+                return Err(at(
+                    mean_at,
+                    format!("{p}.mean"),
+                    format!("{mean}: must be finite"),
+                ));
             }
             let sd = value(&raw.sd, "sd")?;
             let mass = normal_mass(mean, sd, lo, hi);
             if mass.is_nan() || mass < MIN_TRUNCATED_MASS {
                 return Err(at(
                     table_at,
-                    "mu0",
+                    p,
                     format!(
                         "[lo, hi] = [{lo}, {hi}] holds {mass:.3e} of the normal's mass (mean \
                          {mean}, sd {sd}); it must hold at least {MIN_TRUNCATED_MASS}: widen \
@@ -134,7 +141,7 @@ pub(super) fn distribution(raw: Spanned<RawDistribution>) -> Result<Distribution
                 } else {
                     Err(at(
                         offset,
-                        format!("mu0.{field}"),
+                        format!("{p}.{field}"),
                         format!("{x}: must be in [1, 1e9] steps (the mean length of a patch)"),
                     ))
                 }

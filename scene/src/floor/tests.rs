@@ -1,12 +1,20 @@
 //! The floor file format: what it reads, and every error naming file:line:column, the field
 //! and the valid range.
 
-use super::{Distribution, FloorFile, FloorSpec, normal_mass};
+use super::{Distribution, FloorFile, FloorPlan, FloorSpec, normal_mass};
 
-fn read(text: &str) -> Result<FloorSpec, String> {
+fn read_plan(text: &str) -> Result<FloorPlan, String> {
     FloorFile::from_toml(text, "f.toml")
         .map(|f| f.spec)
         .map_err(|e| e.to_string())
+}
+
+/// The friction part of a floor that gives only friction.
+fn read(text: &str) -> Result<FloorSpec, String> {
+    read_plan(text).map(|p| {
+        assert_eq!(p.phi, None, "a floor of friction only");
+        p.mu0.expect("a floor of friction")
+    })
 }
 
 fn error(text: &str) -> String {
@@ -109,17 +117,71 @@ fn a_missing_unknown_or_mistyped_field_is_named_with_its_line() {
     let e = error("kind = \"uniform\"\nmu0 = \"dry\"\n");
     assert!(e.contains("f.toml:2:7: field `mu0`"), "{e}");
     let e = error("kind = \"uniform\"\n");
-    assert!(e.contains("missing field `mu0`"), "{e}");
+    assert!(e.contains("field `mu0`: missing"), "{e}");
     let e = error("kind = \"steps\"\nmu0 = [0.4\n");
     assert!(e.starts_with("f.toml:2:"), "{e}");
 }
 
 #[test]
-fn a_per_step_slope_is_refused_by_name() {
-    let e = error("kind = \"steps\"\nmu0 = [0.4]\nphi = [0.1, 0.2]\n");
+fn a_slope_per_step_reads_in_each_kind_alone_or_with_friction() {
+    assert_eq!(
+        read_plan("kind = \"uniform\"\nphi = 0.1\n"),
+        Ok(FloorPlan {
+            mu0: None,
+            phi: Some(FloorSpec::Uniform { mu0: 0.1 })
+        })
+    );
+    assert_eq!(
+        read_plan("kind = \"steps\"\nmu0 = [0.4]\nphi = [0.1, 0.2]\n"),
+        Ok(FloorPlan {
+            mu0: Some(FloorSpec::Steps { mu0: vec![0.4] }),
+            phi: Some(FloorSpec::Steps {
+                mu0: vec![0.1, 0.2]
+            })
+        })
+    );
+    assert_eq!(
+        read_plan(
+            "kind = \"random\"\nseed = 2\n[phi]\ndistribution = \"markov\"\ndry = 0.1\n\
+             icy = 0.3\ndry_length = 5\nicy_length = 2\n"
+        ),
+        Ok(FloorPlan {
+            mu0: None,
+            phi: Some(FloorSpec::Random {
+                seed: 2,
+                mu0: Distribution::Markov {
+                    dry: 0.1,
+                    icy: 0.3,
+                    dry_length: 5.0,
+                    icy_length: 2.0
+                }
+            })
+        })
+    );
+    // A slope may be zero or negative here (the model's range is checked with the walker),
+    // but must be finite; errors name `phi` and its place.
+    let e = error("kind = \"steps\"\nphi = [0.1, inf]\n");
     assert!(
-        e.contains("f.toml:3:7: field `phi`: a per-step slope is not implemented"),
+        e.contains("f.toml:2:13: field `phi[1]`: inf: must be finite"),
         "{e}"
+    );
+    let e = error(
+        "kind = \"random\"\nseed = 1\n[phi]\ndistribution = \"uniform\"\nlo = 0.2\nhi = 0.1\n",
+    );
+    assert!(
+        e.contains("f.toml:6:6: field `phi.hi`: 0.1: must be > phi.lo = 0.2"),
+        "{e}"
+    );
+    let e = error("kind = \"steps\"\n");
+    assert!(
+        e.contains("field `mu0`: missing: a steps floor gives mu0, phi or both"),
+        "{e}"
+    );
+    assert_eq!(
+        FloorSpec::phi_steps(&[0.1, f64::NAN])
+            .expect_err("NaN")
+            .to_string(),
+        "phi[1] = NaN: must be finite"
     );
 }
 

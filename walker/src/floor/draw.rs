@@ -24,11 +24,22 @@ pub(crate) struct StepDraws {
 impl StepDraws {
     /// The draws of step `step` of walk `walk` under `seed`.
     pub(crate) fn new(seed: u64, walk: u64, step: u64) -> StepDraws {
+        StepDraws::in_lane(seed, walk, step, 0)
+    }
+
+    /// The draws of step `step` of walk `walk` under `seed` in lane `lane` (0 or 1) of the
+    /// step's block: lane 0 starts at the block's first word (a floor's `mu0`), lane 1 at its
+    /// middle, word `2^31` (a floor's `phi`), so that the two never share a word (a step draws
+    /// at most 40 000 words in a lane: 10 000 tries of a normal) and the friction of a floor
+    /// is the same with or without a slope.
+    pub(crate) fn in_lane(seed: u64, walk: u64, step: u64, lane: u8) -> StepDraws {
         let mut key = [0u8; 32];
         key[..8].copy_from_slice(&seed.to_le_bytes());
         let mut rng = ChaCha8Rng::from_seed(key);
         rng.set_stream(walk);
-        rng.set_word_pos(u128::from(step) << STEP_WORDS_LOG2);
+        rng.set_word_pos(
+            (u128::from(step) << STEP_WORDS_LOG2) + (u128::from(lane) << (STEP_WORDS_LOG2 - 1)),
+        );
         StepDraws { rng }
     }
 

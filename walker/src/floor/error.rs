@@ -11,6 +11,35 @@ pub enum FloorError {
         /// The model.
         model: String,
     },
+    /// The floor sets the slope, and the model has no slope angle (no `[floor] slope`).
+    #[error(
+        "model `{model}` has no slope angle (`[floor] slope`) for a floor's `phi` to set: its \
+         floor is level"
+    )]
+    NoSlope {
+        /// The model.
+        model: String,
+    },
+    /// The floor sets the slope, and the model's stance foot enters its dynamics other than by
+    /// a translation, so a step cannot be moved onto the model's floor through the origin
+    /// (`docs/floors.md`, "A slope per step").
+    #[error(
+        "model `{model}` cannot walk on a slope per step: {what} depends on the stance foot's \
+         position (its first two coordinates) other than by moving with it"
+    )]
+    NotTranslationInvariant {
+        /// The model.
+        model: String,
+        /// The expression that is not invariant.
+        what: String,
+    },
+    /// A walk on a floor that sets the slope was asked to be drawn: the drawing knows one
+    /// floor line.
+    #[error(
+        "drawing a walk on a slope per step is not implemented (the drawing has one floor \
+         line); simulate it instead"
+    )]
+    SlopeNotDrawn,
     /// The walk runs without friction (`--friction none`): a floor's `mu0` would be ignored.
     #[error(
         "the friction law is `none`: a floor sets `mu0`, which that law ignores; use tanh or coulomb"
@@ -45,8 +74,10 @@ pub enum FloorError {
     },
     /// The walker's kernels cannot take a value the floor gives (a compiled variant that fixes
     /// the friction coefficient).
-    #[error("floor `mu0` = {value}: {source}")]
+    #[error("floor `{name}` = {value}: {source}")]
     Kernels {
+        /// The parameter (`mu0`, `phi`).
+        name: &'static str,
         /// The value.
         value: f64,
         /// Why.

@@ -1,5 +1,5 @@
-//! The friction of each step of one walk on a floor ([`FloorSteps`]): a floor file's
-//! description ([`FloorSpec`]) turned into `mu0_0, mu0_1, ...`.
+//! The values of one quantity (friction or slope) at each step of one walk on a floor
+//! ([`FloorSteps`]): a floor file's description ([`FloorSpec`]) turned into `x_0, x_1, ...`.
 
 use walker_scene::{Distribution, FloorSpec};
 
@@ -23,17 +23,27 @@ pub struct FloorSteps<'f> {
     step: u64,
     /// The Markov chain's state at the last step (true: icy).
     icy: bool,
+    /// The lane of each step's draws (0: `mu0`, 1: `phi`; `super::draw::StepDraws::in_lane`).
+    lane: u8,
 }
 
 impl<'f> FloorSteps<'f> {
     /// The steps of walk `walk` on `spec`, from step 0.
     #[must_use]
     pub fn new(spec: &'f FloorSpec, walk: u64) -> FloorSteps<'f> {
+        FloorSteps::in_lane(spec, walk, 0)
+    }
+
+    /// The steps of walk `walk` on `spec` drawing in lane `lane` of each step's random numbers
+    /// (0 for a floor's `mu0`, 1 for its `phi`: the two are independent).
+    #[must_use]
+    pub fn in_lane(spec: &'f FloorSpec, walk: u64, lane: u8) -> FloorSteps<'f> {
         FloorSteps {
             spec,
             walk,
             step: 0,
             icy: false,
+            lane,
         }
     }
 }
@@ -51,7 +61,7 @@ impl Iterator for FloorSteps<'_> {
                 mu0[i]
             }
             FloorSpec::Random { seed, mu0 } => {
-                let mut draws = StepDraws::new(*seed, self.walk, k);
+                let mut draws = StepDraws::in_lane(*seed, self.walk, k, self.lane);
                 match *mu0 {
                     Distribution::Uniform { lo, hi } => {
                         // lo + (hi - lo) u rounds to hi for u near 1 in rare cases: keep [lo, hi).
@@ -84,5 +94,34 @@ impl Iterator for FloorSteps<'_> {
                 }
             }
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use walker_scene::{Distribution, FloorSpec};
+
+    use super::FloorSteps;
+
+    #[test]
+    fn a_slope_draws_in_a_lane_of_its_own_that_shares_no_number_with_the_friction() {
+        // A truncated normal uses a varying number of words per step: lane 1 starting in the
+        // middle of each step's block keeps the two apart, and lane 0 is the friction's
+        // stream as it was before slopes existed.
+        let spec = FloorSpec::Random {
+            seed: 3,
+            mu0: Distribution::TruncatedNormal {
+                mean: 0.3,
+                sd: 0.2,
+                lo: 0.1,
+                hi: 0.5,
+            },
+        };
+        let friction: Vec<f64> = FloorSteps::new(&spec, 2).take(200).collect();
+        let lane0: Vec<f64> = FloorSteps::in_lane(&spec, 2, 0).take(200).collect();
+        let lane1: Vec<f64> = FloorSteps::in_lane(&spec, 2, 1).take(200).collect();
+        assert_eq!(friction, lane0);
+        assert!(lane1.iter().all(|x| !friction.contains(x)));
+        assert!(lane1.iter().all(|x| (0.1..=0.5).contains(x)));
     }
 }

@@ -1,45 +1,123 @@
 //! A walker on a floor ([`FloorWalker`]): the checks that the floor can set the walker's
-//! friction coefficient, and walks whose step `k` runs on the floor's `mu0_k`.
+//! friction coefficient and slope, and walks whose step `k` runs on the floor's `mu0_k` and
+//! `phi_k`.
+//!
+//! A slope per step rests on a symmetry (`super::translate`): the model's floor is the line of
+//! slope `phi` through the origin, and its dynamics see the stance foot only through a
+//! translation, so step `k` on the line of slope `phi_k` through its stance foot `p_k` is the
+//! model's step at `phi = phi_k` from the state moved by `-p_k`, moved back by `+p_k`. The
+//! point the step is seen from only changes with the slope: while `phi_k` is the slope of the
+//! step before, the step's floor is that step's line, and it is seen from the same point (so a
+//! floor of one slope is the walk without a floor, bit for bit).
 
-use walker_scene::FloorSpec;
+use walker_scene::{Distribution, FloorPlan, FloorSpec};
 
 use crate::model::{Model, Parameters};
 use crate::setup::Setup;
 use crate::sim::{
-    SimConfig, StepFloor, StepModels, Trajectory, Walk, WalkLimits, trajectory_by_step,
-    walk_by_step, walk_by_step_stoppable,
+    FailureKind, SimConfig, StepFloor, StepModels, Trajectory, Walk, WalkLimits,
+    trajectory_by_step, walk_by_step, walk_by_step_stoppable,
 };
 
 use super::error::FloorError;
 use super::steps::FloorSteps;
+use super::translate::check_translation;
 
-/// A walker and a floor it can walk on: its friction coefficient is a run-time parameter, and
-/// every value the floor gives lies in the parameter's range and prepares kernels.
+/// A walker and a floor it can walk on: the friction coefficient (and the slope, if the floor
+/// sets it) is a run-time parameter, every value the floor gives lies in the parameter's range
+/// and prepares kernels, and (for a slope) the model moves with its stance foot.
 #[derive(Clone, Debug)]
 pub struct FloorWalker<'s> {
     setup: &'s Setup,
-    floor: FloorSpec,
-    /// The friction coefficient's index among the parameters, and its name.
-    mu0: (usize, String),
+    floor: FloorPlan,
+    /// The friction coefficient's name among the parameters, if the floor sets it.
+    mu0: Option<String>,
+    /// The slope's name among the parameters, if the floor sets it.
+    phi: Option<String>,
+}
+
+/// The values a floor's `quantity` part can give a step, named by their fields (`mu0`,
+/// `mu0[2]`, `mu0.lo`, `mu0.dry`).
+fn extremes(spec: &FloorSpec, quantity: &str) -> Vec<(String, f64)> {
+    match spec {
+        FloorSpec::Uniform { mu0 } => vec![(quantity.to_owned(), *mu0)],
+        FloorSpec::Steps { mu0 } => mu0
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| (format!("{quantity}[{i}]"), x))
+            .collect(),
+        FloorSpec::Random { mu0, .. } => {
+            let (lo, hi) = mu0.bounds();
+            let names = match mu0 {
+                Distribution::Markov { dry, .. } if *dry <= lo => ("dry", "icy"),
+                Distribution::Markov { .. } => ("icy", "dry"),
+                _ => ("lo", "hi"),
+            };
+            vec![
+                (format!("{quantity}.{}", names.0), lo),
+                (format!("{quantity}.{}", names.1), hi),
+            ]
+        }
+    }
 }
 
 impl<'s> FloorWalker<'s> {
-    /// The walker of `setup` on `floor`.
+    /// The walker of `setup` on `floor` (a [`FloorSpec`] is a floor of friction only).
     ///
     /// # Errors
-    /// The model has no friction coefficient, the friction law is `none`, the scene fixes the
-    /// coefficient at generation, a value of the floor is outside its range, or the kernels
-    /// cannot be prepared at the floor's smallest or largest value.
-    pub fn new(setup: &'s Setup, floor: FloorSpec) -> Result<FloorWalker<'s>, FloorError> {
+    /// For the friction: the model has no friction coefficient, the friction law is `none`,
+    /// the scene fixes the coefficient at generation. For the slope: the model has no slope
+    /// angle, the scene fixes it, or the model does not move with its stance foot. For both: a
+    /// value of the floor is outside the parameter's range, or the kernels cannot be prepared
+    /// at the floor's smallest or largest value.
+    pub fn new(
+        setup: &'s Setup,
+        floor: impl Into<FloorPlan>,
+    ) -> Result<FloorWalker<'s>, FloorError> {
+        let floor = floor.into();
         let spec = setup.walker.spec();
-        let Some(index) = spec.mu0 else {
-            return Err(FloorError::NoFriction {
-                model: spec.name().to_owned(),
-            });
+        let model = spec.name().to_owned();
+        let mu0 = match &floor.mu0 {
+            None => None,
+            Some(part) => {
+                let Some(index) = spec.mu0 else {
+                    return Err(FloorError::NoFriction { model });
+                };
+                if setup.friction == walker_scene::Friction::None {
+                    return Err(FloorError::Frictionless);
+                }
+                Some(Self::check_part(setup, part, index, "mu0")?)
+            }
         };
-        if setup.friction == walker_scene::Friction::None {
-            return Err(FloorError::Frictionless);
-        }
+        let phi = match &floor.phi {
+            None => None,
+            Some(part) => {
+                let Some(index) = spec.slope else {
+                    return Err(FloorError::NoSlope { model });
+                };
+                let name = Self::check_part(setup, part, index, "phi")?;
+                check_translation(&spec.model)
+                    .map_err(|what| FloorError::NotTranslationInvariant { model, what })?;
+                Some(name)
+            }
+        };
+        Ok(FloorWalker {
+            setup,
+            floor,
+            mu0,
+            phi,
+        })
+    }
+
+    /// Checks that `part` can set the parameter `index` (the floor's `quantity`): not fixed
+    /// at generation, every value in its range, kernels at the extremes. Returns its name.
+    fn check_part(
+        setup: &Setup,
+        part: &FloorSpec,
+        index: usize,
+        quantity: &'static str,
+    ) -> Result<String, FloorError> {
+        let spec = setup.walker.spec();
         let param = &spec.model.parameters[index];
         let name = param.name.name.clone();
         if let Some((_, value)) = setup.fixed.iter().find(|(n, _)| *n == name) {
@@ -55,61 +133,59 @@ impl<'s> FloorWalker<'s> {
             range: param.range.to_string(),
             model: spec.name().to_owned(),
         };
-        let values: Vec<(String, f64)> = match &floor {
-            FloorSpec::Uniform { mu0 } => vec![("mu0".to_owned(), *mu0)],
-            FloorSpec::Steps { mu0 } => mu0
-                .iter()
-                .enumerate()
-                .map(|(i, &x)| (format!("mu0[{i}]"), x))
-                .collect(),
-            FloorSpec::Random { mu0, .. } => {
-                let (lo, hi) = mu0.bounds();
-                let names = match mu0 {
-                    walker_scene::Distribution::Markov { dry, .. } if *dry <= lo => {
-                        ("mu0.dry", "mu0.icy")
-                    }
-                    walker_scene::Distribution::Markov { .. } => ("mu0.icy", "mu0.dry"),
-                    _ => ("mu0.lo", "mu0.hi"),
-                };
-                vec![(names.0.to_owned(), lo), (names.1.to_owned(), hi)]
-            }
-        };
+        let values = extremes(part, quantity);
         if let Some((field, value)) = values.iter().find(|(_, x)| !param.range.contains(*x)) {
             return Err(out_of_range(field.clone(), *value));
         }
-        let (lo, hi) = floor.bounds();
+        let (lo, hi) = part.bounds();
         for value in [lo, hi] {
             let mut params = setup.params.clone();
             params
                 .set(&name, value)
-                .map_err(|_| out_of_range("mu0".to_owned(), value))?;
+                .map_err(|_| out_of_range(quantity.to_owned(), value))?;
             setup
                 .model_with(&params)
-                .map_err(|source| FloorError::Kernels { value, source })?;
+                .map_err(|source| FloorError::Kernels {
+                    name: quantity,
+                    value,
+                    source,
+                })?;
         }
-        Ok(FloorWalker {
-            setup,
-            floor,
-            mu0: (index, name),
-        })
+        Ok(name)
     }
 
     /// The floor.
     #[must_use]
-    pub fn floor(&self) -> &FloorSpec {
+    pub fn floor(&self) -> &FloorPlan {
         &self.floor
     }
 
-    /// The friction coefficients of walk `index`'s steps.
-    #[must_use]
-    pub fn steps(&self, index: u64) -> FloorSteps<'_> {
-        FloorSteps::new(&self.floor, index)
+    /// The friction coefficients of walk `index`'s steps: the floor's, or the walker's own
+    /// `mu0` at every step if the floor does not set it.
+    pub fn steps(&self, index: u64) -> impl Iterator<Item = f64> + '_ {
+        let own = self.own("mu0");
+        let mut floor = self.floor.mu0.as_ref().map(|f| FloorSteps::new(f, index));
+        std::iter::from_fn(move || Some(floor.as_mut().and_then(Iterator::next).unwrap_or(own)))
+    }
+
+    /// The walker's own value of the parameter of the floor's `quantity` (`mu0`, `phi`; 0 if
+    /// the model has none).
+    fn own(&self, quantity: &str) -> f64 {
+        let spec = self.setup.walker.spec();
+        let index = if quantity == "mu0" {
+            spec.mu0
+        } else {
+            spec.slope
+        };
+        index.map_or(0.0, |i| self.setup.params.at(i))
     }
 
     /// Walk number `index` (the stream of a random floor) from the post-impact state
-    /// `initial`: step `k`'s stance and the strike that ends it run on the floor's `mu0_k`,
-    /// set between steps; each step's record carries its `mu0`. The periodic stop of
-    /// `limits` is not used (the floor may change after any step).
+    /// `initial`: step `k`'s stance and the strike that ends it run on the floor's `mu0_k`
+    /// and on the line of slope `phi_k` through its stance foot, set between steps; each
+    /// step's record carries its `mu0` (and `phi`). A foot that slides at the start of a step
+    /// onto a floor of another slope ends the walk ([`FailureKind::SlopeKink`]). The periodic
+    /// stop of `limits` is not used (the floor may change after any step).
     ///
     /// # Errors
     /// A step's kernels cannot be prepared ([`FloorWalker::new`] checked the floor's extremes,
@@ -137,7 +213,7 @@ impl<'s> FloorWalker<'s> {
     /// output for an animation ([`crate::sim::trajectory()`], at most `max_frames` frames).
     ///
     /// # Errors
-    /// As [`FloorWalker::walk`].
+    /// As [`FloorWalker::walk`]; a floor that sets the slope ([`FloorError::SlopeNotDrawn`]).
     pub fn trajectory(
         &self,
         index: u64,
@@ -147,6 +223,9 @@ impl<'s> FloorWalker<'s> {
         dt: f64,
         max_frames: usize,
     ) -> Result<Trajectory, FloorError> {
+        if self.phi.is_some() {
+            return Err(FloorError::SlopeNotDrawn);
+        }
         let limits = WalkLimits {
             periodic: None,
             ..*limits
@@ -166,18 +245,13 @@ impl<'s> FloorWalker<'s> {
     /// `mu0` is outside the parameter's range or the kernels cannot take it.
     pub(crate) fn model_at(&self, mu0: f64) -> Result<Model, FloorError> {
         let mut params = self.setup.params.clone();
-        params
-            .set(&self.mu0.1, mu0)
-            .map_err(|source| FloorError::Kernels {
-                value: mu0,
-                source: crate::model::NoKernels::Source {
-                    model: self.setup.walker.spec().name().to_owned(),
-                    message: source.to_string(),
-                },
-            })?;
-        self.setup
-            .model_with(&params)
-            .map_err(|source| FloorError::Kernels { value: mu0, source })
+        prepare(
+            self.setup,
+            &mut params,
+            "mu0",
+            self.mu0.as_deref().unwrap_or("mu0"),
+            mu0,
+        )
     }
 
     /// The models of walk `index`'s steps.
@@ -185,8 +259,19 @@ impl<'s> FloorWalker<'s> {
         PerStep {
             walker: self,
             params: self.setup.params.clone(),
-            steps: self.steps(index),
+            mu0: self
+                .floor
+                .mu0
+                .as_ref()
+                .map(|f| FloorSteps::in_lane(f, index, 0)),
+            phi: self
+                .floor
+                .phi
+                .as_ref()
+                .map(|f| FloorSteps::in_lane(f, index, 1)),
+            next: None,
             current: None,
+            seen: None,
             error: None,
         }
     }
@@ -218,15 +303,84 @@ impl<'s> FloorWalker<'s> {
     }
 }
 
-/// The model of each step of a walk on a floor: prepared again when `mu0` changes.
+/// Sets the parameter `name` (the floor's `quantity`) of `params` to `value`.
+///
+/// # Errors
+/// `value` is outside the parameter's range.
+fn set(
+    setup: &Setup,
+    params: &mut Parameters,
+    quantity: &'static str,
+    name: &str,
+    value: f64,
+) -> Result<(), FloorError> {
+    params
+        .set(name, value)
+        .map_err(|source| FloorError::Kernels {
+            name: quantity,
+            value,
+            source: crate::model::NoKernels::Source {
+                model: setup.walker.spec().name().to_owned(),
+                message: source.to_string(),
+            },
+        })
+}
+
+/// The walker's model with the parameter `name` (the floor's `quantity`) of `params` set to
+/// `value`.
+///
+/// # Errors
+/// `value` is outside the parameter's range or the kernels cannot take it.
+fn prepare(
+    setup: &Setup,
+    params: &mut Parameters,
+    quantity: &'static str,
+    name: &str,
+    value: f64,
+) -> Result<Model, FloorError> {
+    set(setup, params, quantity, name, value)?;
+    setup
+        .model_with(params)
+        .map_err(|source| FloorError::Kernels {
+            name: quantity,
+            value,
+            source,
+        })
+}
+
+/// The model of each step of a walk on a floor: prepared again when `mu0` or `phi` changes;
+/// for a floor that sets the slope, the point each step is seen from.
 struct PerStep<'w, 's> {
     walker: &'w FloorWalker<'s>,
     params: Parameters,
-    steps: FloorSteps<'w>,
-    /// The last step's `mu0` and model.
-    current: Option<(f64, Model)>,
+    /// The floor's friction and slope of each step (those it sets).
+    mu0: Option<FloorSteps<'w>>,
+    phi: Option<FloorSteps<'w>>,
+    /// The values of the next step, drawn early by [`StepModels::origin`].
+    next: Option<(f64, f64)>,
+    /// The last step's `(mu0, phi)` and model.
+    current: Option<((f64, f64), Model)>,
+    /// The slope of the last step seen by [`StepModels::origin`] and the point its floor was
+    /// seen from.
+    seen: Option<(f64, [f64; 2])>,
     /// Why a step's model could not be prepared.
     error: Option<FloorError>,
+}
+
+impl PerStep<'_, '_> {
+    /// The next step's `(mu0, phi)`: the floor's, or the walker's own where the floor sets
+    /// none.
+    fn draw(&mut self) -> (f64, f64) {
+        let mu0 = match &mut self.mu0 {
+            Some(f) => f.next().unwrap_or(f64::NAN),
+            None => self.walker.own("mu0"),
+        };
+        let phi = match &mut self.phi {
+            Some(f) => f.next().unwrap_or(f64::NAN),
+            None => self.walker.own("phi"),
+        };
+        (mu0, phi)
+    }
 }
 
 impl StepModels for PerStep<'_, '_> {
@@ -235,32 +389,42 @@ impl StepModels for PerStep<'_, '_> {
     }
 
     fn model(&mut self, _step: usize) -> Option<&Model> {
-        let mu0 = self.steps.next()?;
-        let same = self
-            .current
-            .as_ref()
-            .is_some_and(|(m, _)| m.to_bits() == mu0.to_bits());
+        let values = match self.next.take() {
+            Some(v) => v,
+            None => self.draw(),
+        };
+        let same = self.current.as_ref().is_some_and(|((m, p), _)| {
+            m.to_bits() == values.0.to_bits() && p.to_bits() == values.1.to_bits()
+        });
         if !same {
-            let (index, name) = &self.walker.mu0;
-            debug_assert_eq!(self.params.spec().parameter(name), Some(*index));
-            let prepared = self
-                .params
-                .set(name, mu0)
-                .map_err(|source| FloorError::Kernels {
-                    value: mu0,
-                    source: crate::model::NoKernels::Source {
-                        model: self.walker.setup.walker.spec().name().to_owned(),
-                        message: source.to_string(),
-                    },
+            let w = self.walker;
+            let params = &mut self.params;
+            let prepared = w
+                .mu0
+                .as_ref()
+                .map_or(Ok(()), |name| set(w.setup, params, "mu0", name, values.0))
+                .and_then(|()| {
+                    w.phi
+                        .as_ref()
+                        .map_or(Ok(()), |name| set(w.setup, params, "phi", name, values.1))
                 })
                 .and_then(|()| {
-                    self.walker
-                        .setup
-                        .model_with(&self.params)
-                        .map_err(|source| FloorError::Kernels { value: mu0, source })
+                    w.setup.model_with(params).map_err(|source| {
+                        // The parameter that changed names the error (the slope if both).
+                        let (name, value) = if w.phi.is_some() {
+                            ("phi", values.1)
+                        } else {
+                            ("mu0", values.0)
+                        };
+                        FloorError::Kernels {
+                            name,
+                            value,
+                            source,
+                        }
+                    })
                 });
             match prepared {
-                Ok(model) => self.current = Some((mu0, model)),
+                Ok(model) => self.current = Some((values, model)),
                 Err(e) => {
                     self.error = Some(e);
                     return None;
@@ -271,8 +435,40 @@ impl StepModels for PerStep<'_, '_> {
     }
 
     fn floor(&self) -> Option<StepFloor> {
-        self.current
-            .as_ref()
-            .map(|(mu0, _)| StepFloor { mu0: *mu0 })
+        self.current.as_ref().map(|((mu0, phi), _)| StepFloor {
+            mu0: *mu0,
+            phi: self.walker.phi.as_ref().map(|_| *phi),
+        })
+    }
+
+    /// The point step `step` is seen from (module doc): while the slope stays, the point of
+    /// the step before (the step's floor is that step's line); where it changes, the stance
+    /// foot, unless the foot slides there ([`FailureKind::SlopeKink`]). Step 0 comes after the
+    /// walker's own slope (its start is on that floor). `None` for a floor without a slope
+    /// and while the point is the origin (the model's own floor: no move at all).
+    fn origin(&mut self, _step: usize, state: &[f64]) -> Result<Option<[f64; 2]>, FailureKind> {
+        if self.walker.phi.is_none() {
+            return Ok(None);
+        }
+        let values = self.draw();
+        self.next = Some(values);
+        let phi = values.1;
+        let (before, point) = self.seen.unwrap_or((self.walker.own("phi"), [0.0, 0.0]));
+        let n = self.n();
+        let point = if phi.to_bits() == before.to_bits() {
+            point
+        } else {
+            let (xd, zd) = (state[n], state[n + 1]);
+            if xd != 0.0 || zd != 0.0 {
+                return Err(FailureKind::SlopeKink {
+                    from: before,
+                    to: phi,
+                    speed: xd.hypot(zd),
+                });
+            }
+            [state[0], state[1]]
+        };
+        self.seen = Some((phi, point));
+        Ok((point != [0.0, 0.0]).then_some(point))
     }
 }

@@ -118,6 +118,18 @@ pub enum FailureKind {
     /// step period, speed or power exists): the state began on the impact guard moving into
     /// the floor. `t` is 0 and the state the pre-impact state.
     ImpactAtStart,
+    /// The stance foot slides at the start of a step whose floor has another slope than the
+    /// floor it slid on (a floor that sets the slope per step, `crate::floor`): its velocity
+    /// along the old floor has a part normal to the new one, a kink the model has no impact
+    /// for. `t` is 0 and the state the post-impact state of the step before.
+    SlopeKink {
+        /// The slope of the floor the foot slid on (rad).
+        from: f64,
+        /// The slope of the step's floor (rad).
+        to: f64,
+        /// The foot's speed (m/s).
+        speed: f64,
+    },
     /// No heel strike within [`super::SimConfig::max_step_time`]; `t` is that limit.
     NoImpact,
     /// A state, an acceleration, a descriptor or the active walker's desired trajectory (its
@@ -146,6 +158,7 @@ impl FailureKind {
             FailureKind::LambdaNumeratorHuge { .. } => "lambda-numerator-huge",
             FailureKind::Fall { name, .. } => name,
             FailureKind::ImpactAtStart => "impact-at-start",
+            FailureKind::SlopeKink { .. } => "slope-kink",
             FailureKind::NoImpact => "no-impact",
             FailureKind::NonFinite => "non-finite",
             FailureKind::Integrator { .. } => "integrator",

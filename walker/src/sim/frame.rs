@@ -54,6 +54,20 @@ impl Frames {
         }
     }
 
+    /// The number of frames so far.
+    pub(super) fn len(&self) -> usize {
+        self.frames.len()
+    }
+
+    /// Moves the stance foot's position in the frames from `from` on by `o` (the step's
+    /// model saw the walker from the point `o`, `super::StepModels::origin`).
+    pub(super) fn move_from(&mut self, from: usize, o: [f64; 2]) {
+        for f in self.frames.iter_mut().skip(from) {
+            f.state[0] += o[0];
+            f.state[1] += o[1];
+        }
+    }
+
     /// The frames, and whether the walk went on past the last one (`max_frames` reached).
     pub(super) fn finish(self) -> (Vec<Frame>, bool) {
         (self.frames, self.truncated)

@@ -56,11 +56,15 @@ pub struct StepResult {
 }
 
 /// The floor under one step of a walk on a changing floor: the friction coefficient its
-/// stance foot felt and its strike used.
+/// stance foot felt and its strike used, and the slope of its floor if the floor sets it.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct StepFloor {
     /// The friction coefficient `mu0` of the step.
     pub mu0: f64,
+    /// The slope angle `phi` of the step's floor (the line of that slope through its stance
+    /// foot), for a floor that sets the slope (else `None`, left out of the JSON).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub phi: Option<f64>,
 }
 
 impl StepResult {

@@ -3,6 +3,7 @@
 
 use crate::model::Model;
 
+use super::failure::FailureKind;
 use super::gait::StepFloor;
 
 /// Gives the model of each step of a walk, in order, and the floor that step walks on. The
@@ -19,6 +20,19 @@ pub trait StepModels {
     /// The floor of the step last given by [`StepModels::model`], recorded with the step
     /// (`None`: the walk has no floor of its own, and its records stay as without one).
     fn floor(&self) -> Option<StepFloor>;
+
+    /// The point `o` of the floor from which step `step`'s model sees the walker, asked once
+    /// per step before [`StepModels::model`] with the state at the step's start: the walk
+    /// subtracts `o` from the stance foot's position `(q[0], q[1])` before the step and adds it
+    /// back to every position the step reports (a floor whose slope changes between steps,
+    /// `crate::floor`, puts the step's floor through the model's origin so). `None` (the
+    /// default): the state as it is. An error ends the walk before the step with that failure.
+    ///
+    /// # Errors
+    /// The step cannot start from `state` on its floor.
+    fn origin(&mut self, _step: usize, _state: &[f64]) -> Result<Option<[f64; 2]>, FailureKind> {
+        Ok(None)
+    }
 }
 
 /// One model for every step.

@@ -116,6 +116,14 @@ pub(super) fn walk_models(
         _ => (Walk::failed(FailureKind::NonFinite.at(0, 0.0, Vector::from_slice(initial))), Stats::default(), false))
 }
 
+/// `state` with the stance foot's position `(state[0], state[1])` moved by `sign` times `o`.
+fn moved(state: &Vector, o: [f64; 2], sign: f64) -> Vector {
+    let mut s = *state;
+    s[0] += sign * o[0];
+    s[1] += sign * o[1];
+    s
+}
+
 fn walk_sized<const S: usize>(
     models: &mut dyn StepModels,
     cfg: &SimConfig,
@@ -137,6 +145,17 @@ fn walk_sized<const S: usize>(
             stopped = true;
             break;
         }
+        // A step's floor may see the walker from a point of its own (`StepModels::origin`):
+        // the step runs on the moved state, and what it reports is moved back.
+        let origin = match models.origin(k, &state) {
+            Ok(o) => o,
+            Err(kind) => {
+                failure = Some(kind.at(k, 0.0, state));
+                break;
+            }
+        };
+        let recorded = (samples.len(), frames.as_deref().map_or(0, Frames::len));
+        let s0 = origin.map_or(state, |o| moved(&state, o, -1.0));
         let record = Record {
             samples: limits.record.then_some(&mut samples),
             frames: frames.as_deref_mut(),
@@ -146,7 +165,27 @@ fn walk_sized<const S: usize>(
             stopped = true;
             break;
         };
-        let res = one_step(model, cfg, &mut integ, k, &state, record);
+        let res = one_step(model, cfg, &mut integ, k, &s0, record);
+        if let Some(o) = origin {
+            for s in &mut samples[recorded.0..] {
+                s.state = moved(&s.state, o, 1.0);
+            }
+            if let Some(f) = frames.as_deref_mut() {
+                f.move_from(recorded.1, o);
+            }
+        }
+        let res = match origin {
+            Some(o) => res
+                .map(|mut r| {
+                    (r.q_plus[0], r.q_plus[1]) = (r.q_plus[0] + o[0], r.q_plus[1] + o[1]);
+                    r
+                })
+                .map_err(|mut f| {
+                    f.state = moved(&f.state, o, 1.0);
+                    f
+                }),
+            None => res,
+        };
         match res {
             Ok(mut r) => {
                 r.floor = models.floor();

@@ -37,14 +37,19 @@ enum End {
 ///
 /// # Errors
 /// A setting out of range or too large ([`MeshOptions::check`], [`MeshOptions::check_sizes`]),
-/// a `steps` floor, a floor the walker cannot take, or no gait at the central value.
+/// a `steps` floor, a floor that sets the slope, a floor the walker cannot take, or no gait at
+/// the central value.
 pub fn mesh_mfpt(
     walker: &FloorWalker<'_>,
     cfg: &SimConfig,
     opts: &MeshOptions,
 ) -> Result<MeshReport, MeshError> {
     opts.check()?;
-    let samples = FloorSamples::of(walker.floor(), opts.samples).ok_or(MeshError::StepsFloor)?;
+    let floor = walker.floor();
+    let Some(friction) = floor.mu0.as_ref().filter(|_| floor.phi.is_none()) else {
+        return Err(MeshError::SlopeFloor);
+    };
+    let samples = FloorSamples::of(friction, opts.samples).ok_or(MeshError::StepsFloor)?;
     let mu0 = samples.central();
     let central = walker.model_at(mu0)?;
     let section = Section::of(&central);

@@ -16,6 +16,13 @@ pub enum MeshError {
          `uniform`) floor"
     )]
     StepsFloor,
+    /// The floor sets the slope per step: the section the mesh lives on depends on the slope
+    /// of the step before (the rimless wheel's `th = phi - alpha/2`), which the chain's state
+    /// does not carry yet.
+    #[error(
+        "the mesh takes a floor of friction only: a floor that sets `phi` per step moves the          Poincare section with the slope of the step before, which the chain does not carry;          use `walker survive` for it"
+    )]
+    SlopeFloor,
     /// A setting outside its range.
     #[error("mesh field `{field}` = {value}: must be {range}")]
     OutOfRange {
