@@ -46,6 +46,14 @@ pub struct DesignArgs {
     /// The normal force at least this (N), >= 0.
     #[arg(value_parser = number::finite, long = "normal-margin", default_value_t = 0.0, allow_hyphen_values = true)]
     pub normal_margin: f64,
+    /// The strike at least this long after the end of the desired trajectories' last ramp
+    /// (T - T_set >= this, s; for a model with ramps), >= 0.
+    #[arg(value_parser = number::finite, long = "ramp-margin", default_value_t = 0.01, allow_hyphen_values = true)]
+    pub ramp_margin: f64,
+    /// Bounds on the inputs along the stance, max |u_i| <= U: one for every input, or one per
+    /// input, comma-separated; each finite and > 0.
+    #[arg(long = "max-input", value_delimiter = ',', allow_hyphen_values = true)]
+    pub max_input: Vec<String>,
     /// The solver's limit on objective evaluations: a whole number in [1, 10000].
     #[arg(
         long = "max-evaluations",
@@ -109,6 +117,27 @@ pub fn parse_vary(item: &str, current: impl Fn(&str) -> Option<f64>) -> Result<V
     })
 }
 
+/// The bounds of `--max-input`, each a number (the library checks their range and count).
+///
+/// # Errors
+/// [`InputError`] on `max-input` for an item that is not a number.
+pub fn parse_max_input(items: &[String]) -> Result<Vec<f64>, InputError> {
+    items
+        .iter()
+        .map(|t| {
+            t.trim().parse::<f64>().map_err(|_| {
+                InputError::new(
+                    "max-input",
+                    format!(
+                        "`{}`: expected a number > 0, or one per input, comma-separated",
+                        walker::request::shown::name(t)
+                    ),
+                )
+            })
+        })
+        .collect()
+}
+
 /// Run `walker design`: the text (a table, or one JSON object with `--json`) to print.
 ///
 /// # Errors
@@ -141,9 +170,11 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
             multiplier: args.multiplier_margin,
             friction: args.friction_margin,
             normal: args.normal_margin,
+            ramp: args.ramp_margin,
         },
         max_evaluations,
         tol,
+        max_input: parse_max_input(&args.max_input)?,
     };
     let restarts = crate::input::whole("restarts", &args.restarts, 0, MAX_RESTARTS)?;
     let seed = args.seed.trim().parse::<u64>().map_err(|_| {
@@ -167,6 +198,9 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
             InputError::new(&format!("{which}-margin"), e.to_string()).into()
         }
         DesignError::Restarts { .. } => InputError::new("restarts", e.to_string()).into(),
+        DesignError::MaxInput { .. }
+        | DesignError::MaxInputCount { .. }
+        | DesignError::NoInputsToBound { .. } => InputError::new("max-input", e.to_string()).into(),
         other => InputError::new("vary", other.to_string()).into(),
     })?;
     Ok(if common.json {
@@ -190,7 +224,7 @@ pub fn text(d: &Design) -> String {
         "design: {:?} (solver: {}), {} gait evaluations\n",
         d.status, d.solver, d.evaluations
     ));
-    if let Some(v) = d.violated {
+    if let Some(v) = &d.violated {
         s.push_str(&format!("violated: {v}\n"));
     }
     s.push_str(&format!(
