@@ -426,7 +426,11 @@ fn three_link_friction(evals: &str, extra: &[&str]) -> String {
 #[test]
 fn restarts_are_no_worse_than_the_single_solve_and_the_same_seed_gives_the_same_design() {
     let single: Value = serde_json::from_str(&three_link_friction("20", &[])).unwrap();
-    let flags = ["--restarts", "3", "--seed", "2"];
+    // Seed 7: one drawn start has a gait and ends at another local optimum (0.39756 against
+    // the request's 0.39652), two have none. (Seed 2, used before the strike-after-ramp
+    // constraint, draws a start whose solve now wanders where the gait is hard to find and
+    // costs 17 s of the test profile: this test is kept cheap, 1.8 s per solve with restarts.)
+    let flags = ["--restarts", "3", "--seed", "7"];
     let first = three_link_friction("20", &flags);
     // Deterministic from the seed: the same text, every digit.
     assert_eq!(first, three_link_friction("20", &flags));
