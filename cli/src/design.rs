@@ -32,8 +32,14 @@ pub struct DesignArgs {
     pub common: Common,
     /// The parameters to vary, comma-separated, each NAME=LO:HI or NAME=LO:HI:START (the
     /// start defaults to the model's value, with --set), e.g. `T_set=0.1:0.6`.
-    #[arg(long, value_delimiter = ',', required = true)]
+    #[arg(long, value_delimiter = ',', required_unless_present = "fig8")]
     pub vary: Vec<String>,
+    /// Instead of one design: the figure beside the paper's Fig. 8 (d) into DIR (the
+    /// designed Bezier ramp's SR at mu0 = 0.4, 0.5, 0.6, 0.8 against the paper's sweep;
+    /// `design_fig8.svg`, `.png`, `.csv`), printing the claim it checks; about 20 s. With
+    /// `--scene active-level`.
+    #[arg(long, value_name = "DIR", conflicts_with = "vary")]
+    pub fig8: Option<std::path::PathBuf>,
     /// What to minimise.
     #[arg(long, value_enum, default_value = "specific_resistance")]
     pub objective: ObjectiveArg,
@@ -82,6 +88,9 @@ pub enum DesignCliError {
     /// No periodic gait at the start (exit code 1).
     #[error("{0}")]
     NoGait(String),
+    /// The figure of `--fig8` could not be written (exit code 1).
+    #[error(transparent)]
+    Write(#[from] crate::reproduce::WriteError),
 }
 
 /// One `NAME=LO:HI[:START]` of `--vary`, the start defaulting to `current(NAME)`.
@@ -144,6 +153,21 @@ pub fn parse_max_input(items: &[String]) -> Result<Vec<f64>, InputError> {
 /// [`DesignCliError::Input`] for a bad request, naming the flag and the valid range;
 /// [`DesignCliError::NoGait`] where the start has no periodic gait.
 pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
+    if let Some(dir) = &args.fig8 {
+        let common = &args.common;
+        let setup = run::setup(common, &common.overrides(None, None, None)?)?;
+        let name = setup.walker.spec().name();
+        if name != "paper-active" {
+            return Err(InputError::new(
+                "fig8",
+                format!(
+                    "the figure is of the paper's active walker (`--scene active-level`), not `{name}`"
+                ),
+            )
+            .into());
+        }
+        return Ok(crate::reproduce::design_fig8::write_design_fig8(dir)?);
+    }
     let common = &args.common;
     let setup = run::setup(common, &common.overrides(None, None, None)?)?;
     let cfg = common.config()?;

@@ -554,3 +554,24 @@ fn an_active_input_bound_changes_the_shape_and_the_walk_keeps_its_inputs_within_
     assert!(w.samples.len() > 1000 && peak <= 20.0, "{peak}");
     assert!(peak >= 19.9, "the bound is active: {peak}");
 }
+
+#[test]
+fn the_fig8_figure_is_of_the_papers_walker_and_names_the_flag_otherwise() {
+    // The figure itself (four designs, 13 s of the test profile) is not drawn here; a walker
+    // other than the paper's is refused before any work.
+    let model = Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/three-link.toml");
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("design_cli/fig8");
+    let (code, _, err) = walker(&[
+        "design",
+        "--model",
+        model.to_str().unwrap(),
+        "--fig8",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("invalid fig8: the figure is of the paper's active walker"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}
