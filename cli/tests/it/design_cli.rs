@@ -261,6 +261,30 @@ fn a_floor_too_slippery_for_every_ramp_is_an_infeasible_design_naming_the_fricti
 }
 
 #[test]
+fn an_input_bound_no_ramp_can_meet_is_an_infeasible_design_naming_the_input() {
+    // The quintic draws at least 15.97 N m at T_set = 0.4, more at shorter ramps: a bound of
+    // 10 cannot be met on [0.2, 0.4], and the floor's friction (0.8) is no constraint.
+    let paper = paper_active();
+    let d = json(&[
+        "design",
+        "--model",
+        paper.to_str().unwrap(),
+        "--set",
+        "mu0=0.8",
+        "--friction",
+        "coulomb",
+        "--impact",
+        "coulomb",
+        "--vary",
+        "T_set=0.2:0.4:0.3",
+        "--max-input",
+        "10",
+    ]);
+    assert_eq!(d["status"], "infeasible", "{d}");
+    assert_eq!(d["violated"], "input-0", "{d}");
+}
+
+#[test]
 fn bad_design_requests_exit_2_naming_the_field_and_the_range() {
     let paper = paper_active();
     let p = paper.to_str().unwrap();
