@@ -32,8 +32,14 @@ pub struct DesignArgs {
     pub common: Common,
     /// The parameters to vary, comma-separated, each NAME=LO:HI or NAME=LO:HI:START (the
     /// start defaults to the model's value, with --set), e.g. `T_set=0.1:0.6`.
-    #[arg(long, value_delimiter = ',', required = true)]
+    #[arg(long, value_delimiter = ',', required_unless_present = "fig8")]
     pub vary: Vec<String>,
+    /// Instead of one design: the figure beside the paper's Fig. 8 (d) into DIR (the
+    /// designed Bezier ramp's SR at mu0 = 0.4, 0.5, 0.6, 0.8 against the paper's sweep;
+    /// `design_fig8.svg`, `.png`, `.csv`), printing the claim it checks; about 20 s. With
+    /// `--scene active-level`.
+    #[arg(long, value_name = "DIR", conflicts_with = "vary")]
+    pub fig8: Option<std::path::PathBuf>,
     /// What to minimise.
     #[arg(long, value_enum, default_value = "specific_resistance")]
     pub objective: ObjectiveArg,
@@ -46,6 +52,14 @@ pub struct DesignArgs {
     /// The normal force at least this (N), >= 0.
     #[arg(value_parser = number::finite, long = "normal-margin", default_value_t = 0.0, allow_hyphen_values = true)]
     pub normal_margin: f64,
+    /// The strike at least this long after the end of the desired trajectories' last ramp
+    /// (T - T_set >= this, s; for a model with ramps), >= 0.
+    #[arg(value_parser = number::finite, long = "ramp-margin", default_value_t = 0.01, allow_hyphen_values = true)]
+    pub ramp_margin: f64,
+    /// Bounds on the inputs along the stance, max |u_i| <= U: one for every input, or one per
+    /// input, comma-separated; each finite and > 0.
+    #[arg(long = "max-input", value_delimiter = ',', allow_hyphen_values = true)]
+    pub max_input: Vec<String>,
     /// The solver's limit on objective evaluations: a whole number in [1, 10000].
     #[arg(
         long = "max-evaluations",
@@ -74,6 +88,9 @@ pub enum DesignCliError {
     /// No periodic gait at the start (exit code 1).
     #[error("{0}")]
     NoGait(String),
+    /// The figure of `--fig8` could not be written (exit code 1).
+    #[error(transparent)]
+    Write(#[from] crate::reproduce::WriteError),
 }
 
 /// One `NAME=LO:HI[:START]` of `--vary`, the start defaulting to `current(NAME)`.
@@ -109,12 +126,48 @@ pub fn parse_vary(item: &str, current: impl Fn(&str) -> Option<f64>) -> Result<V
     })
 }
 
+/// The bounds of `--max-input`, each a number (the library checks their range and count).
+///
+/// # Errors
+/// [`InputError`] on `max-input` for an item that is not a number.
+pub fn parse_max_input(items: &[String]) -> Result<Vec<f64>, InputError> {
+    items
+        .iter()
+        .map(|t| {
+            t.trim().parse::<f64>().map_err(|_| {
+                InputError::new(
+                    "max-input",
+                    format!(
+                        "`{}`: expected a number > 0, or one per input, comma-separated",
+                        walker::request::shown::name(t)
+                    ),
+                )
+            })
+        })
+        .collect()
+}
+
 /// Run `walker design`: the text (a table, or one JSON object with `--json`) to print.
 ///
 /// # Errors
 /// [`DesignCliError::Input`] for a bad request, naming the flag and the valid range;
 /// [`DesignCliError::NoGait`] where the start has no periodic gait.
 pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
+    if let Some(dir) = &args.fig8 {
+        let common = &args.common;
+        let setup = run::setup(common, &common.overrides(None, None, None)?)?;
+        let name = setup.walker.spec().name();
+        if name != "paper-active" {
+            return Err(InputError::new(
+                "fig8",
+                format!(
+                    "the figure is of the paper's active walker (`--scene active-level`), not `{name}`"
+                ),
+            )
+            .into());
+        }
+        return Ok(crate::reproduce::design_fig8::write_design_fig8(dir)?);
+    }
     let common = &args.common;
     let setup = run::setup(common, &common.overrides(None, None, None)?)?;
     let cfg = common.config()?;
@@ -141,9 +194,11 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
             multiplier: args.multiplier_margin,
             friction: args.friction_margin,
             normal: args.normal_margin,
+            ramp: args.ramp_margin,
         },
         max_evaluations,
         tol,
+        max_input: parse_max_input(&args.max_input)?,
     };
     let restarts = crate::input::whole("restarts", &args.restarts, 0, MAX_RESTARTS)?;
     let seed = args.seed.trim().parse::<u64>().map_err(|_| {
@@ -167,6 +222,9 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
             InputError::new(&format!("{which}-margin"), e.to_string()).into()
         }
         DesignError::Restarts { .. } => InputError::new("restarts", e.to_string()).into(),
+        DesignError::MaxInput { .. }
+        | DesignError::MaxInputCount { .. }
+        | DesignError::NoInputsToBound { .. } => InputError::new("max-input", e.to_string()).into(),
         other => InputError::new("vary", other.to_string()).into(),
     })?;
     Ok(if common.json {
@@ -190,7 +248,7 @@ pub fn text(d: &Design) -> String {
         "design: {:?} (solver: {}), {} gait evaluations\n",
         d.status, d.solver, d.evaluations
     ));
-    if let Some(v) = d.violated {
+    if let Some(v) = &d.violated {
         s.push_str(&format!("violated: {v}\n"));
     }
     s.push_str(&format!(

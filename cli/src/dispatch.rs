@@ -157,6 +157,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             Ok(text) => emit(&text)?,
             Err(crate::design::DesignCliError::Input(e)) => return Err(e.into()),
             Err(crate::design::DesignCliError::NoGait(m)) => return Err(CliError::Design(m)),
+            Err(crate::design::DesignCliError::Write(e)) => return Err(e.into()),
         },
         Command::Mfpt {
             common,

@@ -17,6 +17,8 @@ command line's flags and return NumPy arrays:
   :func:`mfpt` -- the same time by the Markov-chain (mesh) approximation.
 - :func:`fixed_point` -- the limit cycle and its Floquet multipliers.
 - :func:`describe` -- a walker's parameters, state components, inputs and start.
+- :func:`design` -- the run-time parameters that make the best periodic gait on a floor,
+  with the friction it needs as a constraint (``walker design``).
 
 Every function takes the walker as ``scene=`` (a built-in name or a scene file) or ``model=``
 (a model file; one that is not shipped is derived when the call starts), its run-time
@@ -55,6 +57,7 @@ __all__ = [
     "Walk",
     "__version__",
     "describe",
+    "design",
     "fixed_point",
     "simulate",
     "survival",
@@ -1006,3 +1009,82 @@ def describe(
         input_names=tuple(d["input_names"]),
         start=_arr(d["start"]),
     )
+
+
+OBJECTIVES = ("specific_resistance", "power", "friction")
+"""The objectives of :func:`design` (``walker design --objective``)."""
+
+
+def _vary(vary: Any) -> List[Tuple[str, float, float, Optional[float]]]:
+    """``{name: (lo, hi)}`` or ``{name: (lo, hi, start)}`` as ``(name, lo, hi, start)``."""
+    if not isinstance(vary, Mapping) or not vary:
+        raise _type_error("vary", vary, "a non-empty dict of names to (lo, hi) or (lo, hi, start)")
+    out = []
+    for k, v in vary.items():
+        if not isinstance(k, str):
+            raise _type_error("vary", k, "a dict whose keys are parameter names (str)")
+        _str("vary", k)
+        arg = f"vary['{k}']"
+        if isinstance(v, (str, bytes, Mapping)) or not isinstance(v, (Sequence, np.ndarray)) \
+                or len(v) not in (2, 3):
+            raise _type_error(arg, v, "(lo, hi) or (lo, hi, start), numbers")
+        lo, hi = _float(arg, v[0]), _float(arg, v[1])
+        start = _float(arg, v[2]) if len(v) == 3 else None
+        out.append((k, lo, hi, start))
+    return out
+
+
+def design(
+    *,
+    vary: Mapping[str, Sequence[float]],
+    scene: Optional[Path] = None,
+    model: Optional[Path] = None,
+    set: Values = None,
+    friction: Optional[str] = None,
+    impact: Optional[str] = None,
+    method: str = "dop853",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    objective: str = "specific_resistance",
+    multiplier_margin: float = 0.05,
+    friction_margin: float = 0.01,
+    normal_margin: float = 0.0,
+    ramp_margin: float = 0.01,
+    max_input: Union[float, Sequence[float], None] = None,
+    max_evaluations: int = 100,
+    tol: float = 1e-10,
+    restarts: int = 0,
+    seed: int = 0,
+) -> Dict[str, Any]:
+    """Design a gait: the run-time parameters ``vary`` (``{name: (lo, hi)}`` or ``{name:
+    (lo, hi, start)}``; the start defaults to the model's value) within their bounds that
+    minimise ``objective`` (one of :data:`OBJECTIVES`) of the periodic gait, subject to its
+    multipliers ``<= 1 - multiplier_margin``, the friction it needs ``<= mu0 -
+    friction_margin`` (stance and strike), the normal force ``>= normal_margin``, the strike
+    ``ramp_margin`` (s) after the desired trajectories' ramps end, and with ``max_input`` (one
+    bound for every input or one per input) ``max |u_i| <= U_i`` along the stance. As
+    ``walker design`` (``docs/design.md``); the other arguments as in :func:`simulate`.
+
+    Returns the command line's JSON (``walker design --json``) as a dict: ``status``
+    (``optimal``, ``feasible`` or ``infeasible`` with ``violated`` naming the constraint),
+    ``value``, ``parameters``, ``gait``, ``constraints`` (each with its ``slack``),
+    ``kkt_residual``, ``evaluations`` (and ``restarts`` with ``restarts > 0``); or ``{"status":
+    "failed", "reason"}`` where the start has no periodic gait.
+
+    Raises:
+        ValueError: a bad argument (the message names it and its valid range).
+    """
+    text = _core.design(
+        **_walker(scene, model, set), **_options(method, rtol, atol, friction, impact),
+        vary=_vary(vary), objective=_str("objective", objective),
+        multiplier_margin=_float("multiplier_margin", multiplier_margin),
+        friction_margin=_float("friction_margin", friction_margin),
+        normal_margin=_float("normal_margin", normal_margin),
+        ramp_margin=_float("ramp_margin", ramp_margin),
+        max_input=_list("max_input", max_input),
+        max_evaluations=_int("max_evaluations", max_evaluations, 1, 10_000),
+        tol=_float("tol", tol), restarts=_int("restarts", restarts, 0, 100),
+        seed=_int("seed", seed, 0, 2**64 - 1),
+    )
+    result: Dict[str, Any] = json.loads(text)
+    return result

@@ -93,6 +93,28 @@ def fixed_point(
     atol: Optional[float],
     sensitivities: List[str],
 ) -> Tuple[str, List[str]]: ...
+def design(
+    *,
+    scene: Optional[str],
+    model: Optional[str],
+    set: List[Tuple[str, float]],
+    friction: Optional[str],
+    impact: Optional[str],
+    method: str,
+    rtol: Optional[float],
+    atol: Optional[float],
+    vary: List[Tuple[str, float, float, Optional[float]]],
+    objective: str,
+    multiplier_margin: float,
+    friction_margin: float,
+    normal_margin: float,
+    ramp_margin: float,
+    max_input: List[float],
+    max_evaluations: int,
+    tol: float,
+    restarts: int,
+    seed: int,
+) -> str: ...
 def describe(
     *,
     scene: Optional[str],

@@ -15,10 +15,12 @@
 //! columns), `chunks.rs` (work in chunks between checks for Ctrl-C), then one file per
 //! function: `simulate.rs`, `sweep.rs`, `points.rs`, `fixed_point.rs`, `describe.rs`,
 //! `floor.rs` (`floor=` of `simulate` and `survive`), `survive.rs` (`survive`, and `survival`
-//! of outcomes gathered from ranges of a batch), `mfpt.rs` (`mfpt`, the mesh estimate).
+//! of outcomes gathered from ranges of a batch), `mfpt.rs` (`mfpt`, the mesh estimate),
+//! `design.rs` (`design`, the gait design of `walker design`).
 
 pub mod chunks;
 pub mod describe;
+pub mod design;
 pub mod error;
 pub mod fixed_point;
 pub mod floor;
@@ -46,5 +48,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(survive::survive, m)?)?;
     m.add_function(wrap_pyfunction!(survive::survival, m)?)?;
     m.add_function(wrap_pyfunction!(mfpt::mfpt, m)?)?;
+    m.add_function(wrap_pyfunction!(design::design, m)?)?;
     Ok(())
 }

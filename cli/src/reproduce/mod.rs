@@ -7,7 +7,8 @@
 //! ([`animations`]), the claims text ([`mod@summary`], with the claims of Sections 4 and 5 in
 //! [`claims_active`] and [`claims_passive`] and the sweeps stated as ranges of `mu0` by
 //! [`ranges`]), the Floquet stability along `mu0` ([`stability`]), the bifurcation diagrams by
-//! continuation ([`bifurcation`]) and the whole job, writing
+//! continuation ([`bifurcation`]), the figure beside Fig. 8 (d) of `walker design --fig8`
+//! ([`design_fig8`], not part of the job) and the whole job, writing
 //! everything into one directory ([`job`]), or why it could not ([`error`]).
 //!
 //! Imports run one way: [`job`] -> [`bifurcation`], [`stability`], [`mod@summary`], [`figures`], [`csv`] ->
@@ -20,6 +21,7 @@ pub mod claims_active;
 pub mod claims_passive;
 pub mod csv;
 pub mod data;
+pub mod design_fig8;
 pub mod error;
 pub mod figures;
 pub mod job;

@@ -67,7 +67,7 @@ pub enum DesignError {
     /// A margin out of range.
     #[error("{which} margin is {value}: must be {must_be}")]
     Margin {
-        /// `multiplier`, `friction` or `normal`.
+        /// `multiplier`, `friction`, `normal` or `ramp`.
         which: &'static str,
         /// The value.
         value: f64,
@@ -81,6 +81,28 @@ pub enum DesignError {
         objective: &'static str,
         /// The model.
         model: String,
+    },
+    /// An input bound that is not a finite positive number.
+    #[error("input bound is {value}: must be finite and > 0")]
+    MaxInput {
+        /// The bound.
+        value: f64,
+    },
+    /// Input bounds for a walker without inputs.
+    #[error("input bounds need an actuated walker; model `{model}` has no inputs")]
+    NoInputsToBound {
+        /// The model.
+        model: String,
+    },
+    /// Input bounds neither one for all inputs nor one per input.
+    #[error(
+        "{given} input bounds for a walker with {inputs} input(s): give one for all or one per input"
+    )]
+    MaxInputCount {
+        /// The number of bounds given.
+        given: usize,
+        /// The walker's inputs.
+        inputs: usize,
     },
     /// The model has no friction coefficient `mu0` to hold the foot against.
     #[error("model `{model}` has no parameter `mu0`: the friction constraints need one")]

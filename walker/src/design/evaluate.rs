@@ -36,6 +36,17 @@ pub struct Evaluation {
     /// Whether the stance foot stayed stuck on every sample (Coulomb friction; always false
     /// under a smooth law, whose foot always creeps).
     pub held: bool,
+    /// The end of the desired trajectories' last ramp (the paper's `T_set`), which the strike
+    /// must come after; `None` (and left out of the JSON) for a model without ramps.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ramps_end: Option<f64>,
+    /// The largest `|u_i|` on the stance's samples, per input (empty for a passive walker);
+    /// with `ramp_inputs` also just before each ramp's end.
+    pub max_input: Vec<f64>,
+    /// `|u_i|` at `t = k T / SAMPLES` per input `i` (the input bounds' samples), and with
+    /// `ramp_inputs` just before each ramp's end; left out of the JSON.
+    #[serde(skip)]
+    pub input_samples: Vec<Vec<f64>>,
     /// The number of stance samples read.
     pub samples: usize,
 }
@@ -51,7 +62,11 @@ impl Evaluation {
 /// The periodic gait of `setup` with `names` set to `values`: Newton's method on the reduced
 /// map from `guess` (section coordinates) where given and converging, else the fixed-point
 /// search of `walker fixed-point` from the model's start; then one step from the fixed point
-/// sampled `SAMPLES` (400) times on the dense output.
+/// sampled `SAMPLES` (400) times on the dense output. With `ramp_inputs`, the inputs are also
+/// read just before each ramp's end inside the step ([`inputs_before_ramp_ends`]): where a
+/// ramp's second derivative does not vanish at its end (a Bezier's, unlike the paper's
+/// quintic) the input jumps there, and its largest value is the left limit, which samples on a
+/// grid miss.
 ///
 /// # Errors
 /// A text saying why there is no valid periodic gait there (a parameter out of range, no
@@ -62,6 +77,7 @@ pub fn evaluate(
     names: &[&str],
     values: &[f64],
     guess: Option<&[f64]>,
+    ramp_inputs: bool,
 ) -> Result<Evaluation, String> {
     let mut s = setup.clone();
     for (n, v) in names.iter().zip(values) {
@@ -114,6 +130,30 @@ pub fn evaluate(
     let held = frames
         .iter()
         .all(|f| f.contact == crate::model::Contact::Stuck);
+    let mut input_samples: Vec<Vec<f64>> = (0..model.inputs())
+        .map(|i| {
+            (0..SAMPLES)
+                .map(|k| {
+                    frames
+                        .get(k)
+                        .or(frames.last())
+                        .and_then(|f| f.u.as_slice().get(i))
+                        .map_or(f64::INFINITY, |u| u.abs())
+                })
+                .collect()
+        })
+        .collect();
+    if ramp_inputs {
+        for u in inputs_before_ramp_ends(&model, cfg, &fp.state_plus, fp.period) {
+            for (samples, ui) in input_samples.iter_mut().zip(u.as_slice()) {
+                samples.push(ui.abs());
+            }
+        }
+    }
+    let max_input = input_samples
+        .iter()
+        .map(|v| v.iter().copied().fold(0.0, f64::max))
+        .collect();
     let [lt, ln] = step.foot_impulse;
     let reduced = Section::of(&model).reduce(&fp.state_plus);
     Ok(Evaluation {
@@ -126,6 +166,35 @@ pub fn evaluate(
         impact_friction: ratio(lt, ln),
         min_normal,
         held,
+        ramps_end: model.ramps_end(),
+        max_input,
+        input_samples,
         samples: frames.len(),
     })
+}
+
+/// The inputs just before each end of a ramp inside the step from `start` (of period `period`):
+/// the state at the ramp's end `t_e` from the dense output of the integration up to it (the
+/// end is a breakpoint of the integrator), and the input of the ramp's own branch there, at
+/// the largest time below `t_e` (the left limit; from `t_e` on the trajectory is held).
+fn inputs_before_ramp_ends(
+    model: &crate::model::Model,
+    cfg: &SimConfig,
+    start: &[f64],
+    period: f64,
+) -> Vec<crate::vector::Vector> {
+    let limits = WalkLimits {
+        max_steps: 1,
+        ..WalkLimits::default()
+    };
+    let mut out = Vec::new();
+    let mut t = 0.0;
+    while let Some(end) = model.next_breakpoint(t).filter(|&e| e < period) {
+        let tr = trajectory(model, cfg, start, &limits, end, 2);
+        if let Some(f) = tr.frames.get(1).filter(|f| f.step == 0) {
+            out.push(model.control_input(end.next_down(), f.state.as_slice(), f.contact));
+        }
+        t = end;
+    }
+    out
 }

@@ -13,7 +13,10 @@
 //! - the foot held: the friction ratio `|lambda_t| / lambda_n` along the whole stance (sampled
 //!   on the integrator's dense output) and the heel strike's impulse ratio `|Lambda_t| /
 //!   Lambda_n`, each `<= mu0 - margin`;
-//! - the normal force `lambda_n >= margin` along the stance.
+//! - the normal force `lambda_n >= margin` along the stance;
+//! - for a model with ramps in its desired trajectories, the strike at least a margin after
+//!   the last ramp's end (`T - T_set >= margin`: a strike before it is no gait of the model);
+//! - optionally, input bounds `max |u_i| <= U_i` along the stance (sampled as the friction).
 //!
 //! Under Coulomb friction the gait is that of the walker with its foot held (`mu0` raised out
 //! of reach), so that the friction constraints are smooth in `p`; the stance's sampled ratios
@@ -28,6 +31,7 @@
 //! ([`Design`]) carries the parameters, the gait, the objective, every constraint with its
 //! slack, the solver's status and a KKT residual.
 
+mod constraints;
 mod error;
 mod evaluate;
 mod kkt;

@@ -62,6 +62,9 @@ pub struct Margins {
     pub friction: f64,
     /// The normal force `>= normal` (N); `>= 0`.
     pub normal: f64,
+    /// The strike at least this long after the end of the desired trajectories' last ramp
+    /// (`T - T_set >= ramp`, s; for a model with ramps); `>= 0`.
+    pub ramp: f64,
 }
 
 impl Default for Margins {
@@ -70,6 +73,7 @@ impl Default for Margins {
             multiplier: 0.05,
             friction: 0.01,
             normal: 0.0,
+            ramp: 0.01,
         }
     }
 }
@@ -87,12 +91,16 @@ pub struct DesignRequest {
     pub max_evaluations: usize,
     /// The solver's relative tolerance on the objective (its `ftol_rel`).
     pub tol: f64,
+    /// Bounds on the inputs along the stance, `max |u_i| <= U_i`: empty for none, one bound
+    /// for every input, or one per input (N m or N, each finite and `> 0`).
+    pub max_input: Vec<f64>,
 }
 
 impl DesignRequest {
     /// Checks the request against `setup`'s walker: each varied name a run-time parameter
     /// (once), finite bounds `lo < hi` within the parameter's own range, the start within the
-    /// bounds, margins in range, an objective the walker can have, and a `mu0`.
+    /// bounds, margins in range, input bounds finite and positive, one or one per input of an
+    /// actuated walker, an objective the walker can have, and a `mu0`.
     ///
     /// # Errors
     /// The first [`DesignError`] found, naming the parameter or margin and the valid range.
@@ -163,13 +171,36 @@ impl DesignRequest {
                 must_be: "in [0, 1)",
             });
         }
-        for (which, value) in [("friction", m.friction), ("normal", m.normal)] {
+        for (which, value) in [
+            ("friction", m.friction),
+            ("normal", m.normal),
+            ("ramp", m.ramp),
+        ] {
             if !(value.is_finite() && value >= 0.0) {
                 return Err(DesignError::Margin {
                     which,
                     value,
                     must_be: "finite and >= 0",
                 });
+            }
+        }
+        let inputs = setup.walker.spec().inputs;
+        if !self.max_input.is_empty() {
+            if inputs == 0 {
+                return Err(DesignError::NoInputsToBound { model });
+            }
+            if self.max_input.len() != 1 && self.max_input.len() != inputs {
+                return Err(DesignError::MaxInputCount {
+                    given: self.max_input.len(),
+                    inputs,
+                });
+            }
+            if let Some(&value) = self
+                .max_input
+                .iter()
+                .find(|u| !(u.is_finite() && **u > 0.0))
+            {
+                return Err(DesignError::MaxInput { value });
             }
         }
         if setup.params.get("mu0").is_none() {

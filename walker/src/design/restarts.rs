@@ -128,6 +128,7 @@ mod tests {
             objective: Objective::Friction,
             margins: Margins::default(),
             max_evaluations: 10,
+            max_input: Vec::new(),
             tol: 1e-10,
         }
     }

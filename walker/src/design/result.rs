@@ -39,8 +39,9 @@ pub struct VariedValue {
 /// slack (positive: holds with room; negative: violated by that much).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ConstraintSlack {
-    /// The constraint's name.
-    pub name: &'static str,
+    /// The constraint's name (`multipliers`, `impact-friction`, `normal-force`,
+    /// `stance-friction`, `strike-after-ramp`, `input-I`).
+    pub name: String,
     /// What it measures at the design.
     pub value: f64,
     /// Its bound.
@@ -61,7 +62,7 @@ pub struct Design {
     /// How it ended.
     pub status: DesignStatus,
     /// The constraint violated most, for an infeasible design.
-    pub violated: Option<&'static str>,
+    pub violated: Option<String>,
     /// The solver's own termination status (SLSQP's, as NLopt names them).
     pub solver: String,
     /// The objective's name.

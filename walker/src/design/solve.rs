@@ -9,30 +9,15 @@ use slsqp::{Func, StopTols, minimize};
 use crate::setup::Setup;
 use crate::sim::SimConfig;
 
+use super::constraints::{CAP, Kind, kinds, program_value, row, stance_ks};
 use super::error::DesignError;
 use super::evaluate::{Evaluation, evaluate};
 use super::kkt::kkt;
 use super::request::{DesignRequest, Objective, Vary};
 use super::result::{ConstraintSlack, Design, DesignStatus, VariedValue};
 
-/// The constraints, in this order.
-const NAMES: [&str; 4] = [
-    "multipliers",
-    "impact-friction",
-    "normal-force",
-    "stance-friction",
-];
-/// The number of constraints of the program.
-const COUNT: usize = NAMES.len();
-/// The sharpness `rho` of the Kreisselmeier-Steinhauser aggregate of the stance's samples
-/// ([`ks`]): it exceeds their largest value by at most `ln(400) / rho = 0.015` (by 0.0017 at
-/// the paper walker's shaped design; `rho` 100 and 200 gave 0.012 and 0.004 and a worse
-/// design, 1000 a constraint too sharp for the solver to converge on).
-const RHO: f64 = 400.0;
 /// A constraint's value where there is no gait (every constraint reads as violated by this).
 const NO_GAIT: f64 = 1.0;
-/// Ratios beyond this (a normal force at or below zero) are capped so the solver sees numbers.
-const CAP: f64 = 1e3;
 /// A violation the solver sees as none (see the constraints' callbacks).
 const SNAP: f64 = 1e-10;
 /// A constraint holds with a slack of at least `-FEASIBLE`.
@@ -57,6 +42,8 @@ struct Program<'a> {
     epi: bool,
     /// The floor's friction coefficient, which the constraints hold the foot against.
     floor_mu0: f64,
+    /// The design's constraints (the program's first ones), in order.
+    kinds: Vec<Kind>,
     /// Evaluated points: the parameters and the evaluation (or why there was none).
     seen: RefCell<Vec<(Vec<f64>, Option<Evaluation>)>>,
     /// The last fixed point found, Newton's next guess.
@@ -83,7 +70,16 @@ impl Program<'_> {
             return e.clone();
         }
         let guess = self.guess.borrow().clone();
-        let e = evaluate(self.setup, self.cfg, &self.names, x, guess.as_deref()).ok();
+        let ramp_inputs = !self.req.max_input.is_empty();
+        let e = evaluate(
+            self.setup,
+            self.cfg,
+            &self.names,
+            x,
+            guess.as_deref(),
+            ramp_inputs,
+        )
+        .ok();
         if let Some(e) = &e {
             *self.guess.borrow_mut() = Some(e.reduced.clone());
         }
@@ -91,10 +87,11 @@ impl Program<'_> {
         e
     }
 
-    /// The program's constraints: the four of the design, and with [`Program::epi`] the
-    /// epigraph's two (the stance's aggregate and the strike's ratio `<= s`).
+    /// The program's constraints: the design's ([`Program::kinds`]), and with
+    /// [`Program::epi`] the epigraph's two (the stance's aggregate and the strike's ratio
+    /// `<= s`).
     fn count(&self) -> usize {
-        if self.epi { COUNT + 2 } else { COUNT }
+        self.kinds.len() + if self.epi { 2 } else { 0 }
     }
 
     /// The epigraph's level at an evaluation: the larger of the stance's aggregate and the
@@ -112,19 +109,17 @@ impl Program<'_> {
         }
     }
 
-    /// The constraints `g <= 0` at `x` (all [`NO_GAIT`] without a gait): the multipliers,
-    /// the strike's ratio, the normal force, and the stance's ratios aggregated by [`ks`].
+    /// The design's constraints `g <= 0` at `x` (all [`NO_GAIT`] without a gait), in the
+    /// order of [`Program::kinds`] ([`program_value`]).
     fn constraints(&self, x: &[f64], e: Option<&Evaluation>) -> Vec<f64> {
-        let m = &self.req.margins;
-        let mu = self.mu0(x) - m.friction;
+        let mu0 = self.mu0(x);
         match e {
-            None => vec![NO_GAIT; COUNT],
-            Some(e) => vec![
-                e.fixed_point.max_modulus() - (1.0 - m.multiplier),
-                e.impact_friction.min(CAP) - mu,
-                m.normal - e.min_normal.max(-CAP),
-                stance_ks(e) - mu,
-            ],
+            None => vec![NO_GAIT; self.kinds.len()],
+            Some(e) => self
+                .kinds
+                .iter()
+                .map(|&k| program_value(k, e, mu0, self.req))
+                .collect(),
         }
     }
 
@@ -191,9 +186,10 @@ impl Program<'_> {
             }
         }
         if self.epi {
+            let c = self.kinds.len();
             df[self.n] = 1.0;
-            dg[COUNT][self.n] = -1.0;
-            dg[COUNT + 1][self.n] = -1.0;
+            dg[c][self.n] = -1.0;
+            dg[c + 1][self.n] = -1.0;
         }
         *self.grads.borrow_mut() = Some((x.to_vec(), df.clone(), dg.clone()));
         (df, dg)
@@ -272,22 +268,6 @@ fn held_setup(setup: &Setup) -> Setup {
     held
 }
 
-/// The Kreisselmeier-Steinhauser aggregate `max + ln(sum_k exp(rho (v_k - max))) / rho` of
-/// `v`: a smooth upper bound of its largest value, by at most `ln(len) / rho`. One smooth
-/// constraint on the whole stance, where one constraint per sample gives linearisations that
-/// contradict each other when a peak moves in time with the parameters, and the plain maximum
-/// has a kink where two peaks are equal (as at a design whose friction is shaped).
-fn ks(v: &[f64]) -> f64 {
-    let top = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    top + v.iter().map(|x| (RHO * (x - top)).exp()).sum::<f64>().ln() / RHO
-}
-
-/// The stance's friction ratios (capped at [`CAP`]) aggregated by [`ks`].
-fn stance_ks(e: &Evaluation) -> f64 {
-    let ratios: Vec<f64> = e.stance_ratios.iter().map(|r| r.min(CAP)).collect();
-    ks(&ratios)
-}
-
 /// Euclidean distance.
 fn dist(a: &[f64], b: &[f64]) -> f64 {
     a.iter()
@@ -328,6 +308,18 @@ pub(super) fn solve_from(
     let setup = &held;
     let names: Vec<&str> = req.vary.iter().map(|v| v.name.as_str()).collect();
     let n = x0.len();
+    let start =
+        evaluate(setup, cfg, &names, x0, None, !req.max_input.is_empty()).map_err(|message| {
+            DesignError::NoGaitAtStart {
+                at: names
+                    .iter()
+                    .zip(x0)
+                    .map(|(n, v)| format!("{n}={v}"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                message,
+            }
+        })?;
     let prog = Program {
         setup,
         cfg,
@@ -336,20 +328,11 @@ pub(super) fn solve_from(
         n,
         epi: req.objective == Objective::Friction,
         floor_mu0,
+        kinds: kinds(req, start.ramps_end.is_some(), start.max_input.len()),
         seen: RefCell::new(Vec::new()),
         guess: RefCell::new(None),
         grads: RefCell::new(None),
     };
-    let start =
-        evaluate(setup, cfg, &names, x0, None).map_err(|message| DesignError::NoGaitAtStart {
-            at: names
-                .iter()
-                .zip(x0)
-                .map(|(n, v)| format!("{n}={v}"))
-                .collect::<Vec<_>>()
-                .join(", "),
-            message,
-        })?;
     *prog.guess.borrow_mut() = Some(start.reduced.clone());
     prog.seen
         .borrow_mut()
@@ -461,30 +444,20 @@ pub(super) fn solve_from(
         .chain(prog.epi.then_some(false))
         .collect();
     let (kkt_residual, lagrange) = kkt(&df, &g, &dg, &at_lo, &at_hi);
-    let m = &req.margins;
     let mu = prog.mu0(&p);
-    let rows = [
-        (
-            e.fixed_point.max_modulus(),
-            1.0 - m.multiplier,
-            "<=",
-            lagrange[0],
-        ),
-        (e.impact_friction, mu - m.friction, "<=", lagrange[1]),
-        (e.min_normal, m.normal, ">=", lagrange[2]),
-        (e.stance_friction, mu - m.friction, "<=", lagrange[3]),
-    ];
-    let constraints: Vec<ConstraintSlack> = rows
+    let constraints: Vec<ConstraintSlack> = prog
+        .kinds
         .iter()
-        .zip(NAMES)
-        .map(|(&(value, limit, sense, l), name)| {
+        .zip(&lagrange)
+        .map(|(&kind, &l)| {
+            let (value, limit, sense) = row(kind, &e, mu, req);
             let slack = if sense == "<=" {
                 limit - value
             } else {
                 value - limit
             };
             ConstraintSlack {
-                name,
+                name: kind.name(),
                 value,
                 limit,
                 sense,
@@ -499,7 +472,7 @@ pub(super) fn solve_from(
         constraints
             .iter()
             .min_by(|a, b| a.slack.total_cmp(&b.slack))
-            .map_or("multipliers", |c| c.name)
+            .map_or_else(|| "multipliers".to_owned(), |c| c.name.clone())
     });
     let scale = 1.0 + df.iter().fold(0.0_f64, |m, d| m.max(d.abs()));
     let stationary = kkt_residual <= KKT_TOL * scale;
