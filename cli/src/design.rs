@@ -3,7 +3,9 @@
 //! [`walker::design`]; `docs/design.md`). This module parses the flags into a
 //! [`DesignRequest`] and formats the [`Design`] as a table or JSON.
 
-use walker::design::{Design, DesignError, DesignRequest, MAX_RESTARTS, Margins, Objective, Vary};
+use walker::design::{
+    Design, DesignError, DesignRequest, DesignStatus, MAX_RESTARTS, Margins, Objective, Vary,
+};
 
 use crate::args::Common;
 use crate::input::{InputError, number};
@@ -240,13 +242,23 @@ pub fn json(d: &Design) -> String {
     serde_json::to_string(d).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
 }
 
+/// A design's status as its JSON writes it (`optimal`, `feasible`, `infeasible`).
+fn status_name(status: DesignStatus) -> String {
+    serde_json::to_value(status)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_owned))
+        .unwrap_or_default()
+}
+
 /// The design as a table.
 #[must_use]
 pub fn text(d: &Design) -> String {
     let mut s = String::new();
     s.push_str(&format!(
-        "design: {:?} (solver: {}), {} gait evaluations\n",
-        d.status, d.solver, d.evaluations
+        "design: {} (solver: {}), {} gait evaluations\n",
+        status_name(d.status),
+        d.solver,
+        d.evaluations
     ));
     if let Some(v) = &d.violated {
         s.push_str(&format!("violated: {v}\n"));
@@ -289,8 +301,10 @@ pub fn text(d: &Design) -> String {
         for (i, r) in d.restarts.iter().enumerate() {
             match (&r.status, r.value) {
                 (Some(status), Some(value)) => s.push_str(&format!(
-                    "{i:>3} from {:?}: {status:?}, {value:.12} at {:?}\n",
-                    r.start, r.parameters
+                    "{i:>3} from {:?}: {}, {value:.12} at {:?}\n",
+                    r.start,
+                    status_name(*status),
+                    r.parameters
                 )),
                 _ => s.push_str(&format!(
                     "{i:>3} from {:?}: {}\n",

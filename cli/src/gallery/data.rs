@@ -16,6 +16,7 @@ use walker::sim::{SimConfig, Walk, WalkLimits, walk};
 use walker::sweep::{SweepPoint, mu0_grid, sweep_chains};
 use walker::vector::Vector;
 
+use super::designed::{self, Designed};
 use super::entries::{ENTRIES, Entry, Start};
 use super::held::{Held, held};
 use super::laws::{LAWS, Laws};
@@ -65,6 +66,9 @@ pub struct ModelRun {
     pub grid: Vec<f64>,
     /// One sweep per pair of [`LAWS`], in that order.
     pub sweeps: Vec<Sweep>,
+    /// The designed gait beside the hand-made one, for the models of [`designed::MODELS`]
+    /// (else `None`), or why there is none.
+    pub designed: Option<Result<Designed, String>>,
 }
 
 impl ModelRun {
@@ -180,6 +184,9 @@ fn run_model(entry: Entry, mu0s: &[f64], tick: &(dyn Fn() + Sync)) -> Result<Mod
         let chains = sweep_chains(&phis, &make, &cfg, mu0s, initial, &limits, true, tick);
         sweeps.push(Sweep { laws, chains });
     }
+    let designed = designed::MODELS
+        .contains(&entry.model)
+        .then(|| designed::designed(&setup));
     Ok(ModelRun {
         entry,
         slope_param,
@@ -187,6 +194,7 @@ fn run_model(entry: Entry, mu0s: &[f64], tick: &(dyn Fn() + Sync)) -> Result<Mod
         nominal,
         grid: mu0s.to_vec(),
         sweeps,
+        designed,
     })
 }
 

@@ -14,6 +14,7 @@ use walker::sim::StepResult;
 use walker::sweep::SweepPoint;
 
 use super::data::ModelRun;
+use super::designed::Designed;
 use super::entries::Start;
 use super::laws::LAWS;
 use super::outcome::Outcome;
@@ -369,7 +370,52 @@ fn friction(run: &ModelRun) -> Figure {
     f
 }
 
-/// Write the three figures of `run` into `out` (PNG and SVG).
+/// The designed gait beside the hand-made one (`<model>_designed`): the friction each needs
+/// along its step on the model's own slope, and each heel strike's impulse ratio at `t = T`.
+fn designed(run: &ModelRun, d: &Designed) -> Option<Figure> {
+    let hand = run.slopes.get(run.nominal)?.held.as_ref().ok()?;
+    let gaits = [
+        (format!("hand-made gait, needs {:.4}", hand.needs()), hand),
+        (
+            format!(
+                "designed gait ({}), needs {:.4}",
+                d.parameters(),
+                d.held.needs()
+            ),
+            &d.held,
+        ),
+    ];
+    let mut series = Vec::new();
+    for (i, (label, h)) in gaits.into_iter().enumerate() {
+        series.push(Series::new(label, h.profile.clone()).color(i));
+        series.push(
+            Series::new("", vec![(1.0, h.impulse[0] / h.impulse[1])])
+                .color(i)
+                .markers(Marker::Diamond),
+        );
+    }
+    series.push(
+        Series::new("Lambda_t / Lambda_n at the heel strike", Vec::new())
+            .color(BLACK)
+            .markers(Marker::Diamond),
+    );
+    let title = format!(
+        "The {}: the friction a designed gait needs beside the hand-made one's",
+        run.entry.title
+    );
+    let mut f = fig(
+        &title,
+        "t / T",
+        "lambda_t / lambda_n (+: pushes the foot forward)",
+        series,
+        false,
+    );
+    f.legend = Some(SeriesLabelPosition::UpperLeft);
+    Some(f)
+}
+
+/// Write the three figures of `run` into `out` (PNG and SVG), and the designed gait's where
+/// the run has one.
 ///
 /// # Errors
 /// A figure could not be drawn or written.
@@ -396,5 +442,14 @@ pub fn write_figures(out: &Path, run: &ModelRun) -> Result<(), WriteError> {
         message,
     })?;
     save_figure(&overview(run, &shapes, &present), &out.join(m))?;
-    save_figure(&friction(run), &out.join(format!("{m}_friction")))
+    save_figure(&friction(run), &out.join(format!("{m}_friction")))?;
+    if let Some(f) = run
+        .designed
+        .as_ref()
+        .and_then(|d| d.as_ref().ok())
+        .and_then(|d| designed(run, d))
+    {
+        save_figure(&f, &out.join(format!("{m}_designed")))?;
+    }
+    Ok(())
 }

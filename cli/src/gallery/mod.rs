@@ -5,7 +5,7 @@
 //!
 //! One concept per file: the walkers and their slopes ([`entries`]), the contact laws
 //! ([`laws`]), the held gait and the friction it needs ([`held`]), the sweeps ([`data`]), what
-//! became of a walk ([`outcome`]), a claim and its verdict ([`claims`]), the claims every model
+//! became of a walk ([`outcome`]), a designed gait beside the hand-made one ([`designed`]), a claim and its verdict ([`claims`]), the claims every model
 //! gets ([`generic`]) and each model's own ([`rimless`], [`compass`], [`three_link`]), the CSV
 //! files ([`csv`]), the figures ([`figures`]), the bifurcation diagrams by continuation and
 //! their claims ([`bifurcation`]), the summary ([`mod@summary`]) and the whole job ([`job`]). The figures, CSV and error machinery are `walker reproduce`'s
@@ -13,13 +13,14 @@
 //!
 //! Imports run one way: [`job`] -> [`mod@summary`] -> [`generic`], [`rimless`], [`compass`],
 //! [`three_link`], [`bifurcation`] -> [`claims`] (and [`bifurcation`] -> [`entries`]); those and [`figures`], [`csv`] -> [`data`] -> [`entries`],
-//! [`held`], [`outcome`], [`laws`] (and [`held`] -> [`laws`]).
+//! [`designed`], [`held`], [`outcome`], [`laws`] (and [`designed`] -> [`held`] -> [`laws`]).
 
 pub mod bifurcation;
 pub mod claims;
 pub mod compass;
 pub mod csv;
 pub mod data;
+pub mod designed;
 pub mod entries;
 pub mod figures;
 pub mod generic;

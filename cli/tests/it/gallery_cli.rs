@@ -53,6 +53,9 @@ fn gallery_writes_every_file_and_every_claim_holds() {
             nonempty(format!("{}.csv", c.replace("{}", m)));
         }
     }
+    // The three-link biped's designed gait beside its hand-made one (`gallery/designed.rs`).
+    nonempty("three-link_designed.png".to_owned());
+    nonempty("three-link_designed.svg".to_owned());
     for d in DIAGRAMS {
         for ext in ["png", "svg", "csv"] {
             nonempty(format!("bifurcation_{d}.{ext}"));

@@ -63,7 +63,7 @@ impl Evaluation {
 /// map from `guess` (section coordinates) where given and converging, else the fixed-point
 /// search of `walker fixed-point` from the model's start; then one step from the fixed point
 /// sampled `SAMPLES` (400) times on the dense output. With `ramp_inputs`, the inputs are also
-/// read just before each ramp's end inside the step ([`inputs_before_ramp_ends`]): where a
+/// read just before each ramp's end inside the step (`inputs_before_ramp_ends`): where a
 /// ramp's second derivative does not vanish at its end (a Bezier's, unlike the paper's
 /// quintic) the input jumps there, and its largest value is the left limit, which samples on a
 /// grid miss.

@@ -271,6 +271,7 @@ impl<'s> FloorWalker<'s> {
                 .map(|f| FloorSteps::in_lane(f, index, 1)),
             next: None,
             current: None,
+            step: None,
             seen: None,
             error: None,
         }
@@ -360,6 +361,9 @@ struct PerStep<'w, 's> {
     next: Option<(f64, f64)>,
     /// The last step's `(mu0, phi)` and model.
     current: Option<((f64, f64), Model)>,
+    /// The step `current` was asked for: asked again (the failure's frame of a trajectory,
+    /// after the walk), the same model, not the next step's.
+    step: Option<usize>,
     /// The slope of the last step seen by [`StepModels::origin`] and the point its floor was
     /// seen from.
     seen: Option<(f64, [f64; 2])>,
@@ -388,7 +392,10 @@ impl StepModels for PerStep<'_, '_> {
         self.walker.setup.walker.spec().n
     }
 
-    fn model(&mut self, _step: usize) -> Option<&Model> {
+    fn model(&mut self, step: usize) -> Option<&Model> {
+        if self.step == Some(step) && self.next.is_none() {
+            return self.current.as_ref().map(|(_, m)| m);
+        }
         let values = match self.next.take() {
             Some(v) => v,
             None => self.draw(),
@@ -431,6 +438,7 @@ impl StepModels for PerStep<'_, '_> {
                 }
             }
         }
+        self.step = Some(step);
         self.current.as_ref().map(|(_, m)| m)
     }
 
@@ -470,5 +478,37 @@ impl StepModels for PerStep<'_, '_> {
         };
         self.seen = Some((phi, point));
         Ok((point != [0.0, 0.0]).then_some(point))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use walker_scene::FloorSpec;
+
+    use super::FloorWalker;
+    use crate::setup::Setup;
+    use crate::sim::StepModels;
+
+    /// A trajectory asks for the failing step's model again after the walk (to draw the frame
+    /// at the failure): that is the step's own model, not the next step's.
+    #[test]
+    fn the_model_of_a_step_asked_again_is_that_steps_not_the_next() {
+        let mut setup = Setup::active_level().expect("the built-in scene");
+        setup
+            .set("T_set", 0.3)
+            .expect("T_set is a run-time parameter");
+        let walker = FloorWalker::new(
+            &setup,
+            FloorSpec::Steps {
+                mu0: vec![0.4, 0.05, 0.6],
+            },
+        )
+        .expect("the floor carries the walker");
+        let mut steps = walker.per_step(0);
+        let mu0 = |m: Option<&crate::model::Model>| m.expect("a model").mu0();
+        assert_eq!(mu0(steps.model(0)), 0.4);
+        assert_eq!(mu0(steps.model(1)), 0.05);
+        assert_eq!(mu0(steps.model(1)), 0.05, "asked again");
+        assert_eq!(mu0(steps.model(2)), 0.6);
     }
 }

@@ -133,7 +133,10 @@ mod tests {
             period: 0.6,
             speed: 0.9,
             dx: 0.55,
-            floor: Some(StepFloor { mu0: 0.4 }),
+            floor: Some(StepFloor {
+                mu0: 0.4,
+                phi: Some(0.05),
+            }),
             foot_impulse: [0.1, 1.2],
             foot_normal_velocity: 0.0,
             impact: ImpactRegime::Reverse(Slide::Backward),
