@@ -16,6 +16,7 @@ use walker::sweep::SweepPoint;
 use super::data::ModelRun;
 use super::designed::Designed;
 use super::entries::Start;
+use super::held::Held;
 use super::laws::LAWS;
 use super::outcome::Outcome;
 use crate::plot::{BLACK, Figure, Marker, Series, save_grid};
@@ -337,56 +338,15 @@ fn overview(run: &ModelRun, shapes: &Shapes, present: &[Outcome]) -> Figure {
     f
 }
 
-/// The friction the held gait needs: `lambda_t / lambda_n` along the step on each slope, and
-/// the heel strike's `Lambda_t / Lambda_n` at `t = T`.
-fn friction(run: &ModelRun) -> Figure {
+/// Held gaits' friction figure: each gait `(label, held, colour)`, the ratio
+/// `lambda_t / lambda_n` along its step as a line and its heel strike's `Lambda_t / Lambda_n` as
+/// a diamond at `t = T`.
+fn friction_figure<'h>(
+    title: &str,
+    gaits: impl IntoIterator<Item = (String, &'h Held, usize)>,
+) -> Figure {
     let mut series = Vec::new();
-    for (i, s) in run.slopes.iter().enumerate() {
-        let Ok(h) = &s.held else { continue };
-        series.push(Series::new(run.slope_label(i), h.profile.clone()).color(i));
-        series.push(
-            Series::new("", vec![(1.0, h.impulse[0] / h.impulse[1])])
-                .color(i)
-                .markers(Marker::Diamond),
-        );
-    }
-    series.push(
-        Series::new("Lambda_t / Lambda_n at the heel strike", Vec::new())
-            .color(BLACK)
-            .markers(Marker::Diamond),
-    );
-    let title = format!(
-        "The {}'s held gait: friction it needs along a step",
-        run.entry.title
-    );
-    let mut f = fig(
-        &title,
-        "t / T",
-        "lambda_t / lambda_n (+: pushes the foot forward)",
-        series,
-        false,
-    );
-    f.legend = Some(SeriesLabelPosition::UpperLeft);
-    f
-}
-
-/// The designed gait beside the hand-made one (`<model>_designed`): the friction each needs
-/// along its step on the model's own slope, and each heel strike's impulse ratio at `t = T`.
-fn designed(run: &ModelRun, d: &Designed) -> Option<Figure> {
-    let hand = run.slopes.get(run.nominal)?.held.as_ref().ok()?;
-    let gaits = [
-        (format!("hand-made gait, needs {:.4}", hand.needs()), hand),
-        (
-            format!(
-                "designed gait ({}), needs {:.4}",
-                d.parameters(),
-                d.held.needs()
-            ),
-            &d.held,
-        ),
-    ];
-    let mut series = Vec::new();
-    for (i, (label, h)) in gaits.into_iter().enumerate() {
+    for (label, h, i) in gaits {
         series.push(Series::new(label, h.profile.clone()).color(i));
         series.push(
             Series::new("", vec![(1.0, h.impulse[0] / h.impulse[1])])
@@ -399,19 +359,57 @@ fn designed(run: &ModelRun, d: &Designed) -> Option<Figure> {
             .color(BLACK)
             .markers(Marker::Diamond),
     );
-    let title = format!(
-        "The {}: the friction a designed gait needs beside the hand-made one's",
-        run.entry.title
-    );
     let mut f = fig(
-        &title,
+        title,
         "t / T",
         "lambda_t / lambda_n (+: pushes the foot forward)",
         series,
         false,
     );
     f.legend = Some(SeriesLabelPosition::UpperLeft);
-    Some(f)
+    f
+}
+
+/// The friction the held gait needs: `lambda_t / lambda_n` along the step on each slope, and
+/// the heel strike's `Lambda_t / Lambda_n` at `t = T`.
+fn friction(run: &ModelRun) -> Figure {
+    let title = format!(
+        "The {}'s held gait: friction it needs along a step",
+        run.entry.title
+    );
+    friction_figure(
+        &title,
+        run.slopes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| s.held.as_ref().ok().map(|h| (run.slope_label(i), h, i))),
+    )
+}
+
+/// The designed gait beside the hand-made one (`<model>_designed`): the friction each needs
+/// along its step on the model's own slope, and each heel strike's impulse ratio at `t = T`.
+fn designed(run: &ModelRun, d: &Designed) -> Option<Figure> {
+    let hand = run.slopes.get(run.nominal)?.held.as_ref().ok()?;
+    let title = format!(
+        "The {}: the friction a designed gait needs beside the hand-made one's",
+        run.entry.title
+    );
+    let designed = format!(
+        "designed gait ({}), needs {:.4}",
+        d.parameters(),
+        d.held.needs()
+    );
+    Some(friction_figure(
+        &title,
+        [
+            (
+                format!("hand-made gait, needs {:.4}", hand.needs()),
+                hand,
+                0,
+            ),
+            (designed, &d.held, 1),
+        ],
+    ))
 }
 
 /// Write the three figures of `run` into `out` (PNG and SVG), and the designed gait's where
