@@ -38,11 +38,17 @@ pub fn walk_json(w: &Walk) -> String {
     serde_json::to_string(&report).unwrap_or_default()
 }
 
-/// A text table of a walk, with each step's `mu0` for a walk on a floor of its own.
+/// A text table of a walk, with each step's `mu0` for a walk on a floor of its own (and its
+/// slope `phi` where the floor sets it).
 pub fn walk_text(w: &Walk) -> String {
     let floored = w.steps.iter().any(|s| s.floor.is_some());
+    let sloped = w
+        .steps
+        .iter()
+        .any(|s| s.floor.is_some_and(|f| f.phi.is_some()));
     let mut s = String::from("step          T         dx          V          p         SR");
-    s.push_str(if floored { "        mu0\n" } else { "\n" });
+    s.push_str(if floored { "        mu0" } else { "" });
+    s.push_str(if sloped { "        phi\n" } else { "\n" });
     let opt = |v: Option<f64>| v.map_or_else(|| "-".to_owned(), |x| format!("{x:.6}"));
     for (k, st) in w.steps.iter().enumerate() {
         s.push_str(&format!(
@@ -55,6 +61,9 @@ pub fn walk_text(w: &Walk) -> String {
         ));
         if floored {
             s.push_str(&format!(" {:>10}", opt(st.floor.map(|f| f.mu0))));
+        }
+        if sloped {
+            s.push_str(&format!(" {:>10}", opt(st.floor.and_then(|f| f.phi))));
         }
         s.push('\n');
     }
