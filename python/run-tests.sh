@@ -2,7 +2,7 @@
 # The Python tests: make a virtual environment (python/.venv, git-ignored), install the pinned
 # test requirements and this package (built by maturin from the Rust crate), and run pytest.
 # Usage: bash python/run-tests.sh [pytest arguments]
-#        bash python/run-tests.sh --environment-only   (the environment and requirements only)
+#        bash python/run-tests.sh --install-only   (the environment, requirements and package only)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 cd "$here"
@@ -12,13 +12,13 @@ if [ ! -x .venv/bin/python ]; then
 fi
 .venv/bin/python -m pip install --quiet --upgrade pip
 .venv/bin/python -m pip install --quiet -r requirements-test.txt
-if [ "${1:-}" = "--environment-only" ]; then
-    exit 0
-fi
 # The pinned maturin of the requirements builds the package (no isolated build environment to
 # fetch a second copy into; maturin's build hook runs the `maturin` on the PATH).
 PATH="$here/.venv/bin:$PATH" .venv/bin/python -m pip install --quiet --force-reinstall --no-deps \
     --no-build-isolation .
+if [ "${1:-}" = "--install-only" ]; then
+    exit 0
+fi
 # From tests/, so that the installed package is imported, not the source folder.
 cd tests
 exec ../.venv/bin/python -m pytest -q -p no:cacheprovider "$@"
