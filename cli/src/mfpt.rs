@@ -143,13 +143,7 @@ pub fn mfpt_json(r: &MeshReport, mc: Option<&Survival>) -> serde_json::Value {
     if let (Some(mc), Some(map)) = (mc, v.as_object_mut()) {
         map.insert(
             "monte_carlo".to_owned(),
-            serde_json::json!({
-                "walks": mc.walks,
-                "failures": mc.failures,
-                "censored": mc.censored,
-                "mfpt": mc.mfpt,
-                "failures_by_kind": mc.failures_by_kind,
-            }),
+            serde_json::to_value(mc.summary()).unwrap_or_default(),
         );
     }
     v

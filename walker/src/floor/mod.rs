@@ -28,7 +28,9 @@ mod translate;
 mod walker;
 
 pub use error::FloorError;
-pub use stats::{Estimate, Mfpt, Survival, SurvivalPoint, SurviveOutcome, survival};
+pub use stats::{
+    Estimate, Mfpt, Survival, SurvivalPoint, SurvivalSummary, SurviveOutcome, survival,
+};
 pub use steps::FloorSteps;
 pub use survive::{MAX_SURVIVE_STEPS, MAX_WALKS, SurviveReport, survive, survive_stoppable};
 pub use walker::FloorWalker;

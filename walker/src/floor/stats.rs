@@ -89,6 +89,35 @@ pub struct Survival {
     pub failures_by_kind: BTreeMap<String, usize>,
 }
 
+/// [`Survival`] without its curve: what `walker mfpt --walks` reports of its Monte Carlo check.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SurvivalSummary<'a> {
+    /// Walks.
+    pub walks: usize,
+    /// Walks that failed.
+    pub failures: usize,
+    /// Walks that reached the step limit (censored).
+    pub censored: usize,
+    /// The mean first-passage time.
+    pub mfpt: &'a Mfpt,
+    /// Failures by kind (name: count), in name order.
+    pub failures_by_kind: &'a BTreeMap<String, usize>,
+}
+
+impl Survival {
+    /// The statistics without the survival curve.
+    #[must_use]
+    pub fn summary(&self) -> SurvivalSummary<'_> {
+        SurvivalSummary {
+            walks: self.walks,
+            failures: self.failures,
+            censored: self.censored,
+            mfpt: &self.mfpt,
+            failures_by_kind: &self.failures_by_kind,
+        }
+    }
+}
+
 /// The statistics of `outcomes` (at least one).
 #[must_use]
 pub fn survival(outcomes: &[SurviveOutcome]) -> Survival {
