@@ -19,6 +19,34 @@ use crate::vector::MAX_COORDINATES;
 /// model with [`MAX_COORDINATES`] coordinates and as many inputs.
 const MAX_JAC: usize = 2 * MAX_COORDINATES * (3 * MAX_COORDINATES + 1);
 
+/// The kernels' outputs [`StanceJacobian::accel_with`] works in (`5.3` kB: zeroed once by
+/// [`Scratch::new`], then overwritten where read).
+#[derive(Clone)]
+pub struct Scratch {
+    /// The stance Jacobian kernel's output (after [`StanceJacobian::accel_with`] in a contact
+    /// that is not stuck: its rows with the columns `[q, qd, mu, v]`).
+    pub(crate) k: [f64; MAX_JAC],
+    /// `output_rates_jacobian`'s output.
+    rates: [f64; 4 * MAX_COORDINATES * MAX_COORDINATES],
+}
+
+impl Scratch {
+    /// A zeroed scratch.
+    #[must_use]
+    pub fn new() -> Self {
+        Self {
+            k: [0.0; MAX_JAC],
+            rates: [0.0; 4 * MAX_COORDINATES * MAX_COORDINATES],
+        }
+    }
+}
+
+impl Default for Scratch {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 /// Why a model's stance has no analytic Jacobian.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum NoJacobian {
@@ -111,11 +139,26 @@ impl<'a> StanceJacobian<'a> {
     /// zero: the foot is held). The contact's kernels must exist
     /// ([`StanceJacobian::has_contact`]).
     pub fn accel_in(&self, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
+        self.accel_with(t, y, contact, out, &mut Scratch::new());
+    }
+
+    /// [`StanceJacobian::accel_in`] with the kernels' outputs in `scratch`: a caller that
+    /// evaluates the Jacobian at every right-hand side (the variational equations) keeps one
+    /// [`Scratch`] instead of zeroing a new one per call. The rows written are those `out`
+    /// holds: `n` (the accelerations' only) or `n + m`.
+    pub fn accel_with(
+        &self,
+        t: f64,
+        y: &[f64],
+        contact: Contact,
+        out: &mut [f64],
+        scratch: &mut Scratch,
+    ) {
         let m = self.model;
         let (n, inputs) = (m.n(), m.inputs());
         let (q, qd) = (&y[..n], &y[n..2 * n]);
+        let Scratch { k, rates } = scratch;
         if m.is_stuck(contact) {
-            let mut k = [0.0; MAX_JAC];
             self.stick(y, &mut k[..(n + 2) * 2 * n]);
             out[..n * 2 * n].copy_from_slice(&k[..n * 2 * n]);
             return;
@@ -123,7 +166,6 @@ impl<'a> StanceJacobian<'a> {
         let sliding = contact != Contact::Smooth;
         let sigma = contact.sigma();
         let cols = 2 * n + 1 + inputs;
-        let mut k = [0.0; MAX_JAC];
         let dmu = if sliding { 0.0 } else { self.dmu(qd[0]) };
         if inputs == 0 {
             m.kernels().eval(
@@ -158,14 +200,15 @@ impl<'a> StanceJacobian<'a> {
             &mut k[..(n + inputs) * cols],
         );
         // d v_k / d y_j = -(K_P d y_k / d y_j) - K_D d yd_k / d y_j.
-        let mut rates = [0.0; 4 * MAX_COORDINATES * MAX_COORDINATES];
         m.kernels().eval(
             KernelId::OutputRatesJacobian,
             &Args::state(q, qd),
             &mut rates[..2 * inputs * 2 * n],
         );
         let (k_p, k_d) = m.gains();
-        for i in 0..n + inputs {
+        // The rows the caller asks for: `n` (the accelerations) or `n + m` (with the inputs).
+        let rows = (out.len() / (2 * n)).min(n + inputs);
+        for i in 0..rows {
             let row = &k[i * cols..(i + 1) * cols];
             for j in 0..2 * n {
                 let mut d = row[j];
