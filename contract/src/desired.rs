@@ -48,6 +48,45 @@ impl Desired {
         }
     }
 
+    /// `d [y_d, yd_d, ydd_d] / dp` at time `t` for a parameter `p` that moves this
+    /// trajectory's values at the rates `rate` (the same shape, its values the derivatives in
+    /// `p` of this one's: `from`, `to`, the points or the constant, and the duration). `None`
+    /// where the shapes differ.
+    ///
+    /// The values enter linearly at a fixed duration `T`, so their part is the trajectory of
+    /// the rates over `T`; the duration scales time, `y_d(t) = Y(t / T)`, so its part is
+    /// `-(dT / T) [t yd_d, t ydd_d + yd_d, t yddd_d + 2 ydd_d]` before the ramp's end and zero
+    /// after it (the switch itself moves with `T`: a breakpoint whose time has the rate `dT`).
+    #[must_use]
+    pub fn rate(&self, rate: &Desired, t: f64) -> Option<[f64; 3]> {
+        let (values, duration, d_duration, jerk) = match (self, rate) {
+            (Desired::Hold(_), Desired::Hold(dv)) => return Some([*dv, 0.0, 0.0]),
+            (Desired::Quintic(r), Desired::Quintic(dr)) => (
+                Ramp::new(dr.from, dr.to, r.duration).at(t),
+                r.duration,
+                dr.duration,
+                r.jerk(t),
+            ),
+            (Desired::Bezier(b), Desired::Bezier(db)) if b.len == db.len => (
+                Bezier::new(&db.points[..db.len], b.duration).at(t),
+                b.duration,
+                db.duration,
+                b.jerk(t),
+            ),
+            _ => return None,
+        };
+        if t >= duration || d_duration == 0.0 {
+            return Some(values);
+        }
+        let [_, yd, ydd] = self.at(t);
+        let k = d_duration / duration;
+        Some([
+            values[0] - k * t * yd,
+            values[1] - k * (t * ydd + yd),
+            values[2] - k * (t * jerk + 2.0 * ydd),
+        ])
+    }
+
     /// The end of the ramp (`None` for a constant): the control switches there, so it is a
     /// breakpoint of the integration.
     #[must_use]
@@ -115,6 +154,17 @@ impl Ramp {
         let yd = self.c1 * s2 * (1.0 - 2.0 * s + s2);
         let ydd = self.c2 * s * (1.0 - 3.0 * s + 2.0 * s2);
         [y, yd, ydd]
+    }
+
+    /// The third derivative `yddd_d = (60 a / duration^3) (1 - 6 s + 6 s^2)` at `t` (zero from
+    /// `duration` on): what the derivative in the duration needs ([`Desired::rate`]).
+    #[must_use]
+    pub fn jerk(&self, t: f64) -> f64 {
+        if t >= self.duration {
+            return 0.0;
+        }
+        let s = t.max(0.0) * self.inv_duration;
+        self.c2 * self.inv_duration * (1.0 - 6.0 * s + 6.0 * s * s)
     }
 }
 
@@ -184,6 +234,29 @@ impl Bezier {
     }
 }
 
+impl Bezier {
+    /// The third derivative `yddd_d = (M (M - 1) (M - 2) / duration^3) sum_k (third
+    /// difference of the points)_k B_k^{M-3}(s)` at `t` (zero from `duration` on, and for an
+    /// order below 3): what the derivative in the duration needs ([`Desired::rate`]).
+    #[must_use]
+    pub fn jerk(&self, t: f64) -> f64 {
+        let n = self.len;
+        if t >= self.duration || n < 4 {
+            return 0.0;
+        }
+        let s = t.max(0.0) * self.inv_duration;
+        let mut d = self.points;
+        for r in 1..=3 {
+            for k in 0..n - r {
+                d[k] = d[k + 1] - d[k];
+            }
+        }
+        let m = (n - 1) as f64;
+        let inv = self.inv_duration;
+        m * (m - 1.0) * (m - 2.0) * inv * inv * inv * casteljau(&d[..n - 3], s)
+    }
+}
+
 /// The Bezier polynomial with control points `c` at `s` by de Casteljau's algorithm (0 for no
 /// points).
 #[inline]
@@ -212,6 +285,53 @@ pub fn aux_input(desired: [f64; 3], y: f64, ydot: f64, k_p: f64, k_d: f64) -> f6
 #[cfg(test)]
 mod tests {
     use super::Ramp;
+
+    /// `rate` is the derivative in a parameter: for the quintic and a Bezier whose values and
+    /// duration all move with `p`, against central differences of the trajectories built at
+    /// `p +- h` (`h = 1e-5`: truncation about `h^2` times the third derivative in `p`, rounding
+    /// about `1e-16 / h`; both below `1e-8` of the scales the test divides by), at times
+    /// before and after the ramp's end.
+    #[test]
+    fn rate_is_the_derivative_in_a_parameter() {
+        use super::Desired;
+        // p moves from, to, the points and the duration (T = 0.3 + 0.2 p).
+        let quintic = |p: f64| Desired::Quintic(Ramp::new(-0.2 - p, 0.3 + 2.0 * p, 0.3 + 0.2 * p));
+        let bezier = |p: f64| {
+            Desired::Bezier(super::Bezier::new(
+                &[-0.2, 0.1 * p, 0.4 - p, 0.2, 0.5 + p * p, 0.3],
+                0.3 + 0.2 * p,
+            ))
+        };
+        let rates = [
+            Desired::Quintic(Ramp::new(-1.0, 2.0, 0.2)),
+            Desired::Bezier(super::Bezier::new(
+                &[0.0, 0.1, -1.0, 0.0, 2.0 * 0.7, 0.0],
+                0.2,
+            )),
+        ];
+        let (p, h) = (0.7, 1e-5);
+        for (traj, rate) in [
+            (&quintic as &dyn Fn(f64) -> Desired, rates[0]),
+            (&bezier, rates[1]),
+        ] {
+            for k in 0..=24 {
+                let t = 0.5 * f64::from(k) / 24.0;
+                let (up, down) = (traj(p + h).at(t), traj(p - h).at(t));
+                let exact = traj(p).rate(&rate, t).expect("same shape");
+                for i in 0..3 {
+                    let fd = (up[i] - down[i]) / (2.0 * h);
+                    let scale = 1.0 + up[i].abs().max(fd.abs());
+                    // A time within h of the moving ramp's end is not differentiable there.
+                    if (t - (0.3 + 0.2 * p)).abs() > 1e-3 {
+                        assert!(
+                            (exact[i] - fd).abs() < 1e-6 * scale,
+                            "t = {t}, {i}: {exact:?} {fd}"
+                        );
+                    }
+                }
+            }
+        }
+    }
 
     /// The paper's boundary conditions (Section 3.2): `y_d(0) = -alpha/2`, `y_d(T_set) =
     /// alpha/2`, both derivatives zero at both ends; the derivatives are those of `y_d`

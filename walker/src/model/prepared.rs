@@ -184,6 +184,22 @@ impl Model {
         self.desired.get(i).map_or([f64::NAN; 3], |d| d.at(t))
     }
 
+    /// The desired trajectory of output `i`.
+    pub(crate) fn desired_trajectory(&self, i: usize) -> &Desired {
+        &self.desired[i]
+    }
+
+    /// The outputs and their rates `[y, ydot]` (`output_rates`, `2m` numbers into `out`) at the
+    /// state `y`.
+    pub(crate) fn output_rates(&self, y: &[f64], out: &mut [f64]) {
+        let n = self.n();
+        self.kernels.eval(
+            KernelId::OutputRates,
+            &Args::state(&y[..n], &y[n..2 * n]),
+            out,
+        );
+    }
+
     /// Whether every desired trajectory is finite at `t` (a ramp so short that its second
     /// derivative's scale overflows is not); always for a passive walker.
     #[must_use]

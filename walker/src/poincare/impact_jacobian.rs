@@ -57,6 +57,20 @@ pub(crate) fn coulomb_impact_jacobian(
     Some(out)
 }
 
+/// `d qd+ / d mu0` of the impact with friction at the pre-impact state `pre`, in `regime` (`n`
+/// numbers): Richardson-extrapolated central differences of the regime's map in `mu0` (the
+/// algebraic map of [`crate::model::in_regime`], as for the coordinates' columns above: error
+/// about `2e-10`); `None` where the regime's map is not defined at a point of the stencil.
+pub(crate) fn coulomb_impact_mu0_rate(
+    model: &Model,
+    pre: &[f64],
+    regime: ImpactRegime,
+) -> Option<Vec<f64>> {
+    let ing = model.impact_ingredients(&Vector::from_slice(pre));
+    let map = |mu0: &Vector| in_regime(&ing, mu0[0], regime).map(|l| ing.velocity(l));
+    coordinate_column(&map, &[model.mu0()], 0)
+}
+
 /// `d qd+_i / d [q, qd]_j` of the frictionless impact map ([`Model::impact`]) at the pre-impact
 /// state `pre`, for a model without the `impact_jacobian` kernel (no closed form): the map is
 /// linear in the velocities at fixed coordinates (`qd+ = (I - M^-1 J^T (J M^-1 J^T)^-1 J) qd`),

@@ -9,7 +9,10 @@ use crate::vector::{MAX_LEN, Vector};
 
 use super::error::MapError;
 use super::finite_difference::finite_difference_map;
-use super::impact_jacobian::{coulomb_impact_jacobian, frictionless_impact_jacobian};
+use super::impact_jacobian::{
+    coulomb_impact_jacobian, coulomb_impact_mu0_rate, frictionless_impact_jacobian,
+};
+use super::parameter::ParameterRates;
 use super::result::{JacobianMethod, MapResult};
 use super::variational::{PhaseError, StanceEnd, field, stance};
 
@@ -29,6 +32,29 @@ macro_rules! with_variational_size {
             }
             5 => {
                 const $na: usize = 10 + 100;
+                $body
+            }
+            _ => $other,
+        }
+    };
+}
+
+/// Evaluates `$body` with `$na` set to the size `2n + (2n)^2 + 2n` of the state with the
+/// variational equations and one parameter's column, for `n` from 3 to 5; `$other` for any
+/// other `n`.
+macro_rules! with_parameter_size {
+    ($n:expr, $na:ident => $body:expr, _ => $other:expr) => {
+        match $n {
+            3 => {
+                const $na: usize = 6 + 36 + 6;
+                $body
+            }
+            4 => {
+                const $na: usize = 8 + 64 + 8;
+                $body
+            }
+            5 => {
+                const $na: usize = 10 + 100 + 10;
                 $body
             }
             _ => $other,
@@ -111,12 +137,67 @@ pub fn poincare_map_with(
         Ok(jac) => (jac, *cfg),
         Err(_) => (StanceJacobian::any_law(model), tight(cfg)),
     };
-    let out = with_variational_size!(model.n(), NA => variational_map::<NA>(model, &cfg, s, jac),
+    let out = with_variational_size!(model.n(), NA => variational_map::<NA>(model, &cfg, s, jac, None),
         _ => Err(PhaseError::NoKernel));
     match out {
-        Ok(r) => Ok(r),
+        Ok((r, _)) => Ok(r),
         Err(PhaseError::Map(e)) => Err(e),
         Err(PhaseError::NoKernel) => finite_difference_map(model, &cfg, s),
+    }
+}
+
+/// The Poincare map's exact derivative in one run-time parameter `p` (`parameter.rs`), for a
+/// start that moves with `p` at `d s / dp` (`start_rate`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParameterColumn {
+    /// `d state_plus / dp` (`2n` numbers, `[q, qd]`).
+    pub d_state: Vec<f64>,
+    /// `dT / dp`.
+    pub d_period: f64,
+    /// `d (dx) / dp`.
+    pub d_dx: f64,
+}
+
+/// The map at `s` ([`poincare_map`], by the variational equations) with its exact derivative in
+/// the parameter `name` for a start that moves with it at `start_rate` (`d s / dp`, `2n`
+/// numbers: the section's given components' rates, [`super::Section::rate`], plus any direction
+/// of a derivative along a curve): one variational integration with the column `psi = ds/dp`
+/// beside `Phi`, driven by `d f / dp`, jumping where a ramp's end moves with `p`, through the
+/// saltation of every event (with the slip guard's own rate in `mu0`), the strike's time
+/// (`dT/dp = -g_y psi / g_y f`), the impact (its rate in `mu0` under Coulomb friction) and the
+/// relabelling (`docs/poincare.md`, "Exact parameter columns").
+///
+/// `Ok(None)` where the column has no exact form here: `name` is not a parameter or enters the
+/// mechanics, the model's kernels do not differentiate a phase the step goes through, or it
+/// has more than five coordinates (the caller differences the map in `p`).
+///
+/// # Errors
+/// [`MapError`]: the step could not be taken.
+pub fn parameter_column(
+    model: &Model,
+    cfg: &SimConfig,
+    s: &[f64],
+    name: &str,
+    start_rate: &[f64],
+) -> Result<Option<(MapResult, ParameterColumn)>, MapError> {
+    let m = 2 * model.n();
+    if s.len() != m || start_rate.len() != m || !s.iter().chain(start_rate).all(|v| v.is_finite()) {
+        return Err(MapError::NonFiniteStart);
+    }
+    let Some(rates) = ParameterRates::of(model, name) else {
+        return Ok(None);
+    };
+    let (jac, cfg) = match StanceJacobian::new(model) {
+        Ok(jac) => (jac, *cfg),
+        Err(_) => (StanceJacobian::any_law(model), tight(cfg)),
+    };
+    let param = Some((&rates, start_rate));
+    let out = with_parameter_size!(model.n(), NA => variational_map::<NA>(model, &cfg, s, jac, param),
+        _ => Err(PhaseError::NoKernel));
+    match out {
+        Ok((r, Some(c))) => Ok(Some((r, c))),
+        Ok((_, None)) | Err(PhaseError::NoKernel) => Ok(None),
+        Err(PhaseError::Map(e)) => Err(e),
     }
 }
 
@@ -136,14 +217,15 @@ fn variational_map<const NA: usize>(
     cfg: &SimConfig,
     s: &[f64],
     jac: StanceJacobian<'_>,
-) -> Result<MapResult, PhaseError> {
+    param: Option<(&ParameterRates, &[f64])>,
+) -> Result<(MapResult, Option<ParameterColumn>), PhaseError> {
     let n = model.n();
     let m = 2 * n;
     let StanceEnd {
         t: te,
         y: ye,
         contact,
-    } = stance::<NA>(model, cfg, s, jac)?;
+    } = stance::<NA>(model, cfg, s, jac, param)?;
     let pre = Vector::from_slice(&ye[..m]);
     let mut phi: Vec<Vec<f64>> = (0..m)
         .map(|i| ye[m + m * i..m + m * (i + 1)].to_vec())
@@ -164,6 +246,14 @@ fn variational_map<const NA: usize>(
             phi[i][j] -= f[i] * g_row[j] / gf;
         }
     }
+    // The parameter's column: the strike moves by dT = -g_y psi / (g_y f), psi <- psi + f dT.
+    let psi_at = m + m * m;
+    let strike = param.map(|_| {
+        let psi = &ye[psi_at..psi_at + m];
+        let d_period = -(0..m).map(|k| g[k] * psi[k]).sum::<f64>() / gf;
+        let psi: Vec<f64> = (0..m).map(|i| psi[i] + f[i] * d_period).collect();
+        (psi, d_period)
+    });
     // Impact: positions unchanged, velocities from the impact.
     let imp = model
         .impact(&pre)
@@ -192,8 +282,40 @@ fn variational_map<const NA: usize>(
     // Relabelling to the new stance leg (the simulator's own, `Model::reset`), then measured
     // from the new foot: `x` and `z` are cyclic and reduced to zero.
     let post = model.reset(&pre, &imp);
-    let dres = relabel_jacobian(model, &pre, &imp.qd);
+    let (dres, x_row) = relabel_jacobian(model, &pre, &imp.qd);
     let mut product = matmul(&dres, &matmul(&dimp, &phi));
+    let column = match (strike, param) {
+        (Some((psi, d_period)), Some((rates, start_rate))) => {
+            // Through the impact (with its own rate in mu0 under Coulomb friction) and the
+            // relabelling; the step's length from the new foot's x.
+            let mut psi_imp: Vec<f64> = dimp
+                .iter()
+                .map(|row| row.iter().zip(&psi).map(|(a, b)| a * b).sum())
+                .collect();
+            if !matches!(imp.regime, ImpactRegime::Frictionless) && rates.d_mu0 != 0.0 {
+                let d = coulomb_impact_mu0_rate(model, &pre, imp.regime)
+                    .ok_or(MapError::NonFiniteImpact { t: te })?;
+                for i in 0..n {
+                    psi_imp[n + i] += d[i] * rates.d_mu0;
+                }
+            }
+            let x_rate: f64 = x_row.iter().zip(&psi_imp).map(|(a, b)| a * b).sum();
+            let mut d_state: Vec<f64> = dres
+                .iter()
+                .map(|row| row.iter().zip(&psi_imp).map(|(a, b)| a * b).sum())
+                .collect();
+            if imp.regime == ImpactRegime::Stick {
+                d_state[n] = 0.0;
+                d_state[n + 1] = 0.0;
+            }
+            Some(ParameterColumn {
+                d_state,
+                d_period,
+                d_dx: (x_rate - start_rate[0]) / model.phi().cos(),
+            })
+        }
+        _ => None,
+    };
     if imp.regime == ImpactRegime::Stick {
         // The new foot is at rest exactly (`Model::reset`): its velocity's rows are zero, not
         // the rounding of the regime's `v_t+ = v_n+ = 0`.
@@ -206,18 +328,21 @@ fn variational_map<const NA: usize>(
     let ok = state_plus
         .iter()
         .chain(product.iter().flatten())
+        .chain(column.iter().flat_map(|c| c.d_state.iter()))
+        .chain(column.iter().flat_map(|c| [&c.d_period, &c.d_dx]))
         .all(|v| v.is_finite());
     if !ok || !dx.is_finite() {
         return Err(MapError::NonFiniteImpact { t: te }.into());
     }
-    Ok(MapResult {
+    let map = MapResult {
         state_plus,
         period: te,
         dx,
         jacobian: product,
         method: JacobianMethod::Variational,
         impact: imp.regime,
-    })
+    };
+    Ok((map, column))
 }
 
 /// `a b`, each entry summed over `k` in ascending order (as the fixed-size product it
@@ -242,8 +367,9 @@ fn matmul(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
 /// The Jacobian of the relabelling `[q+, qd+] = R(q-, qd)` at the pre-impact coordinates and
 /// the post-impact velocities of the old coordinates, with the rows of `x` and `z` zero (the
 /// map measures from the new foot): the `relabel_jacobian` kernel where the model has it, else
-/// central differences of `relabel`.
-fn relabel_jacobian(model: &Model, pre: &[f64], qd: &[f64]) -> Vec<Vec<f64>> {
+/// central differences of `relabel`. Also the row of `x` itself (the new foot's position,
+/// for the step length's rate).
+fn relabel_jacobian(model: &Model, pre: &[f64], qd: &[f64]) -> (Vec<Vec<f64>>, Vec<f64>) {
     let n = model.n();
     let m = 2 * n;
     let mut out = vec![vec![0.0; m]; m];
@@ -259,7 +385,7 @@ fn relabel_jacobian(model: &Model, pre: &[f64], qd: &[f64]) -> Vec<Vec<f64>> {
         for i in 2..m {
             out[i].copy_from_slice(&flat[i * m..(i + 1) * m]);
         }
-        return out;
+        return (out, flat[..m].to_vec());
     }
     let relabel = |s: &[f64]| {
         let mut o = vec![0.0; m];
@@ -271,6 +397,7 @@ fn relabel_jacobian(model: &Model, pre: &[f64], qd: &[f64]) -> Vec<Vec<f64>> {
         o
     };
     let base: Vec<f64> = q.iter().chain(qd).copied().collect();
+    let mut x_row = vec![0.0; m];
     for j in 0..m {
         let h = 6e-6 * base[j].abs().max(1.0);
         let (mut up, mut down) = (base.clone(), base.clone());
@@ -280,6 +407,7 @@ fn relabel_jacobian(model: &Model, pre: &[f64], qd: &[f64]) -> Vec<Vec<f64>> {
         for i in 2..m {
             out[i][j] = (a[i] - b[i]) / (up[j] - down[j]);
         }
+        x_row[j] = (a[0] - b[0]) / (up[j] - down[j]);
     }
-    out
+    (out, x_row)
 }

@@ -115,6 +115,20 @@ impl<'a> Section<'a> {
         e
     }
 
+    /// `d embed(r) / dp` at fixed `r` for the parameter `name` (`2n` numbers): the rates of
+    /// the given components whose expressions use it (the active walker's `th1 = -alpha/2` in
+    /// `alpha`); zero for the free ones. The slope's part `zd = -xd tan phi` is not
+    /// differentiated: a parameter in the mechanics has no exact column
+    /// ([`super::parameter_column`]).
+    #[must_use]
+    pub fn rate(&self, r: &[f64], name: &str) -> Vector {
+        let mut s = Vector::zeros(2 * self.model.n());
+        for &(i, e) in &self.given {
+            s[i] = self.eval(&e.expr.derivative(name), r);
+        }
+        s
+    }
+
     /// The independent coordinates of a post-impact state.
     #[must_use]
     pub fn reduce(&self, s: &[f64]) -> Vec<f64> {

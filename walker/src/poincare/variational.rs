@@ -34,13 +34,14 @@
 
 use std::cell::Cell;
 
-use crate::jacobian::StanceJacobian;
+use crate::jacobian::{Scratch, StanceJacobian};
 use crate::model::{Contact, FrictionLaw, Model, Slide};
 use crate::ode::{Direction, Event, GaveUp, Integrator, NoObserver, OdeSystem, Outcome};
 use crate::sim::SimConfig;
 use crate::vector::MAX_LEN;
 
 use super::error::MapError;
+use super::parameter::ParameterRates;
 
 /// Why the variational stance could not be integrated: a failure of the map, or a contact whose
 /// Jacobian the model's kernels do not give (the caller falls back to finite differences).
@@ -64,6 +65,13 @@ pub(super) struct Variational<'a> {
     pub(super) model: &'a Model,
     pub(super) jac: StanceJacobian<'a>,
     pub(super) contact: &'a Cell<Contact>,
+    /// The kernels' outputs, kept from one right-hand side to the next.
+    pub(super) scratch: Scratch,
+    /// `d qdd / d y`, `n x 2n` row-major.
+    pub(super) a: [f64; MAX_LEN * MAX_LEN],
+    /// The parameter whose column `psi = d s / dp` rides after `Phi` (`2n` more numbers), if
+    /// any (`parameter.rs`).
+    pub(super) param: Option<&'a ParameterRates>,
 }
 
 impl Variational<'_> {
@@ -87,21 +95,48 @@ impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
         let n = self.model.n();
         let m = 2 * n;
         self.mech_rhs(t, y, &mut dy[..m]);
-        let mut a = [0.0; MAX_LEN * MAX_LEN];
-        self.jac.accel_in(
+        self.jac.accel_with(
             t,
             y,
             self.contact.get(),
-            &mut a[..(n + self.model.inputs()) * m],
+            &mut self.a[..n * m],
+            &mut self.scratch,
         );
-        for j in 0..m {
-            for i in 0..n {
-                dy[m + m * i + j] = y[m + m * (i + n) + j];
-                let mut s = 0.0;
-                for k in 0..m {
-                    s += a[i * m + k] * y[m + m * k + j];
+        // d Phi / dt = [0 I; A] Phi: the rows of q take Phi's rows of qd, the rows of qd are
+        // A (n x 2n) times Phi (2n x 2n).
+        let (phi, dphi) = (&y[m..m + m * m], &mut dy[m..m + m * m]);
+        dphi[..n * m].copy_from_slice(&phi[n * m..]);
+        for (a_i, out) in self.a[..n * m]
+            .chunks_exact(m)
+            .zip(dphi[n * m..].chunks_exact_mut(m))
+        {
+            out.fill(0.0);
+            for (&a_ik, phi_k) in a_i.iter().zip(phi.chunks_exact(m)) {
+                for (o, &p) in out.iter_mut().zip(phi_k) {
+                    *o += a_ik * p;
                 }
-                dy[m + m * (i + n) + j] = s;
+            }
+        }
+        if let Some(rates) = self.param {
+            // d psi / dt = [0 I; A] psi + [0; d qdd / dp].
+            let mut b = [0.0; MAX_LEN];
+            rates.field_rate(
+                self.model,
+                t,
+                y,
+                self.contact.get(),
+                &self.scratch.k,
+                &mut b[..n],
+            );
+            let at = m + m * m;
+            let (psi, dpsi) = (&y[at..at + m], &mut dy[at..at + m]);
+            dpsi[..n].copy_from_slice(&psi[n..]);
+            for (i, a_i) in self.a[..n * m].chunks_exact(m).enumerate() {
+                let mut d = b[i];
+                for (&a_ik, &p) in a_i.iter().zip(psi) {
+                    d += a_ik * p;
+                }
+                dpsi[n + i] = d;
             }
         }
     }
@@ -145,33 +180,39 @@ fn initial_contact(model: &Model, y: &[f64]) -> Result<Contact, MapError> {
     }
 }
 
-/// `Phi <- DR Phi + (f+ - DR f-) (g_y^T Phi) / (g_y f-)` on the sensitivity `phi` (`m x m`
-/// row-major), `DR` the identity with the rows `reset_rows` zero.
+/// `Phi <- DR Phi + (f+ - DR f-) (g_y^T Phi + g_p) / (g_y f-)` on the sensitivity `phi` (`m`
+/// rows of `cols`, row-major), `DR` the identity with the rows `reset_rows` zero; `g_p` the
+/// guard's own rate in a parameter (for a parameter's column `psi`; zero for `Phi`).
 ///
 /// # Errors
 /// [`MapError::GrazingEvent`]: `g_y f-` vanishes (the event is grazed).
+#[allow(clippy::too_many_arguments)]
 fn saltation(
     phi: &mut [f64],
     m: usize,
+    cols: usize,
     reset_rows: &[usize],
     f_minus: &[f64],
     f_plus: &[f64],
-    g: &[f64],
+    (g, g_p): (&[f64], f64),
     t: f64,
 ) -> Result<(), MapError> {
     let gf: f64 = (0..m).map(|k| g[k] * f_minus[k]).sum();
     if gf.abs() < 1e-12 || !gf.is_finite() {
         return Err(MapError::GrazingEvent { t });
     }
-    let g_row: Vec<f64> = (0..m)
-        .map(|j| (0..m).map(|k| g[k] * phi[k * m + j]).sum())
+    let g_row: Vec<f64> = (0..cols)
+        .map(|j| {
+            let s: f64 = (0..m).map(|k| g[k] * phi[k * cols + j]).sum();
+            if g_p == 0.0 { s } else { s + g_p }
+        })
         .collect();
     for i in 0..m {
         let reset = reset_rows.contains(&i);
         let d = f_plus[i] - if reset { 0.0 } else { f_minus[i] };
-        for j in 0..m {
-            let kept = if reset { 0.0 } else { phi[i * m + j] };
-            phi[i * m + j] = kept + d * g_row[j] / gf;
+        for j in 0..cols {
+            let kept = if reset { 0.0 } else { phi[i * cols + j] };
+            phi[i * cols + j] = kept + d * g_row[j] / gf;
         }
     }
     Ok(())
@@ -196,14 +237,20 @@ pub(super) fn stance<const NA: usize>(
     cfg: &SimConfig,
     s: &[f64],
     jac: StanceJacobian<'_>,
+    param: Option<(&ParameterRates, &[f64])>,
 ) -> Result<StanceEnd<NA>, PhaseError> {
     let n = model.n();
     let m = 2 * n;
+    let psi_at = m + m * m;
     let mut y = [0.0; NA];
     y[..m].copy_from_slice(s);
     for i in 0..m {
         y[m + (m + 1) * i] = 1.0;
     }
+    if let Some((_, psi0)) = param {
+        y[psi_at..psi_at + m].copy_from_slice(psi0);
+    }
+    let rates = param.map(|(r, _)| r);
     let contact = Cell::new(initial_contact(model, &y)?);
     if !jac.has_contact(contact.get()) {
         return Err(PhaseError::NoKernel);
@@ -211,6 +258,9 @@ pub(super) fn stance<const NA: usize>(
     if contact.get() == Contact::Stuck {
         // The foot at rest: no perturbation of its velocity (the module documentation).
         y[m + m * n..m + m * (n + 2)].fill(0.0);
+        if rates.is_some() {
+            y[psi_at + n..psi_at + n + 2].fill(0.0);
+        }
     }
     let coulomb = model.friction_law() == FrictionLaw::Coulomb;
     let mu0 = model.mu0();
@@ -240,6 +290,9 @@ pub(super) fn stance<const NA: usize>(
         model,
         jac,
         contact: &contact,
+        scratch: Scratch::new(),
+        a: [0.0; MAX_LEN * MAX_LEN],
+        param: rates,
     };
     let mut integ =
         Integrator::<NA>::new(cfg.method, crate::ode::Tolerances::new(cfg.rtol, cfg.atol));
@@ -260,7 +313,22 @@ pub(super) fn stance<const NA: usize>(
             &mut events[..watched],
             &mut NoObserver,
         ) {
-            Outcome::Breakpoint { t: tb, y: yb } => (t, y) = (tb, yb),
+            Outcome::Breakpoint { t: tb, y: mut yb } => {
+                if let Some(r) = rates {
+                    // The ramps' end moves with p: psi jumps by (f- - f+) d tb / dp.
+                    let d_tb = r.breakpoint_rate(model, tb).ok_or(PhaseError::NoKernel)?;
+                    if d_tb != 0.0 {
+                        let before = f64::from_bits(tb.to_bits() - 1);
+                        let (mut f_minus, mut f_plus) = ([0.0; MAX_LEN], [0.0; MAX_LEN]);
+                        field(model, before, &yb, contact.get(), &mut f_minus[..m]);
+                        field(model, tb, &yb, contact.get(), &mut f_plus[..m]);
+                        for i in 0..m {
+                            yb[psi_at + i] += (f_minus[i] - f_plus[i]) * d_tb;
+                        }
+                    }
+                }
+                (t, y) = (tb, yb);
+            }
             // A zero of the guard with the striking point behind the stance foot is no strike.
             Outcome::Event {
                 index: 0,
@@ -300,12 +368,25 @@ pub(super) fn stance<const NA: usize>(
                 saltation(
                     &mut ye[m..m + m * m],
                     m,
+                    m,
                     &[n, n + 1],
                     &f_minus[..m],
                     &f_plus[..m],
-                    &g[..m],
+                    (&g[..m], 0.0),
                     te,
                 )?;
+                if rates.is_some() {
+                    saltation(
+                        &mut ye[psi_at..psi_at + m],
+                        m,
+                        1,
+                        &[n, n + 1],
+                        &f_minus[..m],
+                        &f_plus[..m],
+                        (&g[..m], 0.0),
+                        te,
+                    )?;
+                }
                 contact.set(after);
                 (t, y) = (te, ye);
             }
@@ -331,12 +412,26 @@ pub(super) fn stance<const NA: usize>(
                 saltation(
                     &mut ye[m..m + m * m],
                     m,
+                    m,
                     &[],
                     &f_minus[..m],
                     &f_plus[..m],
-                    &g,
+                    (&g, 0.0),
                     te,
                 )?;
+                if let Some(r) = rates {
+                    // g = |lambda_t| - mu0 lambda_n moves with mu0: g_p = -lambda_n d mu0/dp.
+                    saltation(
+                        &mut ye[psi_at..psi_at + m],
+                        m,
+                        1,
+                        &[],
+                        &f_minus[..m],
+                        &f_plus[..m],
+                        (&g, -held.normal * r.d_mu0),
+                        te,
+                    )?;
+                }
                 contact.set(after);
                 (t, y) = (te, ye);
             }

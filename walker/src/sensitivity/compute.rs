@@ -11,6 +11,7 @@ use crate::sim::SimConfig;
 
 use super::difference::{richardson, shifts, step};
 use super::error::SensitivityError;
+use super::exact::{AtFixedPoint, exact_sensitivity};
 use super::result::{Estimate, MultiplierSensitivity, Sensitivity};
 
 /// Checks that each name is a run-time parameter of the setup's walker (one the
@@ -55,7 +56,7 @@ fn tight(cfg: &SimConfig) -> SimConfig {
 
 /// One map evaluation flattened: the image `P_r(r)` (`d`), `T`, `dx`, then the reduced
 /// Jacobian row by row (`d * d`).
-fn sample(
+pub(super) fn sample(
     model: &Model,
     cfg: &SimConfig,
     r: &[f64],
@@ -105,9 +106,36 @@ pub fn sensitivities(
     let r0 = section.reduce(&fp.state_plus);
     let base = sample(&model, &tcfg, &r0, "the fixed point")?;
     let jac = DMatrix::from_fn(d, d, |i, j| base[d + 2 + i * d + j]);
+    let a = DMatrix::identity(d, d) - &jac;
+    let singular = || SensitivityError::NotIsolated {
+        name: names.join(", "),
+    };
+    if fp.structural_unit_multiplier {
+        return Err(singular());
+    }
+    let inv = a.clone().try_inverse().ok_or_else(singular)?;
+    // The parameters with exact columns (`exact.rs`); the others by differences below.
+    let at = AtFixedPoint {
+        model: &model,
+        cfg: tcfg,
+        section: section.clone(),
+        r: r0.clone(),
+        jac: jac.clone(),
+        inv: inv.clone(),
+        period: base[d],
+        dx: base[d + 1],
+    };
+    let mut exact = Vec::with_capacity(names.len());
+    for (pr, name) in problems.iter().zip(names) {
+        let p0 = setup.params.get(name).unwrap_or(f64::NAN);
+        exact.push(exact_sensitivity(&at, pr, name, p0)?);
+    }
+    let rest: Vec<usize> = (0..names.len()).filter(|&i| exact[i].is_none()).collect();
+    let (problems, names): (Vec<&WalkerProblem>, Vec<&str>) =
+        rest.iter().map(|&i| (&problems[i], names[i])).unzip();
     // Parameter columns at fixed r*.
     let mut columns = Vec::new();
-    for (pr, name) in problems.iter().zip(names) {
+    for (pr, name) in problems.iter().zip(&names) {
         let p0 = setup.params.get(name).unwrap_or(f64::NAN);
         let h = step(p0);
         let mut vals: [Vec<f64>; 4] = Default::default();
@@ -122,14 +150,6 @@ pub fn sensitivities(
         columns.push((p0, h, richardson(&vals, h)));
     }
     // dr*/dp = (I - J)^{-1} dP_r/dp, with the error propagated by |(I - J)^{-1}|.
-    let a = DMatrix::identity(d, d) - &jac;
-    let singular = || SensitivityError::NotIsolated {
-        name: names.join(", "),
-    };
-    if fp.structural_unit_multiplier {
-        return Err(singular());
-    }
-    let inv = a.clone().try_inverse().ok_or_else(singular)?;
     let tangents: Vec<(Vec<f64>, Vec<f64>)> = columns
         .iter()
         .map(|(_, _, c)| {
@@ -151,7 +171,7 @@ pub fn sensitivities(
     let k_len = 2 + d * d;
     let mut in_r: Vec<Option<Vec<(f64, f64)>>> = vec![None; d];
     for (k, slot) in in_r.iter_mut().enumerate() {
-        if tangents.iter().all(|(v, _)| v[k] == 0.0) {
+        if tangents.iter().all(|(v, _)| v[k] == 0.0) || names.is_empty() {
             continue;
         }
         let h = step(r0[k]);
@@ -168,13 +188,8 @@ pub fn sensitivities(
         }
         *slot = Some(richardson(&vals, h)[d..].to_vec());
     }
-    let lambdas = eigenvalues(
-        &(0..d)
-            .map(|i| jac.row(i).iter().copied().collect())
-            .collect::<Vec<_>>(),
-    );
     let names_r = section.names();
-    let mut out = Vec::new();
+    let mut differenced = Vec::new();
     for ((name, (p0, h, col)), (v, ev)) in names.iter().zip(&columns).zip(&tangents) {
         // Totals of (T, dx, J entries) along the branch: d/dp + sum_k d/dr_k v_k.
         let total: Vec<Estimate> = (0..k_len)
@@ -198,11 +213,8 @@ pub fn sensitivities(
         };
         let dj = DMatrix::from_fn(d, d, |i, j| total[2 + i * d + j].value);
         let dj_err = DMatrix::from_fn(d, d, |i, j| total[2 + i * d + j].error).norm();
-        let d_multipliers = lambdas
-            .iter()
-            .map(|l| multiplier_derivative(&jac, &dj, dj_err, Complex::new(l.re, l.im)))
-            .collect();
-        out.push(Sensitivity {
+        let d_multipliers = multiplier_derivatives(&jac, &dj, dj_err);
+        differenced.push(Sensitivity {
             parameter: (*name).to_owned(),
             value: *p0,
             step: *h,
@@ -226,7 +238,30 @@ pub fn sensitivities(
             },
         });
     }
-    Ok(out)
+    // In the order asked.
+    let mut differenced = differenced.into_iter();
+    Ok(exact
+        .into_iter()
+        .filter_map(|e| e.or_else(|| differenced.next()))
+        .collect())
+}
+
+/// `d lambda / dp` for each eigenvalue of `jac` (in [`eigenvalues`]' order) from `dJ/dp` with
+/// its error estimate (Frobenius norm): [`multiplier_derivative`].
+pub(super) fn multiplier_derivatives(
+    jac: &DMatrix<f64>,
+    dj: &DMatrix<f64>,
+    dj_err: f64,
+) -> Vec<Option<MultiplierSensitivity>> {
+    let d = jac.nrows();
+    eigenvalues(
+        &(0..d)
+            .map(|i| jac.row(i).iter().copied().collect())
+            .collect::<Vec<_>>(),
+    )
+    .iter()
+    .map(|l| multiplier_derivative(jac, dj, dj_err, Complex::new(l.re, l.im)))
+    .collect()
 }
 
 /// `d lambda / dp = u^H (dJ/dp) w / (u^H w)` for the simple eigenvalue `lambda` of `jac`, with

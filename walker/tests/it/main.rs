@@ -20,6 +20,7 @@ mod ode_crosscheck;
 mod ode_events;
 mod ode_observers;
 mod ode_stiff;
+mod parameter_column;
 mod poincare_errors;
 mod poincare_exact;
 mod poincare_fixed;
