@@ -60,17 +60,17 @@ impl ParameterRates {
                 .eval(&|s| spec.parameter(s).and_then(|i| values.get(i).copied()))
                 .unwrap_or(f64::NAN)
         };
-        let mut moves_desired = false;
         let desired = spec
             .model
             .outputs
             .iter()
-            .map(|o| {
-                let d = Desired::new(&o.desired, rate);
-                moves_desired |= d != Desired::new(&o.desired, |_| 0.0);
-                d
-            })
+            .map(|o| Desired::new(&o.desired, rate))
             .collect();
+        let moves_desired = spec.model.outputs.iter().any(|o| {
+            desired_expressions(&o.desired)
+                .iter()
+                .any(|e| e.expr.symbols().iter().any(|(s, _)| *s == name))
+        });
         Some(ParameterRates {
             d_mu0: is(spec.mu0),
             d_c: is(spec.c),
@@ -139,7 +139,7 @@ impl ParameterRates {
     }
 
     /// The rate of the breakpoint at `tb` (the end of the ramps that end there: `d T / dp` of
-    /// their duration); `Some(0)` where none moves, `None` where ramps ending together move at
+    /// their duration); `None` where no ramp ends at `tb`, or ramps ending together move at
     /// different rates (their switches would part).
     pub(crate) fn breakpoint_rate(&self, model: &Model, tb: f64) -> Option<f64> {
         let mut rate: Option<f64> = None;
@@ -153,7 +153,17 @@ impl ParameterRates {
                 _ => rate = Some(d),
             }
         }
-        Some(rate.unwrap_or(0.0))
+        rate
+    }
+}
+
+/// The expressions of a desired trajectory.
+fn desired_expressions(d: &walker_scene::model::Desired) -> Vec<&ModelExpr> {
+    use walker_scene::model::Desired as Spec;
+    match d {
+        Spec::Quintic { from, to, duration } => vec![from, to, duration],
+        Spec::Hold { value } => vec![value],
+        Spec::Bezier { points, duration } => points.iter().chain([duration]).collect(),
     }
 }
 
