@@ -319,6 +319,7 @@ pub fn fixed_point_search(
 ) -> Result<FixedPoint, FixedPointError> {
     let opts = FixedPointOptions {
         start: *start,
+        refine: true,
         ..FixedPointOptions::for_model(model)
     };
     fixed_point(model, cfg, &opts)

@@ -45,6 +45,7 @@ pub fn fixed_point(
     let model = walker_args::model(&setup)?;
     let opts = FixedPointOptions {
         start: walker_args::start(&model, &init)?,
+        refine: true,
         ..FixedPointOptions::for_model(&model)
     };
     let wanted: Vec<&str> = sensitivities.iter().map(String::as_str).collect();

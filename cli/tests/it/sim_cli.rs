@@ -312,7 +312,7 @@ fn coulomb_friction_from_the_flag_or_a_scene_file() {
         "--json",
     ]);
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
-    assert_eq!(v["jacobian_method"], "finite-differences", "{v}");
+    assert_eq!(v["jacobian_method"], "extrapolated-differences", "{v}");
     assert!(
         v["T"].as_f64().is_some_and(|t| (t - 0.54).abs() < 0.02),
         "{v}"

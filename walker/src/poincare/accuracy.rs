@@ -14,7 +14,12 @@
 //!   the second Jacobian's error is about a tenth of the first's and `J - J'` is `E` to about 10 %;
 //! - **central differences** (the fallback where a phase has no Jacobian kernel) of step `h`: the
 //!   error is `h^2 P''' / 6` plus the map's noise over `h`; at `h / 2` the first part is a
-//!   quarter, so `J_h - J_{h/2}` is three quarters of the truncation error of `J_h`.
+//!   quarter, so `J_h - J_{h/2}` is three quarters of the truncation error of `J_h`;
+//! - **extrapolated differences** `R(h) = (4 J_{h/2} - J_h) / 3` (`walker fixed-point`'s
+//!   refinement of the fallback): the error is `O(h^4)` plus the noise over `h` amplified by up
+//!   to `5/3`; `R(h/2)` from `J_{h/2}` and `J_{h/4}` has a sixteenth of the first part, so
+//!   `R(h) - R(h/2)` is fifteen sixteenths of `R(h)`'s truncation error, and the noise at the
+//!   smaller step is at most twice `R(h)`'s.
 //!
 //! Either way the estimate is `E = 2 (J - J') + 10 rtol |J|` entry by entry, `rtol = min(rtol,
 //! 1e-12)`: the factor two covers the 10 % and the 4/3 above with room (and a noise term that the
@@ -44,10 +49,10 @@ use crate::sim::SimConfig;
 
 use super::error::MapError;
 use super::finite_difference::{DEFAULT_STEP, finite_difference_map_with_step};
-use super::fixed_point::FixedPoint;
+use super::fixed_point::{FixedPoint, extrapolate};
 use super::map::poincare_map_with;
 use super::multipliers::{Multiplier, eigenvalues, eigenvectors};
-use super::result::JacobianMethod;
+use super::result::{JacobianMethod, MapResult};
 use super::section::Section;
 
 /// The reduced Jacobian `D P_r` at a section point with the estimate of its error.
@@ -99,6 +104,19 @@ pub fn jacobian_error(
             finite_difference_map_with_step(model, cfg, &s, DEFAULT_STEP)?,
             finite_difference_map_with_step(model, cfg, &s, DEFAULT_STEP / 2.0)?,
         ),
+        JacobianMethod::ExtrapolatedDifferences => {
+            let at = |k: f64| finite_difference_map_with_step(model, cfg, &s, DEFAULT_STEP / k);
+            let (h, half, quarter) = (at(1.0)?, at(2.0)?, at(4.0)?);
+            let coarse = MapResult {
+                jacobian: extrapolate(&h.jacobian, &half.jacobian),
+                ..h
+            };
+            let fine = MapResult {
+                jacobian: extrapolate(&half.jacobian, &quarter.jacobian),
+                ..half
+            };
+            (coarse, fine)
+        }
     };
     let j = section.reduced_jacobian(&coarse.jacobian, r);
     let j_fine = section.reduced_jacobian(&fine.jacobian, r);

@@ -32,4 +32,8 @@ pub enum JacobianMethod {
     Variational,
     /// Central differences of one simulated step (`poincare::finite_difference`).
     FiniteDifferences,
+    /// Central differences at the steps `h` and `h / 2`, extrapolated (`(4 J(h/2) - J(h)) /
+    /// 3`): how `walker fixed-point` evaluates a differenced Jacobian once more at the fixed
+    /// point it found ([`super::FixedPointOptions::refine`]).
+    ExtrapolatedDifferences,
 }

@@ -133,3 +133,32 @@ fn a_jacobian_by_central_differences_gets_a_bound_that_covers_the_exact_multipli
         assert!(1e3 * exact_error < error, "{d:?} vs {e:?}");
     }
 }
+
+#[test]
+fn extrapolated_differences_place_the_multipliers_near_the_independent_reference_with_a_bound() {
+    // The same map's differences at 1e-4 and 5e-5 extrapolated (`walker fixed-point`'s
+    // refinement where a phase has no Jacobian kernel): against the SymPy/SciPy reference the
+    // plain differences are off by 1.2e-4; the extrapolation removes their h^2 term, leaving
+    // O(h^4) and the maps' noise (about 1e-12 / 5e-5 = 2e-8 before the eigenvalues' condition).
+    // Each bound covers the distance to the reference, and is below 1e-6: a hundred times
+    // below the plain differences' distance.
+    let model = setup("simplest-walker", &Overrides::default())
+        .model()
+        .expect("kernels");
+    let fp = converged(&model);
+    let cfg = SimConfig::default();
+    let r = Section::of(&model).reduce(&fp.state_plus);
+    let estimated = jacobian_error(&model, &cfg, &r, JacobianMethod::ExtrapolatedDifferences)
+        .expect("differences");
+    let reference = reference_multipliers();
+    for b in multiplier_bounds(&estimated.jacobian, &estimated.error) {
+        let m = b.multiplier;
+        let Some(error) = b.error else { continue };
+        let off = reference
+            .iter()
+            .map(|(re, im)| (m.re - re).hypot(m.im - im))
+            .fold(f64::INFINITY, f64::min);
+        assert!(off <= error, "{b:?}: {off:e}");
+        assert!(error < 1e-6, "{b:?}");
+    }
+}
