@@ -174,6 +174,31 @@ fn a_clearance_the_straight_legged_three_link_biped_cannot_give_is_an_infeasible
         );
         assert!(num(&c["value"]) <= 1e-5, "{c}");
         assert_eq!(num(&c["value"]), num(&d["gait"]["clearance"]));
+        // The parameters and the gait reported belong together (an infeasible design whose
+        // solver ended where there is no gait is reported at a visited gait): `walker
+        // fixed-point` at the reported parameters, on a floor where the held gait holds
+        // (`mu0 = 1`), has the reported period to 1e-8 (both solved to a residual of 1e-10).
+        let mut fp = vec![
+            "fixed-point".to_owned(),
+            "--model".into(),
+            m.clone(),
+            "--friction".into(),
+            "coulomb".into(),
+            "--impact".into(),
+            "coulomb".into(),
+            "--set".into(),
+            "mu0=1".into(),
+        ];
+        for p in d["parameters"].as_array().unwrap() {
+            fp.extend([
+                "--set".into(),
+                format!("{}={}", p["name"].as_str().unwrap(), num(&p["value"])),
+            ]);
+        }
+        let args: Vec<&str> = fp.iter().map(String::as_str).collect();
+        let f = json(&args);
+        let (t, want) = (num(&f["T"]), num(&d["gait"]["fixed_point"]["T"]));
+        assert!((t - want).abs() <= 1e-8 * want, "{t} vs {want}");
     }
 }
 

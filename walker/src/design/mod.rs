@@ -2,8 +2,8 @@
 //! given floor, with the friction the gait needs as a constraint (`docs/design.md`).
 //!
 //! A design varies some run-time parameters `p` of a model within bounds and minimises an
-//! [`Objective`] (specific resistance, mean input power, or the friction the gait needs) of
-//! the periodic gait at `p`, subject to
+//! [`Objective`] (specific resistance, mean input power, or the friction the gait needs; or
+//! maximises its speed) of the periodic gait at `p`, subject to
 //!
 //! - a periodic gait: a fixed point `r*(p)` of the reduced Poincare map, found for each `p` by
 //!   Newton's method with the map's state Jacobian ([`crate::poincare::newton`]: exact where the

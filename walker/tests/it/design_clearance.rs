@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use walker::design::{SAMPLES, clearance_profile, evaluate, rigid_strike_point};
+use walker::design::{SAMPLES, clearance_profile, evaluate, rigid_strike_point, swing_height};
 use walker::model::{Friction, ImpactLaw};
 use walker::setup::{Overrides, Setup};
 use walker::sim::{SimConfig, WalkLimits, trajectory};
@@ -107,5 +107,35 @@ fn the_reported_clearance_is_the_simulated_walks_and_a_straight_legged_biped_has
         "{} vs {}",
         min_h(&fine),
         min_h(&same)
+    );
+}
+
+#[test]
+fn on_a_slope_the_height_is_measured_normal_to_the_floor_line() {
+    // The compass gait starts just after a strike with both feet on its slope (`th_st + th_sw
+    // = 2 phi`): the swing foot, behind and uphill, is above the stance foot vertically but
+    // on the floor line, so its height normal to the floor is 0.
+    let m = setup("compass-gait", false).model().unwrap();
+    let phi = m.phi();
+    assert!(phi > 0.0);
+    let mut q = m.start_state().as_slice()[..m.n()].to_vec();
+    let l = m.param("a") + m.param("b");
+    let lift = |q: &[f64]| l * ((q[2]).cos() - (q[3]).cos());
+    assert!(lift(&q) > 1e-3, "{}", lift(&q));
+    assert!(
+        swing_height(&m, &q).abs() <= 1e-12,
+        "{}",
+        swing_height(&m, &q)
+    );
+    // The swing leg 0.1 rad more inclined than the stance leg (both feet ahead of the hip):
+    // the foot is off the floor by l (cos(th_st - phi) - cos(th_sw - phi)) along the normal
+    // (the legs' angles measured from the slope's normal instead of the vertical).
+    q[3] = q[2] - 0.1;
+    let want = l * ((q[2] - phi).cos() - (q[3] - phi).cos());
+    assert!(want > 0.0);
+    assert!(
+        (swing_height(&m, &q) - want).abs() <= 1e-12,
+        "{} vs {want}",
+        swing_height(&m, &q)
     );
 }
