@@ -4,7 +4,8 @@
 //! [`DesignRequest`] and formats the [`Design`] as a table or JSON.
 
 use walker::design::{
-    Design, DesignError, DesignRequest, DesignStatus, MAX_RESTARTS, Margins, Objective, Vary,
+    Design, DesignError, DesignRequest, DesignStatus, GaitBounds, MAX_RESTARTS, Margins, Objective,
+    Vary,
 };
 
 use crate::args::Common;
@@ -24,6 +25,9 @@ pub enum ObjectiveArg {
     /// heel strike's impulse ratio.
     #[value(name = "friction")]
     Friction,
+    /// The gait's mean speed V = dx / T, maximised; on an actuated walker with --max-power.
+    #[value(name = "speed")]
+    Speed,
 }
 
 /// The flags of `walker design`.
@@ -62,6 +66,18 @@ pub struct DesignArgs {
     /// input, comma-separated; each finite and > 0.
     #[arg(long = "max-input", value_delimiter = ',', allow_hyphen_values = true)]
     pub max_input: Vec<String>,
+    /// The swing foot's clearance H (m, finite and > 0): its height above the floor at least
+    /// H * 4 s (1 - s) at every stance sample, s = t / T (H at mid-stance, 0 where it leaves
+    /// the floor and where it strikes). Not for a walker without a swing foot.
+    #[arg(value_parser = number::positive, long, allow_hyphen_values = true)]
+    pub clearance: Option<f64>,
+    /// The gait's mean speed V at least this (m/s, finite and > 0). Not with --objective speed.
+    #[arg(value_parser = number::positive, long = "min-speed", allow_hyphen_values = true)]
+    pub min_speed: Option<f64>,
+    /// The gait's mean input power p at most this (W, finite and > 0; an actuated walker): the
+    /// effort bound --objective speed needs. Not with --objective power.
+    #[arg(value_parser = number::positive, long = "max-power", allow_hyphen_values = true)]
+    pub max_power: Option<f64>,
     /// The solver's limit on objective evaluations: a whole number in [1, 10000].
     #[arg(
         long = "max-evaluations",
@@ -191,6 +207,7 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
             ObjectiveArg::SpecificResistance => Objective::SpecificResistance,
             ObjectiveArg::Power => Objective::Power,
             ObjectiveArg::Friction => Objective::Friction,
+            ObjectiveArg::Speed => Objective::Speed,
         },
         margins: Margins {
             multiplier: args.multiplier_margin,
@@ -201,6 +218,11 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
         max_evaluations,
         tol,
         max_input: parse_max_input(&args.max_input)?,
+        bounds: GaitBounds {
+            clearance: args.clearance,
+            min_speed: args.min_speed,
+            max_power: args.max_power,
+        },
     };
     let restarts = crate::input::whole("restarts", &args.restarts, 0, MAX_RESTARTS)?;
     let seed = args.seed.trim().parse::<u64>().map_err(|_| {
@@ -227,6 +249,13 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
         DesignError::MaxInput { .. }
         | DesignError::MaxInputCount { .. }
         | DesignError::NoInputsToBound { .. } => InputError::new("max-input", e.to_string()).into(),
+        DesignError::Bound { which, .. } | DesignError::BoundOnObjective { which, .. } => {
+            InputError::new(which, e.to_string()).into()
+        }
+        DesignError::SpeedNeedsEffort { .. } | DesignError::NoInputsForPower { .. } => {
+            InputError::new("max-power", e.to_string()).into()
+        }
+        DesignError::NoSwingFoot { .. } => InputError::new("clearance", e.to_string()).into(),
         other => InputError::new("vary", other.to_string()).into(),
     })?;
     Ok(if common.json {
@@ -279,6 +308,11 @@ pub fn text(d: &Design) -> String {
         "gait: T = {:.10} s, dx = {:.10} m, V = {:.10} m/s, p = {:.10} W, SR = {:.12}\n",
         fp.period, fp.dx, fp.speed, d.gait.power, d.gait.specific_resistance
     ));
+    if let Some(c) = d.gait.clearance {
+        s.push_str(&format!(
+            "swing foot clearance: {c:.6e} m (the largest H with height >= H 4 s (1 - s))\n"
+        ));
+    }
     s.push_str(&format!("fixed point: {:?}\n", fp.state_plus.as_slice()));
     for m in &fp.multipliers {
         s.push_str(&format!(

@@ -1011,7 +1011,7 @@ def describe(
     )
 
 
-OBJECTIVES = ("specific_resistance", "power", "friction")
+OBJECTIVES = ("specific_resistance", "power", "friction", "speed")
 """The objectives of :func:`design` (``walker design --objective``)."""
 
 
@@ -1051,6 +1051,9 @@ def design(
     normal_margin: float = 0.0,
     ramp_margin: float = 0.01,
     max_input: Union[float, Sequence[float], None] = None,
+    clearance: Optional[float] = None,
+    min_speed: Optional[float] = None,
+    max_power: Optional[float] = None,
     max_evaluations: int = 100,
     tol: float = 1e-10,
     restarts: int = 0,
@@ -1062,7 +1065,11 @@ def design(
     multipliers ``<= 1 - multiplier_margin``, the friction it needs ``<= mu0 -
     friction_margin`` (stance and strike), the normal force ``>= normal_margin``, the strike
     ``ramp_margin`` (s) after the desired trajectories' ramps end, and with ``max_input`` (one
-    bound for every input or one per input) ``max |u_i| <= U_i`` along the stance. As
+    bound for every input or one per input) ``max |u_i| <= U_i`` along the stance; with
+    ``clearance`` (m) the swing foot's height above the floor ``>= clearance * 4 s (1 - s)``
+    at every stance sample (``s = t / T``); with ``min_speed`` (m/s) the mean speed ``V >=
+    min_speed``; with ``max_power`` (W) the mean input power ``p <= max_power`` (the effort
+    bound the ``speed`` objective, which maximises ``V``, needs on an actuated walker). As
     ``walker design`` (``docs/design.md``); the other arguments as in :func:`simulate`.
 
     Returns the command line's JSON (``walker design --json``) as a dict: ``status``
@@ -1082,6 +1089,9 @@ def design(
         normal_margin=_float("normal_margin", normal_margin),
         ramp_margin=_float("ramp_margin", ramp_margin),
         max_input=_list("max_input", max_input),
+        clearance=_float("clearance", clearance),
+        min_speed=_float("min_speed", min_speed),
+        max_power=_float("max_power", max_power),
         max_evaluations=_int("max_evaluations", max_evaluations, 1, 10_000),
         tol=_float("tol", tol), restarts=_int("restarts", restarts, 0, 100),
         seed=_int("seed", seed, 0, 2**64 - 1),

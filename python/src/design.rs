@@ -3,7 +3,9 @@
 //! result is the command line's JSON.
 
 use pyo3::prelude::*;
-use walker::design::{DesignError, DesignRequest, MAX_RESTARTS, Margins, Objective, Vary};
+use walker::design::{
+    DesignError, DesignRequest, GaitBounds, MAX_RESTARTS, Margins, Objective, Vary,
+};
 
 use crate::error::ArgError;
 use crate::options;
@@ -22,10 +24,11 @@ fn objective(name: &str) -> Result<Objective, ArgError> {
         "specific_resistance" => Ok(Objective::SpecificResistance),
         "power" => Ok(Objective::Power),
         "friction" => Ok(Objective::Friction),
+        "speed" => Ok(Objective::Speed),
         other => Err(ArgError::new(
             "objective",
             format!(
-                "`{}`: must be one of specific_resistance, power, friction",
+                "`{}`: must be one of specific_resistance, power, friction, speed",
                 crate::error::echo(other)
             ),
         )),
@@ -42,6 +45,13 @@ fn named(e: &DesignError) -> String {
         DesignError::Restarts { .. } => "restarts".into(),
         DesignError::NoInputs { .. } => "objective".into(),
         DesignError::NoMu0 { .. } => "model".into(),
+        DesignError::Bound { which, .. } | DesignError::BoundOnObjective { which, .. } => {
+            which.replace('-', "_")
+        }
+        DesignError::SpeedNeedsEffort { .. } | DesignError::NoInputsForPower { .. } => {
+            "max_power".into()
+        }
+        DesignError::NoSwingFoot { .. } => "clearance".into(),
         _ => "vary".into(),
     }
 }
@@ -55,8 +65,8 @@ fn named(e: &DesignError) -> String {
 /// `ValueError` naming a bad argument and its valid range.
 #[pyfunction]
 #[pyo3(signature = (*, scene, model, set, friction, impact, method, rtol, atol, vary, objective,
-    multiplier_margin, friction_margin, normal_margin, ramp_margin, max_input, max_evaluations,
-    tol, restarts, seed))]
+    multiplier_margin, friction_margin, normal_margin, ramp_margin, max_input, clearance,
+    min_speed, max_power, max_evaluations, tol, restarts, seed))]
 #[allow(clippy::too_many_arguments)]
 pub fn design(
     py: Python<'_>,
@@ -75,6 +85,9 @@ pub fn design(
     normal_margin: f64,
     ramp_margin: f64,
     max_input: Vec<f64>,
+    clearance: Option<f64>,
+    min_speed: Option<f64>,
+    max_power: Option<f64>,
     max_evaluations: i64,
     tol: f64,
     restarts: i64,
@@ -124,6 +137,11 @@ pub fn design(
         max_evaluations,
         tol,
         max_input,
+        bounds: GaitBounds {
+            clearance,
+            min_speed,
+            max_power,
+        },
     };
     // The request is checked before the work starts, so that a bad one is a `ValueError`.
     req.check(&setup, &cfg)

@@ -57,7 +57,21 @@ def test_an_infeasible_design_is_a_result_naming_the_constraint():
     (dict(vary={"T_set": (0.2, 0.4, 0.5)}), r"invalid vary: start of `T_set` is 0.5"),
     (dict(vary={"T_set": (0.2,)}), r"invalid vary\['T_set'\]: .*\(lo, hi\) or \(lo, hi, start\)"),
     (dict(vary={}), r"invalid vary: "),
-    (dict(vary={"T_set": (0.2, 0.4)}, objective="speed"), r"invalid objective: `speed`"),
+    (dict(vary={"T_set": (0.2, 0.4)}, objective="walk"), r"invalid objective: `walk`"),
+    (dict(vary={"T_set": (0.2, 0.4)}, objective="speed"),
+     r"invalid max_power: objective `speed` on model `paper-active` needs an effort bound"),
+    (dict(vary={"T_set": (0.2, 0.4)}, objective="speed", max_power=5.0, min_speed=0.5),
+     r"invalid min_speed: min-speed bounds what objective `speed` optimises"),
+    (dict(vary={"T_set": (0.2, 0.4)}, objective="power", max_power=5.0),
+     r"invalid max_power: max-power bounds what objective `power` optimises"),
+    (dict(vary={"T_set": (0.2, 0.4)}, min_speed=-1.0),
+     r"invalid min_speed: min-speed is -1: must be finite and > 0"),
+    (dict(vary={"T_set": (0.2, 0.4)}, max_power=float("nan")),
+     r"invalid max_power: max-power is NaN: must be finite and > 0"),
+    (dict(vary={"T_set": (0.2, 0.4)}, clearance=0.0),
+     r"invalid clearance: clearance is 0: must be finite and > 0"),
+    (dict(vary={"T_set": (0.2, 0.4)}, clearance=0.01),
+     r"invalid clearance: clearance needs a swing foot; model `paper-active` has none"),
     (dict(vary={"T_set": (0.2, 0.4)}, multiplier_margin=1.0),
      r"invalid multiplier_margin: .*must be in \[0, 1\)"),
     (dict(vary={"T_set": (0.2, 0.4)}, ramp_margin=-0.1),
@@ -79,3 +93,38 @@ def test_input_bounds_on_a_walker_without_inputs_name_max_input():
     with pytest.raises(ValueError, match=r"invalid max_input: input bounds need an actuated"):
         sw.design(model=str(conftest.MODELS / "compass-gait.toml"), friction="coulomb",
                   vary={"mu0": (0.5, 0.9)}, objective="friction", max_input=1.0)
+
+
+# The paper's walker held on mu0 = 1, its ramp designed from 0.4 s: at most a few dozen gait
+# evaluations of the compiled model, under a second.
+FAST = dict(scene="active-level", set={"mu0": 1.0}, friction="coulomb", impact="coulomb",
+            vary={"T_set": (0.2, 0.4, 0.4)})
+CLI_FAST = ["--scene", "active-level", "--set", "mu0=1.0", "--friction", "coulomb",
+            "--impact", "coulomb", "--vary", "T_set=0.2:0.4:0.4"]
+
+
+def test_a_least_speed_and_the_speed_objective_equal_the_command_lines_json():
+    d = sw.design(**FAST, min_speed=0.85)
+    assert d == cli_design(*CLI_FAST, "--min-speed", "0.85")
+    row = d["constraints"][-1]
+    assert (row["name"], row["limit"], row["value"]) == (
+        "min-speed", 0.85, d["gait"]["fixed_point"]["V"])
+    d = sw.design(**FAST, objective="speed", max_power=12.0)
+    assert d == cli_design(*CLI_FAST, "--objective", "speed", "--max-power", "12")
+    assert d["objective"] == "speed" and d["value"] == d["gait"]["fixed_point"]["V"]
+    assert d["constraints"][-1]["name"] == "max-power"
+
+
+def test_a_clearance_equals_the_command_lines_json_and_names_the_row():
+    # The three-link biped's straight legs leave no clearance (docs/design.md): infeasible.
+    model = str(conftest.MODELS / "three-link.toml")
+    d = sw.design(model=model, friction="coulomb", impact="coulomb", objective="friction",
+                  vary={"beta": (0.3, 0.45)}, max_evaluations=3, clearance=0.01)
+    assert d == cli_design("--model", model, "--friction", "coulomb", "--impact", "coulomb",
+                           "--objective", "friction", "--vary", "beta=0.3:0.45",
+                           "--max-evaluations", "3", "--clearance", "0.01")
+    assert (d["status"], d["violated"]) == ("infeasible", "clearance")
+    # At most 0 in continuous time; the 400 samples can miss the instant the swing leg is
+    # vertical by half a sample, worth at most about 1.4e-6 m there (cli/tests/it/
+    # design_bounds_cli.rs).
+    assert d["constraints"][-1]["value"] == d["gait"]["clearance"] <= 1e-5

@@ -104,6 +104,7 @@ pub fn designed(setup: &Setup) -> Result<Designed, String> {
         max_evaluations: MAX_EVALUATIONS,
         tol: 1e-10,
         max_input: Vec::new(),
+        bounds: walker::design::GaitBounds::default(),
     };
     let cfg = SimConfig::default();
     let d = design(&s, &cfg, &req).map_err(|e| format!("design: {e}"))?;

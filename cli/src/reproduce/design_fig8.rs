@@ -108,6 +108,7 @@ fn design_at(mu0: f64, start: [f64; 3]) -> Result<Design, WriteError> {
         max_evaluations: 100,
         tol: 1e-10,
         max_input: Vec::new(),
+        bounds: walker::design::GaitBounds::default(),
     };
     walker::design::design(&setup, &SimConfig::default(), &req)
         .map_err(|e| WriteError::Setup(format!("the design at mu0 = {mu0}: {e}")))

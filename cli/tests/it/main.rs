@@ -9,6 +9,7 @@ mod cli_extremes;
 mod cli_fuzz;
 mod common;
 mod continue_cli;
+mod design_bounds_cli;
 mod design_cli;
 mod floor_cli;
 mod floor_slopes_cli;

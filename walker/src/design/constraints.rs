@@ -9,6 +9,9 @@ use super::request::{DesignRequest, Margins};
 /// the paper walker's shaped design; `rho` 100 and 200 gave 0.012 and 0.004 and a worse
 /// design, 1000 a constraint too sharp for the solver to converge on).
 const RHO: f64 = 400.0;
+/// The clearance constraint's value where a step has no interior sample (never for a completed
+/// step of 400 samples): violated.
+const NO_SAMPLES: f64 = 1.0;
 /// Ratios beyond this (a normal force at or below zero) are capped so the solver sees numbers.
 pub(super) const CAP: f64 = 1e3;
 
@@ -29,6 +32,13 @@ pub(super) enum Kind {
     StrikeAfterRamp,
     /// `max |u_i| <= U_i` along the stance (aggregated), for input `i`.
     Input(usize),
+    /// The swing foot's height `h >= H 4 s (1 - s)` at every interior stance sample
+    /// (aggregated as `1 - h / (H 4 s (1 - s))`, relative to the profile).
+    Clearance,
+    /// The mean speed `V >= V_min`.
+    MinSpeed,
+    /// The mean input power `p <= P`.
+    MaxPower,
 }
 
 impl Kind {
@@ -41,13 +51,18 @@ impl Kind {
             Kind::StanceFriction => "stance-friction".to_owned(),
             Kind::StrikeAfterRamp => "strike-after-ramp".to_owned(),
             Kind::Input(i) => format!("input-{i}"),
+            Kind::Clearance => "clearance".to_owned(),
+            Kind::MinSpeed => "min-speed".to_owned(),
+            Kind::MaxPower => "max-power".to_owned(),
         }
     }
 }
 
 /// The constraints of `req` on a walker with ramps (`ramps`) and `inputs` inputs, in the
 /// order of the program and of the result: the four of every design, then the strike after
-/// the ramps, then one per bounded input.
+/// the ramps, then one per bounded input, then the clearance, the least speed and the most
+/// power where the request has them (after the others, so that a design without them has the
+/// rows it had).
 pub(super) fn kinds(req: &DesignRequest, ramps: bool, inputs: usize) -> Vec<Kind> {
     let mut k = vec![
         Kind::Multipliers,
@@ -60,6 +75,16 @@ pub(super) fn kinds(req: &DesignRequest, ramps: bool, inputs: usize) -> Vec<Kind
     }
     if !req.max_input.is_empty() {
         k.extend((0..inputs).map(Kind::Input));
+    }
+    let b = &req.bounds;
+    for (kind, asked) in [
+        (Kind::Clearance, b.clearance.is_some()),
+        (Kind::MinSpeed, b.min_speed.is_some()),
+        (Kind::MaxPower, b.max_power.is_some()),
+    ] {
+        if asked {
+            k.push(kind);
+        }
     }
     k
 }
@@ -97,6 +122,23 @@ pub(super) fn program_value(kind: Kind, e: &Evaluation, mu0: f64, req: &DesignRe
                 .collect();
             if r.is_empty() { 0.0 } else { ks(&r) - 1.0 }
         }
+        Kind::Clearance => {
+            let h = req.bounds.clearance.unwrap_or(0.0);
+            let r: Vec<f64> = e
+                .swing_heights
+                .iter()
+                .map(|(z, w)| (1.0 - z / (h * w)).clamp(-CAP, CAP))
+                .collect();
+            if r.is_empty() { NO_SAMPLES } else { ks(&r) }
+        }
+        Kind::MinSpeed => {
+            let v = req.bounds.min_speed.unwrap_or(0.0);
+            (1.0 - e.fixed_point.speed / v).min(CAP)
+        }
+        Kind::MaxPower => {
+            let p = req.bounds.max_power.unwrap_or(f64::INFINITY);
+            (e.power / p - 1.0).min(CAP)
+        }
     }
 }
 
@@ -124,6 +166,17 @@ pub(super) fn row(
             input_bound(req, i),
             "<=",
         ),
+        Kind::Clearance => (
+            e.clearance.unwrap_or(f64::NEG_INFINITY),
+            req.bounds.clearance.unwrap_or(0.0),
+            ">=",
+        ),
+        Kind::MinSpeed => (
+            e.fixed_point.speed,
+            req.bounds.min_speed.unwrap_or(0.0),
+            ">=",
+        ),
+        Kind::MaxPower => (e.power, req.bounds.max_power.unwrap_or(f64::INFINITY), "<="),
     }
 }
 

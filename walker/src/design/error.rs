@@ -126,4 +126,46 @@ pub enum DesignError {
         /// The most allowed.
         max: usize,
     },
+    /// A gait bound (`clearance`, `min-speed`, `max-power`) out of range.
+    #[error("{which} is {value}: must be {must_be}")]
+    Bound {
+        /// `clearance`, `min-speed` or `max-power`.
+        which: &'static str,
+        /// The value.
+        value: f64,
+        /// The valid range.
+        must_be: &'static str,
+    },
+    /// A bound on the quantity the objective itself optimises.
+    #[error(
+        "{which} bounds what objective `{objective}` optimises: the bound could only be inactive or make the design infeasible; give one or the other"
+    )]
+    BoundOnObjective {
+        /// `min-speed` or `max-power`.
+        which: &'static str,
+        /// The objective.
+        objective: &'static str,
+    },
+    /// The speed objective on an actuated walker without an effort bound.
+    #[error(
+        "objective `speed` on model `{model}` needs an effort bound: give max-power (the mean input power, W, finite and > 0)"
+    )]
+    SpeedNeedsEffort {
+        /// The model.
+        model: String,
+    },
+    /// A power bound on a walker without inputs.
+    #[error("max-power needs an actuated walker; model `{model}` has no inputs")]
+    NoInputsForPower {
+        /// The model.
+        model: String,
+    },
+    /// A clearance asked of a walker without a swing foot.
+    #[error("clearance needs a swing foot; model `{model}` has none: {why}")]
+    NoSwingFoot {
+        /// The model.
+        model: String,
+        /// Why (the striking point moves with the stance foot).
+        why: String,
+    },
 }

@@ -47,6 +47,16 @@ pub struct Evaluation {
     /// `ramp_inputs` just before each ramp's end; left out of the JSON.
     #[serde(skip)]
     pub input_samples: Vec<Vec<f64>>,
+    /// The swing foot's clearance: the largest `H` whose profile `H 4 s (1 - s)` its height
+    /// above the floor meets at every interior stance sample (`min h_k / (4 s_k (1 - s_k))`,
+    /// m; [`super::swing_height`]); `None` (and left out of the JSON) unless the design bounds it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub clearance: Option<f64>,
+    /// The swing foot's height above the floor and the profile's value `4 s (1 - s)` at the
+    /// interior stance samples `t = k T / SAMPLES`, `k = 1 .. SAMPLES - 1` (empty unless the
+    /// design bounds the clearance); left out of the JSON.
+    #[serde(skip)]
+    pub swing_heights: Vec<(f64, f64)>,
     /// The number of stance samples read.
     pub samples: usize,
 }
@@ -66,7 +76,8 @@ impl Evaluation {
 /// read just before each ramp's end inside the step (`inputs_before_ramp_ends`): where a
 /// ramp's second derivative does not vanish at its end (a Bezier's, unlike the paper's
 /// quintic) the input jumps there, and its largest value is the left limit, which samples on a
-/// grid miss.
+/// grid miss. With `swing`, the swing foot's height is read on the interior samples
+/// ([`Evaluation::clearance`]).
 ///
 /// # Errors
 /// A text saying why there is no valid periodic gait there (a parameter out of range, no
@@ -78,6 +89,7 @@ pub fn evaluate(
     values: &[f64],
     guess: Option<&[f64]>,
     ramp_inputs: bool,
+    swing: bool,
 ) -> Result<Evaluation, String> {
     let mut s = setup.clone();
     for (n, v) in names.iter().zip(values) {
@@ -154,6 +166,31 @@ pub fn evaluate(
         .iter()
         .map(|v| v.iter().copied().fold(0.0, f64::max))
         .collect();
+    // The swing foot's height at the interior samples (`0 < t < T`: the profile is positive
+    // there), each with the profile's value at its own time.
+    let swing_heights: Vec<(f64, f64)> = if swing {
+        frames
+            .iter()
+            .take(SAMPLES)
+            .skip(1)
+            .filter(|f| f.t > 0.0 && f.t < fp.period)
+            .map(|f| {
+                let q = &f.state.as_slice()[..model.n()];
+                (
+                    super::swing::swing_height(&model, q),
+                    super::swing::clearance_profile(f.t / fp.period),
+                )
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let clearance = swing.then(|| {
+        swing_heights
+            .iter()
+            .map(|(h, w)| h / w)
+            .fold(f64::INFINITY, f64::min)
+    });
     let [lt, ln] = step.foot_impulse;
     let reduced = Section::of(&model).reduce(&fp.state_plus);
     Ok(Evaluation {
@@ -169,6 +206,8 @@ pub fn evaluate(
         ramps_end: model.ramps_end(),
         max_input,
         input_samples,
+        clearance,
+        swing_heights,
         samples: frames.len(),
     })
 }

@@ -33,6 +33,9 @@ pub enum Objective {
     /// The friction the gait needs: the larger of the stance's largest `|lambda_t| /
     /// lambda_n` and the heel strike's `|Lambda_t| / Lambda_n`.
     Friction,
+    /// The gait's mean speed `V = dx / T`, maximised (the program minimises `-V`); on an
+    /// actuated walker with an effort bound ([`GaitBounds::max_power`]).
+    Speed,
 }
 
 impl Objective {
@@ -43,13 +46,21 @@ impl Objective {
             Objective::SpecificResistance => "specific_resistance",
             Objective::Power => "power",
             Objective::Friction => "friction",
+            Objective::Speed => "speed",
         }
+    }
+
+    /// The sign the program minimises the objective with: `-1` for [`Objective::Speed`]
+    /// (maximised), `1` for the others.
+    #[must_use]
+    pub fn sign(self) -> f64 {
+        if self == Objective::Speed { -1.0 } else { 1.0 }
     }
 
     /// Whether the objective needs the control inputs (an actuated walker).
     #[must_use]
     pub fn needs_inputs(self) -> bool {
-        !matches!(self, Objective::Friction)
+        matches!(self, Objective::SpecificResistance | Objective::Power)
     }
 }
 
@@ -78,6 +89,25 @@ impl Default for Margins {
     }
 }
 
+/// Bounds on the gait besides the margins: the swing foot's clearance, a least mean speed and
+/// a most mean input power. Each `None` (the default) leaves the design as it is without it
+/// (no row, no change to the result).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct GaitBounds {
+    /// The swing foot's clearance `H` (m, finite and `> 0`): its height above the floor (normal
+    /// to the floor line) at least `H 4 s (1 - s)` at every interior stance sample, `s = t / T`
+    /// (`docs/design.md`, "The swing foot's clearance"). Only for a walker whose striking
+    /// point moves relative to the stance foot.
+    pub clearance: Option<f64>,
+    /// The gait's mean speed `V >= min_speed` (m/s, finite and `> 0`). Not with
+    /// [`Objective::Speed`], which maximises `V`.
+    pub min_speed: Option<f64>,
+    /// The gait's mean input power `p <= max_power` (W, finite and `> 0`), the effort bound of
+    /// [`Objective::Speed`]. Only for an actuated walker, and not with [`Objective::Power`],
+    /// which minimises `p`.
+    pub max_power: Option<f64>,
+}
+
 /// A design request.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct DesignRequest {
@@ -94,6 +124,8 @@ pub struct DesignRequest {
     /// Bounds on the inputs along the stance, `max |u_i| <= U_i`: empty for none, one bound
     /// for every input, or one per input (N m or N, each finite and `> 0`).
     pub max_input: Vec<f64>,
+    /// The swing foot's clearance, a least speed and a most power (none by default).
+    pub bounds: GaitBounds,
 }
 
 impl DesignRequest {
@@ -211,6 +243,67 @@ impl DesignRequest {
                 objective: self.objective.name(),
                 model,
             });
+        }
+        self.check_bounds(setup, &model)
+    }
+
+    /// The checks of [`DesignRequest::bounds`]: each value finite and `> 0`; the clearance on
+    /// a walker with a swing foot; the power bound on an actuated walker and the speed
+    /// objective with it there; no bound on the quantity the objective itself optimises.
+    fn check_bounds(&self, setup: &Setup, model: &str) -> Result<(), DesignError> {
+        let b = &self.bounds;
+        for (which, value) in [
+            ("clearance", b.clearance),
+            ("min-speed", b.min_speed),
+            ("max-power", b.max_power),
+        ] {
+            if let Some(value) = value
+                && !(value.is_finite() && value > 0.0)
+            {
+                return Err(DesignError::Bound {
+                    which,
+                    value,
+                    must_be: "finite and > 0",
+                });
+            }
+        }
+        let actuated = setup.walker.spec().is_actuated();
+        match (self.objective, b.min_speed, b.max_power) {
+            (Objective::Speed, Some(_), _) => {
+                return Err(DesignError::BoundOnObjective {
+                    which: "min-speed",
+                    objective: "speed",
+                });
+            }
+            (Objective::Power, _, Some(_)) => {
+                return Err(DesignError::BoundOnObjective {
+                    which: "max-power",
+                    objective: "power",
+                });
+            }
+            (Objective::Speed, _, None) if actuated => {
+                return Err(DesignError::SpeedNeedsEffort {
+                    model: model.to_owned(),
+                });
+            }
+            (_, _, Some(_)) if !actuated => {
+                return Err(DesignError::NoInputsForPower {
+                    model: model.to_owned(),
+                });
+            }
+            _ => {}
+        }
+        if b.clearance.is_some() {
+            let m = setup.model().map_err(|e| DesignError::NoSwingFoot {
+                model: model.to_owned(),
+                why: e.to_string(),
+            })?;
+            if let Some(why) = super::swing::rigid_strike_point(&m) {
+                return Err(DesignError::NoSwingFoot {
+                    model: model.to_owned(),
+                    why,
+                });
+            }
         }
         Ok(())
     }

@@ -31,10 +31,14 @@ pub fn restart_starts(req: &DesignRequest, count: usize, seed: u64) -> Vec<Vec<f
         .collect()
 }
 
-/// How good a design is, for choosing the best of the restarts: a feasible design (optimal
-/// or not) before an infeasible one, then the smaller objective.
-fn rank(d: &Design) -> (bool, f64) {
-    (d.status == DesignStatus::Infeasible, d.value)
+/// How good a design of `req` is, for choosing the best of the restarts: a feasible design
+/// (optimal or not) before an infeasible one, then the better objective (the smaller, or the
+/// larger for a maximised one, [`super::Objective::sign`]).
+fn rank(req: &DesignRequest, d: &Design) -> (bool, f64) {
+    (
+        d.status == DesignStatus::Infeasible,
+        req.objective.sign() * d.value,
+    )
 }
 
 /// The design `req` from its own start and from `count` starts drawn within the bounds under
@@ -76,7 +80,7 @@ pub fn design_with_restarts(
                     error: None,
                     evaluations: d.evaluations,
                 });
-                if best.as_ref().is_none_or(|b| rank(&d) < rank(b)) {
+                if best.as_ref().is_none_or(|b| rank(req, &d) < rank(req, b)) {
                     best = Some(d);
                 }
             }
@@ -130,6 +134,7 @@ mod tests {
             max_evaluations: 10,
             max_input: Vec::new(),
             tol: 1e-10,
+            bounds: crate::design::GaitBounds::default(),
         }
     }
 

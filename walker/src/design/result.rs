@@ -40,7 +40,8 @@ pub struct VariedValue {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ConstraintSlack {
     /// The constraint's name (`multipliers`, `impact-friction`, `normal-force`,
-    /// `stance-friction`, `strike-after-ramp`, `input-I`).
+    /// `stance-friction`, `strike-after-ramp`, `input-I`, `clearance`, `min-speed`,
+    /// `max-power`).
     pub name: String,
     /// What it measures at the design.
     pub value: f64,
@@ -67,7 +68,8 @@ pub struct Design {
     pub solver: String,
     /// The objective's name.
     pub objective: &'static str,
-    /// The objective at the design.
+    /// The objective at the design (for [`super::Objective::Speed`] the speed itself, which the
+    /// design maximises).
     pub value: f64,
     /// The objective at the start.
     pub start_value: f64,

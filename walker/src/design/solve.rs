@@ -78,6 +78,7 @@ impl Program<'_> {
             x,
             guess.as_deref(),
             ramp_inputs,
+            self.req.bounds.clearance.is_some(),
         )
         .ok();
         if let Some(e) = &e {
@@ -100,12 +101,19 @@ impl Program<'_> {
         stance_ks(e).max(e.impact_friction.min(CAP))
     }
 
-    /// The objective at an evaluation.
+    /// The objective at an evaluation as the program minimises it: the design's objective
+    /// ([`Program::reported`]) times [`Objective::sign`] (`-V` for the speed, maximised).
     fn objective(&self, e: &Evaluation) -> f64 {
+        self.req.objective.sign() * self.reported(e)
+    }
+
+    /// The design's objective at an evaluation, as the result reports it.
+    fn reported(&self, e: &Evaluation) -> f64 {
         match self.req.objective {
             Objective::SpecificResistance => e.specific_resistance,
             Objective::Power => e.power,
             Objective::Friction => e.required_friction().min(CAP),
+            Objective::Speed => e.fixed_point.speed,
         }
     }
 
@@ -203,6 +211,22 @@ impl Program<'_> {
                 .constraints(p, e.as_ref())
                 .iter()
                 .all(|g| *g <= FEASIBLE)
+    }
+
+    /// The visited parameters with a gait whose largest constraint violation is the least
+    /// (the earliest among equals).
+    fn least_violating(&self) -> Option<Vec<f64>> {
+        let seen = self.seen.borrow();
+        seen.iter()
+            .filter_map(|(y, e)| {
+                let worst = self
+                    .constraints(y, Some(e.as_ref()?))
+                    .into_iter()
+                    .fold(f64::NEG_INFINITY, f64::max);
+                Some((y.clone(), worst))
+            })
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(y, _)| y)
     }
 
     /// Central differences of the design's own objective in the parameters at `p` (as
@@ -308,18 +332,25 @@ pub(super) fn solve_from(
     let setup = &held;
     let names: Vec<&str> = req.vary.iter().map(|v| v.name.as_str()).collect();
     let n = x0.len();
-    let start =
-        evaluate(setup, cfg, &names, x0, None, !req.max_input.is_empty()).map_err(|message| {
-            DesignError::NoGaitAtStart {
-                at: names
-                    .iter()
-                    .zip(x0)
-                    .map(|(n, v)| format!("{n}={v}"))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-                message,
-            }
-        })?;
+    let swing = req.bounds.clearance.is_some();
+    let start = evaluate(
+        setup,
+        cfg,
+        &names,
+        x0,
+        None,
+        !req.max_input.is_empty(),
+        swing,
+    )
+    .map_err(|message| DesignError::NoGaitAtStart {
+        at: names
+            .iter()
+            .zip(x0)
+            .map(|(n, v)| format!("{n}={v}"))
+            .collect::<Vec<_>>()
+            .join(", "),
+        message,
+    })?;
     let prog = Program {
         setup,
         cfg,
@@ -337,7 +368,7 @@ pub(super) fn solve_from(
     prog.seen
         .borrow_mut()
         .push((x0.to_vec(), Some(start.clone())));
-    let start_value = prog.objective(&start);
+    let start_value = prog.reported(&start);
     // The program's start: the parameters, and in epigraph form the least `s` there.
     let mut x0 = x0.to_vec();
     if prog.epi {
@@ -418,6 +449,14 @@ pub(super) fn solve_from(
     } else {
         best_feasible.map_or(p_solver, |(y, _)| y)
     };
+    // An infeasible design whose solver ended where there is no gait is reported at the point
+    // visited with a gait whose largest violation is the least (the start at worst), so that
+    // the parameters and the gait reported belong together.
+    let p = if prog.at(&p).is_some() {
+        p
+    } else {
+        prog.least_violating().unwrap_or_else(|| x0[..n].to_vec())
+    };
     let e = prog.at(&p).unwrap_or(start);
     // The program's point: the parameters, and in epigraph form the least `s` there (so the
     // larger of the two ratios is exactly active in the KKT measure).
@@ -426,7 +465,11 @@ pub(super) fn solve_from(
         x.push(Program::level(&e));
     }
     let (f, g) = prog.values(&x);
-    let f = if prog.epi { prog.objective(&e) } else { f };
+    let f = if prog.epi {
+        prog.objective(&e)
+    } else {
+        req.objective.sign() * f
+    };
     let (df, dg) = prog.gradients(&x);
     let near = |y: f64, b: f64, v: &super::request::Vary| (y - b).abs() <= 1e-9 * (v.hi - v.lo);
     let at_lo: Vec<bool> = req
@@ -486,7 +529,7 @@ pub(super) fn solve_from(
     let reported = if prog.epi {
         prog.objective_gradient(&p)
     } else {
-        df.clone()
+        df.iter().map(|d| req.objective.sign() * d).collect()
     };
     let evaluations = prog.seen.borrow().len();
     Ok(Design {
