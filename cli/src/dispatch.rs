@@ -322,8 +322,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                     if let Some(regions) = walker.regions() {
                         animate::write_on_patches(&model, &tr, &req, &regions)?
                     } else {
-                        let mu0: Vec<f64> =
-                            walker.steps(0).take(tr.walk.steps.len() + 1).collect();
+                        let mu0: Vec<f64> = walker.steps(0).take(tr.walk.steps.len() + 1).collect();
                         animate::write_on_floor(&model, &tr, &req, &mu0)?
                     }
                 }

@@ -54,7 +54,11 @@ pub fn walk_text(w: &Walk) -> String {
         .any(|s| s.floor.is_some_and(|f| f.crossings.is_some()));
     let mut s = String::from("step          T         dx          V          p         SR");
     s.push_str(if floored { "        mu0" } else { "" });
-    s.push_str(if patched { " mu0_strike  crossings" } else { "" });
+    s.push_str(if patched {
+        " mu0_strike  crossings"
+    } else {
+        ""
+    });
     s.push_str(if sloped { "        phi\n" } else { "\n" });
     let opt = |v: Option<f64>| v.map_or_else(|| "-".to_owned(), |x| format!("{x:.6}"));
     for (k, st) in w.steps.iter().enumerate() {

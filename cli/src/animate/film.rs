@@ -179,10 +179,12 @@ impl Film {
     #[must_use]
     pub fn on_patches(mut self, regions: &[(f64, f64, f64)]) -> Self {
         let l = self.body.l;
-        let (first, last) = self.marks.iter().fold(
-            (f64::INFINITY, f64::NEG_INFINITY),
-            |(a, b), m| (a.min(m.lo), b.max(m.hi)),
-        );
+        let (first, last) = self
+            .marks
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), m| {
+                (a.min(m.lo), b.max(m.hi))
+            });
         let (first, last) = if first <= last {
             (first - 2.0 * l, last + 2.0 * l)
         } else {

@@ -122,8 +122,11 @@ pub(super) fn patches(raw: RawPatches) -> Result<FloorPlan, At> {
                 Some(v) => Ok((*v.get_ref(), v.span().start, field)),
             }
         };
-        let (from, from_at, from_field) =
-            value(&p.from, "from", "where the patch begins (m along the floor)")?;
+        let (from, from_at, from_field) = value(
+            &p.from,
+            "from",
+            "where the patch begins (m along the floor)",
+        )?;
         let from = position(from).map_err(|m| at(from_at, from_field.clone(), m))?;
         let (to, to_at, to_field) = value(&p.to, "to", "where the patch ends (m along the floor)")?;
         let to = position(to).map_err(|m| at(to_at, to_field.clone(), m))?;

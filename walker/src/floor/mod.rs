@@ -37,6 +37,4 @@ pub use stats::{
 pub use steps::FloorSteps;
 pub use survive::{MAX_SURVIVE_STEPS, MAX_WALKS, SurviveReport, survive, survive_stoppable};
 pub use walker::FloorWalker;
-pub use walker_scene::{
-    Distribution, FloorFile, FloorFileError, FloorPatch, FloorPlan, FloorSpec,
-};
+pub use walker_scene::{Distribution, FloorFile, FloorFileError, FloorPatch, FloorPlan, FloorSpec};

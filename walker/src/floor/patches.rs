@@ -29,7 +29,10 @@ pub(crate) fn regions(mu0: f64, patches: &[FloorPatch]) -> (Vec<f64>, Vec<f64>) 
     let mut boundaries = Vec::new();
     let mut values = vec![mu0];
     for &(start, value) in &pieces[1..] {
-        if values.last().is_some_and(|v| v.to_bits() == value.to_bits()) {
+        if values
+            .last()
+            .is_some_and(|v| v.to_bits() == value.to_bits())
+        {
             continue;
         }
         boundaries.push(start);

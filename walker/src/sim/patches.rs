@@ -50,9 +50,7 @@ pub fn region_at(patches: &dyn Patches, s: f64) -> usize {
 /// The ends `[from, to)` of region `region` (infinite at the outer ends).
 fn ends(patches: &dyn Patches, region: usize) -> [f64; 2] {
     let b = patches.boundaries();
-    let from = region
-        .checked_sub(1)
-        .map_or(f64::NEG_INFINITY, |i| b[i]);
+    let from = region.checked_sub(1).map_or(f64::NEG_INFINITY, |i| b[i]);
     let to = b.get(region).copied().unwrap_or(f64::INFINITY);
     [from, to]
 }

@@ -10,6 +10,7 @@ mod compiled_fused;
 mod continuation_constructed;
 mod continuation_held;
 mod continuation_walkers;
+mod floor_patches;
 mod floor_slopes;
 mod floor_survive;
 mod floor_walks;
