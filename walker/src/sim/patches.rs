@@ -139,7 +139,7 @@ pub(super) fn patched_step<const S: usize>(
                 let [from, to] = ends(patches, region);
                 let s = here.y[0] / cos_phi;
                 region = if s - from < to - s {
-                    region - 1
+                    region.saturating_sub(1)
                 } else {
                     region + 1
                 };
