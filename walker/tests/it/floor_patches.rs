@@ -119,7 +119,7 @@ impl<const S: usize> OdeSystem<S> for Plain<'_> {
 }
 
 /// Integrates the stance of `model` from `(t, y)` until the event `g` falls through zero (or
-/// either way where `either`), returning where.
+/// either way where `either`), returning where (or how the integration ended otherwise).
 fn until<const S: usize>(
     model: &Model,
     cfg: &SimConfig,
@@ -127,7 +127,7 @@ fn until<const S: usize>(
     y: [f64; S],
     either: bool,
     g: impl Fn(&[f64; S]) -> f64,
-) -> (f64, [f64; S]) {
+) -> Result<(f64, [f64; S]), String> {
     let mut integ = Integrator::<S>::new(cfg.method, Tolerances::new(cfg.rtol, cfg.atol));
     let dir = if either {
         Direction::Either
@@ -148,10 +148,10 @@ fn until<const S: usize>(
             Outcome::Event { t: te, y: ye, .. }
                 if either || model.strike_ahead(&ye[..model.n()]) =>
             {
-                return (te, ye);
+                return Ok((te, ye));
             }
             Outcome::Event { t: te, y: ye, .. } => (t, y) = (te, ye),
-            other => panic!("the stance ends without its event: {other:?}"),
+            other => return Err(format!("the stance ends without its event: {other:?}")),
         }
     }
 }
@@ -217,7 +217,8 @@ fn a_foot_that_slides_across_a_boundary_switches_friction_there_as_a_piecewise_s
     assert!(2 * n < S, "the wheel's state fits");
     let mut y0 = [0.0; S];
     y0[..2 * n].copy_from_slice(&uniform.steps[k - 1].state_plus());
-    let (tb, yb) = until(&model_a, &cfg, 0.0, y0, true, |y| y[0] / cos_phi - b);
+    let (tb, yb) =
+        until(&model_a, &cfg, 0.0, y0, true, |y| y[0] / cos_phi - b).expect("the boundary");
     assert!(
         (yb[0] / cos_phi - b).abs() <= 1e-9,
         "the switch at {} m, the boundary at {b} m",
@@ -228,7 +229,7 @@ fn a_foot_that_slides_across_a_boundary_switches_friction_there_as_a_piecewise_s
         model_b.events(&y[..n], &mut e);
         e[0]
     };
-    let (te, ye) = until(&model_b, &cfg, tb, yb, false, strike);
+    let (te, ye) = until(&model_b, &cfg, tb, yb, false, strike).expect("the strike");
     let pre: Vec<f64> = ye[..2 * n].to_vec();
     let imp = model_a.impact(&pre).expect("the frictionless strike");
     let post = model_a.reset(&pre, &imp);
