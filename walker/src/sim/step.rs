@@ -109,10 +109,15 @@ pub(super) fn start<'a, const S: usize>(
 /// boundary, and the start of the next piece; `kinks` says whether the power kink is still
 /// watched there.
 pub(super) struct Strike<const S: usize> {
+    /// The time since the step's impact.
     pub(super) t: f64,
+    /// The integrated state there.
     pub(super) y: [f64; S],
+    /// The smallest `lambda` seen so far in the stance.
     pub(super) lambda_min: f64,
+    /// The time the foot spent stuck so far.
     pub(super) stuck_time: f64,
+    /// Whether the power kink is still watched.
     pub(super) kinks: bool,
 }
 
@@ -181,7 +186,9 @@ fn stance_phase<const S: usize>(
 /// integrator's count `first` at the stance's start.
 #[derive(Clone, Copy)]
 pub(super) struct Budget {
+    /// The most attempted steps of the whole stance.
     pub(super) budget: usize,
+    /// The integrator's count of attempted steps at the stance's start.
     pub(super) first: u64,
 }
 
