@@ -190,7 +190,8 @@ pub enum Command {
         #[arg(long = "max-steps", allow_hyphen_values = true, default_value = "100")]
         max_steps: String,
         /// Walk on the floor of FILE.toml (docs/floors.md): the friction mu0 and the slope phi
-        /// of each step (a random floor's walk 0); not with --mu0, --mu0-steps or --phi-steps.
+        /// of each step (a random floor's walk 0), or mu0 by position along the floor (a
+        /// patches floor); not with --mu0, --mu0-steps or --phi-steps.
         #[arg(long)]
         floor: Option<PathBuf>,
         /// Walk on mu0 per step, comma separated, each > 0: step k on the k-th value, the last
@@ -376,8 +377,8 @@ pub enum Command {
         #[arg(long)]
         strobe: bool,
         /// Walk on the floor of FILE.toml (docs/floors.md), drawn as a patch of colour per step
-        /// from ice blue (its lowest mu0) to brown (its highest); a random floor's walk 0; not
-        /// with --mu0 or --mu0-steps.
+        /// (per patch of a floor by position) from ice blue (its lowest mu0) to brown (its
+        /// highest); a random floor's walk 0; not with --mu0 or --mu0-steps.
         #[arg(long)]
         floor: Option<PathBuf>,
         /// Walk step k on the k-th mu0 of this comma-separated list, drawn as --floor is, the

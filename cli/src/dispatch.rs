@@ -319,8 +319,12 @@ fn run(cli: Cli) -> Result<(), CliError> {
                         floor::flag_of(&setup, &common.set, phi, &spec, floor_file.is_some())?;
                     let walker = floor::walker_on(&setup, spec, flag)?;
                     let tr = animate::sample_on_floor(&walker, &cfg, &start, &req, flag)?;
-                    let mu0: Vec<f64> = walker.steps(0).take(tr.walk.steps.len() + 1).collect();
-                    animate::write_on_floor(&model, &tr, &req, &mu0)?
+                    if let Some(regions) = walker.regions() {
+                        animate::write_on_patches(&model, &tr, &req, &regions)?
+                    } else {
+                        let mu0: Vec<f64> = walker.steps(0).take(tr.walk.steps.len() + 1).collect();
+                        animate::write_on_floor(&model, &tr, &req, &mu0)?
+                    }
                 }
             };
             if common.json {

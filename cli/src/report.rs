@@ -39,15 +39,26 @@ pub fn walk_json(w: &Walk) -> String {
 }
 
 /// A text table of a walk, with each step's `mu0` for a walk on a floor of its own (and its
-/// slope `phi` where the floor sets it).
+/// slope `phi` where the floor sets it; on a floor of patches by position, the `mu0` of the
+/// step's strike and the patch boundaries its stance foot slid across).
 pub fn walk_text(w: &Walk) -> String {
     let floored = w.steps.iter().any(|s| s.floor.is_some());
     let sloped = w
         .steps
         .iter()
         .any(|s| s.floor.is_some_and(|f| f.phi.is_some()));
+    // A floor of patches by position: the strike's mu0 and the boundaries crossed in stance.
+    let patched = w
+        .steps
+        .iter()
+        .any(|s| s.floor.is_some_and(|f| f.crossings.is_some()));
     let mut s = String::from("step          T         dx          V          p         SR");
     s.push_str(if floored { "        mu0" } else { "" });
+    s.push_str(if patched {
+        " mu0_strike  crossings"
+    } else {
+        ""
+    });
     s.push_str(if sloped { "        phi\n" } else { "\n" });
     let opt = |v: Option<f64>| v.map_or_else(|| "-".to_owned(), |x| format!("{x:.6}"));
     for (k, st) in w.steps.iter().enumerate() {
@@ -61,6 +72,14 @@ pub fn walk_text(w: &Walk) -> String {
         ));
         if floored {
             s.push_str(&format!(" {:>10}", opt(st.floor.map(|f| f.mu0))));
+        }
+        if patched {
+            let crossings = st.floor.and_then(|f| f.crossings);
+            s.push_str(&format!(
+                " {:>10} {:>10}",
+                opt(st.floor.and_then(|f| f.mu0_strike)),
+                crossings.map_or_else(|| "-".to_owned(), |c| c.to_string())
+            ));
         }
         if sloped {
             s.push_str(&format!(" {:>10}", opt(st.floor.and_then(|f| f.phi))));

@@ -71,6 +71,11 @@ def with_mu0(**fields):
     ({"kind": "steps", "phi": [0.2, float("nan")]}, "floor['phi'][1]", "must be finite"),
     ({"kind": "random", "seed": 1, "mu0": {"distribution": "uniform", "lo": 0.3, "hi": 0.2}},
      "floor['mu0']['hi']", "must be > mu0.lo"),
+    ({"kind": "patches", "mu0": 0.6, "patch": [{"from": 2.0, "to": 1.0, "mu0": 0.05}]},
+     "floor['patch'][0]['to']", "must be > patch[0].from"),
+    ({"kind": "patches", "mu0": 0.6,
+      "patch": [{"from": 1.0, "to": 2.0, "mu0": 0.05}, {"from": 1.5, "to": 3.0, "mu0": 0.2}]},
+     "floor['patch'][1]['from']", "do not overlap"),
 ])
 def test_a_bad_floor_dict_raises_value_error_naming_the_key(floor, key, text):
     with pytest.raises(ValueError) as e:
@@ -198,3 +203,20 @@ def test_mfpt_equals_the_cli_and_checks_its_arguments_by_name():
         sw.mfpt(**kw, box_scale=1.0, half_widths=[0.1, 0.1])
     with pytest.raises(ValueError, match="friction only"):
         sw.mfpt(**{**kw, "floor": SLOPES}, set={"mu0": 0.8})
+
+
+ICE_PATCH = {"kind": "patches", "mu0": 0.6, "patch": [{"from": 2.0, "to": 2.6, "mu0": 0.05}]}
+"""A dry floor with a patch of ice by position (``docs/floors.md``, "Patches by position")."""
+
+
+def test_a_patches_floor_as_a_dict_is_the_same_floor_as_its_file(tmp_path):
+    path = tmp_path / "ice-patch.toml"
+    path.write_text('kind = "patches"\nmu0 = 0.6\n[[patch]]\nfrom = 2.0\nto = 2.6\nmu0 = 0.05\n')
+    by_dict = sw.simulate(scene="active-level", t_set=0.3, max_steps=8, floor=ICE_PATCH)
+    by_file = sw.simulate(scene="active-level", t_set=0.3, max_steps=8, floor=str(path))
+    assert by_dict.ok and by_file.ok
+    assert by_dict.steps == by_file.steps == 8
+    assert by_dict.floor_mu0.tolist() == by_file.floor_mu0.tolist()
+    # Step 4 stands on the ice: the foot the strike of step 3 put there.
+    assert by_dict.floor_mu0.tolist()[4] == 0.05
+    assert (by_dict.q_plus == by_file.q_plus).all()

@@ -26,6 +26,10 @@
 //! range its model file gives, is checked when the floor meets a walker (`walker::floor`).
 //! The slope `phi` takes the same three forms as `mu0` (a value, a list, a `[phi]` table of
 //! a random floor), each value finite; its range is the model's, checked with the walker.
+//!
+//! A fourth kind, `patches` (`floor/patches.rs`), gives `mu0` by position along the floor
+//! instead of by step: a value outside the patches and `[[patch]]` tables of `from`, `to`
+//! (half-open, metres) and `mu0`.
 
 use std::path::Path;
 
@@ -36,9 +40,12 @@ use crate::model::error::Location;
 use crate::model::source::SourceMap;
 
 mod distribution;
+mod patches;
 
 pub use distribution::normal_mass;
 use distribution::{RawDistribution, distribution};
+pub use patches::{FloorPatch, MAX_PATCH_POSITION, MAX_PATCHES};
+use patches::{RawPatches, patches};
 
 /// The most values a `steps` floor lists (a walk takes at most a million steps; the file is
 /// at most [`MAX_FILE_BYTES`](crate::limits::MAX_FILE_BYTES) long anyway).
@@ -165,6 +172,15 @@ pub enum FloorSpec {
         /// How `mu0` is drawn.
         mu0: Distribution,
     },
+    /// `mu0` by position along the floor, not by step (a friction floor only): `mu0` outside
+    /// the patches, each patch's own on its `[from, to)`. The patches are in order along the
+    /// floor and do not overlap.
+    Patches {
+        /// The friction coefficient outside the patches.
+        mu0: f64,
+        /// The patches, at least one, in order, not overlapping.
+        patches: Vec<FloorPatch>,
+    },
 }
 
 impl FloorSpec {
@@ -179,6 +195,25 @@ impl FloorSpec {
                     (a.min(x), b.max(x))
                 }),
             FloorSpec::Random { mu0, .. } => mu0.bounds(),
+            FloorSpec::Patches { mu0, patches } => patches
+                .iter()
+                .fold((*mu0, *mu0), |(a, b), p| (a.min(p.mu0), b.max(p.mu0))),
+        }
+    }
+
+    /// The friction coefficient at `s` metres along a floor of patches (`None` for the other
+    /// kinds, which give it by step): the patch's whose `[from, to)` holds `s`, else the floor's.
+    #[must_use]
+    pub fn mu0_at(&self, s: f64) -> Option<f64> {
+        match self {
+            FloorSpec::Patches { mu0, patches } => {
+                let i = patches.partition_point(|p| p.from <= s);
+                Some(match i.checked_sub(1).map(|j| &patches[j]) {
+                    Some(p) if s < p.to => p.mu0,
+                    _ => *mu0,
+                })
+            }
+            _ => None,
         }
     }
 
@@ -405,7 +440,7 @@ fn parse(text: &str) -> Result<FloorPlan, At> {
         return Err(at(
             0,
             "kind",
-            "missing: expected kind = \"uniform\", \"steps\" or \"random\"",
+            "missing: expected kind = \"uniform\", \"steps\", \"random\" or \"patches\"",
         ));
     };
     // At least one of `mu0` and `phi`: a floor that sets nothing is a mistake.
@@ -488,11 +523,15 @@ fn parse(text: &str) -> Result<FloorPlan, At> {
             }
             Ok(floor)
         }
+        "patches" => {
+            let raw: RawPatches = toml::from_str(text).map_err(|e| syntax(text, &e))?;
+            patches(raw)
+        }
         other => Err(at(
             kind.span().start,
             "kind",
             format!(
-                "{:?}: expected \"uniform\", \"steps\" or \"random\"",
+                "{:?}: expected \"uniform\", \"steps\", \"random\" or \"patches\"",
                 other.chars().take(40).collect::<String>()
             ),
         )),

@@ -26,7 +26,9 @@ pub mod structure;
 
 pub use catalog::KernelName;
 pub use error::SceneError;
-pub use floor::{Distribution, FloorFile, FloorFileError, FloorPlan, FloorSpec, StepsError};
+pub use floor::{
+    Distribution, FloorFile, FloorFileError, FloorPatch, FloorPlan, FloorSpec, StepsError,
+};
 pub use model_scene::{ModelSceneError, ModelSceneFile, is_model_scene};
 pub use param::Param;
 pub use read::{ReadError, read_input};

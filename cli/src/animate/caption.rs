@@ -59,6 +59,19 @@ pub fn title_on_floor(model: &Model, speed: f64, mu0: impl IntoIterator<Item = f
     title_with(model, speed, &text)
 }
 
+/// [`title`] for a walk on a floor of patches by position whose drawn patches have the
+/// friction coefficients `mu0`: their range and the colours of its ends.
+#[must_use]
+pub fn title_on_patches(model: &Model, speed: f64, mu0: impl IntoIterator<Item = f64>) -> String {
+    let (lo, hi) = mu0_range(mu0);
+    let text = if hi > lo {
+        format!("mu0 by position from {lo} (blue) to {hi} (brown)")
+    } else {
+        format!("mu0 = {lo}")
+    };
+    title_with(model, speed, &text)
+}
+
 /// The title with the friction coefficient given as `mu0`.
 fn title_with(model: &Model, speed: f64, mu0: &str) -> String {
     let law = match model.friction_law() {

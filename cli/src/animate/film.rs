@@ -29,8 +29,8 @@ pub struct Mark {
 /// neighbouring steps' landings, as distances along the floor `x / cos phi` (m).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Patch {
-    /// The step.
-    pub step: usize,
+    /// The step (`None` for a patch of a floor of patches by position, [`Film::on_patches`]).
+    pub step: Option<usize>,
     /// Where the patch begins.
     pub from: f64,
     /// Where it ends.
@@ -158,7 +158,7 @@ impl Film {
                 (None, None) => (l, l),
             };
             self.patches.push(Patch {
-                step,
+                step: Some(step),
                 from: s - back,
                 to: s + ahead,
                 mu0: value,
@@ -167,6 +167,42 @@ impl Film {
                 } else {
                     1.0
                 },
+            });
+        }
+        self
+    }
+
+    /// This film on a floor of patches by position: `regions` are `(from, to, mu0)` along the
+    /// floor (m, `from` or `to` infinite at the outer ends), drawn where they meet the stretch
+    /// the walk covers (from a leg's length before its first landing to one after its last),
+    /// shaded from the lowest `mu0` drawn to the highest.
+    #[must_use]
+    pub fn on_patches(mut self, regions: &[(f64, f64, f64)]) -> Self {
+        let l = self.body.l;
+        let (first, last) = self
+            .marks
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), m| {
+                (a.min(m.lo), b.max(m.hi))
+            });
+        let (first, last) = if first <= last {
+            (first - 2.0 * l, last + 2.0 * l)
+        } else {
+            (-2.0 * l, 2.0 * l)
+        };
+        let shown: Vec<(f64, f64, f64)> = regions
+            .iter()
+            .filter(|r| r.1 > first && r.0 < last)
+            .map(|&(a, b, m)| (a.max(first), b.min(last), m))
+            .collect();
+        let (lo, hi) = mu0_range(shown.iter().map(|r| r.2));
+        for (from, to, mu0) in shown {
+            self.patches.push(Patch {
+                step: None,
+                from,
+                to,
+                mu0,
+                dry: if hi > lo { (mu0 - lo) / (hi - lo) } else { 1.0 },
             });
         }
         self

@@ -9,7 +9,7 @@ use walker::floor::FloorWalker;
 use walker::model::Model;
 use walker::sim::{SimConfig, Trajectory, WalkLimits, trajectory};
 
-use super::caption::{failure_label, title, title_on_floor};
+use super::caption::{failure_label, title, title_on_floor, title_on_patches};
 use super::error::AnimateError;
 use super::film::Film;
 use super::gif::animated_gif;
@@ -149,6 +149,15 @@ pub fn write(model: &Model, tr: &Trajectory, req: &Request) -> Result<Written, A
     write_on_floor(model, tr, req, &[])
 }
 
+/// The friction under a drawn walk: by step, or by position along the floor.
+#[derive(Clone, Copy, Debug)]
+pub enum Drawn<'a> {
+    /// Step `k` on `mu0[k]` (none drawn if empty).
+    Steps(&'a [f64]),
+    /// A floor of patches by position: its regions `(from, to, mu0)` along the floor (m).
+    Regions(&'a [(f64, f64, f64)]),
+}
+
 /// [`write()`] for a walk on a floor whose step `k` has the friction coefficient `mu0[k]`
 /// (drawn as patches under the floor line; none if `mu0` is empty).
 ///
@@ -159,6 +168,31 @@ pub fn write_on_floor(
     tr: &Trajectory,
     req: &Request,
     mu0: &[f64],
+) -> Result<Written, AnimateError> {
+    write_drawn(model, tr, req, Drawn::Steps(mu0))
+}
+
+/// [`write()`] for a walk on a floor of patches by position, whose regions are `(from, to,
+/// mu0)` along the floor (m): each region in view drawn as a coloured band under the floor
+/// line.
+///
+/// # Errors
+/// As [`write()`].
+pub fn write_on_patches(
+    model: &Model,
+    tr: &Trajectory,
+    req: &Request,
+    regions: &[(f64, f64, f64)],
+) -> Result<Written, AnimateError> {
+    write_drawn(model, tr, req, Drawn::Regions(regions))
+}
+
+/// [`write()`] with the floor's friction `drawn`.
+fn write_drawn(
+    model: &Model,
+    tr: &Trajectory,
+    req: &Request,
+    drawn: Drawn<'_>,
 ) -> Result<Written, AnimateError> {
     let film =
         Film::new(model, tr, req.speed, req.size, title(model, req.speed)).ok_or_else(|| {
@@ -171,14 +205,22 @@ pub fn write_on_floor(
                 ),
             )
         })?;
-    let film = if mu0.is_empty() {
-        film
-    } else {
-        // The title's range of mu0 is the drawn patches', the one their shades span.
-        let film = film.on_floor(mu0);
-        Film {
-            title: title_on_floor(model, req.speed, film.patches.iter().map(|p| p.mu0)),
-            ..film
+    // The title's range of mu0 is the drawn patches', the one their shades span.
+    let film = match drawn {
+        Drawn::Steps([]) => film,
+        Drawn::Steps(mu0) => {
+            let film = film.on_floor(mu0);
+            Film {
+                title: title_on_floor(model, req.speed, film.patches.iter().map(|p| p.mu0)),
+                ..film
+            }
+        }
+        Drawn::Regions(regions) => {
+            let film = film.on_patches(regions);
+            Film {
+                title: title_on_patches(model, req.speed, film.patches.iter().map(|p| p.mu0)),
+                ..film
+            }
         }
     };
     let path = &req.output;

@@ -26,5 +26,7 @@ pub mod svg;
 pub mod view;
 
 pub use error::AnimateError;
-pub use job::{Written, animate, sample, sample_on_floor, write, write_on_floor};
+pub use job::{
+    Drawn, Written, animate, sample, sample_on_floor, write, write_on_floor, write_on_patches,
+};
 pub use request::Request;

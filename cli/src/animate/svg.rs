@@ -88,13 +88,16 @@ fn patches(f: &Film) -> String {
         let (r, g, bl) = Patch::colour(p.dry);
         s.push_str(&format!(
             "<path class=\"floor-patch\" d=\"M{} {}L{} {}\" stroke=\"rgb({r},{g},{bl})\" \
-             stroke-width=\"{}\"><title>step {}: mu0 = {}</title></path>\n",
+             stroke-width=\"{}\"><title>{}: mu0 = {}</title></path>\n",
             num(x0),
             num(b.floor_z(x0) - 0.5 * w),
             num(x1),
             num(b.floor_z(x1) - 0.5 * w),
             num(w),
-            p.step + 1,
+            p.step.map_or_else(
+                || format!("{} m to {} m", num(p.from), num(p.to)),
+                |k| format!("step {}", k + 1)
+            ),
             p.mu0
         ));
     }

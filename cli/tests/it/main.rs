@@ -12,6 +12,7 @@ mod continue_cli;
 mod design_bounds_cli;
 mod design_cli;
 mod floor_cli;
+mod floor_patches_cli;
 mod floor_slopes_cli;
 mod floor_study_cli;
 mod front_end_checks;

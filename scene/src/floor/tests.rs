@@ -302,3 +302,86 @@ fn bounds_are_the_extremes_a_step_can_get() {
     };
     assert_eq!(markov.bounds(), (0.05, 0.4));
 }
+
+#[test]
+fn a_patches_floor_reads_its_patches_in_order_and_gives_mu0_by_position() {
+    use super::FloorPatch;
+    let spec = read(
+        "kind = \"patches\"\nmu0 = 0.4\n[[patch]]\nfrom = 2.0\nto = 2.6\nmu0 = 0.05\n\
+         [[patch]]\nfrom = 2.6\nto = 3\nmu0 = 0.2\n",
+    )
+    .expect("a patches floor");
+    assert_eq!(
+        spec,
+        FloorSpec::Patches {
+            mu0: 0.4,
+            patches: vec![
+                FloorPatch {
+                    from: 2.0,
+                    to: 2.6,
+                    mu0: 0.05
+                },
+                FloorPatch {
+                    from: 2.6,
+                    to: 3.0,
+                    mu0: 0.2
+                },
+            ]
+        }
+    );
+    // Half-open: a patch holds its start, not its end.
+    let at = |s: f64| spec.mu0_at(s).expect("by position");
+    assert_eq!(
+        [
+            at(1.999),
+            at(2.0),
+            at(2.599),
+            at(2.6),
+            at(2.999),
+            at(3.0),
+            at(-5.0)
+        ],
+        [0.4, 0.05, 0.05, 0.2, 0.2, 0.4, 0.4]
+    );
+    assert_eq!(spec.bounds(), (0.05, 0.4));
+    assert_eq!(FloorSpec::Uniform { mu0: 0.4 }.mu0_at(1.0), None);
+}
+
+#[test]
+fn a_patches_floor_refuses_overlap_disorder_empty_ends_and_a_slope_by_field() {
+    let one = |from: &str, to: &str, mu0: &str| {
+        format!("kind = \"patches\"\nmu0 = 0.4\n[[patch]]\nfrom = {from}\nto = {to}\nmu0 = {mu0}\n")
+    };
+    for (text, expected) in [
+        (
+            one("2.0", "1.0", "0.1"),
+            "f.toml:5:6: field `patch[0].to`: 1: must be > patch[0].from",
+        ),
+        (
+            one("-2e9", "1.0", "0.1"),
+            "f.toml:4:8: field `patch[0].from`: -2000000000: must be finite",
+        ),
+        (
+            one("1.0", "2.0", "-1"),
+            "f.toml:6:7: field `patch[0].mu0`: -1: must be > 0",
+        ),
+        (
+            format!(
+                "{}[[patch]]\nfrom = 1.9\nto = 3.0\nmu0 = 0.2\n",
+                one("1.0", "2.0", "0.1")
+            ),
+            "f.toml:8:8: field `patch[1].from`: 1.9: must be >= patch[0].to = 2",
+        ),
+        (
+            "kind = \"patches\"\nmu0 = 0.4\n".to_owned(),
+            "f.toml:1:1: field `patch`: missing",
+        ),
+        (
+            format!("{}phi = 0.1\n", "kind = \"patches\"\nmu0 = 0.4\n"),
+            "f.toml:3:7: field `phi`: a patches floor sets the friction only",
+        ),
+    ] {
+        let e = error(&text);
+        assert!(e.starts_with(expected), "{text}: {e}");
+    }
+}

@@ -13,7 +13,9 @@
 //! Files, each using only those listed before it: `draw.rs` (the portable random numbers of a
 //! step), `steps.rs` ([`FloorSteps`], the values of one walk's steps), `error.rs`
 //! ([`FloorError`]), `translate.rs` (the check that a model moves with its stance foot),
-//! `walker.rs` ([`FloorWalker`], walks on a floor), `stats.rs` (survival
+//! `patches.rs` (a floor of patches by position prepared for a walker: its regions and their
+//! models, for the simulator's [`crate::sim::Patches`]), `walker.rs` ([`FloorWalker`], walks
+//! on a floor), `stats.rs` (survival
 //! statistics of walks that end by failure or at a step limit), `survive.rs` ([`survive`],
 //! many seeded walks on all cores), `mesh/` (the Markov-chain approximation of the mean
 //! first-passage time, [`mesh::mesh_mfpt`]).
@@ -21,6 +23,7 @@
 pub(crate) mod draw;
 mod error;
 pub mod mesh;
+mod patches;
 mod stats;
 mod steps;
 mod survive;
@@ -34,4 +37,4 @@ pub use stats::{
 pub use steps::FloorSteps;
 pub use survive::{MAX_SURVIVE_STEPS, MAX_WALKS, SurviveReport, survive, survive_stoppable};
 pub use walker::FloorWalker;
-pub use walker_scene::{Distribution, FloorFile, FloorFileError, FloorPlan, FloorSpec};
+pub use walker_scene::{Distribution, FloorFile, FloorFileError, FloorPatch, FloorPlan, FloorSpec};

@@ -55,7 +55,9 @@ impl Iterator for FloorSteps<'_> {
         let k = self.step;
         self.step += 1;
         Some(match self.spec {
-            FloorSpec::Uniform { mu0 } => *mu0,
+            // A floor of patches gives `mu0` by position, not by step (the walker asks its
+            // patches, `super::patches`): per step, its value outside the patches.
+            FloorSpec::Uniform { mu0 } | FloorSpec::Patches { mu0, .. } => *mu0,
             FloorSpec::Steps { mu0 } => {
                 let i = usize::try_from(k).unwrap_or(usize::MAX).min(mu0.len() - 1);
                 mu0[i]

@@ -4,6 +4,7 @@
 //! number of threads. A batch is any range of walks: the walks `a..b` of a batch are the same
 //! as a batch of those walks alone, so a large batch can be split into ranges (run anywhere)
 //! whose outcomes, put back in order, give the statistics of the whole ([`survival`]).
+//! A floor of patches by position draws nothing, so its walks are one walk, walked once.
 
 use std::ops::Range;
 
@@ -71,6 +72,31 @@ pub fn survive_stoppable(
         max_steps,
         ..WalkLimits::default()
     };
+    if walker.by_position() {
+        // A floor of patches draws nothing: every walk is the same walk, walked once.
+        let Some(first) = walks.clone().next() else {
+            return Ok(Some(SurviveReport {
+                max_steps,
+                outcomes: Vec::new(),
+                survival: survival(&[]),
+            }));
+        };
+        let Some(w) = walker.walk_stoppable(first, cfg, initial, &limits, stop)? else {
+            return Ok(None);
+        };
+        let outcomes: Vec<SurviveOutcome> = walks
+            .map(|i| SurviveOutcome {
+                walk: i,
+                steps: w.steps.len(),
+                failure: w.failure.as_ref().map(|f| f.name().to_owned()),
+            })
+            .collect();
+        return Ok(Some(SurviveReport {
+            max_steps,
+            survival: survival(&outcomes),
+            outcomes,
+        }));
+    }
     let outcomes = walks
         .into_par_iter()
         .map(|i| {

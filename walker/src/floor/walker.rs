@@ -15,11 +15,12 @@ use walker_scene::{Distribution, FloorPlan, FloorSpec};
 use crate::model::{Model, Parameters};
 use crate::setup::Setup;
 use crate::sim::{
-    FailureKind, SimConfig, StepFloor, StepModels, Trajectory, Walk, WalkLimits,
+    FailureKind, Patches, SimConfig, StepFloor, StepModels, Trajectory, Walk, WalkLimits,
     trajectory_by_step, walk_by_step, walk_by_step_stoppable,
 };
 
 use super::error::FloorError;
+use super::patches::PatchModels;
 use super::steps::FloorSteps;
 use super::translate::check_translation;
 
@@ -34,6 +35,8 @@ pub struct FloorWalker<'s> {
     mu0: Option<String>,
     /// The slope's name among the parameters, if the floor sets it.
     phi: Option<String>,
+    /// A floor of patches by position, prepared: its regions and their models.
+    patches: Option<PatchModels>,
 }
 
 /// The values a floor's `quantity` part can give a step, named by their fields (`mu0`,
@@ -58,6 +61,14 @@ fn extremes(spec: &FloorSpec, quantity: &str) -> Vec<(String, f64)> {
                 (format!("{quantity}.{}", names.1), hi),
             ]
         }
+        FloorSpec::Patches { mu0, patches } => std::iter::once((quantity.to_owned(), *mu0))
+            .chain(
+                patches
+                    .iter()
+                    .enumerate()
+                    .map(|(i, p)| (format!("patch[{i}].{quantity}"), p.mu0)),
+            )
+            .collect(),
     }
 }
 
@@ -101,11 +112,16 @@ impl<'s> FloorWalker<'s> {
                 Some(name)
             }
         };
+        let patches = match (&floor.mu0, &mu0) {
+            (Some(part), Some(name)) => PatchModels::of(setup, name, part)?,
+            _ => None,
+        };
         Ok(FloorWalker {
             setup,
             floor,
             mu0,
             phi,
+            patches,
         })
     }
 
@@ -158,6 +174,21 @@ impl<'s> FloorWalker<'s> {
     #[must_use]
     pub fn floor(&self) -> &FloorPlan {
         &self.floor
+    }
+
+    /// The regions of a floor of patches by position, `(from, to, mu0)` in order along the
+    /// floor (m; the outer ends infinite; neighbours of one value joined); `None` for a floor
+    /// by step.
+    #[must_use]
+    pub fn regions(&self) -> Option<Vec<(f64, f64, f64)>> {
+        self.patches.as_ref().map(PatchModels::regions)
+    }
+
+    /// Whether the floor gives the friction by position along the floor (a floor of patches),
+    /// not by step: a walk on it is the same for every walk index (no random numbers).
+    #[must_use]
+    pub fn by_position(&self) -> bool {
+        self.patches.is_some()
     }
 
     /// The friction coefficients of walk `index`'s steps: the floor's, or the walker's own
@@ -332,7 +363,7 @@ fn set(
 ///
 /// # Errors
 /// `value` is outside the parameter's range or the kernels cannot take it.
-fn prepare(
+pub(super) fn prepare(
     setup: &Setup,
     params: &mut Parameters,
     quantity: &'static str,
@@ -444,9 +475,15 @@ impl StepModels for PerStep<'_, '_> {
 
     fn floor(&self) -> Option<StepFloor> {
         self.current.as_ref().map(|((mu0, phi), _)| StepFloor {
+            crossings: None,
             mu0: *mu0,
+            mu0_strike: None,
             phi: self.walker.phi.as_ref().map(|_| *phi),
         })
+    }
+
+    fn patches(&self) -> Option<&dyn Patches> {
+        self.walker.patches.as_ref().map(|p| p as &dyn Patches)
     }
 
     /// The point step `step` is seen from (module doc): while the slope stays, the point of

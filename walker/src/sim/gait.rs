@@ -57,10 +57,23 @@ pub struct StepResult {
 
 /// The floor under one step of a walk on a changing floor: the friction coefficient its
 /// stance foot felt and its strike used, and the slope of its floor if the floor sets it.
+///
+/// The fields are in the byte order of their names (the JSON is a sorted object).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct StepFloor {
-    /// The friction coefficient `mu0` of the step.
+    /// On a floor of patches by position: the number of patch boundaries the stance foot slid
+    /// across during the step (each changes `mu0` there); `None` (left out of the JSON) on the
+    /// other floors, whose `mu0` is the step's throughout.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crossings: Option<u32>,
+    /// The friction coefficient `mu0` of the step (on a floor of patches: at the step's start,
+    /// under the stance foot).
     pub mu0: f64,
+    /// On a floor of patches by position: the `mu0` of the patch under the new stance foot,
+    /// which the strike that ends the step used; `None` (left out of the JSON) on the other
+    /// floors, whose strike uses `mu0`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mu0_strike: Option<f64>,
     /// The slope angle `phi` of the step's floor (the line of that slope through its stance
     /// foot), for a floor that sets the slope (else `None`, left out of the JSON).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -134,7 +147,9 @@ mod tests {
             speed: 0.9,
             dx: 0.55,
             floor: Some(StepFloor {
+                crossings: Some(2),
                 mu0: 0.4,
+                mu0_strike: Some(0.05),
                 phi: Some(0.05),
             }),
             foot_impulse: [0.1, 1.2],

@@ -40,6 +40,10 @@ pub enum Guard {
     /// Coulomb friction: a stuck foot starts to slip (the force that holds it leaves the cone,
     /// `|lambda_t| - mu0 lambda_n` rises through zero).
     FootSlips,
+    /// A floor of patches by position (`sim/patches.rs`): the stance foot reaches an end of
+    /// the patch it stands on (`min(s - from, to - s)` falls through zero, `s` the foot's
+    /// position along the floor). Watched only on such a floor, after the others.
+    Boundary,
 }
 
 impl Guard {
@@ -60,9 +64,11 @@ impl Guard {
     pub fn direction(self) -> Direction {
         match self {
             Guard::LambdaBlowUp | Guard::FootSlips => Direction::Rising,
-            Guard::Strike | Guard::LiftOff | Guard::Fall(_) | Guard::FootStops => {
-                Direction::Falling
-            }
+            Guard::Strike
+            | Guard::LiftOff
+            | Guard::Fall(_)
+            | Guard::FootStops
+            | Guard::Boundary => Direction::Falling,
             Guard::PowerKink => Direction::Either,
         }
     }
@@ -78,6 +84,9 @@ pub(super) struct Guards<'a> {
     lambda_max: f64,
     /// Whether the power kink is watched (before the end of the power's count).
     kinks: Cell<bool>,
+    /// The patch the foot stands on, `[from, to)` along the floor (m), and `cos phi` (the
+    /// foot's position along the floor is `x / cos phi`): only on a floor of patches.
+    patch: Option<([f64; 2], f64)>,
 }
 
 impl<'a> Guards<'a> {
@@ -89,7 +98,28 @@ impl<'a> Guards<'a> {
             list: Guard::list(model.event_count() - 1, model.friction_law()),
             lambda_max,
             kinks: Cell::new(model.is_active()),
+            patch: None,
         }
+    }
+
+    /// The guards of [`Guards::new`] and [`Guard::Boundary`] for a foot on the patch
+    /// `[from, to)` (`patch`, metres along the floor; an end may be infinite), on a floor of
+    /// slope `cos_phi`.
+    pub(super) fn on_patch(
+        foot: &'a Foot<'a>,
+        lambda_max: f64,
+        patch: [f64; 2],
+        cos_phi: f64,
+    ) -> Self {
+        let mut g = Self::new(foot, lambda_max);
+        g.list.push(Guard::Boundary);
+        g.patch = Some((patch, cos_phi));
+        g
+    }
+
+    /// Whether the power kink is still watched.
+    pub(super) fn power_kinks(&self) -> bool {
+        self.kinks.get()
     }
 
     /// The guard of an event index of the integrator's [`crate::ode::Outcome::Event`].
@@ -119,7 +149,7 @@ impl<'a> Guards<'a> {
             Guard::LiftOff | Guard::LambdaBlowUp | Guard::FootSlips => {
                 self.reaction_value(guard, || foot.reaction(t, y))
             }
-            Guard::PowerKink | Guard::FootStops => self.own_value(guard, t, y),
+            Guard::PowerKink | Guard::FootStops | Guard::Boundary => self.own_value(guard, t, y),
         }
     }
 
@@ -145,7 +175,9 @@ impl<'a> Guards<'a> {
                         })
                     })
                 }
-                Guard::PowerKink | Guard::FootStops => self.own_value(guard, t, y),
+                Guard::PowerKink | Guard::FootStops | Guard::Boundary => {
+                    self.own_value(guard, t, y)
+                }
             };
         }
         true
@@ -184,7 +216,7 @@ impl<'a> Guards<'a> {
         }
     }
 
-    /// The value of the power-kink or foot-stops guard `guard` at `(t, y)`.
+    /// The value of the power-kink, foot-stops or boundary guard `guard` at `(t, y)`.
     fn own_value<const S: usize>(&self, guard: Guard, t: f64, y: &[f64; S]) -> f64 {
         let foot = self.foot;
         match guard {
@@ -195,6 +227,13 @@ impl<'a> Guards<'a> {
                     1.0
                 }
             }
+            Guard::Boundary => match self.patch {
+                Some(([from, to], cos_phi)) => {
+                    let s = y[0] / cos_phi;
+                    (s - from).min(to - s)
+                }
+                None => 1.0,
+            },
             _ => foot.contact().sigma() * y[foot.model.n()],
         }
     }

@@ -17,7 +17,8 @@
 //! periodic stop), `foot.rs` (the stance foot, its contact and ground reaction), `stance.rs`
 //! (the stance ODE system and the sampling observer), `guard.rs` (the stance events,
 //! [`Guard`]), `blowup.rs` (which failure a blown-up `lambda` is), `step.rs` (one stance phase
-//! and its impact), `step_models.rs` (the model of each step, [`StepModels`]), `walk.rs` ([`walk()`],
+//! and its impact), `patches.rs` (one step on a floor of patches by position, [`Patches`]:
+//! the stance in pieces, one per patch), `step_models.rs` (the model of each step, [`StepModels`]), `walk.rs` ([`walk()`],
 //! [`walk_with_stats`], [`walk_by_step`]), `trajectory.rs` (the walk
 //! sampled at given times, [`trajectory()`], for animations). `frame.rs` ([`Frame`], the motion
 //! at one time, and its collector) comes after `foot.rs`: the stance observer feeds it.
@@ -29,6 +30,7 @@ mod foot;
 mod frame;
 mod gait;
 mod guard;
+mod patches;
 mod periodic;
 mod stance;
 mod state;
@@ -43,6 +45,7 @@ pub use foot::{control_input, ground_reaction};
 pub use frame::Frame;
 pub use gait::{Sample, StepFloor, StepResult, Walk};
 pub use guard::{Guard, MAX_FALLS};
+pub use patches::{Patches, region_at};
 pub use step_models::StepModels;
 pub use trajectory::{Trajectory, trajectory, trajectory_by_step, trajectory_stoppable};
 pub use walk::{

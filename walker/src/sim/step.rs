@@ -81,7 +81,7 @@ fn desired_finite(model: &Model, t: f64) -> bool {
 /// kernels' inputs), a contact consistent with them, a finite `lambda` below the blow-up
 /// threshold and a non-negative normal force. Returns the foot, the integrated initial state
 /// and the ground reaction there.
-fn start<'a, const S: usize>(
+pub(super) fn start<'a, const S: usize>(
     model: &'a Model,
     step: usize,
     s0: &Vector,
@@ -104,12 +104,21 @@ fn start<'a, const S: usize>(
 }
 
 /// The end of a stance phase: the heel strike at `t` with the integrated state `y`, the
-/// smallest `lambda` seen and the time the foot spent stuck.
-struct Strike<const S: usize> {
-    t: f64,
-    y: [f64; S],
-    lambda_min: f64,
-    stuck_time: f64,
+/// smallest `lambda` seen and the time the foot spent stuck. On a floor of patches
+/// (`super::patches`) also the end of a stance's piece on one patch, where the foot reaches a
+/// boundary, and the start of the next piece; `kinks` says whether the power kink is still
+/// watched there.
+pub(super) struct Strike<const S: usize> {
+    /// The time since the step's impact.
+    pub(super) t: f64,
+    /// The integrated state there.
+    pub(super) y: [f64; S],
+    /// The smallest `lambda` seen so far in the stance.
+    pub(super) lambda_min: f64,
+    /// The time the foot spent stuck so far.
+    pub(super) stuck_time: f64,
+    /// Whether the power kink is still watched.
+    pub(super) kinks: bool,
 }
 
 /// What follows an integration segment.
@@ -118,6 +127,17 @@ enum Next<const S: usize> {
     Continue(f64, [f64; S]),
     /// The heel struck at `(t, y)`.
     Strike(f64, [f64; S]),
+    /// The stance foot reached a boundary of its patch at `(t, y)` (a floor of patches).
+    Boundary(f64, [f64; S]),
+}
+
+/// How the segments of a stance phase end: the heel strike, or (a floor of patches) the
+/// stance foot at a boundary of its patch, the stance to go on on the next patch.
+pub(super) enum Ended<const S: usize> {
+    /// The heel struck.
+    Strike(Strike<S>),
+    /// The foot reached a boundary of its patch.
+    Boundary(Strike<S>),
 }
 
 /// Integrate the stance phase from `y0` (time 0) segment by segment until the heel strikes:
@@ -146,42 +166,71 @@ fn stance_phase<const S: usize>(
     obs: Recorder<'_>,
 ) -> Result<Strike<S>, Failure> {
     let budget = integ.config().max_steps;
-    let strike = segments(cfg, integ, foot, step, y0, lambda0, lambda_max, obs, budget);
+    let first = attempts(integ.stats());
+    let from = Strike {
+        t: 0.0,
+        y: y0,
+        lambda_min: lambda0,
+        stuck_time: 0.0,
+        kinks: foot.model.is_active(),
+    };
+    let (guards, within) = (Guards::new(foot, lambda_max), Budget { budget, first });
+    let strike = segments(cfg, integ, &guards, step, from, lambda_max, obs, within);
     integ.config_mut().max_steps = budget;
-    strike
+    match strike? {
+        Ended::Strike(s) | Ended::Boundary(s) => Ok(s),
+    }
+}
+
+/// The budget of attempted integrator steps of a whole stance phase: `budget` in all from the
+/// integrator's count `first` at the stance's start.
+#[derive(Clone, Copy)]
+pub(super) struct Budget {
+    /// The most attempted steps of the whole stance.
+    pub(super) budget: usize,
+    /// The integrator's count of attempted steps at the stance's start.
+    pub(super) first: u64,
 }
 
 /// Attempted steps (accepted and rejected) counted in `stats`.
-fn attempts(stats: &Stats) -> u64 {
+pub(super) fn attempts(stats: &Stats) -> u64 {
     stats.accepted_steps + stats.rejected_steps
 }
 
-/// The segments of [`stance_phase`], with at most `budget` attempted steps in all (each segment
-/// gets what its predecessors left as the integrator's `max_steps`).
+/// The segments of [`stance_phase`] from `from` (time, state, and what the stance saw so far),
+/// watched by `guards`, with at most `within.budget` attempted steps in all since the
+/// stance's start (each segment gets what its predecessors left as the integrator's
+/// `max_steps`). On a floor of patches (`super::patches`) this is the stance's piece on one
+/// patch, and also ends where the foot reaches the patch's boundary.
 #[allow(
     clippy::too_many_arguments,
     reason = "the pieces of one stance phase, prepared by `one_step`"
 )]
-fn segments<const S: usize>(
+pub(super) fn segments<const S: usize>(
     cfg: &SimConfig,
     integ: &mut Integrator<S>,
-    foot: &Foot<'_>,
+    guards: &Guards<'_>,
     step: usize,
-    y0: [f64; S],
-    lambda0: f64,
+    from: Strike<S>,
     lambda_max: f64,
     mut obs: Recorder<'_>,
-    budget: usize,
-) -> Result<Strike<S>, Failure> {
-    let guards = Guards::new(foot, lambda_max);
+    within: Budget,
+) -> Result<Ended<S>, Failure> {
+    let foot = guards.foot();
+    if !from.kinks {
+        guards.end_power_kinks();
+    }
     let mut events = guards.events::<S>();
-    let mut sys = Stance::new(&guards);
-    let mut lambda_min = lambda0;
-    let mut t = 0.0;
-    let mut y = y0;
-    let mut stuck_time = 0.0;
+    let mut sys = Stance::new(guards);
+    let Strike {
+        mut t,
+        mut y,
+        mut lambda_min,
+        mut stuck_time,
+        ..
+    } = from;
     let t_limit = cfg.max_step_time;
-    let first = attempts(integ.stats());
+    let Budget { budget, first } = within;
     loop {
         let spent = usize::try_from(attempts(integ.stats()) - first).unwrap_or(usize::MAX);
         integ.config_mut().max_steps = budget.saturating_sub(spent);
@@ -195,16 +244,17 @@ fn segments<const S: usize>(
         if lam.is_finite() {
             lambda_min = lambda_min.min(lam);
         }
-        match after_segment(out, &guards, foot, step, lam, lambda_max)? {
+        let at = |t, y| Strike {
+            t,
+            y,
+            lambda_min,
+            stuck_time,
+            kinks: guards.power_kinks(),
+        };
+        match after_segment(out, guards, foot, step, lam, lambda_max)? {
             Next::Continue(tn, yn) => (t, y) = (tn, yn),
-            Next::Strike(t, y) => {
-                return Ok(Strike {
-                    t,
-                    y,
-                    lambda_min,
-                    stuck_time,
-                });
-            }
+            Next::Strike(t, y) => return Ok(Ended::Strike(at(t, y))),
+            Next::Boundary(t, y) => return Ok(Ended::Boundary(at(t, y))),
         }
     }
 }
@@ -303,6 +353,8 @@ fn on_guard<const S: usize>(
             reaction_at_start(foot, t, &y, step)?;
             return Ok(Next::Continue(t, y));
         }
+        // The foot slid onto the next patch: the stance goes on there (`super::patches`).
+        Some(Guard::Boundary) => return Ok(Next::Boundary(t, y)),
         Some(Guard::LiftOff) if !blown_up(lam, lambda_max) => FailureKind::LiftOff { lambda: lam },
         Some(Guard::Fall(i)) => {
             let fall = &model.spec().model.falls[i];
@@ -319,7 +371,7 @@ fn on_guard<const S: usize>(
 /// The impact that ends the stance phase: the checks on the heel strike (not at the start, not
 /// before `T_set`, no double support), the impact map, the change of stance leg and the gait
 /// descriptors of the step that began at `s0`.
-fn impact<const S: usize>(
+pub(super) fn impact<const S: usize>(
     model: &Model,
     step: usize,
     s0: &Vector,

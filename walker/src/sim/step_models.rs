@@ -5,6 +5,7 @@ use crate::model::Model;
 
 use super::failure::FailureKind;
 use super::gait::StepFloor;
+use super::patches::Patches;
 
 /// Gives the model of each step of a walk, in order, and the floor that step walks on. The
 /// walk asks [`StepModels::model`] once before each step (never inside one), so a parameter
@@ -32,6 +33,14 @@ pub trait StepModels {
     /// The step cannot start from `state` on its floor.
     fn origin(&mut self, _step: usize, _state: &[f64]) -> Result<Option<[f64; 2]>, FailureKind> {
         Ok(None)
+    }
+
+    /// The floor's patches by position, if its friction changes with the position along the
+    /// floor (`super::patches`): then every step runs on them, [`StepModels::model`] is not
+    /// asked, and each step's record carries the floor the step itself reports. `None` (the
+    /// default): a model per step.
+    fn patches(&self) -> Option<&dyn Patches> {
+        None
     }
 }
 

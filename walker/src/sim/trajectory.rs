@@ -9,6 +9,7 @@ use crate::model::Model;
 use super::config::{SimConfig, WalkLimits};
 use super::frame::{Frame, Frames, at_failure};
 use super::gait::Walk;
+use super::patches::region_at;
 use super::step_models::StepModels;
 use super::walk::{Stopped, walk_models, walk_recording};
 
@@ -116,7 +117,15 @@ pub fn trajectory_by_step(
 ) -> Trajectory {
     let mut frames = Frames::new(dt, max_frames);
     let (walk, _, _) = walk_models(models, cfg, initial, limits, Some(&mut frames), &|| false);
-    finished(walk, frames, dt, |step| models.model(step))
+    // On a floor of patches, the failure's frame is drawn with the model of the patch under
+    // the stance foot there.
+    let foot = walk.failure.as_ref().map(|f| f.state[0]);
+    finished(walk, frames, dt, |step| match foot {
+        Some(x) if models.patches().is_some() => models
+            .patches()
+            .map(|p| p.model(region_at(p, x / p.model(0).phi().cos()))),
+        _ => models.model(step),
+    })
 }
 
 /// The trajectory of `walk` sampled into `frames`, with the frame at its failure from the

@@ -9,6 +9,7 @@ use super::config::{SimConfig, WalkLimits};
 use super::failure::FailureKind;
 use super::frame::Frames;
 use super::gait::Walk;
+use super::patches::patched_step;
 use super::periodic::is_periodic;
 use super::state::with_state_size;
 use super::step::{Record, one_step};
@@ -161,11 +162,16 @@ fn walk_sized<const S: usize>(
             frames: frames.as_deref_mut(),
             t_offset: time,
         };
-        let Some(model) = models.model(k) else {
-            stopped = true;
-            break;
+        // A floor of patches by position changes the model inside a step (`super::patches`).
+        let res = if let Some(patches) = models.patches() {
+            patched_step(patches, cfg, &mut integ, k, &s0, record)
+        } else {
+            let Some(model) = models.model(k) else {
+                stopped = true;
+                break;
+            };
+            one_step(model, cfg, &mut integ, k, &s0, record)
         };
-        let res = one_step(model, cfg, &mut integ, k, &s0, record);
         if let Some(o) = origin {
             for s in &mut samples[recorded.0..] {
                 s.state = moved(&s.state, o, 1.0);
@@ -188,7 +194,9 @@ fn walk_sized<const S: usize>(
         };
         match res {
             Ok(mut r) => {
-                r.floor = models.floor();
+                if r.floor.is_none() {
+                    r.floor = models.floor();
+                }
                 time += r.period;
                 state = r.state_plus();
                 steps.push(r);

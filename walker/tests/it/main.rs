@@ -11,6 +11,7 @@ mod continuation_constructed;
 mod continuation_held;
 mod continuation_walkers;
 mod design_clearance;
+mod floor_patches;
 mod floor_slopes;
 mod floor_survive;
 mod floor_walks;

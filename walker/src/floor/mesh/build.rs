@@ -49,6 +49,9 @@ pub fn mesh_mfpt(
     let Some(friction) = floor.mu0.as_ref().filter(|_| floor.phi.is_none()) else {
         return Err(MeshError::SlopeFloor);
     };
+    if matches!(friction, walker_scene::FloorSpec::Patches { .. }) {
+        return Err(MeshError::PatchesFloor);
+    }
     let samples = FloorSamples::of(friction, opts.samples).ok_or(MeshError::StepsFloor)?;
     let mu0 = samples.central();
     let central = walker.model_at(mu0)?;

@@ -23,6 +23,14 @@ pub enum MeshError {
         "the mesh takes a floor of friction only: a floor that sets `phi` per step moves the          Poincare section with the slope of the step before, which the chain does not carry;          use `walker survive` for it"
     )]
     SlopeFloor,
+    /// A floor of patches gives `mu0` by position along the floor, not per step: the chain's
+    /// step-to-step map has no floor sample to draw.
+    #[error(
+        "a `patches` floor gives mu0 by position, not per step: the mesh needs a per-step \
+         distribution; it is deterministic, so `walker simulate` walks it (one walk is the \
+         whole story)"
+    )]
+    PatchesFloor,
     /// A setting outside its range.
     #[error("mesh field `{field}` = {value}: must be {range}")]
     OutOfRange {

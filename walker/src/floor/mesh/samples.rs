@@ -46,7 +46,7 @@ impl FloorSamples {
             }
         };
         match spec {
-            FloorSpec::Steps { .. } => None,
+            FloorSpec::Steps { .. } | FloorSpec::Patches { .. } => None,
             FloorSpec::Uniform { mu0 } => Some(independent(vec![*mu0])),
             FloorSpec::Random { mu0, .. } => Some(match *mu0 {
                 Distribution::Uniform { lo, hi } => independent(
