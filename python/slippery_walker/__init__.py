@@ -215,7 +215,10 @@ class Walk:
     strike that ends each step (shape ``(steps, 2)``; ``Lambda_t = 0`` for the frictionless
     impact). ``state_names`` names the ``2 n`` state components (the coordinates, then their velocities),
     ``input_names`` the inputs. ``floor_mu0`` (a walk on ``floor=`` only, else None): each
-    step's friction coefficient ``mu0`` (``docs/floors.md``).
+    step's friction coefficient ``mu0`` (at its start, on a floor of patches by position);
+    on a floor of patches also ``floor_mu0_strike``, the ``mu0`` of the patch each strike
+    landed on, and ``floor_crossings``, how many patch boundaries each stance foot slid across
+    (``docs/floors.md``).
 
     With ``trajectory=True``: ``times`` (s since the start of the walk, exactly ``k * dt``),
     ``states`` (shape ``(frames, 2 n)``, in the order of ``state_names``, in the stance leg's
@@ -235,6 +238,8 @@ class Walk:
     qd_plus: np.ndarray
     foot_impulse: np.ndarray
     floor_mu0: Optional[np.ndarray] = None
+    floor_mu0_strike: Optional[np.ndarray] = None
+    floor_crossings: Optional[np.ndarray] = None
     times: Optional[np.ndarray] = None
     states: Optional[np.ndarray] = None
     frame_steps: Optional[np.ndarray] = None
@@ -282,6 +287,10 @@ def _walk(d: Mapping[str, Any]) -> Walk:
         qd_plus=_arr(d["qd_plus"], n),
         foot_impulse=_arr(d["foot_impulse"], 2),
         floor_mu0=_arr(d["floor_mu0"]) if "floor_mu0" in d else None,
+        floor_mu0_strike=_arr(d["floor_mu0_strike"]) if "floor_mu0_strike" in d else None,
+        floor_crossings=(
+            np.asarray(d["floor_crossings"], dtype=np.int64) if "floor_crossings" in d else None
+        ),
         state_names=names,
         input_names=inputs,
         **extra,

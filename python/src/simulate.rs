@@ -75,6 +75,21 @@ pub fn simulate<'py>(
                 .map(|s| s.floor.map_or(f64::NAN, |f| f.mu0))
                 .collect::<Vec<_>>(),
         )?;
+        // A floor of patches by position: each strike's patch and each stance's crossings.
+        let floors: Vec<_> = w.steps.iter().filter_map(|s| s.floor).collect();
+        if floors.len() == w.steps.len()
+            && let Some(strike) = floors
+                .iter()
+                .map(|f| f.mu0_strike)
+                .collect::<Option<Vec<f64>>>()
+            && let Some(crossings) = floors
+                .iter()
+                .map(|f| f.crossings)
+                .collect::<Option<Vec<u32>>>()
+        {
+            d.set_item("floor_mu0_strike", strike)?;
+            d.set_item("floor_crossings", crossings)?;
+        }
         return Ok(d);
     }
     let Some(dt) = trajectory_dt else {

@@ -220,3 +220,16 @@ def test_a_patches_floor_as_a_dict_is_the_same_floor_as_its_file(tmp_path):
     # Step 4 stands on the ice: the foot the strike of step 3 put there.
     assert by_dict.floor_mu0.tolist()[4] == 0.05
     assert (by_dict.q_plus == by_file.q_plus).all()
+    # The strike of step 3 lands on the ice; step 4's foot slides back onto the dry floor once
+    # (docs/floors.md's example); the walk on the command line reports the same.
+    assert by_dict.floor_mu0_strike.tolist()[3] == 0.05
+    assert by_dict.floor_crossings.tolist()[4] == 1
+    # Each step starts on the patch its strike put the new foot on.
+    assert by_dict.floor_mu0_strike.tolist()[:-1] == by_dict.floor_mu0.tolist()[1:]
+
+
+def test_a_floor_by_step_has_no_patch_columns():
+    w = sw.simulate(scene="active-level", t_set=0.3, max_steps=3,
+                    floor={"kind": "steps", "mu0": [0.4, 0.4, 0.5]})
+    assert w.floor_mu0 is not None
+    assert w.floor_mu0_strike is None and w.floor_crossings is None
