@@ -120,14 +120,13 @@ pub fn jacobian_error(
     };
     let j = section.reduced_jacobian(&coarse.jacobian, r);
     let j_fine = section.reduced_jacobian(&fine.jacobian, r);
-    let floor = 10.0 * cfg.rtol.min(1e-12);
     let e = j
         .iter()
         .zip(&j_fine)
         .map(|(a, b)| {
             a.iter()
                 .zip(b)
-                .map(|(x, y)| 2.0 * (x - y).abs() + floor * x.abs())
+                .map(|(x, y)| error_estimate(*x, *y, cfg.rtol))
                 .collect()
         })
         .collect();
@@ -135,6 +134,13 @@ pub fn jacobian_error(
         jacobian: j,
         error: e,
     })
+}
+
+/// The error estimate of a value `x` from a second evaluation `y` an order more accurate (module
+/// documentation): `2 |x - y| + 10 min(rtol, 1e-12) |x|`.
+#[must_use]
+pub(crate) fn error_estimate(x: f64, y: f64, rtol: f64) -> f64 {
+    2.0 * (x - y).abs() + 10.0 * rtol.min(1e-12) * x.abs()
 }
 
 /// The eigenvalues of `jac` by decreasing modulus (as [`eigenvalues`] orders them), each with

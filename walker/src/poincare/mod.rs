@@ -71,6 +71,7 @@ mod result;
 mod section;
 mod variational;
 
+pub(crate) use accuracy::error_estimate;
 pub use accuracy::{
     EstimatedJacobian, MultiplierBound, jacobian_error, multiplier_bounds, multiplier_errors,
 };

@@ -19,7 +19,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::continuation::WalkerProblem;
 use crate::model::Model;
-use crate::poincare::{ParameterColumn, Section, parameter_column};
+use crate::poincare::{ParameterColumn, Section, error_estimate, parameter_column};
 use crate::sim::SimConfig;
 
 use super::difference::{richardson, shifts, step};
@@ -69,8 +69,7 @@ fn estimated(
     let (Some((_, a)), Some((_, b))) = (column(&at.cfg)?, column(&fine)?) else {
         return Ok(None);
     };
-    let floor = 10.0 * at.cfg.rtol.min(1e-12);
-    let err = |x: f64, y: f64| 2.0 * (x - y).abs() + floor * x.abs();
+    let err = |x: f64, y: f64| error_estimate(x, y, at.cfg.rtol);
     let error = ParameterColumn {
         d_state: a
             .d_state
