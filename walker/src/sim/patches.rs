@@ -20,11 +20,11 @@ use crate::vector::Vector;
 
 use super::config::SimConfig;
 use super::failure::Failure;
-use super::foot::{Foot, control_input, reaction_at_start};
-use super::gait::{Sample, StepFloor, StepResult};
+use super::foot::{Foot, reaction_at_start};
+use super::gait::{StepFloor, StepResult};
 use super::guard::Guards;
 use super::stance::Recorder;
-use super::step::{Budget, Ended, Record, Strike, attempts, impact, segments, start};
+use super::step::{Budget, Ended, Record, Strike, attempts, begin, impact, segments};
 
 /// A floor of patches as the simulator sees it: the boundaries between regions of constant
 /// friction, and a model for each region.
@@ -78,29 +78,19 @@ pub(super) fn patched_step<const S: usize>(
     integ: &mut Integrator<S>,
     step: usize,
     s0: &Vector,
-    record: Record<'_>,
+    mut record: Record<'_>,
 ) -> Result<StepResult, Failure> {
     let first_model = patches.model(0);
     let cos_phi = first_model.phi().cos();
     let mut region = region_at(patches, s0[0] / cos_phi);
     let model = patches.model(region);
     let mu0 = model.mu0();
-    let lambda_max = cfg.lambda_blowup * model.total_mass() * model.gravity();
-    let (foot, y0, r0) = start::<S>(model, step, s0, lambda_max)?;
+    let (foot, y0, r0, lambda_max) = begin::<S>(model, cfg, step, s0, &mut record)?;
     let Record {
         samples: mut out,
         mut frames,
         t_offset,
     } = record;
-    if let Some(samples) = out.as_deref_mut() {
-        samples.push(Sample {
-            time: t_offset,
-            step,
-            state: *s0,
-            lambda: r0.lambda,
-            u: control_input(model, 0.0, &y0, foot.contact()),
-        });
-    }
     let budget = integ.config().max_steps;
     let within = Budget {
         budget,

@@ -39,24 +39,14 @@ pub(super) fn one_step<const S: usize>(
     integ: &mut Integrator<S>,
     step: usize,
     s0: &Vector,
-    record: Record<'_>,
+    mut record: Record<'_>,
 ) -> Result<StepResult, Failure> {
-    let lambda_max = cfg.lambda_blowup * model.total_mass() * model.gravity();
-    let (foot, y0, r0) = start::<S>(model, step, s0, lambda_max)?;
+    let (foot, y0, r0, lambda_max) = begin::<S>(model, cfg, step, s0, &mut record)?;
     let Record {
-        samples: mut out,
+        samples: out,
         frames,
         t_offset,
     } = record;
-    if let Some(samples) = out.as_deref_mut() {
-        samples.push(Sample {
-            time: t_offset,
-            step,
-            state: *s0,
-            lambda: r0.lambda,
-            u: control_input(model, 0.0, &y0, foot.contact()),
-        });
-    }
     let obs = Recorder {
         foot: &foot,
         out,
@@ -77,11 +67,35 @@ fn desired_finite(model: &Model, t: f64) -> bool {
     model.desired_finite(t)
 }
 
+/// The start of a step's stance ([`start`], with the blow-up threshold `lambda_max` of `cfg`,
+/// which it also returns) and the step's first sample, at the post-impact state `s0`, where
+/// `record` takes samples.
+pub(super) fn begin<'a, const S: usize>(
+    model: &'a Model,
+    cfg: &SimConfig,
+    step: usize,
+    s0: &Vector,
+    record: &mut Record<'_>,
+) -> Result<(Foot<'a>, [f64; S], Reaction, f64), Failure> {
+    let lambda_max = cfg.lambda_blowup * model.total_mass() * model.gravity();
+    let (foot, y0, r0) = start::<S>(model, step, s0, lambda_max)?;
+    if let Some(samples) = record.samples.as_deref_mut() {
+        samples.push(Sample {
+            time: record.t_offset,
+            step,
+            state: *s0,
+            lambda: r0.lambda,
+            u: control_input(model, 0.0, &y0, foot.contact()),
+        });
+    }
+    Ok((foot, y0, r0, lambda_max))
+}
+
 /// The checks at the start of a stance phase: a finite state and desired trajectory (the
 /// kernels' inputs), a contact consistent with them, a finite `lambda` below the blow-up
 /// threshold and a non-negative normal force. Returns the foot, the integrated initial state
 /// and the ground reaction there.
-pub(super) fn start<'a, const S: usize>(
+fn start<'a, const S: usize>(
     model: &'a Model,
     step: usize,
     s0: &Vector,
