@@ -37,6 +37,15 @@ fn converged(model: &Model) -> FixedPoint {
     fp
 }
 
+/// `models/simplest-walker.toml` derived at run time, and its gait.
+fn simplest_walker_at_its_gait() -> (Model, FixedPoint) {
+    let model = setup("simplest-walker", &Overrides::default())
+        .model()
+        .expect("kernels");
+    let fp = converged(&model);
+    (model, fp)
+}
+
 /// The reference's multipliers (`sympy_ref/simplest_walker.json`: its own Lagrangian, impact and
 /// variational equations, SciPy's DOP853 at `rtol = 1e-13`).
 fn reference_multipliers() -> Vec<(f64, f64)> {
@@ -53,10 +62,7 @@ fn reference_multipliers() -> Vec<(f64, f64)> {
 
 #[test]
 fn the_simplest_walkers_bounds_cover_the_independent_reference_and_are_below_1e_7() {
-    let model = setup("simplest-walker", &Overrides::default())
-        .model()
-        .expect("kernels");
-    let fp = converged(&model);
+    let (model, fp) = simplest_walker_at_its_gait();
     let bounds = multiplier_errors(&model, &SimConfig::default(), &fp).expect("the bounds");
     let reference = reference_multipliers();
     assert_eq!(bounds.len(), reference.len());
@@ -110,10 +116,7 @@ fn the_rimless_wheels_bound_covers_the_closed_form_eta_squared() {
 fn a_jacobian_by_central_differences_gets_a_bound_that_covers_the_exact_multipliers() {
     // The simplest walker's map has a large third derivative (`docs/poincare.md`): differences
     // at the default step are off by about 4e-4, the case where a bound matters.
-    let model = setup("simplest-walker", &Overrides::default())
-        .model()
-        .expect("kernels");
-    let fp = converged(&model);
+    let (model, fp) = simplest_walker_at_its_gait();
     let cfg = SimConfig::default();
     let r = Section::of(&model).reduce(&fp.state_plus);
     let estimated =
@@ -142,10 +145,7 @@ fn extrapolated_differences_place_the_multipliers_near_the_independent_reference
     // O(h^4) and the maps' noise (about 1e-12 / 5e-5 = 2e-8 before the eigenvalues' condition).
     // Each bound covers the distance to the reference, and is below 1e-6: a hundred times
     // below the plain differences' distance.
-    let model = setup("simplest-walker", &Overrides::default())
-        .model()
-        .expect("kernels");
-    let fp = converged(&model);
+    let (model, fp) = simplest_walker_at_its_gait();
     let cfg = SimConfig::default();
     let r = Section::of(&model).reduce(&fp.state_plus);
     let estimated = jacobian_error(&model, &cfg, &r, JacobianMethod::ExtrapolatedDifferences)
