@@ -352,6 +352,26 @@ impl Model {
         power(u, &w[..m])
     }
 
+    /// Each input's power `u_i w_i` at `(t, y)` in the contact `contact`, into `out` (one per
+    /// input): the factors of [`Model::power_sign_function`], each of which changes sign at a
+    /// kink of the integrand `sum |u_i w_i|` (the simulator watches them one by one on a walker
+    /// with several inputs).
+    pub fn input_powers(&self, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
+        let (n, m) = (self.n(), self.inputs());
+        let (mut k, mut w) = ([0.0; 2 * MAX_COORDINATES + 2], [0.0; MAX_COORDINATES]);
+        self.kernels.stance(
+            self.is_stuck(contact),
+            contact.sigma(),
+            &y[..2 * n],
+            &self.tracking_at(t),
+            &mut k,
+            &mut w[..m],
+        );
+        for (o, (wi, ui)) in out.iter_mut().zip(w[..m].iter().zip(&k[n..n + m])) {
+            *o = wi * ui;
+        }
+    }
+
     /// The product of the inputs' powers `prod u_i w_i` at `(t, y)` in the contact `contact`:
     /// it changes sign where one of them does (a kink of the integrand `sum |u_i w_i|`).
     #[must_use]

@@ -5,7 +5,7 @@
 use std::cell::{Cell, RefCell};
 
 use crate::model::{Contact, FrictionLaw, Model, Reaction, Slide};
-use crate::vector::Vector;
+use crate::vector::{MAX_COORDINATES, Vector};
 
 use super::failure::{Failure, FailureKind};
 use super::state::mech;
@@ -39,6 +39,36 @@ impl<T: Copy> Memo<T> {
     }
 }
 
+/// The value of `f` at `(t, y, contact)`, from the two points `memo` remembers if it is one of
+/// them (the newer slot first), else computed and remembered in the older slot (slots are
+/// overwritten in turn, not moved).
+fn remembered<T: Copy, const S: usize>(
+    memo: &RefCell<([Option<Memo<T>>; 2], usize)>,
+    t: f64,
+    y: &[f64; S],
+    contact: Contact,
+    f: impl FnOnce() -> T,
+) -> T {
+    let mut memo = memo.borrow_mut();
+    let (slots, next) = &mut *memo;
+    let newer = *next ^ 1;
+    if let Some(g) = [newer, *next]
+        .into_iter()
+        .find_map(|i| slots[i].as_ref().and_then(|m| m.at(t, y, contact)))
+    {
+        return g;
+    }
+    let value = f();
+    slots[*next] = Some(Memo {
+        t,
+        state: mech(y),
+        contact,
+        value,
+    });
+    *next = newer;
+    value
+}
+
 /// The stance foot during one stance phase: the model, the current contact (it changes only
 /// between integration segments, at stick-slip transitions), and remembered values of what
 /// several users evaluate at the same points.
@@ -52,6 +82,8 @@ pub(super) struct Foot<'a> {
     /// step's end, and the error test and the kink guard ask about the same ends), with the
     /// slot the next value goes to (the older one: slots are overwritten in turn, not moved).
     power: RefCell<([Option<Memo<f64>>; 2], usize)>,
+    /// The same for every input's power `u_i w_i` (a walker with several inputs).
+    powers: RefCell<([Option<Memo<[f64; MAX_COORDINATES]>>; 2], usize)>,
 }
 
 impl<'a> Foot<'a> {
@@ -62,6 +94,7 @@ impl<'a> Foot<'a> {
             contact: Cell::new(contact),
             reaction: RefCell::new(None),
             power: RefCell::new(([None; 2], 0)),
+            powers: RefCell::new(([None; 2], 0)),
         }
     }
 
@@ -100,29 +133,32 @@ impl<'a> Foot<'a> {
     /// for two points).
     pub(super) fn power<const S: usize>(&self, t: f64, y: &[f64; S]) -> f64 {
         let contact = self.contact();
-        let mut memo = self.power.borrow_mut();
-        let (slots, next) = &mut *memo;
-        // The newer slot first (a value is stored only where neither slot has its point).
-        let newer = *next ^ 1;
-        if let Some(g) = [newer, *next]
-            .into_iter()
-            .find_map(|i| slots[i].as_ref().and_then(|m| m.at(t, y, contact)))
-        {
-            return g;
-        }
-        let value = self.model.power_sign_function(t, y, contact);
-        slots[*next] = Some(Memo {
-            t,
-            state: mech(y),
-            contact,
-            value,
-        });
-        *next = newer;
-        value
+        remembered(&self.power, t, y, contact, || {
+            self.model.power_sign_function(t, y, contact)
+        })
+    }
+
+    /// Input `i`'s power `u_i w_i` at `(t, y)` in the current contact (every input's
+    /// remembered for two points).
+    pub(super) fn input_power<const S: usize>(&self, t: f64, y: &[f64; S], i: usize) -> f64 {
+        self.input_powers(t, y)[i]
+    }
+
+    /// Every input's power `u_i w_i` at `(t, y)` in the current contact.
+    fn input_powers<const S: usize>(&self, t: f64, y: &[f64; S]) -> [f64; MAX_COORDINATES] {
+        let contact = self.contact();
+        remembered(&self.powers, t, y, contact, || {
+            let mut p = [0.0; MAX_COORDINATES];
+            let m = self.model.inputs();
+            self.model.input_powers(t, y, contact, &mut p[..m]);
+            p
+        })
     }
 
     /// Whether an input's power `u_i w_i` changes sign from `(t0, y0)` to `(t1, y1)` while the
-    /// power counts (the kink of `|u_i w_i|` is then inside the step).
+    /// power counts (the kink of `|u_i w_i|` is then inside the step): the product's sign for
+    /// a walker with one input, each input's for one with several (two of them changing sign
+    /// in one step leave the product's unchanged).
     pub(super) fn crossed<const S: usize>(
         &self,
         t0: f64,
@@ -130,7 +166,16 @@ impl<'a> Foot<'a> {
         t1: f64,
         y1: &[f64; S],
     ) -> bool {
-        self.model.power_counts(t0) && self.power(t0, y0) * self.power(t1, y1) < 0.0
+        if !self.model.power_counts(t0) {
+            return false;
+        }
+        let m = self.model.inputs();
+        if m > 1 {
+            let (a, b) = (self.input_powers(t0, y0), self.input_powers(t1, y1));
+            a[..m].iter().zip(&b[..m]).any(|(x, y)| x * y < 0.0)
+        } else {
+            self.power(t0, y0) * self.power(t1, y1) < 0.0
+        }
     }
 }
 

@@ -29,11 +29,16 @@ pub enum Guard {
     /// `|lambda|` rises through [`super::SimConfig::lambda_blowup`] `m_t g`: the denominator of
     /// Eq. 23 vanishes, or its numerator is huge (`sim/blowup.rs` tells which).
     LambdaBlowUp,
-    /// The power kink: an input's power `u_i w_i` changes sign while the power counts (where
-    /// `|u_i w_i|`, the power quadrature's integrand, has a kink; see the stance system's error
-    /// test, `Stance::controlled_components`). Off from the end of the power's count on (a
-    /// switch by time would be a jump at the breakpoint). The integration goes on from it.
-    PowerKink,
+    /// The power kink of input `i`: its power `u_i w_i` changes sign while the power counts
+    /// (where `|u_i w_i|`, the power quadrature's integrand, has a kink; see the stance
+    /// system's error test, `Stance::controlled_components`). Off from the end of the power's
+    /// count on (a switch by time would be a jump at the breakpoint). The integration goes on
+    /// from it. A walker with one input (or none) has one, `PowerKink(0)`, whose value is the
+    /// product `prod u_i w_i`; a walker with several has one per input: the product's sign
+    /// changes with each factor's, but two factors changing sign within one integrator step
+    /// leave it unchanged, and those kinks went unlocated (RABBIT's step-to-step `SR` varied by
+    /// 2e-5 relative at any tolerance; `docs/design.md`, "RABBIT").
+    PowerKink(usize),
     /// Coulomb friction: a sliding foot comes to rest (`sigma xd` falls through zero; zero while
     /// stuck).
     FootStops,
@@ -47,13 +52,15 @@ pub enum Guard {
 }
 
 impl Guard {
-    /// The guards watched for a model with `falls` falls under the friction law `law`, in the
-    /// order of the event list: the strike, lift-off, the falls, the blow-up, the power kink,
-    /// and under Coulomb friction the stick-slip pair.
-    pub fn list(falls: usize, law: FrictionLaw) -> Vec<Guard> {
+    /// The guards watched for a model with `falls` falls and `inputs` inputs under the friction
+    /// law `law`, in the order of the event list: the strike, lift-off, the falls, the blow-up,
+    /// the power kinks (one, or one per input where there are several), and under Coulomb
+    /// friction the stick-slip pair.
+    pub fn list(falls: usize, inputs: usize, law: FrictionLaw) -> Vec<Guard> {
         let mut out = vec![Guard::Strike, Guard::LiftOff];
         out.extend((0..falls.min(MAX_FALLS)).map(Guard::Fall));
-        out.extend([Guard::LambdaBlowUp, Guard::PowerKink]);
+        out.push(Guard::LambdaBlowUp);
+        out.extend((0..inputs.max(1)).map(Guard::PowerKink));
         if law == FrictionLaw::Coulomb {
             out.extend([Guard::FootStops, Guard::FootSlips]);
         }
@@ -69,7 +76,7 @@ impl Guard {
             | Guard::Fall(_)
             | Guard::FootStops
             | Guard::Boundary => Direction::Falling,
-            Guard::PowerKink => Direction::Either,
+            Guard::PowerKink(_) => Direction::Either,
         }
     }
 }
@@ -95,7 +102,11 @@ impl<'a> Guards<'a> {
         let model: &Model = foot.model;
         Self {
             foot,
-            list: Guard::list(model.event_count() - 1, model.friction_law()),
+            list: Guard::list(
+                model.event_count() - 1,
+                model.inputs(),
+                model.friction_law(),
+            ),
             lambda_max,
             kinks: Cell::new(model.is_active()),
             patch: None,
@@ -149,7 +160,7 @@ impl<'a> Guards<'a> {
             Guard::LiftOff | Guard::LambdaBlowUp | Guard::FootSlips => {
                 self.reaction_value(guard, || foot.reaction(t, y))
             }
-            Guard::PowerKink | Guard::FootStops | Guard::Boundary => self.own_value(guard, t, y),
+            Guard::PowerKink(_) | Guard::FootStops | Guard::Boundary => self.own_value(guard, t, y),
         }
     }
 
@@ -175,7 +186,7 @@ impl<'a> Guards<'a> {
                         })
                     })
                 }
-                Guard::PowerKink | Guard::FootStops | Guard::Boundary => {
+                Guard::PowerKink(_) | Guard::FootStops | Guard::Boundary => {
                     self.own_value(guard, t, y)
                 }
             };
@@ -220,11 +231,13 @@ impl<'a> Guards<'a> {
     fn own_value<const S: usize>(&self, guard: Guard, t: f64, y: &[f64; S]) -> f64 {
         let foot = self.foot;
         match guard {
-            Guard::PowerKink => {
-                if self.kinks.get() {
-                    foot.power(t, y)
-                } else {
+            Guard::PowerKink(i) => {
+                if !self.kinks.get() {
                     1.0
+                } else if foot.model.inputs() > 1 {
+                    foot.input_power(t, y, i)
+                } else {
+                    foot.power(t, y)
                 }
             }
             Guard::Boundary => match self.patch {
@@ -305,8 +318,9 @@ mod tests {
     }
 
     #[test]
-    fn the_list_has_the_falls_after_lift_off_and_coulomb_adds_the_stick_slip_pair() {
-        let tanh = Guard::list(1, FrictionLaw::Tanh);
+    fn the_list_has_the_falls_after_lift_off_a_kink_per_input_and_coulomb_adds_the_stick_slip_pair()
+    {
+        let tanh = Guard::list(1, 1, FrictionLaw::Tanh);
         assert_eq!(
             tanh,
             [
@@ -314,12 +328,21 @@ mod tests {
                 Guard::LiftOff,
                 Guard::Fall(0),
                 Guard::LambdaBlowUp,
-                Guard::PowerKink
+                Guard::PowerKink(0)
             ]
         );
-        let coulomb = Guard::list(2, FrictionLaw::Coulomb);
-        assert_eq!(coulomb.len(), 8);
+        assert_eq!(Guard::list(1, 0, FrictionLaw::Tanh), tanh);
+        let coulomb = Guard::list(2, 3, FrictionLaw::Coulomb);
+        assert_eq!(coulomb.len(), 10);
         assert_eq!(&coulomb[2..4], [Guard::Fall(0), Guard::Fall(1)]);
-        assert_eq!(&coulomb[6..], [Guard::FootStops, Guard::FootSlips]);
+        assert_eq!(
+            &coulomb[5..8],
+            [
+                Guard::PowerKink(0),
+                Guard::PowerKink(1),
+                Guard::PowerKink(2)
+            ]
+        );
+        assert_eq!(&coulomb[8..], [Guard::FootStops, Guard::FootSlips]);
     }
 }

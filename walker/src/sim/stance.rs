@@ -62,7 +62,7 @@ impl<const S: usize> OdeSystem<S> for Stance<'_> {
     /// The error test watches the power quadrature (the last component) too, except on a step
     /// in which an input's power `u_i w_i` changes sign: its absolute value has a kink there,
     /// which would only cause rejections. Such a step is not kept: the kink is a terminal event
-    /// of the stance integration ([`super::Guard::PowerKink`]), so the step is taken again
+    /// of the stance integration ([`super::Guard::PowerKink`], one per input where there are several), so the step is taken again
     /// ending on the kink, and the integration goes on from there, with a smooth integrand on
     /// each side.
     fn controlled_components(&mut self, t0: f64, y0: &[f64; S], t1: f64, y1: &[f64; S]) -> usize {

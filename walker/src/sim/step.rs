@@ -352,7 +352,7 @@ fn on_guard<const S: usize>(
         }
         // The striking point passes the floor behind the stance foot (the compass gait's
         // swing foot at mid-stance): no strike.
-        Some(Guard::Strike | Guard::PowerKink) => return Ok(Next::Continue(t, y)),
+        Some(Guard::Strike | Guard::PowerKink(_)) => return Ok(Next::Continue(t, y)),
         Some(Guard::FootStops) => {
             // The sliding foot stops: it sticks, or slides back if the cone cannot hold it.
             let y = at_rest(y, model.n());
