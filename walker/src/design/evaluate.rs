@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use crate::poincare::{FixedPoint, FixedPointOptions, Section, Status, fixed_point, newton};
 use crate::setup::Setup;
-use crate::sim::{SimConfig, WalkLimits, trajectory};
+use crate::sim::{Frame, SimConfig, WalkLimits, trajectory};
 
 /// Samples of the stance per step on which the path constraints are read (the integrator's
 /// dense output at `T / SAMPLES` apart, each inside the accepted step that contains it).
@@ -25,8 +25,9 @@ pub struct Evaluation {
     /// The largest `|lambda_t| / lambda_n` on the stance's samples (infinite where the normal
     /// force is not positive).
     pub stance_friction: f64,
-    /// `|lambda_t| / lambda_n` at `t = k T / SAMPLES`, `k = 0 .. SAMPLES - 1` (the design's
-    /// path constraints, one per sample); left out of the JSON.
+    /// `|lambda_t| / lambda_n` at `t = k T / SAMPLES`, `k = 0 .. SAMPLES - 1`, then at the
+    /// stance's end just before the strike ([`END`]) (the design's path constraints, one per
+    /// sample); left out of the JSON.
     #[serde(skip)]
     pub stance_ratios: Vec<f64>,
     /// The heel strike's impulse ratio `|Lambda_t| / Lambda_n`.
@@ -43,8 +44,8 @@ pub struct Evaluation {
     /// The largest `|u_i|` on the stance's samples, per input (empty for a passive walker);
     /// with `ramp_inputs` also just before each ramp's end.
     pub max_input: Vec<f64>,
-    /// `|u_i|` at `t = k T / SAMPLES` per input `i` (the input bounds' samples), and with
-    /// `ramp_inputs` just before each ramp's end; left out of the JSON.
+    /// `|u_i|` at `t = k T / SAMPLES` per input `i` and at the stance's end (the input bounds'
+    /// samples), and with `ramp_inputs` just before each ramp's end; left out of the JSON.
     #[serde(skip)]
     pub input_samples: Vec<Vec<f64>>,
     /// The swing foot's clearance: the largest `H` whose profile `H 4 s (1 - s)` its height
@@ -57,7 +58,7 @@ pub struct Evaluation {
     /// design bounds the clearance); left out of the JSON.
     #[serde(skip)]
     pub swing_heights: Vec<(f64, f64)>,
-    /// The number of stance samples read.
+    /// The number of stance samples read (the grid's and the stance's end).
     pub samples: usize,
 }
 
@@ -68,6 +69,15 @@ impl Evaluation {
         self.stance_friction.max(self.impact_friction)
     }
 }
+
+/// Where the stance's last sample is read: at `T (1 - END)`, just before the strike. The
+/// friction ratio often peaks there (the swing leg is stopped and the stance leg decelerates
+/// the body), up to `T / SAMPLES` after the grid's last sample, so that a gait whose samples
+/// all met a friction bound slipped 9 microseconds before its strike on a floor of that
+/// friction (RABBIT, `docs/design.md`). `1e-9` of the period rather than the period itself:
+/// the fixed point's `T` and the sampled step's strike may differ by the integrations'
+/// rounding, and the sample must fall inside the stance.
+pub const END: f64 = 1e-9;
 
 /// The periodic gait of `setup` with `names` set to `values`: Newton's method on the reduced
 /// map from `guess` (section coordinates) where given and converging, else the fixed-point
@@ -125,33 +135,33 @@ pub fn evaluate(
     };
     let ratio = |t: f64, n: f64| if n > 0.0 { t.abs() / n } else { f64::INFINITY };
     let frames: Vec<_> = tr.frames.iter().filter(|f| f.step == 0).collect();
-    // The ratio at `k T / SAMPLES` for each k (a frame the step ended before, at most the last
-    // one or two by rounding of `k dt` against `T`, repeats the last frame).
-    let stance_ratios: Vec<f64> = (0..SAMPLES)
-        .map(|k| {
-            frames.get(k).or(frames.last()).map_or(f64::INFINITY, |f| {
-                ratio(f.reaction.tangential, f.reaction.normal)
-            })
-        })
+    let end = end_of_stance(&model, cfg, &fp.state_plus, fp.period)
+        .ok_or_else(|| "the stance's end could not be sampled before the strike".to_owned())?;
+    // The sample at `k T / SAMPLES` for each k (a frame the step ended before, at most the last
+    // one or two by rounding of `k dt` against `T`, repeats the last frame), then the end.
+    let samples: Vec<&Frame> = (0..SAMPLES)
+        .filter_map(|k| frames.get(k).or(frames.last()).copied())
+        .chain(std::iter::once(&end))
+        .collect();
+    let stance_ratios: Vec<f64> = samples
+        .iter()
+        .map(|f| ratio(f.reaction.tangential, f.reaction.normal))
         .collect();
     let stance_friction = stance_ratios.iter().copied().fold(0.0, f64::max);
     let min_normal = frames
         .iter()
+        .chain(std::iter::once(&&end))
         .map(|f| f.reaction.normal)
         .fold(f64::INFINITY, f64::min);
     let held = frames
         .iter()
+        .chain(std::iter::once(&&end))
         .all(|f| f.contact == crate::model::Contact::Stuck);
     let mut input_samples: Vec<Vec<f64>> = (0..model.inputs())
         .map(|i| {
-            (0..SAMPLES)
-                .map(|k| {
-                    frames
-                        .get(k)
-                        .or(frames.last())
-                        .and_then(|f| f.u.as_slice().get(i))
-                        .map_or(f64::INFINITY, |u| u.abs())
-                })
+            samples
+                .iter()
+                .map(|f| f.u.as_slice().get(i).map_or(f64::INFINITY, |u| u.abs()))
                 .collect()
         })
         .collect();
@@ -208,8 +218,24 @@ pub fn evaluate(
         input_samples,
         clearance,
         swing_heights,
-        samples: frames.len(),
+        samples: frames.len() + 1,
     })
+}
+
+/// The stance's last sample, at `T (1 - END)` (`END`), from the dense output of the step from
+/// `start` of period `period`; `None` if the strike came before it.
+fn end_of_stance(
+    model: &crate::model::Model,
+    cfg: &SimConfig,
+    start: &[f64],
+    period: f64,
+) -> Option<Frame> {
+    let limits = WalkLimits {
+        max_steps: 1,
+        ..WalkLimits::default()
+    };
+    let tr = trajectory(model, cfg, start, &limits, period * (1.0 - END), 2);
+    tr.frames.into_iter().nth(1).filter(|f| f.step == 0)
 }
 
 /// The inputs just before each end of a ramp inside the step from `start` (of period `period`):
