@@ -8,6 +8,7 @@ use walker::sim::{Frame, Trajectory};
 
 use super::caption::{failure_label, mu0_range};
 use super::geometry::{Body, Point, Pose};
+use super::sticks::Sticks;
 use super::view::View;
 
 /// The slip mark of one stance foot: the stretch of floor its foot has slid over, as distances
@@ -81,7 +82,8 @@ pub struct Film {
 
 impl Film {
     /// The film of `tr`, a walk of `model`, played at `speed` times real time in pictures of
-    /// `width x height` pixels; `None` for a model without a drawing ([`Body::of`]).
+    /// `width x height` pixels: a rimless wheel ([`Body::of`]), else a stick figure of the
+    /// model's points ([`Sticks`]); `None` for a model that is neither.
     #[must_use]
     pub fn new(
         model: &Model,
@@ -90,14 +92,30 @@ impl Film {
         (width, height): (u32, u32),
         title: String,
     ) -> Option<Self> {
-        let body = Body::of(model)?;
+        let sticks = match Body::of(model) {
+            Some(_) => None,
+            None => Some(Sticks::of(model)?),
+        };
+        let body = match &sticks {
+            Some(s) => Body::of_sticks(model, s.scale(model)),
+            None => Body::of(model)?,
+        };
         let mut frames = tr.frames.clone();
         if let Some(ff) = tr.failure_frame
             && frames.last().is_none_or(|last| ff.time > last.time)
         {
             frames.push(ff);
         }
-        let poses: Vec<Pose> = frames.iter().map(|f| body.pose(f)).collect();
+        let poses: Vec<Pose> = frames
+            .iter()
+            .map(|f| match &sticks {
+                Some(s) => {
+                    let (lines, hub) = s.pose(model, f);
+                    body.stick_pose(f, lines, hub)
+                }
+                None => body.pose(f),
+            })
+            .collect();
         let hubs: Vec<Point> = poses.iter().map(|p| p.hub).collect();
         let view = View::new(&body, &hubs, width, height);
         let along = 1.0 / body.phi.cos();

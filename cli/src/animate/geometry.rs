@@ -132,6 +132,36 @@ impl Body {
             rotation: -(th1 + frame.step as f64 * self.alpha),
             normal_force: (n.0 * normal, n.1 * normal),
             friction_force: (t.0 * friction, t.1 * friction),
+            sticks: Vec::new(),
+        }
+    }
+
+    /// The drawn body of a stick figure (`sticks.rs`) of scale `l`: no
+    /// spokes and no torso of its own (its links are drawn instead), on `model`'s floor.
+    #[must_use]
+    pub fn of_sticks(model: &Model, l: f64) -> Self {
+        Body {
+            l,
+            alpha: TAU,
+            spokes: 0,
+            r: 0.0,
+            phi: model.phi(),
+            weight: model.total_mass() * model.gravity(),
+        }
+    }
+
+    /// The stick figure's pose at `frame`: its `lines` and the camera's point `hub` (from
+    /// `Sticks::pose`), the stance foot and the ground reaction as for a
+    /// wheel.
+    #[must_use]
+    pub fn stick_pose(&self, frame: &Frame, lines: Vec<(Point, Point)>, hub: Point) -> Pose {
+        Pose {
+            hub,
+            spokes: Vec::new(),
+            torso: [hub, hub],
+            rotation: 0.0,
+            sticks: lines,
+            ..self.pose(frame)
         }
     }
 }
@@ -155,6 +185,8 @@ pub struct Pose {
     pub normal_force: Point,
     /// The friction part of the ground reaction as a drawn vector from the foot (m).
     pub friction_force: Point,
+    /// A stick figure's links, each from one point to another (empty for a rimless wheel).
+    pub sticks: Vec<(Point, Point)>,
 }
 
 impl Pose {

@@ -200,7 +200,7 @@ fn write_drawn(
                 "model",
                 format!(
                     "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
-                 alpha)",
+                 alpha) and stick figures of a model's [[point]]s (two of them on one link)",
                     model.spec().name()
                 ),
             )

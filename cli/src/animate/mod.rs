@@ -4,13 +4,13 @@
 //! library's [`walker::sim::trajectory()`]: the integrator's dense output at exact times.
 //!
 //! One concept per file: the checked request and its bounds ([`request`]), the drawn walker in
-//! world coordinates ([`geometry`]), the camera ([`view`]), the words ([`caption`]), a walk
+//! world coordinates ([`geometry`]; a biped's stick figure, [`sticks`]), the camera ([`view`]), the words ([`caption`]), a walk
 //! ready to draw ([`film`]), the animated SVG ([`svg`]), a frame in pixels ([`raster`]), the
 //! GIF ([`mod@gif`]), the stick diagram ([`strobe`]), the job ([`job`]) and its errors
 //! ([`error`]).
 //!
 //! Imports run one way: [`job`] -> [`svg`], [`mod@gif`], [`strobe`] -> [`raster`] -> [`film`]
-//! -> [`geometry`], [`view`], [`caption`]; [`job`] -> [`request`] (-> [`mod@gif`]'s bound),
+//! -> [`geometry`], [`sticks`], [`view`], [`caption`]; [`job`] -> [`request`] (-> [`mod@gif`]'s bound),
 //! [`error`] -> [`crate::input`].
 
 pub mod caption;
@@ -21,6 +21,7 @@ pub mod gif;
 pub mod job;
 pub mod raster;
 pub mod request;
+pub mod sticks;
 pub mod strobe;
 pub mod svg;
 pub mod view;

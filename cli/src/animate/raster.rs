@@ -80,7 +80,8 @@ pub fn floor<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The walker of `pose` (spokes, torso, hub) in `colour`, the camera at `centre`.
+/// The walker of `pose` (spokes, torso, hub; or a stick figure's links) in `colour`, the
+/// camera at `centre`.
 ///
 /// # Errors
 /// Plotters could not draw.
@@ -92,6 +93,16 @@ pub fn walker<DB: DrawingBackend>(
     colour: RGBColor,
 ) -> Result<(), String> {
     let b = &f.body;
+    if b.spokes == 0 {
+        for &(a, c) in &pose.sticks {
+            area.draw(&PathElement::new(
+                vec![px(f, centre, a), px(f, centre, c)],
+                colour.stroke_width(width(f, 0.04 * b.l)),
+            ))
+            .map_err(err)?;
+        }
+        return Ok(());
+    }
     let hub = px(f, centre, pose.hub);
     for &end in &pose.spokes {
         area.draw(&PathElement::new(
@@ -134,8 +145,8 @@ pub fn slip<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The stick figure of `pose` (its stance, fore and rear legs and the torso) in thin lines of
-/// `colour`, the camera at `centre`.
+/// The stick figure of `pose` (a wheel's stance, fore and rear legs and the torso; a biped's
+/// links) in thin lines of `colour`, the camera at `centre`.
 ///
 /// # Errors
 /// Plotters could not draw.
@@ -146,6 +157,16 @@ pub fn stick<DB: DrawingBackend>(
     centre: Point,
     colour: RGBColor,
 ) -> Result<(), String> {
+    for &(a, c) in &pose.sticks {
+        area.draw(&PathElement::new(
+            vec![px(f, centre, a), px(f, centre, c)],
+            colour.stroke_width(1),
+        ))
+        .map_err(err)?;
+    }
+    if f.body.spokes == 0 {
+        return Ok(());
+    }
     let hub = px(f, centre, pose.hub);
     for end in pose.stick_legs() {
         area.draw(&PathElement::new(

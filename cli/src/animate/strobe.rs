@@ -68,13 +68,20 @@ pub fn strobe_svg(f: &Film) -> String {
                 num(e.1)
             ));
         }
-        d.push_str(&format!(
-            "M{} {}L{} {}",
-            num(p.torso[0].0),
-            num(p.torso[0].1),
-            num(p.torso[1].0),
-            num(p.torso[1].1)
-        ));
+        let lines = if b.spokes == 0 {
+            p.sticks.clone()
+        } else {
+            vec![(p.torso[0], p.torso[1])]
+        };
+        for (a, c) in lines {
+            d.push_str(&format!(
+                "M{} {}L{} {}",
+                num(a.0),
+                num(a.1),
+                num(c.0),
+                num(c.1)
+            ));
+        }
         s.push_str(&format!(
             "<path d=\"{d}\" stroke=\"#555\" stroke-opacity=\"0.7\" stroke-width=\"{}\" \
              fill=\"none\"/>\n",
@@ -103,8 +110,13 @@ pub fn strobe_svg(f: &Film) -> String {
 /// What the diagram shows: how many poses, how far apart in time.
 fn interval_text(f: &Film) -> String {
     let dt = f.frames.get(1).map_or(0.0, |g| g.time) - f.frames.first().map_or(0.0, |g| g.time);
+    let drawn = if f.body.spokes == 0 {
+        "the links between the model's points"
+    } else {
+        "stance, fore and rear legs, torso"
+    };
     format!(
-        "{} poses every {} s (the last at the failure, if any): stance, fore and rear legs, torso; orange: slip",
+        "{} poses every {} s (the last at the failure, if any): {drawn}; orange: slip",
         f.poses.len(),
         num(dt)
     )

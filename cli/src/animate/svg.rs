@@ -259,7 +259,6 @@ pub fn animated_svg(f: &Film) -> String {
     let t = Timing::of(f);
     let dur = f.duration();
     let b = &f.body;
-    let sw = num(0.02 * b.l);
     let mut s = header(w, h);
     s.push_str(&format!("<defs>{}</defs>\n", markers()));
     // The world: metres, z up, with the camera's centre at the picture's reference point.
@@ -295,44 +294,11 @@ pub fn animated_svg(f: &Film) -> String {
         s.push_str(&floor(f, lo - b.l, hi + b.l));
     }
     s.push_str(&slip_marks(f, &t));
-    // The wheel and the torso, carried by the hub.
-    s.push_str(&format!(
-        "<g transform=\"translate({} {})\">\n",
-        num(f.poses.first().map_or(0.0, |p| p.hub.0)),
-        num(f.poses.first().map_or(0.0, |p| p.hub.1))
-    ));
-    s.push_str(&animate_transform(
-        "translate",
-        &translations(f.poses.iter().map(|p| p.hub)),
-        &t,
-    ));
-    s.push_str("<g>\n");
-    s.push_str(&animate_transform(
-        "rotate",
-        &values(f.poses.iter().map(|p| num(p.rotation.to_degrees()))),
-        &t,
-    ));
-    s.push_str(&format!(
-        "<path d=\"{}\" stroke=\"#333\" stroke-width=\"{sw}\" stroke-linecap=\"round\"/>\n</g>\n",
-        spokes_path(f)
-    ));
-    s.push_str("<g>\n");
-    s.push_str(&animate_transform(
-        "rotate",
-        &values(f.frames.iter().map(|fr| num(fr.state[3].to_degrees()))),
-        &t,
-    ));
-    s.push_str(&format!(
-        "<line x1=\"{}\" y1=\"0\" x2=\"{}\" y2=\"0\" stroke=\"#777\" stroke-width=\"{}\" \
-         stroke-linecap=\"round\"/>\n</g>\n",
-        num(-b.r),
-        num(b.r),
-        num(0.06 * b.l)
-    ));
-    s.push_str(&format!(
-        "<circle r=\"{}\" fill=\"black\"/>\n</g>\n",
-        num(0.05 * b.l)
-    ));
+    if b.spokes == 0 {
+        s.push_str(&stick_lines(f, &t));
+    } else {
+        s.push_str(&wheel(f, &t));
+    }
     s.push_str(&forces(f, &t));
     s.push_str("</g>\n</g>\n");
     // Captions, in pixels.
@@ -349,6 +315,82 @@ pub fn animated_svg(f: &Film) -> String {
         s.push_str(&timed_text(fail, (10.0, 60.0), "#c00", from, None, dur));
     }
     s.push_str("</svg>\n");
+    s
+}
+
+/// The wheel and the torso, carried by the hub.
+fn wheel(f: &Film, t: &Timing) -> String {
+    let b = &f.body;
+    let sw = num(0.02 * b.l);
+    let mut s = String::new();
+    s.push_str(&format!(
+        "<g transform=\"translate({} {})\">\n",
+        num(f.poses.first().map_or(0.0, |p| p.hub.0)),
+        num(f.poses.first().map_or(0.0, |p| p.hub.1))
+    ));
+    s.push_str(&animate_transform(
+        "translate",
+        &translations(f.poses.iter().map(|p| p.hub)),
+        t,
+    ));
+    s.push_str("<g>\n");
+    s.push_str(&animate_transform(
+        "rotate",
+        &values(f.poses.iter().map(|p| num(p.rotation.to_degrees()))),
+        t,
+    ));
+    s.push_str(&format!(
+        "<path d=\"{}\" stroke=\"#333\" stroke-width=\"{sw}\" stroke-linecap=\"round\"/>\n</g>\n",
+        spokes_path(f)
+    ));
+    s.push_str("<g>\n");
+    s.push_str(&animate_transform(
+        "rotate",
+        &values(f.frames.iter().map(|fr| num(fr.state[3].to_degrees()))),
+        t,
+    ));
+    s.push_str(&format!(
+        "<line x1=\"{}\" y1=\"0\" x2=\"{}\" y2=\"0\" stroke=\"#777\" stroke-width=\"{}\" \
+         stroke-linecap=\"round\"/>\n</g>\n",
+        num(-b.r),
+        num(b.r),
+        num(0.06 * b.l)
+    ));
+    s.push_str(&format!(
+        "<circle r=\"{}\" fill=\"black\"/>\n</g>\n",
+        num(0.05 * b.l)
+    ));
+    s
+}
+
+/// A stick figure's links, each a line whose ends move with the walk.
+fn stick_lines(f: &Film, t: &Timing) -> String {
+    let mut s = format!(
+        "<g stroke=\"#333\" stroke-width=\"{}\" stroke-linecap=\"round\">\n",
+        num(0.04 * f.body.l)
+    );
+    let links = f.poses.first().map_or(0, |p| p.sticks.len());
+    for j in 0..links {
+        // The link's ends `[x1, y1, x2, y2]` in each pose.
+        let ends = |p: &super::geometry::Pose| {
+            let (a, c) = p.sticks[j];
+            [a.0, a.1, c.0, c.1]
+        };
+        let first = ends(&f.poses[0]);
+        s.push_str(&format!(
+            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\">\n",
+            num(first[0]),
+            num(first[1]),
+            num(first[2]),
+            num(first[3])
+        ));
+        for (k, attr) in ["x1", "y1", "x2", "y2"].into_iter().enumerate() {
+            let v = values(f.poses.iter().map(|p| num(ends(p)[k])));
+            s.push_str(&animate(attr, &v, t));
+        }
+        s.push_str("</line>\n");
+    }
+    s.push_str("</g>\n");
     s
 }
 
