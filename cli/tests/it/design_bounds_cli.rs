@@ -6,31 +6,10 @@
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
 use std::path::Path;
-use std::process::Command;
 
 use serde_json::Value;
 
-/// Runs `walker ARGS`: exit code, stdout, stderr.
-fn walker(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_walker"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-/// The JSON of a successful `walker ARGS --json`.
-fn json(args: &[&str]) -> Value {
-    let mut a = args.to_vec();
-    a.push("--json");
-    let (code, out, err) = walker(&a);
-    assert_eq!(code, 0, "walker {args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
-}
+use crate::common::{json, num, row, walker};
 
 /// `models/NAME.toml`.
 fn model(name: &str) -> String {
@@ -39,21 +18,6 @@ fn model(name: &str) -> String {
         .to_str()
         .unwrap()
         .to_owned()
-}
-
-/// `x` as a number.
-fn num(x: &Value) -> f64 {
-    x.as_f64().unwrap()
-}
-
-/// The constraint row `name` of a design.
-fn row<'a>(d: &'a Value, name: &str) -> &'a Value {
-    d["constraints"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|c| c["name"] == name)
-        .unwrap_or_else(|| panic!("no row {name}: {d}"))
 }
 
 /// The paper's walker held on `mu0 = 1` (where the held gaits of the paper's ramps up to

@@ -5,31 +5,10 @@
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use serde_json::Value;
 
-/// Runs `walker ARGS`: exit code, stdout, stderr.
-fn walker(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_walker"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-/// The JSON of a successful `walker ARGS --json`.
-fn json(args: &[&str]) -> Value {
-    let mut a = args.to_vec();
-    a.push("--json");
-    let (code, out, err) = walker(&a);
-    assert_eq!(code, 0, "walker {args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
-}
+use crate::common::{json, num, walker};
 
 /// The repository's `models/paper-active.toml`.
 fn paper_active() -> PathBuf {
@@ -78,11 +57,6 @@ default = 0.2617993877991494
         r#"["-alpha/2", "-alpha/2", "a2", "a3", "alpha/2", "alpha/2"]"#,
         extra,
     )
-}
-
-/// `x` as a number.
-fn num(x: &Value) -> f64 {
-    x.as_f64().unwrap()
 }
 
 #[test]

@@ -1,4 +1,5 @@
 //! Helpers shared by the command line's end-to-end tests.
+#![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
 /// The decimal numbers (`0.45`, `62.95`; not integers, not `1e-6`) in `text`: the figures a
 /// README caption or table quotes from a job's `summary.txt`.
@@ -16,4 +17,41 @@ pub fn decimals(text: &str) -> Vec<String> {
         }
     }
     out
+}
+
+/// Runs `walker ARGS`: exit code, stdout, stderr.
+pub fn walker(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_walker"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The JSON of a successful `walker ARGS --json`.
+pub fn json(args: &[&str]) -> serde_json::Value {
+    let mut a = args.to_vec();
+    a.push("--json");
+    let (code, out, err) = walker(&a);
+    assert_eq!(code, 0, "walker {args:?}: {err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+/// `x` as a number.
+pub fn num(x: &serde_json::Value) -> f64 {
+    x.as_f64().unwrap()
+}
+
+/// The constraint row `name` of a design's JSON.
+pub fn row<'a>(d: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
+    d["constraints"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["name"] == name)
+        .unwrap_or_else(|| panic!("no row {name}: {d}"))
 }
