@@ -397,3 +397,72 @@ fn a_floor_is_drawn_as_a_patch_per_step_with_its_mu0() {
     let clash = walker(&[&["animate", "-o", "x.svg", "--mu0", "0.3"], &common[..]].concat());
     assert_eq!(clash.status.code(), Some(2));
 }
+
+#[test]
+fn a_biped_is_drawn_as_the_links_of_its_points_at_the_simulated_positions() {
+    // The three-link biped (`models/three-link.toml`: points hip, torso, swing_foot): its links
+    // are read from its geometry (stance foot - hip, hip - torso, hip - swing foot; the stance
+    // foot and the swing foot are not on one link), each a line whose ends move with the walk.
+    use walker_cli::animate::sticks::Sticks;
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/three-link.toml");
+    let setup = Setup::from_model_file(&path, &Default::default(), None).expect("compiled");
+    let model = setup.model().expect("the model");
+    let sticks = Sticks::of(&model).expect("a stick figure");
+    assert_eq!(sticks.links, [(0, 1), (1, 2), (1, 3)]);
+
+    let out = tmp("three-link.svg");
+    let report = animate(
+        &out,
+        &[
+            "--model",
+            path.to_str().expect("UTF-8"),
+            "--steps",
+            "2",
+            "--fps",
+            "20",
+        ],
+    );
+    let frames = report["frames"].as_u64().expect("frames") as usize;
+    let text = std::fs::read_to_string(&out).expect("written");
+    let doc = roxmltree::Document::parse(&text).expect("the SVG parses");
+    // Three lines (the group of the links) whose four ends each have one keyframe per frame
+    // and the held last one.
+    let group = doc
+        .descendants()
+        .find(|n| n.has_tag_name("g") && n.attribute("stroke") == Some("#333"))
+        .expect("the links' group");
+    let lines: Vec<_> = group
+        .children()
+        .filter(|n| n.has_tag_name("line"))
+        .collect();
+    assert_eq!(lines.len(), 3);
+    let keyed = |line: &roxmltree::Node<'_, '_>, attr: &str| -> Vec<f64> {
+        line.children()
+            .find(|n| n.attribute("attributeName") == Some(attr))
+            .and_then(|n| n.attribute("values"))
+            .expect("animated")
+            .split(';')
+            .map(|v| v.parse().expect("a number"))
+            .collect()
+    };
+    for line in &lines {
+        for attr in ["x1", "y1", "x2", "y2"] {
+            assert_eq!(keyed(line, attr).len(), frames + 1, "{attr}");
+        }
+    }
+    // The hip, the first end of the links from it, at frame 0 is the model's `hip` point at
+    // the start (the SVG writes 4 decimals: to 5e-5 m).
+    let hips: Vec<(f64, f64)> = lines[1..]
+        .iter()
+        .map(|l| (keyed(l, "x1")[0], keyed(l, "y1")[0]))
+        .collect();
+    let q = model.start_state();
+    let mut p = [0.0; 6];
+    model.points(&q.as_slice()[..model.n()], &mut p);
+    for h in hips {
+        assert!(
+            (h.0 - p[0]).abs() <= 5e-5 && (h.1 - p[1]).abs() <= 5e-5,
+            "{h:?} vs {p:?}"
+        );
+    }
+}
