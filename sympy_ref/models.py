@@ -237,7 +237,9 @@ def load(path) -> Model:
         ctl = raw["control"]
         m.kp, m.kd = sym[ctl["kp"]], sym[ctl["kd"]]
     for o in raw.get("output", []):
-        d = {k: (P(v, f"output {o['name']} desired {k}") if k != "shape" else v)
+        d = {k: (v if k == "shape" else
+                 [P(e, f"output {o['name']} desired {k}[{i}]") for i, e in enumerate(v)]
+                 if k == "points" else P(v, f"output {o['name']} desired {k}"))
              for k, v in o["desired"].items()}
         m.outputs.append((o["name"], P(o["h"], f"output {o['name']}"),
                           o.get("aux", "v_" + o["name"]), d))
@@ -525,7 +527,8 @@ class Numeric:
         self.relabel = (L(rq), L(rq.jacobian(sp.Matrix(m.q))))
         des = []
         for o in m.outputs:
-            des.append({k: (L(v) if k != "shape" else v) for k, v in o[3].items()})
+            des.append({k: (v if k == "shape" else [L(e) for e in v] if k == "points"
+                             else L(v)) for k, v in o[3].items()})
         self.des = des
         self.kp, self.kd = (L(m.kp), L(m.kd)) if m.inputs else (None, None)
 
@@ -728,9 +731,26 @@ def coulomb(out, M, Jc, JL, qd):
 
 
 def desired(des, a, t):
-    """The desired trajectory and its two derivatives at t (Section 3.2's quintic, or a hold)."""
+    """The desired trajectory and its two derivatives at t (Section 3.2's quintic, a hold, or a
+    Bezier polynomial in s = t / duration, held at its last point after the duration)."""
     if des["shape"] == "hold":
         return mp.mpf(des["value"](*a)), mp.mpf(0), mp.mpf(0)
+    if des["shape"] == "bezier":
+        pts = [mp.mpf(f(*a)) for f in des["points"]]
+        T = des["duration"](*a)
+        if t >= T:
+            return pts[-1], mp.mpf(0), mp.mpf(0)
+        s = t / T
+
+        def bern(c):    # sum_k c_k C(M, k) s^k (1 - s)^(M - k), M = len(c) - 1
+            M = len(c) - 1
+            return sum(ck * mp.binomial(M, k) * s ** k * (1 - s) ** (M - k)
+                       for k, ck in enumerate(c))
+        M = len(pts) - 1
+        d1 = [pts[k + 1] - pts[k] for k in range(M)]
+        d2 = [d1[k + 1] - d1[k] for k in range(M - 1)]
+        return (bern(pts), M * bern(d1) / T,
+                M * (M - 1) * bern(d2) / T ** 2 if M >= 2 else mp.mpf(0))
     y0, y1, T = des["from"](*a), des["to"](*a), des["duration"](*a)
     if t >= T:
         return mp.mpf(y1), mp.mpf(0), mp.mpf(0)

@@ -11,6 +11,7 @@ mod common;
 mod continue_cli;
 mod design_bounds_cli;
 mod design_cli;
+mod design_rabbit_cli;
 mod floor_cli;
 mod floor_patches_cli;
 mod floor_slopes_cli;
