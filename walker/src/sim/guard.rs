@@ -234,7 +234,7 @@ impl<'a> Guards<'a> {
             Guard::PowerKink(i) => {
                 if !self.kinks.get() {
                     1.0
-                } else if foot.model.inputs() > 1 {
+                } else if foot.several {
                     foot.input_power(t, y, i)
                 } else {
                     foot.power(t, y)
