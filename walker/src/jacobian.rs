@@ -11,6 +11,16 @@
 //! and a stuck phase its own kernel (`stick_jacobian`, with the ground force's rows for the
 //! slip guard): [`StanceJacobian::any_law`], [`StanceJacobian::accel_in`], for the Poincare
 //! map's variational equations (`docs/poincare.md`).
+//!
+//! A model with inputs has no `stick_jacobian`: its stuck stance is differentiated through the
+//! sliding one ([`StanceJacobian::held_ratio`]). The held foot's force is the sliding foot's at
+//! the friction ratio `mu*(t, y) = lambda_t / lambda_n` (the stuck system's solution solves the
+//! sliding system at that `mu`), the one at which the foot's acceleration `xdd` vanishes. With
+//! `D` the sliding rows chained through `v` at `mu*` (no `mu` term) and `K_mu` the kernel's `mu`
+//! column, the implicit function theorem gives `d mu*/dy = -D_0 / K_mu,0` and the stuck field's
+//! rows `D_i + K_mu,i d mu*/dy = D_i - (K_mu,i / K_mu,0) D_0` (row 0 vanishes exactly).
+
+use walker_contract::Desired;
 
 use crate::model::{Args, Contact, FrictionLaw, KernelId, Model};
 use crate::vector::MAX_COORDINATES;
@@ -58,6 +68,30 @@ pub enum NoJacobian {
     /// The friction law is not the smooth one.
     #[error("the Jacobian kernels are used for the tanh friction law only")]
     NotTanh,
+    /// A held foot of a model with inputs whose friction ratio `lambda_t / lambda_n` the
+    /// sliding kernels cannot take: the normal force is not positive, `mu0` is not, or the
+    /// foot's acceleration does not depend on the friction there (`d xdd / d mu = 0`), so
+    /// [`StanceJacobian::held_ratio`] has no implicit function to differentiate.
+    #[error(
+        "the held foot's friction ratio has no derivative here (its normal force or d xdd / d mu vanishes)"
+    )]
+    HeldRatioSingular,
+}
+
+/// The friction ratio that holds the stance foot of a model with inputs, with its derivatives
+/// ([`StanceJacobian::held_ratio`]).
+#[derive(Clone, Copy, Debug)]
+pub struct HeldRatio {
+    /// The ground's force along the floor (`lambda_t`, the stuck kernel's).
+    pub tangential: f64,
+    /// The ground's force normal to the floor (`lambda_n`, positive).
+    pub normal: f64,
+    /// `mu* = lambda_t / lambda_n`.
+    pub mu: f64,
+    /// `d mu* / d y` (`2n` numbers used).
+    pub d_y: [f64; 2 * MAX_COORDINATES],
+    /// `d mu* / dt` at a fixed state: through the desired trajectories in `v(t, y)`.
+    pub d_t: f64,
 }
 
 /// The analytic state Jacobian of a model's stance phase.
@@ -103,12 +137,18 @@ impl<'a> StanceJacobian<'a> {
     /// Whether the model's kernels give the stance Jacobian in the contact `contact`: the
     /// sliding (or smooth) stance from `accel_jacobian` (`closed_loop_jacobian` with
     /// `output_rates_jacobian` for a model with inputs), the stuck stance from `stick_jacobian`
-    /// (a model without inputs).
+    /// (a model without inputs) or, for a model with inputs, from the sliding kernels at the
+    /// held foot's friction ratio (module documentation; `mu0` positive, as `mu = -mu0 sigma`
+    /// must reach every ratio).
     #[must_use]
     pub fn has_contact(&self, contact: Contact) -> bool {
         let k = self.model.kernels();
-        if self.model.is_stuck(contact) {
-            return self.model.inputs() == 0 && k.has(KernelId::StickJacobian);
+        if self.model.is_stuck(contact) && self.model.inputs() == 0 {
+            return k.has(KernelId::StickJacobian);
+        }
+        if self.model.is_stuck(contact) && !(self.model.mu0() > 0.0 && self.model.mu0().is_finite())
+        {
+            return false;
         }
         if self.model.is_active() {
             k.has(KernelId::ClosedLoopJacobian) && k.has(KernelId::OutputRatesJacobian)
@@ -129,23 +169,43 @@ impl<'a> StanceJacobian<'a> {
     /// `d [qdd, u]_i / d y_j` (`y = [q, qd]`, `2n` columns; `n + m` rows, the inputs' rows
     /// after the accelerations) at `(t, y)`, the chain rule through `mu(xd)` and `v(t, y)`
     /// applied, written row-major into `out` with row stride `2n`.
-    pub fn accel(&self, t: f64, y: &[f64], out: &mut [f64]) {
-        self.accel_in(t, y, Contact::Smooth, out);
+    ///
+    /// # Errors
+    /// As [`StanceJacobian::accel_with`] (only for a Coulomb model, which treats
+    /// [`Contact::Smooth`] as stuck).
+    pub fn accel(&self, t: f64, y: &[f64], out: &mut [f64]) -> Result<(), NoJacobian> {
+        self.accel_in(t, y, Contact::Smooth, out)
     }
 
     /// [`StanceJacobian::accel`] in the contact `contact`: the smooth law's chain rule through
     /// `mu(xd)`; sliding under exact Coulomb friction `mu = -mu0 sigma` is constant (no `mu`
     /// term); stuck, the `n` rows of `qdd` from `stick_jacobian` (its rows of `x`, `z` are
-    /// zero: the foot is held). The contact's kernels must exist
-    /// ([`StanceJacobian::has_contact`]).
-    pub fn accel_in(&self, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
-        self.accel_with(t, y, contact, out, &mut Scratch::new());
+    /// zero: the foot is held), or for a model with inputs the sliding rows at the held
+    /// foot's friction ratio with `mu*`'s derivative eliminated (module documentation). The
+    /// contact's kernels must exist ([`StanceJacobian::has_contact`]).
+    ///
+    /// # Errors
+    /// As [`StanceJacobian::accel_with`].
+    pub fn accel_in(
+        &self,
+        t: f64,
+        y: &[f64],
+        contact: Contact,
+        out: &mut [f64],
+    ) -> Result<(), NoJacobian> {
+        self.accel_with(t, y, contact, out, &mut Scratch::new())
     }
 
     /// [`StanceJacobian::accel_in`] with the kernels' outputs in `scratch`: a caller that
     /// evaluates the Jacobian at every right-hand side (the variational equations) keeps one
     /// [`Scratch`] instead of zeroing a new one per call. The rows written are those `out`
-    /// holds: `n` (the accelerations' only) or `n + m`.
+    /// holds: `n` (the accelerations' only) or `n + m`. After a stuck contact of a model with
+    /// inputs, `scratch` holds the sliding kernel's rows at the held foot's friction ratio (what
+    /// a parameter's column eliminates the same way).
+    ///
+    /// # Errors
+    /// [`NoJacobian::HeldRatioSingular`]: the foot of a model with inputs is held where its
+    /// friction ratio has no derivative (`out` is then left as it was: never a NaN).
     pub fn accel_with(
         &self,
         t: f64,
@@ -153,18 +213,45 @@ impl<'a> StanceJacobian<'a> {
         contact: Contact,
         out: &mut [f64],
         scratch: &mut Scratch,
+    ) -> Result<(), NoJacobian> {
+        let m = self.model;
+        let n = m.n();
+        if m.is_stuck(contact) && m.inputs() == 0 {
+            let k = &mut scratch.k;
+            self.stick(y, &mut k[..(n + 2) * 2 * n]);
+            out[..n * 2 * n].copy_from_slice(&k[..n * 2 * n]);
+            return Ok(());
+        }
+        if m.is_stuck(contact) {
+            self.held_rows(t, y, out, scratch).map(|_| ())
+        } else {
+            self.sliding_rows(
+                t,
+                y,
+                contact.sigma(),
+                contact != Contact::Smooth,
+                out,
+                scratch,
+            );
+            Ok(())
+        }
+    }
+
+    /// The rows of [`StanceJacobian::accel_with`] for a sliding (or smooth, `sliding` false)
+    /// contact at the kernel argument `sigma` (`mu = -mu0 sigma` under Coulomb friction).
+    fn sliding_rows(
+        &self,
+        t: f64,
+        y: &[f64],
+        sigma: f64,
+        sliding: bool,
+        out: &mut [f64],
+        scratch: &mut Scratch,
     ) {
         let m = self.model;
         let (n, inputs) = (m.n(), m.inputs());
         let (q, qd) = (&y[..n], &y[n..2 * n]);
         let Scratch { k, rates } = scratch;
-        if m.is_stuck(contact) {
-            self.stick(y, &mut k[..(n + 2) * 2 * n]);
-            out[..n * 2 * n].copy_from_slice(&k[..n * 2 * n]);
-            return;
-        }
-        let sliding = contact != Contact::Smooth;
-        let sigma = contact.sigma();
         let cols = 2 * n + 1 + inputs;
         let dmu = if sliding { 0.0 } else { self.dmu(qd[0]) };
         if inputs == 0 {
@@ -231,6 +318,105 @@ impl<'a> StanceJacobian<'a> {
         }
     }
 
+    /// The stuck stance's rows of a model with inputs (module documentation): the sliding
+    /// rows at `mu*` into `out` (with `d mu*/dy` and `d mu*/dt` returned), then
+    /// `D_i - (K_mu,i / K_mu,0) D_0` on every row asked for (row 0 becomes exactly zero).
+    fn held_rows(
+        &self,
+        t: f64,
+        y: &[f64],
+        out: &mut [f64],
+        scratch: &mut Scratch,
+    ) -> Result<HeldRatio, NoJacobian> {
+        let m = self.model;
+        let (n, inputs) = (m.n(), m.inputs());
+        let rows = (out.len() / (2 * n)).min(n + inputs);
+        let mut d = [0.0; 2 * MAX_COORDINATES * 2 * MAX_COORDINATES];
+        let held = self.held_ratio_into(t, y, &mut d[..rows * 2 * n], scratch)?;
+        let cols = 2 * n + 1 + inputs;
+        let k = &scratch.k;
+        let pivot = k[2 * n];
+        let (d0, rest) = d.split_at(2 * n);
+        for (i, o) in out[..rows * 2 * n].chunks_exact_mut(2 * n).enumerate() {
+            let ratio = k[i * cols + 2 * n] / pivot;
+            let di = if i == 0 {
+                d0
+            } else {
+                &rest[(i - 1) * 2 * n..i * 2 * n]
+            };
+            for ((o, &dij), &d0j) in o.iter_mut().zip(di).zip(d0) {
+                *o = dij - ratio * d0j;
+            }
+        }
+        Ok(held)
+    }
+
+    /// The friction ratio `mu* = lambda_t / lambda_n` that holds the stance foot of a model
+    /// with inputs at `(t, y)`, with `d mu*/dy = -D_0 / K_mu,0` and `d mu*/dt = -(sum_k K_v,0k
+    /// d v_k/dt) / K_mu,0` (`d v_k/dt = yddd_d + K_D ydd_d + K_P yd_d` at a fixed state), from
+    /// the sliding kernel `closed_loop_jacobian` at `mu = mu*` (the kernel's argument `sigma =
+    /// -mu*/mu0`), which is left in `scratch` (module documentation). The slip guard
+    /// `|lambda_t| - mu0 lambda_n = lambda_n (|mu*| - mu0)` has, where it vanishes, the
+    /// gradient `lambda_n sign(mu*) d mu*/dy` and the time rate `lambda_n sign(mu*) d mu*/dt`.
+    ///
+    /// # Errors
+    /// [`NoJacobian::HeldRatioSingular`]: the normal force or `mu0` is not positive, or the
+    /// foot's acceleration does not depend on the friction (`K_mu,0` zero or not finite).
+    pub fn held_ratio(
+        &self,
+        t: f64,
+        y: &[f64],
+        scratch: &mut Scratch,
+    ) -> Result<HeldRatio, NoJacobian> {
+        let n = self.model.n();
+        let mut d = [0.0; 2 * MAX_COORDINATES];
+        self.held_ratio_into(t, y, &mut d[..2 * n], scratch)
+    }
+
+    /// [`StanceJacobian::held_ratio`], with the sliding rows `D` at `mu*` (as many rows as `d`
+    /// holds, at least one) written into `d`.
+    fn held_ratio_into(
+        &self,
+        t: f64,
+        y: &[f64],
+        d: &mut [f64],
+        scratch: &mut Scratch,
+    ) -> Result<HeldRatio, NoJacobian> {
+        let m = self.model;
+        let (n, inputs) = (m.n(), m.inputs());
+        let mu0 = m.mu0();
+        let force = m.reaction(t, y, Contact::Stuck);
+        let mu = force.tangential / force.normal;
+        if !(force.normal > 0.0 && mu.is_finite() && mu0 > 0.0 && mu0.is_finite()) {
+            return Err(NoJacobian::HeldRatioSingular);
+        }
+        // Sliding at mu*, chained through v, without the `mu` term: mu* is eliminated below.
+        self.sliding_rows(t, y, -mu / mu0, true, d, scratch);
+        let k = &scratch.k;
+        let pivot = k[2 * n];
+        if pivot == 0.0 || !pivot.is_finite() || !d.iter().all(|x| x.is_finite()) {
+            return Err(NoJacobian::HeldRatioSingular);
+        }
+        let mut d_y = [0.0; 2 * MAX_COORDINATES];
+        for (o, &d0j) in d_y[..2 * n].iter_mut().zip(&d[..2 * n]) {
+            *o = -d0j / pivot;
+        }
+        let (k_p, k_d) = m.gains();
+        let mut dv_dt = 0.0;
+        for i in 0..inputs {
+            let [_, yd, ydd] = m.desired(i, t);
+            let rate = jerk(m.desired_trajectory(i), t) + k_d * ydd + k_p * yd;
+            dv_dt += k[2 * n + 1 + i] * rate;
+        }
+        Ok(HeldRatio {
+            tangential: force.tangential,
+            normal: force.normal,
+            mu,
+            d_y,
+            d_t: -dv_dt / pivot,
+        })
+    }
+
     /// `d [qdd, lambda_t, lambda_n] / d [q, qd]` of the stuck stance (`stick_jacobian`) at
     /// `y = [q, qd, ..]`, row-major with row stride `2n` (`n + 2` rows): the accelerations'
     /// rows, then the ground force's along and normal to the floor (the slip guard's gradient).
@@ -246,7 +432,8 @@ impl<'a> StanceJacobian<'a> {
     /// Fills the stance system's Jacobian `jac` (`S = 2n + 1` components: the state and the
     /// power quadrature) at `(t, y)`: `d qd / d y` is the identity block, `d qdd / d y` comes
     /// from [`StanceJacobian::accel`], and the power row is `sum_i sign(u_i w_i) (w_i du_i/dy +
-    /// u_i dw_i/dy)` while the power counts (zero after). Returns `true`.
+    /// u_i dw_i/dy)` while the power counts (zero after). Returns whether it was filled
+    /// (`false` where [`StanceJacobian::accel`] fails).
     pub fn fill<const S: usize>(
         &self,
         t: f64,
@@ -257,7 +444,9 @@ impl<'a> StanceJacobian<'a> {
         let m = self.model;
         let (n, inputs) = (m.n(), m.inputs());
         let mut a = [0.0; 2 * MAX_COORDINATES * 2 * MAX_COORDINATES];
-        self.accel(t, y, &mut a[..(n + inputs) * 2 * n]);
+        if self.accel(t, y, &mut a[..(n + inputs) * 2 * n]).is_err() {
+            return false;
+        }
         for row in jac.iter_mut() {
             *row = [0.0; S];
         }
@@ -297,5 +486,15 @@ impl<'a> StanceJacobian<'a> {
             &Args::state(&s[..n], &s[n..2 * n]),
             &mut out[..n * 2 * n],
         );
+    }
+}
+
+/// The third derivative `yddd_d` of the desired trajectory `d` at `t` (zero for a constant and
+/// from the ramp's end on): the time rate of `v` at a fixed state needs it.
+fn jerk(d: &Desired, t: f64) -> f64 {
+    match d {
+        Desired::Quintic(r) => r.jerk(t),
+        Desired::Hold(_) => 0.0,
+        Desired::Bezier(b) => b.jerk(t),
     }
 }
