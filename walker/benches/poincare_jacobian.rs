@@ -80,6 +80,21 @@ fn main() {
         .model()
         .expect("compiled");
     bench("active-level (compiled, Table 1, tanh)", &active, &cfg);
+    // Under exact Coulomb friction in stance and at the impact: the held foot through the
+    // sliding kernels (`docs/poincare.md`), held through the step (mu0 = 1) and slipping twice
+    // within it (mu0 = 0.5).
+    for (mu0, what) in [(1.0, "held"), (0.5, "stick-slip")] {
+        let mut setup = Setup::built_in("active-level").expect("a built-in scene");
+        setup.friction = walker::model::Friction::Coulomb;
+        setup.impact = walker::model::ImpactLaw::Coulomb;
+        setup.set("mu0", mu0).expect("mu0");
+        let model = setup.model().expect("compiled");
+        bench(
+            &format!("active-level (compiled, Coulomb, {what}, mu0 = {mu0})"),
+            &model,
+            &cfg,
+        );
+    }
     let source = walker_load::runtime_source();
     let simplest = Setup::from_model_file(
         &models.join("simplest-walker.toml"),

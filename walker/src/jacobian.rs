@@ -11,9 +11,21 @@
 //! and a stuck phase its own kernel (`stick_jacobian`, with the ground force's rows for the
 //! slip guard): [`StanceJacobian::any_law`], [`StanceJacobian::accel_in`], for the Poincare
 //! map's variational equations (`docs/poincare.md`).
+//!
+//! A model with inputs has no `stick_jacobian`: its stuck stance is differentiated through the
+//! sliding one ([`StanceJacobian::held_ratio`]). The held foot's force is the sliding foot's at
+//! the friction ratio `mu*(t, y) = lambda_t / lambda_n` (the stuck system's solution solves the
+//! sliding system at that `mu`), the one at which the foot's acceleration `xdd` vanishes. With
+//! `D` the sliding rows chained through `v` at `mu*` (no `mu` term) and `K_mu` the kernel's `mu`
+//! column, the implicit function theorem gives `d mu*/dy = -D_0 / K_mu,0` and the stuck field's
+//! rows `D_i + K_mu,i d mu*/dy = D_i - (K_mu,i / K_mu,0) D_0` (row 0 vanishes exactly).
 
 use crate::model::{Args, Contact, FrictionLaw, KernelId, Model};
 use crate::vector::MAX_COORDINATES;
+
+mod held;
+
+pub use held::HeldRatio;
 
 /// The largest output of a Jacobian kernel the chain rule reads: `closed_loop_jacobian` of a
 /// model with [`MAX_COORDINATES`] coordinates and as many inputs.
@@ -24,7 +36,8 @@ const MAX_JAC: usize = 2 * MAX_COORDINATES * (3 * MAX_COORDINATES + 1);
 #[derive(Clone)]
 pub struct Scratch {
     /// The stance Jacobian kernel's output (after [`StanceJacobian::accel_with`] in a contact
-    /// that is not stuck: its rows with the columns `[q, qd, mu, v]`).
+    /// that is not stuck, or stuck for a model with inputs: its rows with the columns `[q, qd,
+    /// mu, v]`).
     pub(crate) k: [f64; MAX_JAC],
     /// `output_rates_jacobian`'s output.
     rates: [f64; 4 * MAX_COORDINATES * MAX_COORDINATES],
@@ -58,6 +71,14 @@ pub enum NoJacobian {
     /// The friction law is not the smooth one.
     #[error("the Jacobian kernels are used for the tanh friction law only")]
     NotTanh,
+    /// A held foot of a model with inputs whose friction ratio `lambda_t / lambda_n` the
+    /// sliding kernels cannot take: the normal force is not positive, `mu0` is not, or the
+    /// foot's acceleration does not depend on the friction there (`d xdd / d mu = 0`), so
+    /// [`StanceJacobian::held_ratio`] has no implicit function to differentiate.
+    #[error(
+        "the held foot's friction ratio has no derivative here (its normal force or d xdd / d mu vanishes)"
+    )]
+    HeldRatioSingular,
 }
 
 /// The analytic state Jacobian of a model's stance phase.
@@ -103,12 +124,18 @@ impl<'a> StanceJacobian<'a> {
     /// Whether the model's kernels give the stance Jacobian in the contact `contact`: the
     /// sliding (or smooth) stance from `accel_jacobian` (`closed_loop_jacobian` with
     /// `output_rates_jacobian` for a model with inputs), the stuck stance from `stick_jacobian`
-    /// (a model without inputs).
+    /// (a model without inputs) or, for a model with inputs, from the sliding kernels at the
+    /// held foot's friction ratio (module documentation; `mu0` positive, as `mu = -mu0 sigma`
+    /// must reach every ratio).
     #[must_use]
     pub fn has_contact(&self, contact: Contact) -> bool {
         let k = self.model.kernels();
-        if self.model.is_stuck(contact) {
-            return self.model.inputs() == 0 && k.has(KernelId::StickJacobian);
+        if self.model.is_stuck(contact) && self.model.inputs() == 0 {
+            return k.has(KernelId::StickJacobian);
+        }
+        if self.model.is_stuck(contact) && !(self.model.mu0() > 0.0 && self.model.mu0().is_finite())
+        {
+            return false;
         }
         if self.model.is_active() {
             k.has(KernelId::ClosedLoopJacobian) && k.has(KernelId::OutputRatesJacobian)
@@ -129,23 +156,43 @@ impl<'a> StanceJacobian<'a> {
     /// `d [qdd, u]_i / d y_j` (`y = [q, qd]`, `2n` columns; `n + m` rows, the inputs' rows
     /// after the accelerations) at `(t, y)`, the chain rule through `mu(xd)` and `v(t, y)`
     /// applied, written row-major into `out` with row stride `2n`.
-    pub fn accel(&self, t: f64, y: &[f64], out: &mut [f64]) {
-        self.accel_in(t, y, Contact::Smooth, out);
+    ///
+    /// # Errors
+    /// As [`StanceJacobian::accel_with`] (only for a Coulomb model, which treats
+    /// [`Contact::Smooth`] as stuck).
+    pub fn accel(&self, t: f64, y: &[f64], out: &mut [f64]) -> Result<(), NoJacobian> {
+        self.accel_in(t, y, Contact::Smooth, out)
     }
 
     /// [`StanceJacobian::accel`] in the contact `contact`: the smooth law's chain rule through
     /// `mu(xd)`; sliding under exact Coulomb friction `mu = -mu0 sigma` is constant (no `mu`
     /// term); stuck, the `n` rows of `qdd` from `stick_jacobian` (its rows of `x`, `z` are
-    /// zero: the foot is held). The contact's kernels must exist
-    /// ([`StanceJacobian::has_contact`]).
-    pub fn accel_in(&self, t: f64, y: &[f64], contact: Contact, out: &mut [f64]) {
-        self.accel_with(t, y, contact, out, &mut Scratch::new());
+    /// zero: the foot is held), or for a model with inputs the sliding rows at the held
+    /// foot's friction ratio with `mu*`'s derivative eliminated (module documentation). The
+    /// contact's kernels must exist ([`StanceJacobian::has_contact`]).
+    ///
+    /// # Errors
+    /// As [`StanceJacobian::accel_with`].
+    pub fn accel_in(
+        &self,
+        t: f64,
+        y: &[f64],
+        contact: Contact,
+        out: &mut [f64],
+    ) -> Result<(), NoJacobian> {
+        self.accel_with(t, y, contact, out, &mut Scratch::new())
     }
 
     /// [`StanceJacobian::accel_in`] with the kernels' outputs in `scratch`: a caller that
     /// evaluates the Jacobian at every right-hand side (the variational equations) keeps one
     /// [`Scratch`] instead of zeroing a new one per call. The rows written are those `out`
-    /// holds: `n` (the accelerations' only) or `n + m`.
+    /// holds: `n` (the accelerations' only) or `n + m`. After a stuck contact of a model with
+    /// inputs, `scratch` holds the sliding kernel's rows at the held foot's friction ratio (what
+    /// a parameter's column eliminates the same way).
+    ///
+    /// # Errors
+    /// [`NoJacobian::HeldRatioSingular`]: the foot of a model with inputs is held where its
+    /// friction ratio has no derivative (`out` is then left as it was: never a NaN).
     pub fn accel_with(
         &self,
         t: f64,
@@ -153,18 +200,45 @@ impl<'a> StanceJacobian<'a> {
         contact: Contact,
         out: &mut [f64],
         scratch: &mut Scratch,
+    ) -> Result<(), NoJacobian> {
+        let m = self.model;
+        let n = m.n();
+        if m.is_stuck(contact) && m.inputs() == 0 {
+            let k = &mut scratch.k;
+            self.stick(y, &mut k[..(n + 2) * 2 * n]);
+            out[..n * 2 * n].copy_from_slice(&k[..n * 2 * n]);
+            return Ok(());
+        }
+        if m.is_stuck(contact) {
+            self.held_rows(t, y, out, scratch).map(|_| ())
+        } else {
+            self.sliding_rows(
+                t,
+                y,
+                contact.sigma(),
+                contact != Contact::Smooth,
+                out,
+                scratch,
+            );
+            Ok(())
+        }
+    }
+
+    /// The rows of [`StanceJacobian::accel_with`] for a sliding (or smooth, `sliding` false)
+    /// contact at the kernel argument `sigma` (`mu = -mu0 sigma` under Coulomb friction).
+    fn sliding_rows(
+        &self,
+        t: f64,
+        y: &[f64],
+        sigma: f64,
+        sliding: bool,
+        out: &mut [f64],
+        scratch: &mut Scratch,
     ) {
         let m = self.model;
         let (n, inputs) = (m.n(), m.inputs());
         let (q, qd) = (&y[..n], &y[n..2 * n]);
         let Scratch { k, rates } = scratch;
-        if m.is_stuck(contact) {
-            self.stick(y, &mut k[..(n + 2) * 2 * n]);
-            out[..n * 2 * n].copy_from_slice(&k[..n * 2 * n]);
-            return;
-        }
-        let sliding = contact != Contact::Smooth;
-        let sigma = contact.sigma();
         let cols = 2 * n + 1 + inputs;
         let dmu = if sliding { 0.0 } else { self.dmu(qd[0]) };
         if inputs == 0 {
@@ -246,7 +320,8 @@ impl<'a> StanceJacobian<'a> {
     /// Fills the stance system's Jacobian `jac` (`S = 2n + 1` components: the state and the
     /// power quadrature) at `(t, y)`: `d qd / d y` is the identity block, `d qdd / d y` comes
     /// from [`StanceJacobian::accel`], and the power row is `sum_i sign(u_i w_i) (w_i du_i/dy +
-    /// u_i dw_i/dy)` while the power counts (zero after). Returns `true`.
+    /// u_i dw_i/dy)` while the power counts (zero after). Returns whether it was filled
+    /// (`false` where [`StanceJacobian::accel`] fails).
     pub fn fill<const S: usize>(
         &self,
         t: f64,
@@ -257,7 +332,9 @@ impl<'a> StanceJacobian<'a> {
         let m = self.model;
         let (n, inputs) = (m.n(), m.inputs());
         let mut a = [0.0; 2 * MAX_COORDINATES * 2 * MAX_COORDINATES];
-        self.accel(t, y, &mut a[..(n + inputs) * 2 * n]);
+        if self.accel(t, y, &mut a[..(n + inputs) * 2 * n]).is_err() {
+            return false;
+        }
         for row in jac.iter_mut() {
             *row = [0.0; S];
         }

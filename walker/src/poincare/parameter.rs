@@ -82,8 +82,12 @@ impl ParameterRates {
 
     /// `d qdd / dp` (`n` numbers into `out`) at `(t, y)` in the contact `contact`, from the
     /// stance Jacobian kernel's rows `k` (`n` rows or more of `2n + 1 + m` columns: the state,
-    /// `mu`, the auxiliary inputs `v`). A stuck foot's field does not depend on `mu` (and an
-    /// actuated walker's stuck stance has no Jacobian kernel): zero.
+    /// `mu`, the auxiliary inputs `v`). A passive walker's stuck field does not depend on `mu`
+    /// (nor on anything else a parameter with a column moves): zero. A held foot of a model
+    /// with inputs has the sliding field at the friction ratio `mu*(p)` that holds it (`k` the
+    /// sliding kernel's rows there, as [`crate::jacobian::StanceJacobian::accel_with`] leaves
+    /// them): the rate through `v` with `mu*`'s own rate eliminated, `b_i - (K_mu,i / K_mu,0)
+    /// b_0` (row 0, the foot's, exactly zero).
     pub(crate) fn field_rate(
         &self,
         model: &Model,
@@ -95,10 +99,12 @@ impl ParameterRates {
     ) {
         let (n, inputs) = (model.n(), model.inputs());
         out[..n].fill(0.0);
-        if model.is_stuck(contact) {
+        let held = model.is_stuck(contact);
+        if held && inputs == 0 {
             return;
         }
         let d_mu = match contact {
+            _ if held => 0.0,
             Contact::Smooth => {
                 let cphi = model.phi().cos();
                 let (mu0, c, xd) = (model.mu0(), model.sharpness(), y[n]);
@@ -108,25 +114,7 @@ impl ParameterRates {
             _ => -self.d_mu0 * contact.sigma(),
         };
         let mut d_v = [0.0; MAX_COORDINATES];
-        if inputs > 0 {
-            let (k_p, k_d) = model.gains();
-            if self.moves_desired {
-                for (i, dv) in d_v[..inputs].iter_mut().enumerate() {
-                    let desired = model.desired_trajectory(i);
-                    let r = desired.rate(&self.desired[i], t).unwrap_or([f64::NAN; 3]);
-                    *dv = r[2] + k_d * r[1] + k_p * r[0];
-                }
-            }
-            if self.d_gains != (0.0, 0.0) {
-                let mut rates = [0.0; 2 * MAX_COORDINATES];
-                model.output_rates(y, &mut rates[..2 * inputs]);
-                for (i, dv) in d_v[..inputs].iter_mut().enumerate() {
-                    let [y_d, yd_d, _] = model.desired(i, t);
-                    *dv += self.d_gains.0 * (y_d - rates[i])
-                        + self.d_gains.1 * (yd_d - rates[inputs + i]);
-                }
-            }
-        }
+        self.input_rates(model, t, y, &mut d_v[..inputs]);
         let cols = 2 * n + 1 + inputs;
         for (i, o) in out[..n].iter_mut().enumerate() {
             let row = &k[i * cols..(i + 1) * cols];
@@ -135,6 +123,53 @@ impl ParameterRates {
                 d += row[2 * n + 1 + kk] * dv;
             }
             *o = d;
+        }
+        if held {
+            let (pivot, b0) = (k[2 * n], out[0]);
+            for (i, o) in out[..n].iter_mut().enumerate() {
+                *o -= k[i * cols + 2 * n] / pivot * b0;
+            }
+        }
+    }
+
+    /// `d mu*/dp` of the friction ratio that holds the foot of a model with inputs at `(t, y)`,
+    /// from the sliding kernel's rows `k` at `mu*` (as [`ParameterRates::field_rate`]): `-b_0 /
+    /// K_mu,0`, `b_0` the foot's acceleration's rate through `v`. The slip guard's rate in `p`
+    /// is then `lambda_n (sign(mu*) d mu*/dp - d mu0/dp)`, on the scale of its gradient
+    /// `lambda_n sign(mu*) d mu*/dy`.
+    pub(crate) fn held_ratio_rate(&self, model: &Model, t: f64, y: &[f64], k: &[f64]) -> f64 {
+        let (n, inputs) = (model.n(), model.inputs());
+        let mut d_v = [0.0; MAX_COORDINATES];
+        self.input_rates(model, t, y, &mut d_v[..inputs]);
+        let mut b0 = 0.0;
+        for (kk, dv) in d_v[..inputs].iter().enumerate() {
+            b0 += k[2 * n + 1 + kk] * dv;
+        }
+        -b0 / k[2 * n]
+    }
+
+    /// `d v_k / dp` at `(t, y)` (`m` numbers into `out`; module documentation).
+    fn input_rates(&self, model: &Model, t: f64, y: &[f64], out: &mut [f64]) {
+        let inputs = out.len();
+        if inputs == 0 {
+            return;
+        }
+        let (k_p, k_d) = model.gains();
+        if self.moves_desired {
+            for (i, dv) in out.iter_mut().enumerate() {
+                let desired = model.desired_trajectory(i);
+                let r = desired.rate(&self.desired[i], t).unwrap_or([f64::NAN; 3]);
+                *dv = r[2] + k_d * r[1] + k_p * r[0];
+            }
+        }
+        if self.d_gains != (0.0, 0.0) {
+            let mut rates = [0.0; 2 * MAX_COORDINATES];
+            model.output_rates(y, &mut rates[..2 * inputs]);
+            for (i, dv) in out.iter_mut().enumerate() {
+                let [y_d, yd_d, _] = model.desired(i, t);
+                *dv +=
+                    self.d_gains.0 * (y_d - rates[i]) + self.d_gains.1 * (yd_d - rates[inputs + i]);
+            }
         }
     }
 

@@ -16,9 +16,14 @@
 //!   the cone cannot hold the foot). A stuck foot has `xd = zd = 0` exactly, so the rows of
 //!   `xd`, `zd` of `Phi` are zero after it, and stay zero (the stuck field's `xdd = zdd = 0`);
 //! - the stuck foot starts to slip (`g = |lambda_t| - mu0 lambda_n`, its gradient from the rows
-//!   of the ground force in `stick_jacobian`): no reset; the force is continuous across the
+//!   of the ground force in `stick_jacobian`; for a model with inputs `g = lambda_n (|mu*| -
+//!   mu0)` with the held foot's friction ratio `mu*`, whose gradient there is `lambda_n
+//!   sign(mu*) d mu*/dy`, `jacobian.rs`): no reset; the force is continuous across the
 //!   switch (on the cone's edge the held force is the sliding one), so `f+ - f-` is zero up to
 //!   the event's location and `Xi` is the identity to that accuracy; it is applied as computed.
+//!   With inputs the guard depends on time too, through the desired trajectories in `v(t, y)`:
+//!   the crossing moves by `dt = -g_y dy / (g_y f- + g_t)`, so `g_t = lambda_n sign(mu*) d
+//!   mu*/dt` joins the denominator.
 //! - the strike: in [`super::map`], before the impact's Jacobian (`f+` is replaced by the
 //!   impact, `Xi = I - f- g_y^T / (g_y f-)`).
 //!
@@ -49,7 +54,8 @@ use super::parameter::ParameterRates;
 pub(super) enum PhaseError {
     /// The map failed.
     Map(MapError),
-    /// No Jacobian kernel for a contact the stance reaches.
+    /// No Jacobian for a contact the stance reaches: no kernel, or a held foot of a model with
+    /// inputs where its friction ratio has no derivative (`NoJacobian::HeldRatioSingular`).
     NoKernel,
 }
 
@@ -72,6 +78,9 @@ pub(super) struct Variational<'a> {
     /// The parameter whose column `psi = d s / dp` rides after `Phi` (`2n` more numbers), if
     /// any (`parameter.rs`).
     pub(super) param: Option<&'a ParameterRates>,
+    /// Set where a right-hand side found no Jacobian (a held foot whose friction ratio has no
+    /// derivative): the phase's integration is then abandoned for differences.
+    pub(super) singular: bool,
 }
 
 impl Variational<'_> {
@@ -95,13 +104,20 @@ impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
         let n = self.model.n();
         let m = 2 * n;
         self.mech_rhs(t, y, &mut dy[..m]);
-        self.jac.accel_with(
-            t,
-            y,
-            self.contact.get(),
-            &mut self.a[..n * m],
-            &mut self.scratch,
-        );
+        if self
+            .jac
+            .accel_with(
+                t,
+                y,
+                self.contact.get(),
+                &mut self.a[..n * m],
+                &mut self.scratch,
+            )
+            .is_err()
+        {
+            // `a` keeps its last (finite) values; the caller gives up on the phase.
+            self.singular = true;
+        }
         // d Phi / dt = [0 I; A] Phi: the rows of q take Phi's rows of qd, the rows of qd are
         // A (n x 2n) times Phi (2n x 2n).
         let (phi, dphi) = (&y[m..m + m * m], &mut dy[m..m + m * m]);
@@ -180,12 +196,13 @@ fn initial_contact(model: &Model, y: &[f64]) -> Result<Contact, MapError> {
     }
 }
 
-/// `Phi <- DR Phi + (f+ - DR f-) (g_y^T Phi + g_p) / (g_y f-)` on the sensitivity `phi` (`m`
-/// rows of `cols`, row-major), `DR` the identity with the rows `reset_rows` zero; `g_p` the
-/// guard's own rate in a parameter (for a parameter's column `psi`; zero for `Phi`).
+/// `Phi <- DR Phi + (f+ - DR f-) (g_y^T Phi + g_p) / (g_y f- + g_t)` on the sensitivity `phi`
+/// (`m` rows of `cols`, row-major), `DR` the identity with the rows `reset_rows` zero; `g_t`
+/// the guard's explicit rate in time (zero for a guard of the state alone), `g_p` its own rate
+/// in a parameter (for a parameter's column `psi`; zero for `Phi`).
 ///
 /// # Errors
-/// [`MapError::GrazingEvent`]: `g_y f-` vanishes (the event is grazed).
+/// [`MapError::GrazingEvent`]: `g_y f- + g_t` vanishes (the event is grazed).
 #[allow(clippy::too_many_arguments)]
 fn saltation(
     phi: &mut [f64],
@@ -194,10 +211,13 @@ fn saltation(
     reset_rows: &[usize],
     f_minus: &[f64],
     f_plus: &[f64],
-    (g, g_p): (&[f64], f64),
+    (g, g_t, g_p): (&[f64], f64, f64),
     t: f64,
 ) -> Result<(), MapError> {
-    let gf: f64 = (0..m).map(|k| g[k] * f_minus[k]).sum();
+    let mut gf: f64 = (0..m).map(|k| g[k] * f_minus[k]).sum();
+    if g_t != 0.0 {
+        gf += g_t;
+    }
     if gf.abs() < 1e-12 || !gf.is_finite() {
         return Err(MapError::GrazingEvent { t });
     }
@@ -293,6 +313,7 @@ pub(super) fn stance<const NA: usize>(
         scratch: Scratch::new(),
         a: [0.0; MAX_LEN * MAX_LEN],
         param: rates,
+        singular: false,
     };
     let mut integ =
         Integrator::<NA>::new(cfg.method, crate::ode::Tolerances::new(cfg.rtol, cfg.atol));
@@ -305,14 +326,18 @@ pub(super) fn stance<const NA: usize>(
         let spent = integ.stats().accepted_steps + integ.stats().rejected_steps;
         integ.config_mut().max_steps =
             budget.saturating_sub(usize::try_from(spent).unwrap_or(usize::MAX));
-        match integ.integrate(
+        let outcome = integ.integrate(
             &mut sys,
             t,
             &y,
             cfg.max_step_time,
             &mut events[..watched],
             &mut NoObserver,
-        ) {
+        );
+        if sys.singular {
+            return Err(PhaseError::NoKernel);
+        }
+        match outcome {
             Outcome::Breakpoint { t: tb, y: mut yb } => {
                 if let Some(r) = rates {
                     // The ramps' end moves with p: psi jumps by (f- - f+) d tb / dp.
@@ -372,7 +397,7 @@ pub(super) fn stance<const NA: usize>(
                     &[n, n + 1],
                     &f_minus[..m],
                     &f_plus[..m],
-                    (&g[..m], 0.0),
+                    (&g[..m], 0.0, 0.0),
                     te,
                 )?;
                 if rates.is_some() {
@@ -383,7 +408,7 @@ pub(super) fn stance<const NA: usize>(
                         &[n, n + 1],
                         &f_minus[..m],
                         &f_plus[..m],
-                        (&g[..m], 0.0),
+                        (&g[..m], 0.0, 0.0),
                         te,
                     )?;
                 }
@@ -403,12 +428,30 @@ pub(super) fn stance<const NA: usize>(
                 field(model, te, &ye, Contact::Stuck, &mut f_minus[..m]);
                 let mut f_plus = [0.0; MAX_LEN];
                 field(model, te, &ye, after, &mut f_plus[..m]);
-                let mut dforce = [0.0; (MAX_LEN / 2 + 2) * MAX_LEN];
-                sys.jac.stick(&ye, &mut dforce[..(n + 2) * m]);
                 let sign = held.tangential.signum();
-                let g: Vec<f64> = (0..m)
-                    .map(|j| sign * dforce[n * m + j] - mu0 * dforce[(n + 1) * m + j])
-                    .collect();
+                let (g, g_t, g_p) = if model.inputs() == 0 {
+                    let mut dforce = [0.0; (MAX_LEN / 2 + 2) * MAX_LEN];
+                    sys.jac.stick(&ye, &mut dforce[..(n + 2) * m]);
+                    let g: Vec<f64> = (0..m)
+                        .map(|j| sign * dforce[n * m + j] - mu0 * dforce[(n + 1) * m + j])
+                        .collect();
+                    // g = |lambda_t| - mu0 lambda_n moves with mu0: g_p = -lambda_n d mu0/dp.
+                    let g_p = rates.map_or(0.0, |r| -held.normal * r.d_mu0);
+                    (g, 0.0, g_p)
+                } else {
+                    // g = lambda_n (|mu*| - mu0), |mu*| = mu0 here (module documentation).
+                    let ratio = sys
+                        .jac
+                        .held_ratio(te, &ye[..m], &mut sys.scratch)
+                        .map_err(|_| PhaseError::NoKernel)?;
+                    let scale = held.normal * sign;
+                    let g: Vec<f64> = ratio.d_y[..m].iter().map(|d| scale * d).collect();
+                    let g_p = rates.map_or(0.0, |r| {
+                        let d_mu = r.held_ratio_rate(model, te, &ye[..m], &sys.scratch.k);
+                        held.normal * (sign * d_mu - r.d_mu0)
+                    });
+                    (g, scale * ratio.d_t, g_p)
+                };
                 saltation(
                     &mut ye[m..m + m * m],
                     m,
@@ -416,11 +459,10 @@ pub(super) fn stance<const NA: usize>(
                     &[],
                     &f_minus[..m],
                     &f_plus[..m],
-                    (&g, 0.0),
+                    (&g, g_t, 0.0),
                     te,
                 )?;
-                if let Some(r) = rates {
-                    // g = |lambda_t| - mu0 lambda_n moves with mu0: g_p = -lambda_n d mu0/dp.
+                if rates.is_some() {
                     saltation(
                         &mut ye[psi_at..psi_at + m],
                         m,
@@ -428,7 +470,7 @@ pub(super) fn stance<const NA: usize>(
                         &[],
                         &f_minus[..m],
                         &f_plus[..m],
-                        (&g, -held.normal * r.d_mu0),
+                        (&g, g_t, g_p),
                         te,
                     )?;
                 }

@@ -40,4 +40,5 @@ mod sim_start;
 mod sim_stiff;
 mod sim_walk;
 mod stress_kernels;
+mod stuck_actuated;
 mod three_link;
