@@ -104,7 +104,7 @@ pub fn figure(out: &Path, outcomes: &[Outcome], size: Size) -> Result<(), WriteE
         );
         series.push(
             Series::new(
-                format!("{}, 95% interval", walker.label()),
+                format!("{}, 95% interval, low end", walker.label()),
                 mc(&|o| Some(o.survival.mfpt.exponential.lo)),
             )
             .color(2 * c)
@@ -112,7 +112,7 @@ pub fn figure(out: &Path, outcomes: &[Outcome], size: Size) -> Result<(), WriteE
         );
         series.push(
             Series::new(
-                format!("{}, 95% interval", walker.label()),
+                format!("{}, 95% interval, high end", walker.label()),
                 mc(&|o| o.survival.mfpt.exponential.hi),
             )
             .color(2 * c)

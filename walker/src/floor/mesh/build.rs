@@ -188,6 +188,9 @@ pub fn mesh_mfpt(
             let pi = start_law[f];
             at_centre.iter().map(move |&(q, w)| (f * p + q, w * pi))
         })
+        // A floor state the start is not on (a slope other than the central one) is no start:
+        // the chain may never reach it.
+        .filter(|&(_, w)| w > 0.0)
         .collect();
     let passage = chain.passage(&start);
     let completed = |t: f64| t.is_finite().then_some(t - 1.0);

@@ -318,3 +318,34 @@ fn a_sliding_foot_meeting_another_slope_is_a_fall_in_the_chain() {
     let t = r.mfpt.from_fixed_point.expect("finite");
     assert!((t - 1.0 / 3.0).abs() < 1e-9, "{t}");
 }
+
+/// A Markov floor of slopes (the wheel on a slope of 0.04 with flat patches, lengths 10 and 3
+/// steps): the chain's floor states are its two slopes, the start is on the more frequent
+/// one (a state the walker may never reach is no start), and the time is finite, with the
+/// held foot's `xd` at 0.
+#[test]
+fn a_markov_floor_of_slopes_is_meshed_on_its_two_slopes() {
+    let plan = walker_scene::FloorPlan {
+        mu0: None,
+        phi: Some(FloorSpec::Random {
+            seed: 2,
+            mu0: Distribution::Markov {
+                dry: 0.04,
+                icy: 0.0,
+                dry_length: 10.0,
+                icy_length: 3.0,
+            },
+        }),
+    };
+    let setup = super::start_setup(&wheel(), &plan, 4);
+    let walker = FloorWalker::new(&setup, plan).expect("the floor carries the wheel");
+    let opts = MeshOptions {
+        points: 17,
+        ..MeshOptions::default()
+    };
+    let r = mesh_mfpt(&walker, &SimConfig::default(), &opts).expect("the mesh");
+    assert_eq!(r.slopes, Some(vec![0.04, 0.0]));
+    assert_eq!(r.floor_states, vec!["phi[0]", "phi[1]"]);
+    assert_eq!(r.states, 2 * 17);
+    assert!(r.mfpt.from_fixed_point.is_some_and(|t| t > 1.0), "{r:?}");
+}
