@@ -6,6 +6,8 @@ use std::path::Path;
 
 use super::data::Size;
 use super::passive::{Draw, MESH_CHECK, MESH_POINTS, MESH_SAMPLES, Outcome, Walker, passive_size};
+use plotters::chart::SeriesLabelPosition;
+
 use crate::plot::{Figure, Marker, Series, save_grid};
 use crate::reproduce::WriteError;
 use crate::reproduce::csv::fmt;
@@ -140,7 +142,8 @@ pub fn figure(out: &Path, outcomes: &[Outcome], size: Size) -> Result<(), WriteE
         series,
         markers: true,
         equal_axes: false,
-        legend: None,
+        // The times fall from the upper left: the upper right is free.
+        legend: Some(SeriesLabelPosition::UpperRight),
         y_range: None,
     };
     let curves: Vec<Series> = outcomes
