@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use walker::floor::mesh::{
-    MAX_POINTS, MAX_SAMPLES, MeshBox, MeshError, MeshOptions, MeshReport, mesh_mfpt,
+    MAX_POINTS, MAX_SAMPLES, MeshBox, MeshError, MeshOptions, MeshReport, mesh_mfpt, start_setup,
 };
 use walker::floor::{FloorPlan, Survival, survive};
 use walker::poincare::Section;
@@ -113,6 +113,9 @@ pub fn walk_counts(walks: &str, max_steps: &str) -> Result<(usize, usize), Input
 /// `walker mfpt`: the mesh estimate of the walker of `setup` on `floor`, and, with `check`
 /// (walks, step limit), the statistics of that many walks from the mesh's fixed point.
 ///
+/// On a floor that sets the slope the walker's own `phi` is set to the slope the chain starts
+/// on ([`start_setup`]), so that the walks start from the chain's start.
+///
 /// # Errors
 /// The floor cannot carry the walker, a `steps` floor, a mesh too large, or no gait.
 pub fn mfpt_on(
@@ -122,6 +125,9 @@ pub fn mfpt_on(
     check: Option<(usize, usize)>,
     cfg: &SimConfig,
 ) -> Result<(MeshReport, Option<Survival>), InputError> {
+    // On a floor that sets the slope, the walker stands on the slope the chain starts on
+    // (the central sample): the pilot walks and the check's walks start where the chain does.
+    let setup = &start_setup(setup, &floor, opts.samples);
     let walker = walker_on(setup, floor, "floor")?;
     let r = mesh_mfpt(&walker, cfg, opts).map_err(|e| named(&e))?;
     let Some((walks, steps)) = check else {
@@ -171,15 +177,32 @@ pub fn mfpt_text(r: &MeshReport, mc: Option<&Survival>) -> String {
         r.points,
         coords.join(", ")
     );
-    let _ = writeln!(
-        out,
-        "floor: {} sample(s) of mu0, floor states {}; {} states, {} reachable; {} steps simulated",
-        r.samples.len(),
-        r.floor_states.join("/"),
-        r.states,
-        r.reachable,
-        r.steps_simulated
-    );
+    match &r.slopes {
+        None => {
+            let _ = writeln!(
+                out,
+                "floor: {} sample(s) of mu0, floor states {}; {} states, {} reachable; {} steps simulated",
+                r.samples.len(),
+                r.floor_states.join("/"),
+                r.states,
+                r.reachable,
+                r.steps_simulated
+            );
+        }
+        Some(slopes) => {
+            let _ = writeln!(
+                out,
+                "floor: {} sample(s) of mu0, {} of phi, {} floor states (the slope before); {} \
+                 states, {} reachable; {} steps simulated",
+                r.samples.len(),
+                slopes.len(),
+                r.floor_states.len(),
+                r.states,
+                r.reachable,
+                r.steps_simulated
+            );
+        }
+    }
     let _ = writeln!(
         out,
         "second eigenvalue: {:.12} (bracket [{:.12}, {:.12}])",

@@ -1,5 +1,5 @@
-//! The whole `walker floor-study` job: walk the study, write its CSV files, its figures and
-//! `summary.txt` into one directory.
+//! The whole `walker floor-study` job: walk the study (the active walker's part, then the
+//! passive walkers'), write its CSV files, its figures and `summary.txt` into one directory.
 
 use std::fmt::Write as _;
 use std::fs;
@@ -8,6 +8,8 @@ use std::path::Path;
 use super::cases::{FLOORS, LAWS, PATCH, T_SETS};
 use super::claims::claims;
 use super::data::{Size, Study, collect};
+use super::passive::Outcome;
+use super::passive_report;
 use crate::gallery::claims::{table, tally};
 use crate::plot::{Figure, Marker, Series, save_grid};
 use crate::reproduce::WriteError;
@@ -27,7 +29,13 @@ pub fn run(out: &Path, size: Size) -> Result<String, WriteError> {
     write(&out.join("floor_study_uniform.csv"), uniform_csv(&study))?;
     write(&out.join("floor_study_patch.csv"), patch_csv(&study))?;
     figures(out, &study)?;
-    let s = summary(&study);
+    let passive = super::passive::collect(size)?;
+    write(
+        &out.join("floor_study_passive.csv"),
+        passive_report::csv(&passive, size),
+    )?;
+    passive_report::figure(out, &passive, size)?;
+    let s = summary(&study, &passive);
     write(&summary_path, s.clone())?;
     Ok(s)
 }
@@ -224,8 +232,9 @@ fn figure_error(stem: &Path) -> impl FnOnce(String) -> WriteError {
     move |message| WriteError::Figure { path, message }
 }
 
-/// The summary: the study's size, a table per law, the claims.
-fn summary(study: &Study) -> String {
+/// The summary: the study's size, a table per law, the passive walkers' table, the claims
+/// (the active walker's, then the passive walkers').
+fn summary(study: &Study, passive: &[Outcome]) -> String {
     let mut s = format!(
         "walker floor-study: the paper's active walker (Table 1) on floors that change from \
          step to step.\n{} seeded walks of at most {} steps per law, floor and T_set.\n\n",
@@ -282,7 +291,9 @@ fn summary(study: &Study) -> String {
             .collect();
         let _ = writeln!(s, "  {} friction: {}", l.name, cells.join(", "));
     }
-    let claims = claims(study);
+    s.push_str(&passive_report::summary(passive, study.size));
+    let mut claims = claims(study);
+    claims.extend(super::passive_claims::claims(passive));
     let _ = write!(s, "\nClaims ({}):\n{}", tally(&claims), table(&claims));
     s
 }

@@ -9,11 +9,19 @@
 //! statistics) -> [`claims`] (what the run checks) -> [`job`] (CSV files, figures, summary).
 //! The statistics are the library's ([`walker::floor::survival`]), the figures and the claim
 //! type the gallery's.
+//!
+//! The passive part (metastable passive walking: the rimless wheel and the compass gait on
+//! random slopes and random friction, by Monte Carlo and by the mesh): [`passive`] (its cases,
+//! walks and meshes) -> [`passive_claims`] -> [`passive_report`] (its CSV file, figure and
+//! summary section), written by [`job`] with the rest.
 
 pub mod cases;
 pub mod claims;
 pub mod data;
 pub mod job;
+pub mod passive;
+pub mod passive_claims;
+pub mod passive_report;
 
 pub use data::{MAX_STEPS, MAX_WALKS, Size, size_of};
 pub use job::run;

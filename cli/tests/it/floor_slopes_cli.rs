@@ -146,11 +146,6 @@ fn a_slope_the_walker_cannot_take_exits_2_naming_flag_field_and_range() {
             vec!["--phi-steps", "0.1"],
             "invalid phi-steps: model `paper-active` has no slope angle",
         ),
-        (
-            held("mfpt"),
-            vec!["--floor", "FLOOR"],
-            "the mesh takes a floor of friction only",
-        ),
     ];
     let f = floor_file(
         "slopes.toml",

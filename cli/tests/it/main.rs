@@ -21,6 +21,7 @@ mod gallery_cli;
 mod impact_cli;
 mod input_bounds;
 mod mfpt_cli;
+mod mfpt_slopes_cli;
 mod poincare_cli;
 mod poincare_continuation;
 mod reproduce_cli;

@@ -269,20 +269,26 @@ impl<'s> FloorWalker<'s> {
         }
     }
 
-    /// The walker's model on a floor of friction `mu0` (the mesh of `super::mesh` prepares
-    /// one per floor sample).
+    /// The walker's model on a step of friction `mu0` and slope `phi`, each set only where
+    /// given (the mesh of `super::mesh` on a floor that sets the slope).
     ///
     /// # Errors
-    /// `mu0` is outside the parameter's range or the kernels cannot take it.
-    pub(crate) fn model_at(&self, mu0: f64) -> Result<Model, FloorError> {
+    /// A value is outside its parameter's range or the kernels cannot take it.
+    pub(crate) fn model_on(&self, mu0: Option<f64>, phi: Option<f64>) -> Result<Model, FloorError> {
         let mut params = self.setup.params.clone();
-        prepare(
-            self.setup,
-            &mut params,
-            "mu0",
-            self.mu0.as_deref().unwrap_or("mu0"),
-            mu0,
-        )
+        if let (Some(mu0), Some(name)) = (mu0, &self.mu0) {
+            set(self.setup, &mut params, "mu0", name, mu0)?;
+        }
+        if let (Some(phi), Some(name)) = (phi, &self.phi) {
+            set(self.setup, &mut params, "phi", name, phi)?;
+        }
+        self.setup
+            .model_with(&params)
+            .map_err(|source| FloorError::Kernels {
+                name: if phi.is_some() { "phi" } else { "mu0" },
+                value: phi.or(mu0).unwrap_or(f64::NAN),
+                source,
+            })
     }
 
     /// The models of walk `index`'s steps.

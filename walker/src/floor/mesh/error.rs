@@ -10,19 +10,13 @@ pub enum MeshError {
     /// The floor cannot carry the walker.
     #[error(transparent)]
     Floor(#[from] FloorError),
-    /// A `steps` floor lists values, it draws none: the chain needs a per-step distribution.
+    /// A `steps` floor (of `mu0` or of `phi`) lists values, it draws none: the chain needs a
+    /// per-step distribution.
     #[error(
         "a `steps` floor has no per-step distribution for the mesh; give a `random` (or \
          `uniform`) floor"
     )]
     StepsFloor,
-    /// The floor sets the slope per step: the section the mesh lives on depends on the slope
-    /// of the step before (the rimless wheel's `th = phi - alpha/2`), which the chain's state
-    /// does not carry yet.
-    #[error(
-        "the mesh takes a floor of friction only: a floor that sets `phi` per step moves the          Poincare section with the slope of the step before, which the chain does not carry;          use `walker survive` for it"
-    )]
-    SlopeFloor,
     /// A floor of patches gives `mu0` by position along the floor, not per step: the chain's
     /// step-to-step map has no floor sample to draw.
     #[error(
@@ -54,19 +48,24 @@ pub enum MeshError {
         limit: u64,
     },
     /// No gait to mesh around: the fixed-point search failed.
-    #[error("no gait to mesh around at mu0 = {mu0}: {source}")]
+    #[error("no gait to mesh around at {quantity} = {value}: {source}")]
     NoGait {
-        /// The floor value the gait was sought at.
-        mu0: f64,
+        /// The floor's quantity the gait was sought at a value of (`phi` on a floor that sets
+        /// the slope, else `mu0`).
+        quantity: &'static str,
+        /// Its value.
+        value: f64,
         /// Why.
         #[source]
         source: FixedPointError,
     },
     /// No gait to mesh around: the fixed point did not converge or is not a valid gait.
-    #[error("no gait to mesh around at mu0 = {mu0}: the fixed point is {status}")]
+    #[error("no gait to mesh around at {quantity} = {value}: the fixed point is {status}")]
     NotAGait {
-        /// The floor value the gait was sought at.
-        mu0: f64,
+        /// The floor's quantity the gait was sought at a value of (`phi`, `mu0`).
+        quantity: &'static str,
+        /// Its value.
+        value: f64,
         /// Its status (`not converged`, `not a valid gait`).
         status: &'static str,
     },

@@ -16,8 +16,10 @@ pub struct Grid {
     lo: Vec<f64>,
     /// The spacing per coordinate.
     h: Vec<f64>,
-    /// The points per coordinate (at least 2).
-    n: usize,
+    /// The points per coordinate (at least 2, or 1 for a coordinate held at the centre).
+    n: Vec<usize>,
+    /// The centre, where it is exactly a mesh point ([`Grid::with_exact_centre`]).
+    centre: Option<Vec<f64>>,
 }
 
 impl Grid {
@@ -32,8 +34,37 @@ impl Grid {
                 .iter()
                 .map(|w| 2.0 * w / (n - 1) as f64)
                 .collect(),
-            n,
+            n: vec![n; centre.len()],
+            centre: None,
         }
+    }
+
+    /// [`Grid::new`], with the centre exactly a mesh point: for an odd `n` the middle point of
+    /// each coordinate is the centre's value (not `lo + h (n - 1)/2` rounded), and a state
+    /// whose coordinate is the centre's exactly is interpolated on the middle points only; a
+    /// coordinate with `held[k]` has the one point of the centre's value, and a state off it
+    /// is outside the mesh. On a floor that sets the slope a foot at rest after its strike
+    /// (`xd = 0` exactly) must stay at rest in the chain: a foot that slides by a rounding
+    /// error meets a change of slope as a kink.
+    #[must_use]
+    pub fn with_exact_centre(centre: &[f64], half_widths: &[f64], n: usize, held: &[bool]) -> Grid {
+        let mut g = Grid::new(centre, half_widths, n);
+        for (k, &h) in held.iter().enumerate() {
+            if h {
+                g.n[k] = 1;
+            }
+        }
+        g.centre = Some(centre.to_vec());
+        g
+    }
+
+    /// The middle index and the centre's value of coordinate `k`, where the centre is exact
+    /// (an odd number of points).
+    fn exact(&self, k: usize) -> Option<(usize, f64)> {
+        self.centre
+            .as_ref()
+            .filter(|_| self.n[k] % 2 == 1)
+            .map(|c| ((self.n[k] - 1) / 2, c[k]))
     }
 
     /// The number of coordinates.
@@ -42,13 +73,14 @@ impl Grid {
         self.lo.len()
     }
 
-    /// The number of points, `N^d`.
+    /// The number of points, the product of the points per coordinate (`N^d` unless some are
+    /// held).
     #[must_use]
     pub fn len(&self) -> usize {
-        self.n.pow(self.dim() as u32)
+        self.n.iter().product()
     }
 
-    /// Whether the mesh has no points (never: `N >= 2`).
+    /// Whether the mesh has no points (never: every coordinate has one at least).
     #[must_use]
     pub fn is_empty(&self) -> bool {
         self.len() == 0
@@ -60,9 +92,12 @@ impl Grid {
         let mut rest = index;
         (0..self.dim())
             .map(|k| {
-                let i = rest % self.n;
-                rest /= self.n;
-                self.lo[k] + self.h[k] * i as f64
+                let i = rest % self.n[k];
+                rest /= self.n[k];
+                match self.exact(k) {
+                    Some((mid, c)) if i == mid => c,
+                    _ => self.lo[k] + self.h[k] * i as f64,
+                }
             })
             .collect()
     }
@@ -73,25 +108,38 @@ impl Grid {
     #[must_use]
     pub fn weights(&self, x: &[f64]) -> Option<Vec<(usize, f64)>> {
         let d = self.dim();
-        let top = (self.n - 1) as f64;
         let mut base = vec![0usize; d];
         let mut frac = vec![0.0; d];
+        let mut free = Vec::with_capacity(d);
         for k in 0..d {
-            let u = (x[k] - self.lo[k]) / self.h[k];
+            if self.n[k] == 1 {
+                // A held coordinate: on its one point exactly, or outside.
+                let c = self.centre.as_ref().map_or(f64::NAN, |c| c[k]);
+                if x[k].to_bits() != c.to_bits() {
+                    return None;
+                }
+                continue;
+            }
+            free.push(k);
+            let top = (self.n[k] - 1) as f64;
+            let u = match self.exact(k) {
+                Some((mid, c)) if x[k].to_bits() == c.to_bits() => mid as f64,
+                _ => (x[k] - self.lo[k]) / self.h[k],
+            };
             // A state on the box's face within rounding is inside.
             if !(u >= -1e-12 && u <= top + 1e-12) {
                 return None;
             }
             let u = u.clamp(0.0, top);
-            let b = (u.floor() as usize).min(self.n - 2);
+            let b = (u.floor() as usize).min(self.n[k] - 2);
             base[k] = b;
             frac[k] = u - b as f64;
         }
         // Freudenthal: walk from the base corner along the coordinates in decreasing order of
         // their fractional parts.
-        let mut order: Vec<usize> = (0..d).collect();
+        let mut order = free;
         order.sort_by(|&a, &b| frac[b].total_cmp(&frac[a]).then(a.cmp(&b)));
-        let stride = |k: usize| self.n.pow(k as u32);
+        let stride = |k: usize| self.n[..k].iter().product::<usize>();
         let mut corner: usize = base.iter().enumerate().map(|(k, &b)| b * stride(k)).sum();
         let mut out = Vec::with_capacity(d + 1);
         let mut prev = 1.0;
@@ -147,5 +195,38 @@ mod tests {
         assert!(g.weights(&[0.0, -1.5]).is_none());
         assert!(g.weights(&[f64::NAN, 0.0]).is_none());
         assert_eq!(g.weights(&[1.0, 1.0]), Some(vec![(8, 1.0)]));
+    }
+
+    #[test]
+    fn an_exact_centre_is_a_mesh_point_and_a_state_on_it_stays_on_its_plane() {
+        // With 7 points the spacing 2 w / 6 is not exact: the plain mesh's middle point misses
+        // the centre by a rounding error; the exact one hits it, and a state with the centre's
+        // first coordinate is interpolated on points that have it.
+        let (c, w) = ([0.0, 0.3], [0.9, 0.7]);
+        assert_ne!(Grid::new(&c, &w, 7).point(3)[0], 0.0);
+        let g = Grid::with_exact_centre(&c, &w, 7, &[false, false]);
+        assert_eq!(g.point(3)[0], 0.0);
+        assert_eq!(g.point(3 + 7 * 3), c.to_vec());
+        let weights = g.weights(&[0.0, 0.41]).expect("inside");
+        assert!(
+            weights.iter().all(|&(i, _)| g.point(i)[0] == 0.0),
+            "{weights:?}"
+        );
+        let sum: f64 = weights.iter().map(|&(_, v)| v).sum();
+        assert!((sum - 1.0).abs() < 1e-12, "{sum}");
+    }
+
+    #[test]
+    fn a_held_coordinate_has_one_point_and_a_state_off_it_is_outside() {
+        let (c, w) = ([0.0, 0.3], [1e-6, 0.7]);
+        let g = Grid::with_exact_centre(&c, &w, 5, &[true, false]);
+        assert_eq!(g.len(), 5);
+        assert_eq!(g.point(2), c.to_vec());
+        assert_eq!(g.point(4), vec![0.0, 1.0]);
+        // An affine function of the free coordinate is reproduced; the held one is exact.
+        let weights = g.weights(&[0.0, 0.51]).expect("inside");
+        let interp: f64 = weights.iter().map(|&(i, v)| v * g.point(i)[1]).sum();
+        assert!((interp - 0.51).abs() < 1e-12, "{interp}");
+        assert!(g.weights(&[1e-9, 0.3]).is_none());
     }
 }

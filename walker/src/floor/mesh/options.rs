@@ -105,8 +105,10 @@ impl MeshOptions {
         Ok(())
     }
 
-    /// Checks the settings against a section of `dim` coordinates and a floor of
-    /// `floor_states` states and `values` values.
+    /// Checks the settings against a section of `dim` coordinates, `held` of them held at the
+    /// fixed point's value (one mesh point; on a floor that sets the slope), and a floor of
+    /// `floor_states` states and `values` steps per mesh point (its values, times the slopes
+    /// a step can start from on a floor that sets the slope).
     ///
     /// # Errors
     /// Half-widths not one per coordinate (`half_widths`), more than [`MAX_MESH_STATES`]
@@ -114,6 +116,7 @@ impl MeshOptions {
     pub fn check_sizes(
         &self,
         dim: usize,
+        held: usize,
         names: &[String],
         floor_states: usize,
         values: usize,
@@ -130,7 +133,7 @@ impl MeshOptions {
                 ),
             });
         }
-        let points = (self.points as u128).saturating_pow(dim as u32);
+        let points = (self.points as u128).saturating_pow(dim.saturating_sub(held) as u32);
         let states = points.saturating_mul(floor_states as u128);
         if states > u128::from(MAX_MESH_STATES) {
             return Err(MeshError::TooLarge {
@@ -144,7 +147,8 @@ impl MeshOptions {
         if steps > u128::from(MAX_MESH_STEPS) {
             return Err(MeshError::TooLarge {
                 field: "samples",
-                what: "steps to simulate (mesh points times floor samples)",
+                what: "steps to simulate (mesh points times floor samples, times the slope \
+                       samples a step can start from on a floor that sets the slope)",
                 count: steps,
                 limit: MAX_MESH_STEPS,
             });

@@ -17,15 +17,26 @@ pub struct MeshReport {
     pub half_widths: Vec<f64>,
     /// Points per coordinate.
     pub points: usize,
-    /// The floor's values of `mu0` the steps were simulated on.
+    /// The coordinates held at the fixed point's value (one mesh point) on a floor that sets
+    /// the slope: those no pilot walk moved (absent from the JSON when none is).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub held: Vec<String>,
+    /// The floor's values of `mu0` the steps were simulated on (empty when the floor sets no
+    /// `mu0`: the walker's own then).
     pub samples: Vec<f64>,
-    /// The floor states the mesh state carries (`any`; `dry`, `icy`).
+    /// The floor's values of `phi` the steps were simulated on, where the floor sets the
+    /// slope (absent from the JSON otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slopes: Option<Vec<f64>>,
+    /// The floor states the mesh state carries (`any`; `dry`, `icy`; on a floor that sets the
+    /// slope, the slope sample the step before walked on, `phi[3]` or `dry, phi[3]`).
     pub floor_states: Vec<String>,
     /// The chain's transient states (mesh points times floor states).
     pub states: usize,
     /// Those reachable from the fixed point.
     pub reachable: usize,
-    /// The steps simulated (mesh points times floor samples).
+    /// The steps simulated (mesh points times floor samples, times the slopes a step can
+    /// start from on a floor that sets the slope).
     pub steps_simulated: usize,
     /// The largest distance of a step's end from the section (the components the section
     /// gives as functions of the free ones, recomputed from the step's free components): how

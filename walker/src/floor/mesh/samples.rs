@@ -25,7 +25,7 @@ pub struct FloorSamples {
     /// The distribution of the floor state before the first step (the stationary one).
     pub start: Vec<f64>,
     /// Names of the floor states (`["any"]` for an independent floor, `["dry", "icy"]`).
-    pub states: Vec<&'static str>,
+    pub states: Vec<String>,
 }
 
 impl FloorSamples {
@@ -42,7 +42,7 @@ impl FloorSamples {
                 next: vec![0; values.len()],
                 values,
                 start: vec![1.0],
-                states: vec!["any"],
+                states: vec!["any".to_owned()],
             }
         };
         match spec {
@@ -83,10 +83,31 @@ impl FloorSamples {
                         ],
                         next: vec![0, 1],
                         start: vec![1.0 - icy_share, icy_share],
-                        states: vec!["dry", "icy"],
+                        states: vec!["dry".to_owned(), "icy".to_owned()],
                     }
                 }
             }),
+        }
+    }
+
+    /// The same samples with one floor state per value (`next[j] = j`, every state followed
+    /// by the values' own law), as the chain carries a slope: the step after a step on
+    /// sample `j` needs to know `j`. A Markov floor's states are its values already, and a
+    /// single value is one state: both are returned as they are. The states are named by
+    /// the value's index (`[0]`, `[1]`, ...) for an independent floor.
+    #[must_use]
+    pub fn by_value(self) -> FloorSamples {
+        if self.floor_states() != 1 || self.values.len() == 1 {
+            return self;
+        }
+        let n = self.values.len();
+        let law = self.prob[0].clone();
+        FloorSamples {
+            prob: vec![law.clone(); n],
+            next: (0..n).collect(),
+            start: law,
+            states: (0..n).map(|j| format!("[{j}]")).collect(),
+            values: self.values,
         }
     }
 

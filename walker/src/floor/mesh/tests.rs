@@ -199,3 +199,153 @@ fn a_steps_floor_and_oversized_meshes_are_refused_by_name() {
         assert_eq!(got, Some(field), "{opts:?}");
     }
 }
+
+/// The passive rimless wheel of `models/rimless-wheel.toml` under exact Coulomb friction in
+/// stance and at the strike with `mu0 = 0.8`: its strikes stick (the new foot is at rest), so
+/// a change of slope meets no sliding foot.
+fn wheel() -> Setup {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/rimless-wheel.toml");
+    let ov = crate::setup::Overrides {
+        friction: Some(crate::model::Friction::Coulomb),
+        impact: Some(crate::model::ImpactLaw::Coulomb),
+        set: vec![("mu0".into(), 0.8)],
+        ..crate::setup::Overrides::default()
+    };
+    Setup::from_model_file(&path, &ov, None).expect("the shipped model")
+}
+
+/// A floor of slopes only, `phi` from `d` per step.
+fn slopes(d: Distribution) -> walker_scene::FloorPlan {
+    walker_scene::FloorPlan {
+        mu0: None,
+        phi: Some(FloorSpec::Random { seed: 5, mu0: d }),
+    }
+}
+
+/// The passive wheel on random slopes, `phi` uniform on `[0, 0.04)` (a failure every 30 steps
+/// or so: a run of shallow steps stalls it, `fell-backward`), the mesh carrying the slope of
+/// the step before. Its foot is held at every strike, so the pilot walks never move `xd` and
+/// the mesh holds it at 0: one coordinate, `thd`, meshed with 33, 65 and 129 points, 8 slope
+/// samples.
+///
+/// Convergence: each refinement moves the estimate less than the one before (1.4 and then 0.4
+/// steps here; the values are deterministic, so this is a property of the mesh, not of luck).
+/// Agreement: the finest mesh's MFPT from the fixed point, widened by its error (its last
+/// change plus the change 16 slope samples make at 65 points), meets the 95% interval of 400
+/// walks from the same fixed point on the same slope (every walk fails; the constant-rate
+/// interval is about +-10%). The walks are seeded, so the
+/// test cannot fail by chance; it fails if either method is off by more than both errors.
+#[test]
+fn the_mesh_on_random_slopes_agrees_with_monte_carlo_and_converges() {
+    let plan = slopes(Distribution::Uniform { lo: 0.0, hi: 0.04 });
+    let samples = 8;
+    let setup = super::start_setup(&wheel(), &plan, samples);
+    let walker = FloorWalker::new(&setup, plan.clone()).expect("the floor carries the wheel");
+    let cfg = SimConfig::default();
+    let mesh = |points, samples| {
+        let opts = MeshOptions {
+            points,
+            samples,
+            ..MeshOptions::default()
+        };
+        mesh_mfpt(&walker, &cfg, &opts).expect("the mesh")
+    };
+    let reports: Vec<MeshReport> = [33, 65, 129].iter().map(|&n| mesh(n, samples)).collect();
+    // The samples' error: twice the samples on the middle mesh.
+    let more = mesh(65, 2 * samples).mfpt.from_fixed_point.expect("finite");
+    let r = &reports[2];
+    assert_eq!(r.held, vec!["xd".to_owned()], "{r:?}");
+    assert_eq!(r.states, 129 * samples);
+    assert_eq!(r.slopes.as_ref().map(Vec::len), Some(samples));
+    assert!(r.samples.is_empty());
+    assert!(r.fall_share > 0.99, "{}", r.fall_share);
+    let t: Vec<f64> = reports
+        .iter()
+        .map(|r| r.mfpt.from_fixed_point.expect("finite"))
+        .collect();
+    let (first, last) = ((t[1] - t[0]).abs(), (t[2] - t[1]).abs());
+    assert!(
+        last < first,
+        "the mesh's changes {first} then {last}: {t:?}"
+    );
+    let model = setup.model().expect("kernels");
+    let start = Section::of(&model).embed(&r.centre);
+    let mc = survive(&walker, &cfg, &start, 0..400, 5000).expect("walks");
+    let e = mc.survival.mfpt.exponential;
+    let (lo, hi) = (e.lo, e.hi.expect("failures"));
+    assert_eq!(mc.survival.censored, 0);
+    let error = last + (more - t[1]).abs();
+    assert!(
+        t[2] + error >= lo && t[2] - error <= hi,
+        "mesh {} +- {error}, Monte Carlo {:?} [{lo}, {hi}]",
+        t[2],
+        e.estimate
+    );
+    assert_eq!(
+        mc.survival.failures_by_kind.keys().collect::<Vec<_>>(),
+        vec!["fell-backward"]
+    );
+}
+
+/// On a floor that sets the slope, a mesh point whose foot slides cannot start a step on
+/// another slope: the chain counts it a fall (the walker's `slope-kink`). The wheel under the
+/// paper's frictionless strike slides after every strike, so with the box given (every
+/// coordinate meshed, `xd` included) the chain falls at the first change of slope from any
+/// sliding point: from the fixed point (whose foot slides) it survives only the steps whose
+/// slope is the one before, `1/M` each, a geometric time of mean `1/(M - 1)` steps, here with
+/// 4 samples `1/3`.
+#[test]
+fn a_sliding_foot_meeting_another_slope_is_a_fall_in_the_chain() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/rimless-wheel.toml");
+    let ov = crate::setup::Overrides {
+        friction: Some(crate::model::Friction::Coulomb),
+        set: vec![("mu0".into(), 0.8)],
+        ..crate::setup::Overrides::default()
+    };
+    let setup = Setup::from_model_file(&path, &ov, None).expect("the shipped model");
+    let plan = slopes(Distribution::Uniform { lo: 0.18, hi: 0.22 });
+    let setup = super::start_setup(&setup, &plan, 4);
+    let walker = FloorWalker::new(&setup, plan).expect("the floor carries the wheel");
+    let opts = MeshOptions {
+        points: 5,
+        samples: 4,
+        bounds: MeshBox::HalfWidths(vec![0.05, 0.05]),
+    };
+    let r = mesh_mfpt(&walker, &SimConfig::default(), &opts).expect("the mesh");
+    assert!(r.centre[0] != 0.0, "the foot slides at the gait: {r:?}");
+    let t = r.mfpt.from_fixed_point.expect("finite");
+    assert!((t - 1.0 / 3.0).abs() < 1e-9, "{t}");
+}
+
+/// A Markov floor of slopes (the wheel on a slope of 0.04 with flat patches, lengths 10 and 3
+/// steps): the chain's floor states are its two slopes, the start is on the more frequent
+/// one (a state the walker may never reach is no start), and the time is finite, with the
+/// held foot's `xd` at 0.
+#[test]
+fn a_markov_floor_of_slopes_is_meshed_on_its_two_slopes() {
+    let plan = walker_scene::FloorPlan {
+        mu0: None,
+        phi: Some(FloorSpec::Random {
+            seed: 2,
+            mu0: Distribution::Markov {
+                dry: 0.04,
+                icy: 0.0,
+                dry_length: 10.0,
+                icy_length: 3.0,
+            },
+        }),
+    };
+    let setup = super::start_setup(&wheel(), &plan, 4);
+    let walker = FloorWalker::new(&setup, plan).expect("the floor carries the wheel");
+    let opts = MeshOptions {
+        points: 17,
+        ..MeshOptions::default()
+    };
+    let r = mesh_mfpt(&walker, &SimConfig::default(), &opts).expect("the mesh");
+    assert_eq!(r.slopes, Some(vec![0.04, 0.0]));
+    assert_eq!(r.floor_states, vec!["phi[0]", "phi[1]"]);
+    assert_eq!(r.states, 2 * 17);
+    assert!(r.mfpt.from_fixed_point.is_some_and(|t| t > 1.0), "{r:?}");
+}
