@@ -26,7 +26,7 @@ pub struct Evaluation {
     /// force is not positive).
     pub stance_friction: f64,
     /// `|lambda_t| / lambda_n` at `t = k T / SAMPLES`, `k = 0 .. SAMPLES - 1`, then at the
-    /// stance's end just before the strike ([`END`]) (the design's path constraints, one per
+    /// stance's end just before the strike (`END`) (the design's path constraints, one per
     /// sample); left out of the JSON.
     #[serde(skip)]
     pub stance_ratios: Vec<f64>,

@@ -39,11 +39,14 @@ impl<T: Copy> Memo<T> {
     }
 }
 
+/// Two remembered points of a function, and the slot the next goes to.
+type Remembered<T> = RefCell<([Option<Memo<T>>; 2], usize)>;
+
 /// The value of `f` at `(t, y, contact)`, from the two points `memo` remembers if it is one of
 /// them (the newer slot first), else computed and remembered in the older slot (slots are
 /// overwritten in turn, not moved).
 fn remembered<T: Copy, const S: usize>(
-    memo: &RefCell<([Option<Memo<T>>; 2], usize)>,
+    memo: &Remembered<T>,
     t: f64,
     y: &[f64; S],
     contact: Contact,
@@ -81,9 +84,9 @@ pub(super) struct Foot<'a> {
     /// The last two values of the power's sign function (a step's start is the previous
     /// step's end, and the error test and the kink guard ask about the same ends), with the
     /// slot the next value goes to (the older one: slots are overwritten in turn, not moved).
-    power: RefCell<([Option<Memo<f64>>; 2], usize)>,
+    power: Remembered<f64>,
     /// The same for every input's power `u_i w_i` (a walker with several inputs).
-    powers: RefCell<([Option<Memo<[f64; MAX_COORDINATES]>>; 2], usize)>,
+    powers: Remembered<[f64; MAX_COORDINATES]>,
     /// Whether the model has several inputs, whose kinks are watched one by one.
     pub(super) several: bool,
 }
