@@ -71,10 +71,9 @@ impl Evaluation {
 }
 
 /// Where the stance's last sample is read: at `T (1 - END)`, just before the strike. The
-/// friction ratio often peaks there (the swing leg is stopped and the stance leg decelerates
-/// the body), up to `T / SAMPLES` after the grid's last sample, so that a gait whose samples
-/// all met a friction bound slipped 9 microseconds before its strike on a floor of that
-/// friction (RABBIT, `docs/design.md`). `1e-9` of the period rather than the period itself:
+/// friction ratio can peak within the last `T / SAMPLES` of the stance, after the grid's last
+/// sample: RABBIT's did, and a gait whose samples all met a friction bound slipped 9
+/// microseconds before its strike on a floor of that friction (`docs/design.md`). `1e-9` of the period rather than the period itself:
 /// the fixed point's `T` and the sampled step's strike may differ by the integrations'
 /// rounding, and the sample must fall inside the stance.
 pub const END: f64 = 1e-9;
@@ -122,10 +121,7 @@ pub fn evaluate(
             ),
         });
     }
-    let limits = WalkLimits {
-        max_steps: 1,
-        ..WalkLimits::default()
-    };
+    let limits = one_step();
     let dt = fp.period / SAMPLES as f64;
     let tr = trajectory(&model, cfg, &fp.state_plus, &limits, dt, SAMPLES + 8);
     let step = match (&tr.walk.failure, tr.walk.steps.first()) {
@@ -222,6 +218,14 @@ pub fn evaluate(
     })
 }
 
+/// The limits of a walk of one step.
+fn one_step() -> WalkLimits {
+    WalkLimits {
+        max_steps: 1,
+        ..WalkLimits::default()
+    }
+}
+
 /// The stance's last sample, at `T (1 - END)` (`END`), from the dense output of the step from
 /// `start` of period `period`; `None` if the strike came before it.
 fn end_of_stance(
@@ -230,10 +234,7 @@ fn end_of_stance(
     start: &[f64],
     period: f64,
 ) -> Option<Frame> {
-    let limits = WalkLimits {
-        max_steps: 1,
-        ..WalkLimits::default()
-    };
+    let limits = one_step();
     let tr = trajectory(model, cfg, start, &limits, period * (1.0 - END), 2);
     tr.frames.into_iter().nth(1).filter(|f| f.step == 0)
 }
@@ -248,10 +249,7 @@ fn inputs_before_ramp_ends(
     start: &[f64],
     period: f64,
 ) -> Vec<crate::vector::Vector> {
-    let limits = WalkLimits {
-        max_steps: 1,
-        ..WalkLimits::default()
-    };
+    let limits = one_step();
     let mut out = Vec::new();
     let mut t = 0.0;
     while let Some(end) = model.next_breakpoint(t).filter(|&e| e < period) {
