@@ -508,8 +508,9 @@ def mfpt(
     released (Ctrl-C is raised when the mesh ends).
 
     Args:
-        floor: as :func:`survive`: a random (or uniform) floor of friction; a ``steps`` floor
-            and a floor that sets the slope are refused (named).
+        floor: as :func:`survive`: a random (or uniform) floor of friction, of slopes, or
+            both (the chain carries the slope of the step before; the walks start on its
+            central slope); a ``steps`` floor is refused (named).
         mesh: points per coordinate of the section, in [2, 129] (odd puts one on the fixed
             point).
         samples: floor samples of an independent distribution, in [1, 256].

@@ -5,7 +5,7 @@
 //! (`walker::floor::mesh`); this file only translates the arguments and the report.
 
 use pyo3::prelude::*;
-use walker::floor::mesh::{MeshBox, MeshError, MeshOptions, mesh_mfpt};
+use walker::floor::mesh::{MeshBox, MeshError, MeshOptions, mesh_mfpt, start_setup};
 use walker::floor::{Survival, survive};
 use walker::poincare::Section;
 
@@ -39,7 +39,8 @@ fn count(field: &str, n: i64) -> Result<usize, ArgError> {
 ///
 /// # Errors
 /// `ValueError` naming a bad argument and its valid range, a floor the mesh cannot take (a
-/// `steps` floor, a slope per step), a mesh too large, or no gait to mesh around.
+/// `steps` floor), a mesh too large, or no gait to mesh around. On a floor that sets the slope
+/// the walker starts on the chain's central slope, as on the command line.
 #[pyfunction]
 #[pyo3(signature = (*, scene, model, set, init, floor, t_set, omega0, phi, c, friction,
     impact, method, rtol, atol, mesh, samples, box_scale, half_widths, walks, max_steps))]
@@ -94,6 +95,10 @@ pub fn mfpt(
     let mut setup = walker_args::setup_released(py, scene, model, &ov, &set)?;
     mu0_once(&setup, &spec, None, phi, &set)?;
     walker_args::set_omega0(&mut setup, omega0, |_| true, "finite")?;
+    // On a floor that sets the slope the walker stands on the slope the chain starts on (its
+    // central sample), so that the pilot walks and the check's walks start where the chain
+    // does: as `walker mfpt`.
+    let setup = start_setup(&setup, &spec, opts.samples);
     let cfg = options::config(method, rtol, atol)?;
     let m = walker_args::model(&setup)?;
     // The mesh starts at its fixed point; `init` is checked as everywhere, though unused.

@@ -43,6 +43,9 @@ CLI_COMMANDS = {
     "mfpt_wheel": "mfpt --model models/rimless-wheel.toml --friction coulomb --impact coulomb "
                   "--floor python/tests/floors/wheel-ice.toml --mesh 5 --samples 4 --walks 20 "
                   "--max-steps 200",
+    "mfpt_wheel_slopes": "mfpt --model models/rimless-wheel.toml --friction coulomb "
+                         "--impact coulomb --floor python/tests/floors/wheel-slopes.toml "
+                         "--set mu0=0.8 --mesh 5 --samples 4 --walks 20 --max-steps 200",
 }
 """The ``walker`` commands the module's results are compared with, by name."""
 
