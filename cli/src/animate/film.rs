@@ -92,13 +92,12 @@ impl Film {
         (width, height): (u32, u32),
         title: String,
     ) -> Option<Self> {
-        let sticks = match Body::of(model) {
-            Some(_) => None,
-            None => Some(Sticks::of(model)?),
-        };
-        let body = match &sticks {
-            Some(s) => Body::of_sticks(model, s.scale(model)),
-            None => Body::of(model)?,
+        let (body, sticks) = match Body::of(model) {
+            Some(wheel) => (wheel, None),
+            None => {
+                let s = Sticks::of(model)?;
+                (Body::of_sticks(model, s.scale(model)), Some(s))
+            }
         };
         let mut frames = tr.frames.clone();
         if let Some(ff) = tr.failure_frame
