@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
-use crate::common::{json, num, walker};
+use crate::common::{designed_setup, json, num, walker};
 
 /// The repository's `models/paper-active.toml`.
 fn paper_active() -> PathBuf {
@@ -502,18 +502,7 @@ fn an_active_input_bound_changes_the_shape_and_the_walk_keeps_its_inputs_within_
     // The walk alone, from the designed fixed point on the floor's mu0 with the designed
     // parameters: 100 steps recorded at the integrator's own points (not the design's 400
     // samples per step), every |u| within the bound, every step the design's SR to 1e-8.
-    let mut set: Vec<(String, f64)> = vec![("mu0".into(), 0.8)];
-    for p in d["parameters"].as_array().unwrap() {
-        set.push((p["name"].as_str().unwrap().to_owned(), num(&p["value"])));
-    }
-    let ov = walker::setup::Overrides {
-        set,
-        friction: Some(walker::model::Friction::Coulomb),
-        impact: Some(walker::model::ImpactLaw::Coulomb),
-        ..Default::default()
-    };
-    let runtime = walker_load::runtime_source();
-    let setup = walker::setup::Setup::from_model_file(&model, &ov, Some(&runtime)).unwrap();
+    let setup = designed_setup(&model, &d, 0.8);
     let walker_model = setup.model().unwrap();
     let start: Vec<f64> = d["gait"]["fixed_point"]["state_plus"]
         .as_array()

@@ -10,7 +10,7 @@ use std::path::Path;
 
 use serde_json::Value;
 
-use crate::common::{json, num, row};
+use crate::common::{designed_setup, json, num, row};
 
 /// `models/five-link.toml`.
 fn model() -> String {
@@ -218,20 +218,7 @@ fn the_designed_swing_foot_clears_the_floor_between_the_samples_too() {
     // simulator from its fixed point, the height written out from the model file's geometry.
     use walker::design::{SAMPLES, clearance_profile};
     let d = design("0.3");
-    let mut set: Vec<(String, f64)> = vec![("mu0".into(), num(&d["mu0"]))];
-    for p in d["parameters"].as_array().unwrap() {
-        set.push((p["name"].as_str().unwrap().to_owned(), num(&p["value"])));
-    }
-    let ov = walker::setup::Overrides {
-        set,
-        friction: Some(walker::model::Friction::Coulomb),
-        impact: Some(walker::model::ImpactLaw::Coulomb),
-        ..Default::default()
-    };
-    let runtime = walker_load::runtime_source();
-    let path = model();
-    let setup =
-        walker::setup::Setup::from_model_file(Path::new(&path), &ov, Some(&runtime)).unwrap();
+    let setup = designed_setup(Path::new(&model()), &d, num(&d["mu0"]));
     let m = setup.model().unwrap();
     let start: Vec<f64> = d["gait"]["fixed_point"]["state_plus"]
         .as_array()

@@ -55,3 +55,25 @@ pub fn row<'a>(d: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
         .find(|c| c["name"] == name)
         .unwrap_or_else(|| panic!("no row {name}: {d}"))
 }
+
+/// The model file `path` derived at run time under exact Coulomb friction in stance and at the
+/// impact, on a floor of `mu0`, with a design's parameters (its JSON `d`) set: the walker the
+/// design describes, for the simulator alone to walk.
+pub fn designed_setup(
+    path: &std::path::Path,
+    d: &serde_json::Value,
+    mu0: f64,
+) -> walker::setup::Setup {
+    let mut set: Vec<(String, f64)> = vec![("mu0".into(), mu0)];
+    for p in d["parameters"].as_array().unwrap() {
+        set.push((p["name"].as_str().unwrap().to_owned(), num(&p["value"])));
+    }
+    let ov = walker::setup::Overrides {
+        set,
+        friction: Some(walker::model::Friction::Coulomb),
+        impact: Some(walker::model::ImpactLaw::Coulomb),
+        ..Default::default()
+    };
+    let runtime = walker_load::runtime_source();
+    walker::setup::Setup::from_model_file(path, &ov, Some(&runtime)).unwrap()
+}
