@@ -94,8 +94,8 @@ impl OdeSystem<3> for Robertson {
 
 #[test]
 fn robertson_with_analytic_and_finite_difference_jacobians() {
-    // Reference values at t = 40 (classic ROBER benchmark, agreeing with
-    // the cross-check against diffsol's BDF in ode_crosscheck.rs).
+    // Reference values at t = 40 (classic ROBER benchmark, agreeing with SciPy's Radau and
+    // BDF in tests/data/ode_crosscheck.json, the cross-check of ode_crosscheck.rs).
     let reference = [0.715_827_068_7, 9.185_534_765e-6, 0.284_163_745_7];
     for analytic in [true, false] {
         let mut ig = Integrator::new(Method::Rodas4, Tolerances::new(1e-8, 1e-12));
