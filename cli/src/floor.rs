@@ -301,12 +301,7 @@ pub fn survive_text(r: &SurviveReport) -> String {
         }
     }
     if !s.failures_by_kind.is_empty() {
-        let kinds: Vec<String> = s
-            .failures_by_kind
-            .iter()
-            .map(|(k, n)| format!("{k} {n}"))
-            .collect();
-        let _ = writeln!(out, "failures by kind: {}", kinds.join(", "));
+        let _ = writeln!(out, "failures by kind: {}", s.failures_text(" ", ", "));
     }
     out
 }

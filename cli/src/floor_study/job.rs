@@ -52,11 +52,6 @@ fn random_csv(study: &Study) -> String {
         let sv = &v.survival;
         let e = &sv.mfpt.exponential;
         let u = study.uniform(v.law, v.floor, v.t_set);
-        let kinds: Vec<String> = sv
-            .failures_by_kind
-            .iter()
-            .map(|(k, n)| format!("{k}:{n}"))
-            .collect();
         let _ = writeln!(
             s,
             "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
@@ -74,7 +69,7 @@ fn random_csv(study: &Study) -> String {
             fmt(Some(v.mean_distance())),
             fmt(u.map(|u| u.at_mean.distance)),
             u.is_some_and(super::data::Uniform::walks_everywhere),
-            kinds.join(" "),
+            sv.failures_text(":", " "),
         );
     }
     s

@@ -209,13 +209,11 @@ fn kinds_claim(outcomes: &[Outcome]) -> Claim {
                 Draw::Friction { .. } => share > 0.5,
             };
         holds &= ok;
-        let kinds: Vec<String> = o
-            .survival
-            .failures_by_kind
-            .iter()
-            .map(|(k, n)| format!("{k} {n}"))
-            .collect();
-        found.push(format!("{}: {}", o.case.name(), kinds.join(", ")));
+        found.push(format!(
+            "{}: {}",
+            o.case.name(),
+            o.survival.failures_text(" ", ", ")
+        ));
     }
     Claim::new(
         format!(

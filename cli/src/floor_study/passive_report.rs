@@ -56,11 +56,6 @@ pub fn csv(outcomes: &[Outcome], size: Size) -> String {
             ",{}",
             fmt(o.mesh_at(n, m).and_then(|p| p.from_fixed_point))
         );
-        let kinds: Vec<String> = sv
-            .failures_by_kind
-            .iter()
-            .map(|(k, n)| format!("{k}:{n}"))
-            .collect();
         let _ = writeln!(
             s,
             ",{},{},{},{}",
@@ -69,7 +64,7 @@ pub fn csv(outcomes: &[Outcome], size: Size) -> String {
                 .and_then(|m| m.eigen)),
             fmt(o.mesh_estimate().map(|e| e.1)),
             fmt(o.needed_mu0()),
-            kinds.join(" ")
+            sv.failures_text(":", " ")
         );
     }
     s
@@ -211,12 +206,7 @@ pub fn summary(outcomes: &[Outcome], size: Size) -> String {
     );
     for o in outcomes {
         let e = &o.survival.mfpt.exponential;
-        let kinds: Vec<String> = o
-            .survival
-            .failures_by_kind
-            .iter()
-            .map(|(k, n)| format!("{k} {n}"))
-            .collect();
+        let kinds = o.survival.failures_text(" ", ", ");
         let _ = writeln!(
             s,
             "  {:<36} MC {:>9} [{:.1}, {}]{}{}; failures: {}",
@@ -233,7 +223,7 @@ pub fn summary(outcomes: &[Outcome], size: Size) -> String {
             if kinds.is_empty() {
                 "none".to_owned()
             } else {
-                kinds.join(", ")
+                kinds
             }
         );
     }

@@ -116,6 +116,18 @@ impl Survival {
             failures_by_kind: &self.failures_by_kind,
         }
     }
+
+    /// The failures by kind as text, in name order: each `kind`, `pair`, count, joined by
+    /// `between` (`"fall:3 slip:2"` with `(":", " ")`); empty where no walk failed.
+    #[must_use]
+    pub fn failures_text(&self, pair: &str, between: &str) -> String {
+        let kinds: Vec<String> = self
+            .failures_by_kind
+            .iter()
+            .map(|(k, n)| format!("{k}{pair}{n}"))
+            .collect();
+        kinds.join(between)
+    }
 }
 
 /// The statistics of `outcomes` (at least one).
