@@ -74,6 +74,10 @@ pub struct DesignArgs {
     /// The gait's mean speed V at least this (m/s, finite and > 0). Not with --objective speed.
     #[arg(value_parser = number::positive, long = "min-speed", allow_hyphen_values = true)]
     pub min_speed: Option<f64>,
+    /// The gait's mean speed V at most this (m/s, finite, > 0 and at least --min-speed; equal
+    /// to it for a gait at one speed). Not with --objective speed.
+    #[arg(value_parser = number::positive, long = "max-speed", allow_hyphen_values = true)]
+    pub max_speed: Option<f64>,
     /// The gait's mean input power p at most this (W, finite and > 0; an actuated walker): the
     /// effort bound --objective speed needs. Not with --objective power.
     #[arg(value_parser = number::positive, long = "max-power", allow_hyphen_values = true)]
@@ -221,6 +225,7 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
         bounds: GaitBounds {
             clearance: args.clearance,
             min_speed: args.min_speed,
+            max_speed: args.max_speed,
             max_power: args.max_power,
         },
     };
@@ -255,6 +260,7 @@ pub fn run(args: &DesignArgs) -> Result<String, DesignCliError> {
         DesignError::SpeedNeedsEffort { .. } | DesignError::NoInputsForPower { .. } => {
             InputError::new("max-power", e.to_string()).into()
         }
+        DesignError::SpeedRange { .. } => InputError::new("max-speed", e.to_string()).into(),
         DesignError::NoSwingFoot { .. } => InputError::new("clearance", e.to_string()).into(),
         other => InputError::new("vary", other.to_string()).into(),
     })?;

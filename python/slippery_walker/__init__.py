@@ -1063,6 +1063,7 @@ def design(
     max_input: Union[float, Sequence[float], None] = None,
     clearance: Optional[float] = None,
     min_speed: Optional[float] = None,
+    max_speed: Optional[float] = None,
     max_power: Optional[float] = None,
     max_evaluations: int = 100,
     tol: float = 1e-10,
@@ -1078,7 +1079,8 @@ def design(
     bound for every input or one per input) ``max |u_i| <= U_i`` along the stance; with
     ``clearance`` (m) the swing foot's height above the floor ``>= clearance * 4 s (1 - s)``
     at every stance sample (``s = t / T``); with ``min_speed`` (m/s) the mean speed ``V >=
-    min_speed``; with ``max_power`` (W) the mean input power ``p <= max_power`` (the effort
+    min_speed``, with ``max_speed`` ``V <= max_speed`` (both equal: a gait at that speed); with
+    ``max_power`` (W) the mean input power ``p <= max_power`` (the effort
     bound the ``speed`` objective, which maximises ``V``, needs on an actuated walker). As
     ``walker design`` (``docs/design.md``); the other arguments as in :func:`simulate`.
 
@@ -1101,6 +1103,7 @@ def design(
         max_input=_list("max_input", max_input),
         clearance=_float("clearance", clearance),
         min_speed=_float("min_speed", min_speed),
+        max_speed=_float("max_speed", max_speed),
         max_power=_float("max_power", max_power),
         max_evaluations=_int("max_evaluations", max_evaluations, 1, 10_000),
         tol=_float("tol", tol), restarts=_int("restarts", restarts, 0, 100),

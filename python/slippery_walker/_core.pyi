@@ -112,6 +112,7 @@ def design(
     max_input: List[float],
     clearance: Optional[float],
     min_speed: Optional[float],
+    max_speed: Optional[float],
     max_power: Optional[float],
     max_evaluations: int,
     tol: float,

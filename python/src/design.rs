@@ -51,6 +51,7 @@ fn named(e: &DesignError) -> String {
         DesignError::SpeedNeedsEffort { .. } | DesignError::NoInputsForPower { .. } => {
             "max_power".into()
         }
+        DesignError::SpeedRange { .. } => "max_speed".into(),
         DesignError::NoSwingFoot { .. } => "clearance".into(),
         _ => "vary".into(),
     }
@@ -66,7 +67,7 @@ fn named(e: &DesignError) -> String {
 #[pyfunction]
 #[pyo3(signature = (*, scene, model, set, friction, impact, method, rtol, atol, vary, objective,
     multiplier_margin, friction_margin, normal_margin, ramp_margin, max_input, clearance,
-    min_speed, max_power, max_evaluations, tol, restarts, seed))]
+    min_speed, max_speed, max_power, max_evaluations, tol, restarts, seed))]
 #[allow(clippy::too_many_arguments)]
 pub fn design(
     py: Python<'_>,
@@ -87,6 +88,7 @@ pub fn design(
     max_input: Vec<f64>,
     clearance: Option<f64>,
     min_speed: Option<f64>,
+    max_speed: Option<f64>,
     max_power: Option<f64>,
     max_evaluations: i64,
     tol: f64,
@@ -140,6 +142,7 @@ pub fn design(
         bounds: GaitBounds {
             clearance,
             min_speed,
+            max_speed,
             max_power,
         },
     };

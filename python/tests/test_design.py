@@ -66,6 +66,12 @@ def test_an_infeasible_design_is_a_result_naming_the_constraint():
      r"invalid max_power: max-power bounds what objective `power` optimises"),
     (dict(vary={"T_set": (0.2, 0.4)}, min_speed=-1.0),
      r"invalid min_speed: min-speed is -1: must be finite and > 0"),
+    (dict(vary={"T_set": (0.2, 0.4)}, max_speed=0.0),
+     r"invalid max_speed: max-speed is 0: must be finite and > 0"),
+    (dict(vary={"T_set": (0.2, 0.4)}, min_speed=0.9, max_speed=0.8),
+     r"invalid max_speed: max-speed is 0.8, below min-speed 0.9: must be at least min-speed"),
+    (dict(vary={"T_set": (0.2, 0.4)}, objective="speed", max_power=5.0, max_speed=0.9),
+     r"invalid max_speed: max-speed bounds what objective `speed` optimises"),
     (dict(vary={"T_set": (0.2, 0.4)}, max_power=float("nan")),
      r"invalid max_power: max-power is NaN: must be finite and > 0"),
     (dict(vary={"T_set": (0.2, 0.4)}, clearance=0.0),
@@ -113,6 +119,16 @@ def test_a_least_speed_and_the_speed_objective_equal_the_command_lines_json():
     assert d == cli_design(*CLI_FAST, "--objective", "speed", "--max-power", "12")
     assert d["objective"] == "speed" and d["value"] == d["gait"]["fixed_point"]["V"]
     assert d["constraints"][-1]["name"] == "max-power"
+
+
+def test_a_speed_band_equals_the_command_lines_json():
+    # min_speed = max_speed: a gait at one speed, faster than the cheapest (0.781 m/s).
+    d = sw.design(**FAST, min_speed=0.82, max_speed=0.82)
+    assert d == cli_design(*CLI_FAST, "--min-speed", "0.82", "--max-speed", "0.82")
+    rows = {c["name"]: c for c in d["constraints"]}
+    assert (rows["min-speed"]["sense"], rows["max-speed"]["sense"]) == (">=", "<=")
+    assert rows["max-speed"]["limit"] == 0.82
+    assert abs(d["gait"]["fixed_point"]["V"] - 0.82) <= 1e-8
 
 
 def test_a_clearance_equals_the_command_lines_json_and_names_the_row():

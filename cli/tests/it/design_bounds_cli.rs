@@ -1,15 +1,15 @@
 //! `walker design`'s bounds on the gait end to end (`docs/design.md`, "Clearance and speed"):
 //! the swing foot's clearance on the three-link biped (straight legs: infeasible, a result
-//! naming the constraint), a least speed and the speed objective under an effort bound on the
-//! paper's walker, each confirmed by `walker simulate` alone, and bad requests exiting 2 with
-//! the flag and its valid range.
+//! naming the constraint), a least speed, a band of one speed and the speed objective under an
+//! effort bound on the paper's walker, a most speed on the three-link biped, each confirmed by
+//! `walker simulate` alone, and bad requests exiting 2 with the flag and its valid range.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
 use std::path::Path;
 
 use serde_json::Value;
 
-use crate::common::{json, num, row, walker};
+use crate::common::{PAPER_ACTIVE, THREE_LINK, json, num, row, simulate_design, walker};
 
 /// `models/NAME.toml`.
 fn model(name: &str) -> String {
@@ -44,38 +44,7 @@ fn paper_design(extra: &[&str]) -> Value {
 /// `walker simulate` of the paper's walker on the design's floor (`mu0 = 1`) from the designed
 /// fixed point with the designed parameters, 100 steps: its steps, each with the foot held.
 fn walk_paper_design(d: &Value) -> Vec<Value> {
-    let mut sim: Vec<String> = [
-        "simulate",
-        "--scene",
-        "active-level",
-        "--set",
-        "mu0=1.0",
-        "--friction",
-        "coulomb",
-        "--impact",
-        "coulomb",
-        "--max-steps",
-        "100",
-    ]
-    .iter()
-    .map(|s| (*s).to_owned())
-    .collect();
-    for p in d["parameters"].as_array().unwrap() {
-        sim.extend([
-            "--set".into(),
-            format!("{}={}", p["name"].as_str().unwrap(), num(&p["value"])),
-        ]);
-    }
-    let names = ["x", "z", "th1", "th2", "xd", "zd", "th1d", "th2d"];
-    let fp = d["gait"]["fixed_point"]["state_plus"].as_array().unwrap();
-    for (n, v) in names.iter().zip(fp) {
-        sim.extend(["--init".into(), format!("{n}={}", num(v))]);
-    }
-    let args: Vec<&str> = sim.iter().map(String::as_str).collect();
-    let w = json(&args);
-    assert_eq!(w["status"], "ok", "{w}");
-    let steps = w["steps"].as_array().unwrap().clone();
-    assert_eq!(steps.len(), 100);
+    let steps = simulate_design(&["--scene", "active-level"], 1.0, d, &PAPER_ACTIVE, 100);
     for s in &steps {
         assert_eq!(s["impact"]["regime"], "stick", "{s}");
         assert!(
@@ -216,6 +185,76 @@ fn a_least_speed_the_cheapest_gait_misses_is_met_and_simulate_alone_walks_it() {
 }
 
 #[test]
+fn a_most_speed_the_least_friction_gait_exceeds_is_met_and_simulate_alone_walks_it() {
+    // The three-link biped's least-friction gait walks at 0.72 m/s (every parameter at its
+    // lower bound); held to 0.65 m/s it lengthens its ramp and needs a little more friction.
+    let three = model("three-link");
+    let design = |extra: &[&str]| {
+        let mut args = vec![
+            "design",
+            "--model",
+            &three,
+            "--friction",
+            "coulomb",
+            "--impact",
+            "coulomb",
+            "--objective",
+            "friction",
+            "--vary",
+            "T_set=0.2:1.0,th_T=0.1:0.8,beta=0.2:0.5",
+            "--max-evaluations",
+            "40",
+        ];
+        args.extend(extra);
+        json(&args)
+    };
+    let free = design(&[]);
+    assert!(num(&free["gait"]["fixed_point"]["V"]) > 0.7, "{free}");
+    let d = design(&["--max-speed", "0.65"]);
+    assert_eq!(d["status"], "optimal", "{d}");
+    let c = row(&d, "max-speed");
+    assert_eq!((c["sense"].as_str(), num(&c["limit"])), (Some("<="), 0.65));
+    // Active: met to the solver's feasibility tolerance and with a positive multiplier.
+    assert_eq!(c["holds"], true, "{c}");
+    assert!(
+        num(&c["slack"]).abs() <= 1e-8 && num(&c["lagrange"]) > 0.0,
+        "{c}"
+    );
+    let v = num(&d["gait"]["fixed_point"]["V"]);
+    assert!((v - 0.65).abs() <= 1e-8, "{v}");
+    let need = num(&d["value"]);
+    assert!(need > num(&free["value"]), "{d}");
+    // `walker simulate` alone on a floor 0.01 above what the gait needs: held through every
+    // stance and strike, every step at the design's speed to 1e-8 relative.
+    let steps = simulate_design(&["--model", &three], need + 0.01, &d, &THREE_LINK, 100);
+    for s in &steps {
+        assert_eq!(s["impact"]["regime"], "stick", "{s}");
+        assert!(
+            (num(&s["stuck_time"]) - num(&s["T"])).abs() <= 1e-12 * num(&s["T"]),
+            "{s}"
+        );
+    }
+    every_step_has(&steps, "V", v);
+}
+
+#[test]
+fn a_least_and_most_speed_of_one_value_give_a_gait_at_that_speed() {
+    // Faster than the cheapest gait (0.781 m/s): the least speed is the active side.
+    let d = paper_design(&["--min-speed", "0.82", "--max-speed", "0.82"]);
+    assert_eq!(d["status"], "optimal", "{d}");
+    let (lo, hi) = (row(&d, "min-speed"), row(&d, "max-speed"));
+    assert_eq!(
+        (lo["holds"].as_bool(), hi["holds"].as_bool()),
+        (Some(true), Some(true))
+    );
+    assert!(num(&lo["lagrange"]) > 0.0, "{lo}");
+    let v = num(&d["gait"]["fixed_point"]["V"]);
+    assert!((v - 0.82).abs() <= 1e-8, "{v}");
+    let steps = walk_paper_design(&d);
+    every_step_has(&steps, "V", v);
+}
+
+#[test]
 fn the_fastest_gait_at_a_fixed_effort_spends_the_effort_and_simulate_alone_walks_it() {
     let d = paper_design(&["--objective", "speed", "--max-power", "12"]);
     assert_eq!(d["status"], "optimal", "{d}");
@@ -256,6 +295,34 @@ fn bad_bounds_exit_2_naming_the_flag_and_the_range() {
         (
             vec!["--scene", "active-level", "--min-speed", "0"],
             "invalid min-speed: min-speed is 0: must be finite and > 0",
+        ),
+        (
+            vec!["--scene", "active-level", "--max-speed", "-1"],
+            "invalid max-speed: max-speed is -1: must be finite and > 0",
+        ),
+        (
+            vec![
+                "--scene",
+                "active-level",
+                "--min-speed",
+                "0.9",
+                "--max-speed",
+                "0.8",
+            ],
+            "invalid max-speed: max-speed is 0.8, below min-speed 0.9: must be at least min-speed",
+        ),
+        (
+            vec![
+                "--scene",
+                "active-level",
+                "--objective",
+                "speed",
+                "--max-power",
+                "12",
+                "--max-speed",
+                "0.9",
+            ],
+            "invalid max-speed: max-speed bounds what objective `speed` optimises",
         ),
         (
             vec!["--scene", "active-level", "--max-power", "inf"],

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
-use crate::common::{designed_setup, json, num, walker};
+use crate::common::{PAPER_ACTIVE, THREE_LINK, designed_setup, json, num, simulate_design, walker};
 
 /// The repository's `models/paper-active.toml`.
 fn paper_active() -> PathBuf {
@@ -152,33 +152,9 @@ fn a_designed_shape_beats_the_papers_sweep_and_simulate_alone_confirms_it() {
     // floor's mu0, the foot stuck through every stance and every strike, and each step's SR
     // the design's to 1e-8 (the walk repeats the fixed point, found to a residual of 1e-11,
     // with the integrator's rtol 1e-10: 3e-12 measured).
-    let mut sim = vec![
-        "simulate".to_owned(),
-        "--model".into(),
-        m.into(),
-        "--set".into(),
-        set,
-    ];
-    sim.extend(coulomb.iter().map(|s| (*s).to_owned()));
-    for p in d["parameters"].as_array().unwrap() {
-        sim.extend([
-            "--set".into(),
-            format!("{}={}", p["name"].as_str().unwrap(), num(&p["value"])),
-        ]);
-    }
-    let fp = &d["gait"]["fixed_point"];
-    let names = ["x", "z", "th1", "th2", "xd", "zd", "th1d", "th2d"];
-    for (n, v) in names.iter().zip(fp["state_plus"].as_array().unwrap()) {
-        sim.extend(["--init".into(), format!("{n}={}", num(v))]);
-    }
-    sim.extend(["--max-steps".into(), "100".into()]);
-    let args: Vec<&str> = sim.iter().map(String::as_str).collect();
-    let w = json(&args);
-    assert_eq!(w["status"], "ok");
-    let steps = w["steps"].as_array().unwrap();
-    assert_eq!(steps.len(), 100);
+    let steps = simulate_design(&["--model", m], num(&d["mu0"]), &d, &PAPER_ACTIVE, 100);
     let limit = num(&d["mu0"]) - 0.01;
-    for s in steps {
+    for s in &steps {
         assert!(stuck_all_step(s), "{s}");
         assert_eq!(s["impact"]["regime"], "stick");
         let [lt, ln] = [num(&s["foot_impulse"][0]), num(&s["foot_impulse"][1])];
@@ -362,35 +338,8 @@ fn the_three_link_biped_walks_below_its_hand_made_friction() {
     assert!(need < 0.45, "{d}");
     // `walker simulate` alone on a floor 0.01 above what the design needs: 100 steps, the
     // foot stuck through every stance and every strike sticking.
-    let floor = format!("mu0={}", need + 0.01);
-    let mut sim = vec![
-        "simulate".to_owned(),
-        "--model".into(),
-        m.into(),
-        "--set".into(),
-        floor,
-    ];
-    sim.extend(coulomb.iter().map(|s| (*s).to_owned()));
-    for p in d["parameters"].as_array().unwrap() {
-        sim.extend([
-            "--set".into(),
-            format!("{}={}", p["name"].as_str().unwrap(), num(&p["value"])),
-        ]);
-    }
-    let names = [
-        "x", "z", "th_st", "th_sw", "th_t", "xd", "zd", "th_std", "th_swd", "th_td",
-    ];
-    let fp = d["gait"]["fixed_point"]["state_plus"].as_array().unwrap();
-    for (n, v) in names.iter().zip(fp) {
-        sim.extend(["--init".into(), format!("{n}={}", num(v))]);
-    }
-    sim.extend(["--max-steps".into(), "100".into()]);
-    let args: Vec<&str> = sim.iter().map(String::as_str).collect();
-    let w = json(&args);
-    assert_eq!(w["status"], "ok");
-    let steps = w["steps"].as_array().unwrap();
-    assert_eq!(steps.len(), 100);
-    for s in steps {
+    let steps = simulate_design(&["--model", m], need + 0.01, &d, &THREE_LINK, 100);
+    for s in &steps {
         assert!(stuck_all_step(s), "{s}");
         assert_eq!(s["impact"]["regime"], "stick");
     }

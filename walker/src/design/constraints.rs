@@ -37,6 +37,8 @@ pub(super) enum Kind {
     Clearance,
     /// The mean speed `V >= V_min`.
     MinSpeed,
+    /// The mean speed `V <= V_max`.
+    MaxSpeed,
     /// The mean input power `p <= P`.
     MaxPower,
 }
@@ -53,6 +55,7 @@ impl Kind {
             Kind::Input(i) => format!("input-{i}"),
             Kind::Clearance => "clearance".to_owned(),
             Kind::MinSpeed => "min-speed".to_owned(),
+            Kind::MaxSpeed => "max-speed".to_owned(),
             Kind::MaxPower => "max-power".to_owned(),
         }
     }
@@ -60,9 +63,9 @@ impl Kind {
 
 /// The constraints of `req` on a walker with ramps (`ramps`) and `inputs` inputs, in the
 /// order of the program and of the result: the four of every design, then the strike after
-/// the ramps, then one per bounded input, then the clearance, the least speed and the most
-/// power where the request has them (after the others, so that a design without them has the
-/// rows it had).
+/// the ramps, then one per bounded input, then the clearance, the least and the most speed and
+/// the most power where the request has them (after the others, so that a design without them
+/// has the rows it had).
 pub(super) fn kinds(req: &DesignRequest, ramps: bool, inputs: usize) -> Vec<Kind> {
     let mut k = vec![
         Kind::Multipliers,
@@ -80,6 +83,7 @@ pub(super) fn kinds(req: &DesignRequest, ramps: bool, inputs: usize) -> Vec<Kind
     for (kind, asked) in [
         (Kind::Clearance, b.clearance.is_some()),
         (Kind::MinSpeed, b.min_speed.is_some()),
+        (Kind::MaxSpeed, b.max_speed.is_some()),
         (Kind::MaxPower, b.max_power.is_some()),
     ] {
         if asked {
@@ -135,6 +139,10 @@ pub(super) fn program_value(kind: Kind, e: &Evaluation, mu0: f64, req: &DesignRe
             let v = req.bounds.min_speed.unwrap_or(0.0);
             (1.0 - e.fixed_point.speed / v).min(CAP)
         }
+        Kind::MaxSpeed => {
+            let v = req.bounds.max_speed.unwrap_or(f64::INFINITY);
+            (e.fixed_point.speed / v - 1.0).min(CAP)
+        }
         Kind::MaxPower => {
             let p = req.bounds.max_power.unwrap_or(f64::INFINITY);
             (e.power / p - 1.0).min(CAP)
@@ -175,6 +183,11 @@ pub(super) fn row(
             e.fixed_point.speed,
             req.bounds.min_speed.unwrap_or(0.0),
             ">=",
+        ),
+        Kind::MaxSpeed => (
+            e.fixed_point.speed,
+            req.bounds.max_speed.unwrap_or(f64::INFINITY),
+            "<=",
         ),
         Kind::MaxPower => (e.power, req.bounds.max_power.unwrap_or(f64::INFINITY), "<="),
     }

@@ -126,22 +126,32 @@ pub enum DesignError {
         /// The most allowed.
         max: usize,
     },
-    /// A gait bound (`clearance`, `min-speed`, `max-power`) out of range.
+    /// A gait bound (`clearance`, `min-speed`, `max-speed`, `max-power`) out of range.
     #[error("{which} is {value}: must be {must_be}")]
     Bound {
-        /// `clearance`, `min-speed` or `max-power`.
+        /// `clearance`, `min-speed`, `max-speed` or `max-power`.
         which: &'static str,
         /// The value.
         value: f64,
         /// The valid range.
         must_be: &'static str,
     },
+    /// A most speed below the least speed: no gait meets both.
+    #[error(
+        "max-speed is {max}, below min-speed {min}: must be at least min-speed (equal to it for a gait at one speed)"
+    )]
+    SpeedRange {
+        /// The least speed asked (m/s).
+        min: f64,
+        /// The most speed asked (m/s).
+        max: f64,
+    },
     /// A bound on the quantity the objective itself optimises.
     #[error(
         "{which} bounds what objective `{objective}` optimises: the bound could only be inactive or make the design infeasible; give one or the other"
     )]
     BoundOnObjective {
-        /// `min-speed` or `max-power`.
+        /// `min-speed`, `max-speed` or `max-power`.
         which: &'static str,
         /// The objective.
         objective: &'static str,

@@ -89,9 +89,9 @@ impl Default for Margins {
     }
 }
 
-/// Bounds on the gait besides the margins: the swing foot's clearance, a least mean speed and
-/// a most mean input power. Each `None` (the default) leaves the design as it is without it
-/// (no row, no change to the result).
+/// Bounds on the gait besides the margins: the swing foot's clearance, a least and a most mean
+/// speed and a most mean input power. Each `None` (the default) leaves the design as it is
+/// without it (no row, no change to the result).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct GaitBounds {
     /// The swing foot's clearance `H` (m, finite and `> 0`): its height above the floor (normal
@@ -102,6 +102,10 @@ pub struct GaitBounds {
     /// The gait's mean speed `V >= min_speed` (m/s, finite and `> 0`). Not with
     /// [`Objective::Speed`], which maximises `V`.
     pub min_speed: Option<f64>,
+    /// The gait's mean speed `V <= max_speed` (m/s, finite, `> 0` and at least
+    /// [`GaitBounds::min_speed`]; equal to it for a gait at one speed). Not with
+    /// [`Objective::Speed`].
+    pub max_speed: Option<f64>,
     /// The gait's mean input power `p <= max_power` (W, finite and `> 0`), the effort bound of
     /// [`Objective::Speed`]. Only for an actuated walker, and not with [`Objective::Power`],
     /// which minimises `p`.
@@ -247,14 +251,16 @@ impl DesignRequest {
         self.check_bounds(setup, &model)
     }
 
-    /// The checks of [`DesignRequest::bounds`]: each value finite and `> 0`; the clearance on
-    /// a walker with a swing foot; the power bound on an actuated walker and the speed
-    /// objective with it there; no bound on the quantity the objective itself optimises.
+    /// The checks of [`DesignRequest::bounds`]: each value finite and `> 0`; the least speed
+    /// at most the most speed; the clearance on a walker with a swing foot; the power bound on
+    /// an actuated walker and the speed objective with it there; no bound on the quantity the
+    /// objective itself optimises.
     fn check_bounds(&self, setup: &Setup, model: &str) -> Result<(), DesignError> {
         let b = &self.bounds;
         for (which, value) in [
             ("clearance", b.clearance),
             ("min-speed", b.min_speed),
+            ("max-speed", b.max_speed),
             ("max-power", b.max_power),
         ] {
             if let Some(value) = value
@@ -267,7 +273,18 @@ impl DesignRequest {
                 });
             }
         }
+        if let (Some(min), Some(max)) = (b.min_speed, b.max_speed)
+            && max < min
+        {
+            return Err(DesignError::SpeedRange { min, max });
+        }
         let actuated = setup.walker.spec().is_actuated();
+        if let (Objective::Speed, Some(_)) = (self.objective, b.max_speed) {
+            return Err(DesignError::BoundOnObjective {
+                which: "max-speed",
+                objective: "speed",
+            });
+        }
         match (self.objective, b.min_speed, b.max_power) {
             (Objective::Speed, Some(_), _) => {
                 return Err(DesignError::BoundOnObjective {

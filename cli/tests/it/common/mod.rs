@@ -77,3 +77,50 @@ pub fn designed_setup(
     let runtime = walker_load::runtime_source();
     walker::setup::Setup::from_model_file(path, &ov, Some(&runtime)).unwrap()
 }
+
+/// The coordinates and velocities of the paper's active walker, as `--init` names them.
+pub const PAPER_ACTIVE: [&str; 8] = ["x", "z", "th1", "th2", "xd", "zd", "th1d", "th2d"];
+
+/// The coordinates and velocities of `models/three-link.toml`, as `--init` names them.
+pub const THREE_LINK: [&str; 10] = [
+    "x", "z", "th_st", "th_sw", "th_t", "xd", "zd", "th_std", "th_swd", "th_td",
+];
+
+/// `walker simulate` alone of a design's walker (its JSON `d`): the walker of `walker_flags`
+/// (`--scene ...` or `--model ...`) under exact Coulomb friction in stance and at the impact,
+/// on a floor of `mu0`, with the designed parameters set, from the designed fixed point (its
+/// coordinates named `coordinates`), for `steps` steps. Its steps, after checking that the walk
+/// completed all of them.
+pub fn simulate_design(
+    walker_flags: &[&str],
+    mu0: f64,
+    d: &serde_json::Value,
+    coordinates: &[&str],
+    steps: usize,
+) -> Vec<serde_json::Value> {
+    let mut sim: Vec<String> = ["simulate"]
+        .iter()
+        .chain(walker_flags)
+        .chain(&["--friction", "coulomb", "--impact", "coulomb"])
+        .map(|s| (*s).to_owned())
+        .collect();
+    sim.extend(["--set".into(), format!("mu0={mu0}")]);
+    for p in d["parameters"].as_array().unwrap() {
+        sim.extend([
+            "--set".into(),
+            format!("{}={}", p["name"].as_str().unwrap(), num(&p["value"])),
+        ]);
+    }
+    let fp = d["gait"]["fixed_point"]["state_plus"].as_array().unwrap();
+    assert_eq!(fp.len(), coordinates.len(), "{d}");
+    for (n, v) in coordinates.iter().zip(fp) {
+        sim.extend(["--init".into(), format!("{n}={}", num(v))]);
+    }
+    sim.extend(["--max-steps".into(), steps.to_string()]);
+    let args: Vec<&str> = sim.iter().map(String::as_str).collect();
+    let w = json(&args);
+    assert_eq!(w["status"], "ok", "{w}");
+    let out = w["steps"].as_array().unwrap().clone();
+    assert_eq!(out.len(), steps);
+    out
+}
