@@ -322,8 +322,12 @@ fn run(cli: Cli) -> Result<(), CliError> {
                     if let Some(regions) = walker.regions() {
                         animate::write_on_patches(&model, &tr, &req, &regions)?
                     } else {
-                        let mu0: Vec<f64> = walker.steps(0).take(tr.walk.steps.len() + 1).collect();
-                        animate::write_on_floor(&model, &tr, &req, &mu0)?
+                        let drawn = tr.walk.steps.len() + 1;
+                        let mu0: Vec<f64> = walker.steps(0).take(drawn).collect();
+                        let slopes: Vec<f64> = walker
+                            .slopes(0)
+                            .map_or_else(Vec::new, |s| s.take(drawn).collect());
+                        animate::write_on_floor(&model, &tr, &req, &mu0, &slopes)?
                     }
                 }
             };

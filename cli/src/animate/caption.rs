@@ -33,7 +33,7 @@ pub const LEGEND: &str = "blue: normal force, red: friction, orange: slip of the
 /// speed.
 #[must_use]
 pub fn title(model: &Model, speed: f64) -> String {
-    title_with(model, speed, &format!("mu0 = {}", model.mu0()))
+    title_with(model, speed, &format!("mu0 = {}", model.mu0()), None)
 }
 
 /// The smallest and the largest of `values` (infinities of the wrong sign if there are none).
@@ -47,16 +47,28 @@ pub fn mu0_range(values: impl IntoIterator<Item = f64>) -> (f64, f64) {
 }
 
 /// [`title`] for a walk on a floor whose drawn steps have the friction coefficients `mu0`:
-/// their range and the colours of its ends.
+/// their range and the colours of its ends; and, where the floor sets the slope, the range of
+/// the drawn steps' slopes `phi` (none given: the model's own slope).
 #[must_use]
-pub fn title_on_floor(model: &Model, speed: f64, mu0: impl IntoIterator<Item = f64>) -> String {
+pub fn title_on_floor(
+    model: &Model,
+    speed: f64,
+    mu0: impl IntoIterator<Item = f64>,
+    phi: impl IntoIterator<Item = f64>,
+) -> String {
     let (lo, hi) = mu0_range(mu0);
     let text = if hi > lo {
         format!("mu0 by step from {lo} (blue) to {hi} (brown)")
     } else {
         format!("mu0 = {lo}")
     };
-    title_with(model, speed, &text)
+    let (a, b) = mu0_range(phi);
+    let floor = match (a.is_finite(), b > a) {
+        (false, _) => None,
+        (true, true) => Some(format!("slope phi by step from {a} to {b} rad")),
+        (true, false) => Some(format!("slope phi = {a} rad")),
+    };
+    title_with(model, speed, &text, floor)
 }
 
 /// [`title`] for a walk on a floor of patches by position whose drawn patches have the
@@ -69,20 +81,23 @@ pub fn title_on_patches(model: &Model, speed: f64, mu0: impl IntoIterator<Item =
     } else {
         format!("mu0 = {lo}")
     };
-    title_with(model, speed, &text)
+    title_with(model, speed, &text, None)
 }
 
-/// The title with the friction coefficient given as `mu0`.
-fn title_with(model: &Model, speed: f64, mu0: &str) -> String {
+/// The title with the friction coefficient given as `mu0`, and the floor as `floor` (`None`:
+/// the model's own slope, or the level floor).
+fn title_with(model: &Model, speed: f64, mu0: &str, floor: Option<String>) -> String {
     let law = match model.friction_law() {
         FrictionLaw::Tanh => format!("{mu0}, c = {} s/m", model.sharpness()),
         FrictionLaw::Coulomb => format!("Coulomb friction, {mu0}"),
     };
-    let floor = if model.spec().slope.is_some() {
-        format!("slope phi = {} rad", model.phi())
-    } else {
-        "level floor".to_owned()
-    };
+    let floor = floor.unwrap_or_else(|| {
+        if model.spec().slope.is_some() {
+            format!("slope phi = {} rad", model.phi())
+        } else {
+            "level floor".to_owned()
+        }
+    });
     let ramp = model
         .ramps_end()
         .map_or_else(String::new, |t| format!(", T_set = {t} s"));

@@ -7,12 +7,13 @@ use walker::model::Model;
 use walker::sim::{Frame, Trajectory};
 
 use super::caption::{failure_label, mu0_range};
+use super::floor_line::FloorLine;
 use super::geometry::{Body, Point, Pose};
 use super::sticks::Sticks;
 use super::view::View;
 
-/// The slip mark of one stance foot: the stretch of floor its foot has slid over, as distances
-/// along the floor `x / cos phi` (m).
+/// The slip mark of one stance foot: the stretch of floor its foot has slid over, as positions
+/// along the floor ([`FloorLine::s`]; `x / cos phi` on one slope, m).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Mark {
     /// The step whose stance foot left the mark.
@@ -27,7 +28,7 @@ pub struct Mark {
 
 /// The floor under one step's stance foot on a floor whose friction changes from step to step
 /// (`walker animate --floor`): centred on where the foot landed, reaching halfway to the
-/// neighbouring steps' landings, as distances along the floor `x / cos phi` (m).
+/// neighbouring steps' landings, as positions along the floor ([`FloorLine::s`], m).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Patch {
     /// The step (`None` for a patch of a floor of patches by position, [`Film::on_patches`]).
@@ -57,8 +58,10 @@ impl Patch {
 /// A walk ready to be drawn.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Film {
-    /// The walker's drawn body and floor.
+    /// The walker's drawn body (its slope `phi` the model's own).
     pub body: Body,
+    /// The floor under the walk: the model's slope, or a slope per step.
+    pub floor: FloorLine,
     /// The camera and picture size.
     pub view: View,
     /// The frames, every `dt` of walk time, and, if the walk failed, the frame at its failure.
@@ -89,8 +92,25 @@ impl Film {
         model: &Model,
         tr: &Trajectory,
         speed: f64,
+        size: (u32, u32),
+        title: String,
+    ) -> Option<Self> {
+        Self::on_slopes(model, tr, speed, size, title, &[])
+    }
+
+    /// [`Film::new`] on a floor whose step `k` has the slope `slopes[k]` (rad; the steps of
+    /// `tr` and the one it failed in, if it did): each step on the line of its slope through
+    /// its stance foot where the slope changed, as the simulator walks it (`walker::floor`),
+    /// and the ground reaction drawn normal and along that line. Empty `slopes`: the model's
+    /// own slope.
+    #[must_use]
+    pub fn on_slopes(
+        model: &Model,
+        tr: &Trajectory,
+        speed: f64,
         (width, height): (u32, u32),
         title: String,
+        slopes: &[f64],
     ) -> Option<Self> {
         let (body, sticks) = match Body::of(model) {
             Some(wheel) => (wheel, None),
@@ -105,22 +125,37 @@ impl Film {
         {
             frames.push(ff);
         }
+        let mut floor = FloorLine::straight(body.phi);
+        for (k, &phi) in slopes.iter().enumerate() {
+            let foot = match k.checked_sub(1) {
+                None => frames.first().map(|f| (f.state[0], f.state[1])),
+                Some(j) => tr.walk.steps.get(j).map(|r| (r.q_plus[0], r.q_plus[1])),
+            };
+            if let Some(foot) = foot {
+                floor = floor.then(foot, phi);
+            }
+        }
         let poses: Vec<Pose> = frames
             .iter()
-            .map(|f| match &sticks {
-                Some(s) => {
-                    let (lines, hub) = s.pose(model, f);
-                    body.stick_pose(f, lines, hub)
+            .map(|f| {
+                let body = Body {
+                    phi: slopes.get(f.step).copied().unwrap_or(body.phi),
+                    ..body
+                };
+                match &sticks {
+                    Some(s) => {
+                        let (lines, hub) = s.pose(model, f);
+                        body.stick_pose(f, lines, hub)
+                    }
+                    None => body.pose(f),
                 }
-                None => body.pose(f),
             })
             .collect();
         let hubs: Vec<Point> = poses.iter().map(|p| p.hub).collect();
         let view = View::new(&body, &hubs, width, height);
-        let along = 1.0 / body.phi.cos();
         let mut marks: Vec<Mark> = Vec::with_capacity(tr.frames.len());
         for f in &frames {
-            let s = f.state[0] * along;
+            let s = floor.s(f.state[0]);
             let mark = match marks.last() {
                 Some(m) if m.step == f.step => Mark {
                     lo: m.lo.min(s),
@@ -138,6 +173,7 @@ impl Film {
         }
         Some(Film {
             body,
+            floor,
             view,
             frames,
             poses,

@@ -1,10 +1,10 @@
 //! The drawn walker in world coordinates (metres, `x` forward, `z` up), computed from its
 //! parameters and one [`Frame`]: the rimless wheel's spokes, the torso, the stance foot, the
-//! ground reaction's normal and friction parts, and the floor or slope. The positions follow
-//! `docs/kernels.md`: the hub is at `(x + l sin th1, z + l cos th1)`, spoke `k` ends at
-//! `hub - l (sin(th1 - k alpha), cos(th1 - k alpha))` (`k = 0` the stance foot, `k = 1` the fore
-//! foot of the `fore_foot` kernel), and the torso, of length `2 r` (Fig. 1), is centred at the
-//! hub at the angle `th2` from the horizontal.
+//! ground reaction's normal and friction parts (the floor is `super::floor_line`'s). The
+//! positions follow `docs/kernels.md`: the hub is at `(x + l sin th1, z + l cos th1)`, spoke
+//! `k` ends at `hub - l (sin(th1 - k alpha), cos(th1 - k alpha))` (`k = 0` the stance foot,
+//! `k = 1` the fore foot of the `fore_foot` kernel), and the torso, of length `2 r` (Fig. 1), is
+//! centred at the hub at the angle `th2` from the horizontal.
 
 use std::f64::consts::TAU;
 
@@ -33,7 +33,8 @@ pub struct Body {
     /// Half the torso's drawn length `r` (m): the paper's Table 1 gives no `r` (only `I2`), so
     /// the torso is drawn with `r = 0.6 l`, as long as the spokes are together.
     pub r: f64,
-    /// Slope angle `phi` (rad; 0 on level ground): the floor is `z = -x tan phi`.
+    /// Slope angle `phi` (rad; 0 on level ground) of the floor under the stance foot, whose
+    /// normal and tangent the ground reaction is drawn along.
     pub phi: f64,
     /// The walker's weight `m_t g` (N), the scale of the drawn forces.
     pub weight: f64,
@@ -61,12 +62,6 @@ impl Body {
             phi: model.phi(),
             weight: model.total_mass() * model.gravity(),
         })
-    }
-
-    /// The floor's height at `x` (`z = -x tan phi`).
-    #[must_use]
-    pub fn floor_z(&self, x: f64) -> f64 {
-        -x * self.phi.tan()
     }
 
     /// Unit vector along the floor, towards `+x` (down the slope).

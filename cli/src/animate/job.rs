@@ -146,20 +146,28 @@ fn sample_by(
 /// # Errors
 /// The file could not be drawn or written.
 pub fn write(model: &Model, tr: &Trajectory, req: &Request) -> Result<Written, AnimateError> {
-    write_on_floor(model, tr, req, &[])
+    write_on_floor(model, tr, req, &[], &[])
 }
 
 /// The friction under a drawn walk: by step, or by position along the floor.
 #[derive(Clone, Copy, Debug)]
 pub enum Drawn<'a> {
-    /// Step `k` on `mu0[k]` (none drawn if empty).
-    Steps(&'a [f64]),
+    /// Step `k` on `mu0[k]` (none drawn if empty) and, where `slopes` is not empty, on the
+    /// slope `slopes[k]`.
+    Steps {
+        /// The friction coefficient of each step.
+        mu0: &'a [f64],
+        /// The slope of each step (rad), where the floor sets it.
+        slopes: &'a [f64],
+    },
     /// A floor of patches by position: its regions `(from, to, mu0)` along the floor (m).
     Regions(&'a [(f64, f64, f64)]),
 }
 
 /// [`write()`] for a walk on a floor whose step `k` has the friction coefficient `mu0[k]`
-/// (drawn as patches under the floor line; none if `mu0` is empty).
+/// (drawn as patches under the floor line; none if `mu0` is empty) and, where `slopes` is not
+/// empty, the slope `slopes[k]` (the floor drawn as the line of each step's slope through its
+/// stance foot, [`Film::on_slopes`]).
 ///
 /// # Errors
 /// As [`write()`].
@@ -168,8 +176,9 @@ pub fn write_on_floor(
     tr: &Trajectory,
     req: &Request,
     mu0: &[f64],
+    slopes: &[f64],
 ) -> Result<Written, AnimateError> {
-    write_drawn(model, tr, req, Drawn::Steps(mu0))
+    write_drawn(model, tr, req, Drawn::Steps { mu0, slopes })
 }
 
 /// [`write()`] for a walk on a floor of patches by position, whose regions are `(from, to,
@@ -194,26 +203,35 @@ fn write_drawn(
     req: &Request,
     drawn: Drawn<'_>,
 ) -> Result<Written, AnimateError> {
-    let film =
-        Film::new(model, tr, req.speed, req.size, title(model, req.speed)).ok_or_else(|| {
-            InputError::new(
-                "model",
-                format!(
-                    "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
+    let slopes = match drawn {
+        Drawn::Steps { slopes, .. } => slopes,
+        Drawn::Regions(_) => &[],
+    };
+    let title = title(model, req.speed);
+    let film = Film::on_slopes(model, tr, req.speed, req.size, title, slopes).ok_or_else(|| {
+        InputError::new(
+            "model",
+            format!(
+                "model `{}` has no drawing: animations draw rimless wheels (parameters l and \
                  alpha) and stick figures of a model's [[point]]s (two of them on one link)",
-                    model.spec().name()
-                ),
-            )
-        })?;
-    // The title's range of mu0 is the drawn patches', the one their shades span.
+                model.spec().name()
+            ),
+        )
+    })?;
+    // The title's ranges of mu0 and phi are the drawn steps', the ones the shades and the
+    // floor's pieces span.
     let film = match drawn {
-        Drawn::Steps([]) => film,
-        Drawn::Steps(mu0) => {
+        Drawn::Steps { mu0: [], .. } => film,
+        Drawn::Steps { mu0, slopes } => {
             let film = film.on_floor(mu0);
-            Film {
-                title: title_on_floor(model, req.speed, film.patches.iter().map(|p| p.mu0)),
-                ..film
-            }
+            let drawn = film.marks.last().map_or(0, |m| m.step + 1);
+            let title = title_on_floor(
+                model,
+                req.speed,
+                film.patches.iter().map(|p| p.mu0),
+                slopes.iter().take(drawn).copied(),
+            );
+            Film { title, ..film }
         }
         Drawn::Regions(regions) => {
             let film = film.on_patches(regions);

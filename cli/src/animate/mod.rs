@@ -4,18 +4,19 @@
 //! library's [`walker::sim::trajectory()`]: the integrator's dense output at exact times.
 //!
 //! One concept per file: the checked request and its bounds ([`request`]), the drawn walker in
-//! world coordinates ([`geometry`]; a biped's stick figure, [`sticks`]), the camera ([`view`]), the words ([`caption`]), a walk
-//! ready to draw ([`film`]), the animated SVG ([`svg`]), a frame in pixels ([`raster`]), the
-//! GIF ([`mod@gif`]), the stick diagram ([`strobe`]), the job ([`job`]) and its errors
-//! ([`error`]).
+//! world coordinates ([`geometry`]; a biped's stick figure, [`sticks`]), the floor under it
+//! ([`floor_line`]), the camera ([`view`]), the words ([`caption`]), a walk ready to draw
+//! ([`film`]), the animated SVG ([`svg`]), a frame in pixels ([`raster`]), the GIF
+//! ([`mod@gif`]), the stick diagram ([`strobe`]), the job ([`job`]) and its errors ([`error`]).
 //!
 //! Imports run one way: [`job`] -> [`svg`], [`mod@gif`], [`strobe`] -> [`raster`] -> [`film`]
-//! -> [`geometry`], [`sticks`], [`view`], [`caption`]; [`job`] -> [`request`] (-> [`mod@gif`]'s bound),
-//! [`error`] -> [`crate::input`].
+//! -> [`geometry`], [`sticks`], [`floor_line`], [`view`], [`caption`]; [`job`] -> [`request`]
+//! (-> [`mod@gif`]'s bound), [`error`] -> [`crate::input`].
 
 pub mod caption;
 pub mod error;
 pub mod film;
+pub mod floor_line;
 pub mod geometry;
 pub mod gif;
 pub mod job;

@@ -31,6 +31,31 @@ fn px(f: &Film, centre: Point, p: Point) -> (i32, i32) {
     )
 }
 
+/// The part of the segment from `p` to `q` (world) inside the picture, in pixels; `None` if
+/// none of it is (Liang and Barsky's clipping). Plotters moves each point outside the drawing
+/// area onto its edge, which bends a line that leaves the picture (a slope running out below
+/// it, or past its side a leg's length on), so the floor's lines are cut here first. A level
+/// line is cut where plotters would have moved its ends, to the same pixels.
+fn clipped(f: &Film, centre: Point, p: Point, q: Point) -> Option<[(i32, i32); 2]> {
+    let (a, b) = (f.view.to_px(centre, p), f.view.to_px(centre, q));
+    let (w, h) = (f64::from(f.view.width), f64::from(f.view.height));
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+    for (towards, room) in [(-dx, a.0), (dx, w - a.0), (-dy, a.1), (dy, h - a.1)] {
+        if towards == 0.0 {
+            if room < 0.0 {
+                return None;
+            }
+        } else if towards < 0.0 {
+            t0 = t0.max(room / towards);
+        } else {
+            t1 = t1.min(room / towards);
+        }
+    }
+    let at = |t: f64| ((a.0 + t * dx).round() as i32, (a.1 + t * dy).round() as i32);
+    (t0 <= t1).then(|| [at(t0), at(t1)])
+}
+
 /// Line width in pixels of `metres` (at least 1).
 fn width(f: &Film, metres: f64) -> u32 {
     (metres * f.view.scale).round().clamp(1.0, 50.0) as u32
@@ -54,25 +79,30 @@ pub fn floor<DB: DrawingBackend>(
             BLACK.stroke_width(2),
         )
     };
-    let (c, w) = (b.phi.cos(), 0.05 * b.l);
+    // The floor's broken lines are drawn a piece at a time, each cut to the picture.
+    let w = 0.05 * b.l;
     for p in &f.patches {
-        let (a, z) = (p.from * c, p.to * c);
+        let (a, z) = (f.floor.x_at(p.from), f.floor.x_at(p.to));
         let (r, g, bl) = Patch::colour(p.dry);
-        area.draw(&PathElement::new(
-            vec![
-                px(f, centre, (a, b.floor_z(a) - 0.5 * w)),
-                px(f, centre, (z, b.floor_z(z) - 0.5 * w)),
-            ],
-            RGBColor(r, g, bl).stroke_width(width(f, w)),
-        ))
-        .map_err(err)?;
+        let band = RGBColor(r, g, bl).stroke_width(width(f, w));
+        for piece in f.floor.between(a, z).windows(2) {
+            let [(xa, za), (xb, zb)] = [piece[0], piece[1]];
+            if let Some(ends) = clipped(f, centre, (xa, za - 0.5 * w), (xb, zb - 0.5 * w)) {
+                area.draw(&PathElement::new(ends.to_vec(), band))
+                    .map_err(err)?;
+            }
+        }
     }
-    area.draw(&line((x0, b.floor_z(x0)), (x1, b.floor_z(x1))))
-        .map_err(err)?;
+    for piece in f.floor.between(x0, x1).windows(2) {
+        if let Some(ends) = clipped(f, centre, piece[0], piece[1]) {
+            area.draw(&PathElement::new(ends.to_vec(), BLACK.stroke_width(2)))
+                .map_err(err)?;
+        }
+    }
     let step = 0.25 * b.l;
     let mut x = (x0 / step).ceil() * step;
     while x <= x1 {
-        let z = b.floor_z(x);
+        let z = f.floor.z(x);
         area.draw(&line((x, z), (x - 0.1 * b.l, z - 0.1 * b.l)))
             .map_err(err)?;
         x += step;
@@ -133,9 +163,8 @@ pub fn slip<DB: DrawingBackend>(
     i: usize,
 ) -> Result<(), String> {
     let b = &f.body;
-    let (c, s) = (b.phi.cos(), -b.phi.sin());
     for m in f.marks_at(i) {
-        let (p, q) = ((m.lo * c, m.lo * s), (m.hi * c, m.hi * s));
+        let (p, q) = (f.floor.point_at(m.lo), f.floor.point_at(m.hi));
         area.draw(&PathElement::new(
             vec![px(f, centre, p), px(f, centre, q)],
             SLIP.stroke_width(width(f, 0.03 * b.l).max(3)),

@@ -45,15 +45,15 @@ pub fn strobe_svg(f: &Film) -> String {
     ));
     let (x0, x1) = f.view.x_range(c);
     s.push_str(&floor(f, x0, x1));
-    let (cp, sp) = (b.phi.cos(), -b.phi.sin());
     for m in f.marks_at(f.marks.len().saturating_sub(1)) {
+        let (p, q) = (f.floor.point_at(m.lo), f.floor.point_at(m.hi));
         s.push_str(&format!(
             "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{SLIP_COLOUR}\" \
              stroke-width=\"{}\"/>\n",
-            num(m.lo * cp),
-            num(m.lo * sp),
-            num(m.hi * cp),
-            num(m.hi * sp),
+            num(p.0),
+            num(p.1),
+            num(q.0),
+            num(q.1),
             num(0.03 * b.l)
         ));
     }

@@ -45,21 +45,29 @@ pub fn header(width: u32, height: u32) -> String {
     )
 }
 
+/// The broken line through `points`, each moved down by `down`, as path data.
+fn broken_line(points: &[Point], down: f64) -> String {
+    let mut d = String::new();
+    for (i, p) in points.iter().enumerate() {
+        d.push_str(&format!(
+            "{}{} {}",
+            if i == 0 { "M" } else { "L" },
+            num(p.0),
+            num(p.1 - down)
+        ));
+    }
+    d
+}
+
 /// The floor from `x0` to `x1` (world m) with hatching below it, in world coordinates.
 #[must_use]
 pub fn floor(f: &Film, x0: f64, x1: f64) -> String {
     let b = &f.body;
-    let mut d = format!(
-        "M{} {}L{} {}",
-        num(x0),
-        num(b.floor_z(x0)),
-        num(x1),
-        num(b.floor_z(x1))
-    );
+    let mut d = broken_line(&f.floor.between(x0, x1), 0.0);
     let step = 0.25 * b.l;
     let mut x = (x0 / step).ceil() * step;
     while x <= x1 {
-        let z = b.floor_z(x);
+        let z = f.floor.z(x);
         d.push_str(&format!(
             "M{} {}l{} {}",
             num(x),
@@ -80,19 +88,15 @@ pub fn floor(f: &Film, x0: f64, x1: f64) -> String {
 /// The floor's patches of friction under the floor line, each with its step (counted from 1,
 /// as the frame labels count) and `mu0` as a tooltip, in world coordinates.
 fn patches(f: &Film) -> String {
-    let b = &f.body;
-    let (c, w) = (b.phi.cos(), 0.05 * b.l);
+    let w = 0.05 * f.body.l;
     let mut s = String::new();
     for p in &f.patches {
-        let (x0, x1) = (p.from * c, p.to * c);
+        let (x0, x1) = (f.floor.x_at(p.from), f.floor.x_at(p.to));
         let (r, g, bl) = Patch::colour(p.dry);
         s.push_str(&format!(
-            "<path class=\"floor-patch\" d=\"M{} {}L{} {}\" stroke=\"rgb({r},{g},{bl})\" \
+            "<path class=\"floor-patch\" d=\"{}\" stroke=\"rgb({r},{g},{bl})\" \
              stroke-width=\"{}\"><title>{}: mu0 = {}</title></path>\n",
-            num(x0),
-            num(b.floor_z(x0) - 0.5 * w),
-            num(x1),
-            num(b.floor_z(x1) - 0.5 * w),
+            broken_line(&f.floor.between(x0, x1), 0.5 * w),
             num(w),
             p.step.map_or_else(
                 || format!("{} m to {} m", num(p.from), num(p.to)),
@@ -440,14 +444,13 @@ fn forces(f: &Film, t: &Timing) -> String {
 }
 
 /// One line on the floor per stance foot, growing over the stretch its foot slides over while
-/// it is the stance foot, then staying.
+/// it is the stance foot, then staying. Each piece of floor has a group of the marks of the feet
+/// that landed on it, turned to its slope from its corner (the one group of a floor of one
+/// slope turns about the origin).
 fn slip_marks(f: &Film, t: &Timing) -> String {
     let b = &f.body;
-    let mut s = format!(
-        "<g transform=\"rotate({})\" stroke=\"{SLIP_COLOUR}\" stroke-width=\"{}\">\n",
-        num(-b.phi.to_degrees()),
-        num(0.03 * b.l)
-    );
+    let pieces: Vec<(Point, f64, f64)> = f.floor.pieces().collect();
+    let mut groups = vec![String::new(); pieces.len()];
     let mut i = 0;
     while i < f.marks.len() {
         let step = f.marks[i].step;
@@ -456,6 +459,9 @@ fn slip_marks(f: &Film, t: &Timing) -> String {
             .position(|m| m.step != step)
             .map_or(f.marks.len(), |n| i + n);
         let landed = f.marks[i].landed;
+        let piece = pieces.iter().rposition(|p| p.1 <= landed).unwrap_or(0);
+        // Positions from the piece's corner (0 on a floor of one slope).
+        let at = |x: f64| num(x - pieces[piece].1);
         // Before its step the mark is a point where the foot will land; during its step it
         // follows the foot; after it, it keeps its last extent. Only the mark's own frames are
         // keyframes, so that all marks together have as many as the frames.
@@ -463,27 +469,45 @@ fn slip_marks(f: &Film, t: &Timing) -> String {
         let (mut lo, mut hi) = (Vec::new(), Vec::new());
         if i > 0 {
             keys.push(0.0);
-            lo.push(num(landed));
-            hi.push(num(landed));
+            lo.push(at(landed));
+            hi.push(at(landed));
         }
         for j in i..end {
             keys.push(t.key_times[j]);
-            lo.push(num(f.marks[j].lo));
-            hi.push(num(f.marks[j].hi));
+            lo.push(at(f.marks[j].lo));
+            hi.push(at(f.marks[j].hi));
         }
         keys.push(1.0);
-        lo.push(num(f.marks[end - 1].lo));
-        hi.push(num(f.marks[end - 1].hi));
-        s.push_str(&format!(
+        lo.push(at(f.marks[end - 1].lo));
+        hi.push(at(f.marks[end - 1].hi));
+        let g = &mut groups[piece];
+        g.push_str(&format!(
             "<line x1=\"{0}\" y1=\"0\" x2=\"{0}\" y2=\"0\">\n",
-            num(landed)
+            at(landed)
         ));
-        s.push_str(&animate_keyed("x1", &keys, &lo, t));
-        s.push_str(&animate_keyed("x2", &keys, &hi, t));
-        s.push_str("</line>\n");
+        g.push_str(&animate_keyed("x1", &keys, &lo, t));
+        g.push_str(&animate_keyed("x2", &keys, &hi, t));
+        g.push_str("</line>\n");
         i = end;
     }
-    s.push_str("</g>\n");
+    let mut s = String::new();
+    for (&((x, z), _, phi), lines) in pieces.iter().zip(&groups) {
+        if lines.is_empty() && pieces.len() > 1 {
+            continue;
+        }
+        let from = if (x, z) == (0.0, 0.0) {
+            String::new()
+        } else {
+            format!("translate({} {}) ", num(x), num(z))
+        };
+        s.push_str(&format!(
+            "<g transform=\"{from}rotate({})\" stroke=\"{SLIP_COLOUR}\" stroke-width=\"{}\">\n",
+            num(-phi.to_degrees()),
+            num(0.03 * b.l)
+        ));
+        s.push_str(lines);
+        s.push_str("</g>\n");
+    }
     s
 }
 

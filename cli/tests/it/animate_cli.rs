@@ -466,3 +466,79 @@ fn a_biped_is_drawn_as_the_links_of_its_points_at_the_simulated_positions() {
         );
     }
 }
+
+#[test]
+fn a_users_own_model_file_is_drawn_from_its_points_or_refused_naming_the_model() {
+    // A model file of the user's own (the compass gait renamed, derived at run time), with a
+    // knee point added half way down the swing leg: its links are read from its geometry as
+    // for the shipped bipeds (stance foot - hip; hip - swing foot, hip - knee and knee - swing
+    // foot, each turning with the swing leg's angle alone).
+    let shipped = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/compass-gait.toml"),
+    )
+    .expect("the shipped model");
+    let own = shipped.replacen("name = \"compass-gait\"", "name = \"my-walker\"", 1);
+    let hip = "[[point]]\nname = \"hip\"\nat = [\"x + (a + b)*sin(th_st)\", \"z + (a + b)*cos(th_st)\"]\n";
+    let swing = "[[point]]\nname = \"swing_foot\"\n";
+    assert!(
+        own.contains(hip) && own.contains(swing),
+        "the points' text changed"
+    );
+    let knee = "[[point]]\nname = \"swing_knee\"\nat = [\"x + (a + b)*sin(th_st) - 0.5*(a + b)*sin(th_sw)\", \"z + (a + b)*cos(th_st) - 0.5*(a + b)*cos(th_sw)\"]\n";
+    let kneed = own.replacen(swing, &format!("{knee}{swing}"), 1);
+    let file = tmp("my-walker.toml");
+    std::fs::write(&file, &kneed).expect("written");
+    let setup = Setup::from_model_file(
+        &file,
+        &Default::default(),
+        Some(&walker_load::runtime_source()),
+    )
+    .expect("derived at run time");
+    let model = setup.model().expect("the model");
+    let sticks = walker_cli::animate::sticks::Sticks::of(&model).expect("a stick figure");
+    // Drawn points: 0 the stance foot, 1 hip, 2 swing_knee, 3 swing_foot.
+    assert_eq!(sticks.links, [(0, 1), (1, 2), (1, 3), (2, 3)]);
+    let out = tmp("my-walker.svg");
+    let report = animate(
+        &out,
+        &["--model", file.to_str().expect("UTF-8"), "--steps", "1"],
+    );
+    assert!(report["frames"].as_u64().expect("frames") > 1, "{report}");
+    let text = std::fs::read_to_string(&out).expect("written");
+    let doc = roxmltree::Document::parse(&text).expect("the SVG parses");
+    let group = doc
+        .descendants()
+        .find(|n| n.has_tag_name("g") && n.attribute("stroke") == Some("#333"))
+        .expect("the links' group");
+    assert_eq!(
+        group.children().filter(|n| n.has_tag_name("line")).count(),
+        4
+    );
+
+    // Without its hip (and the fall that names it) the one point left, the swing foot, lies
+    // on no link with the stance foot (their vector turns with both legs): nothing to draw,
+    // refused with exit 2 naming the model, and no file written.
+    let fall =
+        "[[fall]]\nname = \"hip-down\"\npoint = \"hip\"\ndoc = \"the hip touched the floor\"\n";
+    assert!(own.contains(fall), "the fall's text changed");
+    let bare = own.replacen(hip, "", 1).replacen(fall, "", 1);
+    let file = tmp("my-bare-walker.toml");
+    std::fs::write(&file, &bare).expect("written");
+    let out = tmp("my-bare-walker.svg");
+    let o = walker(&[
+        "animate",
+        "--model",
+        file.to_str().expect("UTF-8"),
+        "--steps",
+        "1",
+        "-o",
+        out.to_str().expect("UTF-8"),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("invalid model: model `my-walker` has no drawing"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}

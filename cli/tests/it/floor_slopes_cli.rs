@@ -1,7 +1,8 @@
 //! A slope per step through the built binary (`docs/floors.md`, "A slope per step"):
 //! `--phi-steps` and a floor file's `phi` walk the passive wheel on each step's slope and
-//! report it, `walker survive` counts a kink as a failure of its own, and a slope the walker
-//! cannot take exits 2 naming the flag, the field and the range.
+//! report it, `walker animate` draws each step on its slope's line, `walker survive` counts a
+//! kink as a failure of its own, and a slope the walker cannot take exits 2 naming the flag,
+//! the field and the range.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -159,5 +160,112 @@ fn a_slope_the_walker_cannot_take_exits_2_naming_flag_field_and_range() {
         let o = run(&base, &more);
         assert_eq!(o.status.code(), Some(2), "{more:?}: {}", stderr(&o));
         assert!(stderr(&o).contains(text), "{more:?}: {}", stderr(&o));
+    }
+}
+
+/// The points of the broken line that opens the drawn floor's path (`M x z L x z ...`, before
+/// the hatching's moves).
+fn floor_line(svg: &str) -> Vec<(f64, f64)> {
+    let doc = roxmltree::Document::parse(svg).expect("the SVG parses");
+    let d = doc
+        .descendants()
+        .find(|n| {
+            n.has_tag_name("path")
+                && n.attribute("stroke") == Some("black")
+                && n.attribute("fill") == Some("none")
+        })
+        .and_then(|n| n.attribute("d"))
+        .expect("the floor's path");
+    let line = d.split('M').nth(1).expect("a broken line");
+    line.split('L')
+        .map(|p| {
+            let v: Vec<f64> = p
+                .split_whitespace()
+                .map(|x| x.parse().expect("a number"))
+                .collect();
+            (v[0], v[1])
+        })
+        .collect()
+}
+
+#[test]
+fn a_walk_on_a_slope_per_step_is_drawn_on_the_line_of_each_steps_slope() {
+    // The wheel on slopes 0.2, 0.25, 0.15 (then 0.15): the drawn floor breaks at the stance
+    // foot of each step whose slope differs from the step before (where the simulator's floor
+    // breaks), each piece at its step's slope, through the feet the simulator reports.
+    let f = floor_file("drawn.toml", "kind = \"steps\"\nphi = [0.2, 0.25, 0.15]\n");
+    let sim = run(
+        &held("simulate"),
+        &["--floor", &f, "--max-steps", "4", "--json"],
+    );
+    assert!(sim.status.success(), "{}", stderr(&sim));
+    let v: serde_json::Value = serde_json::from_slice(&sim.stdout).expect("JSON");
+    let feet: Vec<(f64, f64)> = v["steps"]
+        .as_array()
+        .expect("steps")
+        .iter()
+        .map(|s| {
+            let q = &s["q_plus"];
+            (q[0].as_f64().expect("x"), q[1].as_f64().expect("z"))
+        })
+        .collect();
+    let out = std::env::temp_dir()
+        .join(format!("walker-slope-cli-{}", std::process::id()))
+        .join("drawn.svg");
+    let o = run(
+        &held("animate"),
+        &[
+            "--floor",
+            &f,
+            "--steps",
+            "4",
+            "-o",
+            out.to_str().expect("UTF-8"),
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&out).expect("written");
+    assert!(
+        svg.contains("slope phi by step from 0.15 to 0.25 rad"),
+        "the title"
+    );
+    // Step 0 is on the wheel's own slope (0.2, through the origin); corners at the stance
+    // foot of step 1 (0.25) and of step 2 (0.15). The SVG writes 4 decimals (5e-5 m).
+    let line = floor_line(&svg);
+    let corners = &line[1..line.len() - 1];
+    let expected = [feet[0], feet[1]];
+    assert_eq!(corners.len(), expected.len(), "{line:?}");
+    for (c, e) in corners.iter().zip(expected) {
+        assert!(
+            (c.0 - e.0).abs() <= 5e-5 && (c.1 - e.1).abs() <= 5e-5,
+            "{c:?} vs {e:?}"
+        );
+    }
+    // Each piece falls at its step's slope: up to step 1's foot 0.2, from it 0.25, from step
+    // 2's on (the feet of steps 3 and 4 on it) 0.15.
+    let slope = |a: (f64, f64), b: (f64, f64)| (-(b.1 - a.1) / (b.0 - a.0)).atan();
+    let pieces = [
+        (line[0], line[1], 0.2),
+        (line[1], line[2], 0.25),
+        (line[2], line[3], 0.15),
+    ];
+    for (a, b, phi) in pieces {
+        assert!((slope(a, b) - phi).abs() <= 1e-3, "{a:?} {b:?}: {phi}");
+    }
+    for foot in &feet[2..] {
+        let z = line[2].1 - (foot.0 - line[2].0) * 0.15_f64.tan();
+        assert!((foot.1 - z).abs() <= 1e-4, "{foot:?} off the last piece");
+    }
+    // The GIF and the stick diagram draw the same floor (they run).
+    for ext in ["gif", "png"] {
+        let out = out.with_extension(ext);
+        let mut more = vec!["--floor", &f, "--steps", "4", "-o"];
+        let p = out.to_str().expect("UTF-8").to_owned();
+        more.push(&p);
+        if ext == "png" {
+            more.push("--strobe");
+        }
+        let o = run(&held("animate"), &more);
+        assert!(o.status.success(), "{ext}: {}", stderr(&o));
     }
 }

@@ -33,13 +33,6 @@ pub enum FloorError {
         /// The expression that is not invariant.
         what: String,
     },
-    /// A walk on a floor that sets the slope was asked to be drawn: the drawing knows one
-    /// floor line.
-    #[error(
-        "drawing a walk on a slope per step is not implemented (the drawing has one floor \
-         line); simulate it instead"
-    )]
-    SlopeNotDrawn,
     /// The walk runs without friction (`--friction none`): a floor's `mu0` would be ignored.
     #[error(
         "the friction law is `none`: a floor sets `mu0`, which that law ignores; use tanh or coulomb"

@@ -199,6 +199,14 @@ impl<'s> FloorWalker<'s> {
         std::iter::from_fn(move || Some(floor.as_mut().and_then(Iterator::next).unwrap_or(own)))
     }
 
+    /// The slopes of walk `index`'s steps (rad), where the floor sets the slope (`None` where
+    /// it does not): step `k` on the line of slope `phi_k` through its stance foot where the
+    /// slope changed (module doc).
+    pub fn slopes(&self, index: u64) -> Option<impl Iterator<Item = f64> + '_> {
+        let mut floor = FloorSteps::new(self.floor.phi.as_ref()?, index);
+        Some(std::iter::from_fn(move || floor.next().or(Some(f64::NAN))))
+    }
+
     /// The walker's own value of the parameter of the floor's `quantity` (`mu0`, `phi`; 0 if
     /// the model has none).
     fn own(&self, quantity: &str) -> f64 {
@@ -244,7 +252,7 @@ impl<'s> FloorWalker<'s> {
     /// output for an animation ([`crate::sim::trajectory()`], at most `max_frames` frames).
     ///
     /// # Errors
-    /// As [`FloorWalker::walk`]; a floor that sets the slope ([`FloorError::SlopeNotDrawn`]).
+    /// As [`FloorWalker::walk`].
     pub fn trajectory(
         &self,
         index: u64,
@@ -254,9 +262,6 @@ impl<'s> FloorWalker<'s> {
         dt: f64,
         max_frames: usize,
     ) -> Result<Trajectory, FloorError> {
-        if self.phi.is_some() {
-            return Err(FloorError::SlopeNotDrawn);
-        }
         let limits = WalkLimits {
             periodic: None,
             ..*limits
