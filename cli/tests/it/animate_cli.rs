@@ -89,6 +89,24 @@ fn spokes_path<'a>(doc: &'a roxmltree::Document<'a>) -> &'a str {
         .expect("the spokes' path")
 }
 
+/// The lines of a stick figure's links (the dark grey group).
+fn link_lines<'a, 'i>(doc: &'a roxmltree::Document<'i>) -> Vec<roxmltree::Node<'a, 'i>> {
+    doc.descendants()
+        .find(|n| n.has_tag_name("g") && n.attribute("stroke") == Some("#333"))
+        .expect("the links' group")
+        .children()
+        .filter(|n| n.has_tag_name("line"))
+        .collect()
+}
+
+/// `walker ARGS`, which must be refused with exit code 2: its standard error.
+fn refused(args: &[&str]) -> String {
+    let o = walker(args);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    err
+}
+
 /// Two numbers of an `x z` value.
 fn pair(v: &str) -> (f64, f64) {
     let mut it = v.split(' ').map(|s| s.parse::<f64>().expect("a number"));
@@ -267,17 +285,14 @@ fn bad_arguments_exit_2_naming_the_flag() {
     for (extra, flag) in cases {
         let mut args = vec!["animate", "--scene", "active-level", "-o", svg];
         args.extend_from_slice(extra);
-        let o = walker(&args);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{extra:?}: {err}");
+        let err = refused(&args);
         assert!(err.contains(flag), "{extra:?}: {err}");
     }
     // The output's kind, and a walk too long for the frames a GIF may have.
-    let o = walker(&["animate", "--scene", "active-level", "-o", "walk.txt"]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("output"));
+    let err = refused(&["animate", "--scene", "active-level", "-o", "walk.txt"]);
+    assert!(err.contains("output"), "{err}");
     let gif = tmp("long.gif");
-    let o = walker(&[
+    let err = refused(&[
         "animate",
         "--scene",
         "active-level",
@@ -288,8 +303,6 @@ fn bad_arguments_exit_2_naming_the_flag() {
         "-o",
         gif.to_str().expect("a UTF-8 path"),
     ]);
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("steps") && err.contains("600 frames"), "{err}");
     assert!(!gif.exists());
 }
@@ -427,14 +440,7 @@ fn a_biped_is_drawn_as_the_links_of_its_points_at_the_simulated_positions() {
     let doc = roxmltree::Document::parse(&text).expect("the SVG parses");
     // Three lines (the group of the links) whose four ends each have one keyframe per frame
     // and the held last one.
-    let group = doc
-        .descendants()
-        .find(|n| n.has_tag_name("g") && n.attribute("stroke") == Some("#333"))
-        .expect("the links' group");
-    let lines: Vec<_> = group
-        .children()
-        .filter(|n| n.has_tag_name("line"))
-        .collect();
+    let lines = link_lines(&doc);
     assert_eq!(lines.len(), 3);
     let keyed = |line: &roxmltree::Node<'_, '_>, attr: &str| -> Vec<f64> {
         line.children()
@@ -506,14 +512,7 @@ fn a_users_own_model_file_is_drawn_from_its_points_or_refused_naming_the_model()
     assert!(report["frames"].as_u64().expect("frames") > 1, "{report}");
     let text = std::fs::read_to_string(&out).expect("written");
     let doc = roxmltree::Document::parse(&text).expect("the SVG parses");
-    let group = doc
-        .descendants()
-        .find(|n| n.has_tag_name("g") && n.attribute("stroke") == Some("#333"))
-        .expect("the links' group");
-    assert_eq!(
-        group.children().filter(|n| n.has_tag_name("line")).count(),
-        4
-    );
+    assert_eq!(link_lines(&doc).len(), 4);
 
     // Without its hip (and the fall that names it) the one point left, the swing foot, lies
     // on no link with the stance foot (their vector turns with both legs): nothing to draw,
@@ -525,7 +524,7 @@ fn a_users_own_model_file_is_drawn_from_its_points_or_refused_naming_the_model()
     let file = tmp("my-bare-walker.toml");
     std::fs::write(&file, &bare).expect("written");
     let out = tmp("my-bare-walker.svg");
-    let o = walker(&[
+    let err = refused(&[
         "animate",
         "--model",
         file.to_str().expect("UTF-8"),
@@ -534,8 +533,6 @@ fn a_users_own_model_file_is_drawn_from_its_points_or_refused_naming_the_model()
         "-o",
         out.to_str().expect("UTF-8"),
     ]);
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
         err.contains("invalid model: model `my-walker` has no drawing"),
         "{err}"

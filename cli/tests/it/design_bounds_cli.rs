@@ -9,7 +9,10 @@ use std::path::Path;
 
 use serde_json::Value;
 
-use crate::common::{PAPER_ACTIVE, THREE_LINK, json, num, row, simulate_design, walker};
+use crate::common::{
+    PAPER_ACTIVE, THREE_LINK, json, num, row, simulate_design, stuck_all_step, three_link_friction,
+    walker,
+};
 
 /// `models/NAME.toml`.
 fn model(name: &str) -> String {
@@ -47,10 +50,7 @@ fn walk_paper_design(d: &Value) -> Vec<Value> {
     let steps = simulate_design(&["--scene", "active-level"], 1.0, d, &PAPER_ACTIVE, 100);
     for s in &steps {
         assert_eq!(s["impact"]["regime"], "stick", "{s}");
-        assert!(
-            (num(&s["stuck_time"]) - num(&s["T"])).abs() <= 1e-12 * num(&s["T"]),
-            "{s}"
-        );
+        assert!(stuck_all_step(s), "{s}");
     }
     steps
 }
@@ -157,6 +157,23 @@ fn without_the_new_bounds_a_design_has_the_rows_and_keys_it_had() {
     assert!(d["gait"].get("clearance").is_none(), "{d}");
 }
 
+/// The constraint row `name` of a design `d`, checked to be active: its `sense` and `limit`,
+/// met to the solver's feasibility tolerance (slack within 1e-8) with a positive Lagrange
+/// multiplier.
+fn active<'a>(d: &'a Value, name: &str, sense: &str, limit: f64) -> &'a Value {
+    let c = row(d, name);
+    assert_eq!(
+        (c["sense"].as_str(), num(&c["limit"])),
+        (Some(sense), limit)
+    );
+    assert_eq!(c["holds"], true, "{c}");
+    assert!(
+        num(&c["slack"]).abs() <= 1e-8 && num(&c["lagrange"]) > 0.0,
+        "{c}"
+    );
+    c
+}
+
 #[test]
 fn a_least_speed_the_cheapest_gait_misses_is_met_and_simulate_alone_walks_it() {
     // Without a speed bound the cheapest gait has the longest ramp, 0.4 s, and walks at
@@ -167,15 +184,7 @@ fn a_least_speed_the_cheapest_gait_misses_is_met_and_simulate_alone_walks_it() {
     assert!(v_free < 0.85, "{free}");
     let d = paper_design(&["--min-speed", "0.85"]);
     assert_eq!(d["status"], "optimal", "{d}");
-    let c = row(&d, "min-speed");
-    assert_eq!((c["sense"].as_str(), num(&c["limit"])), (Some(">="), 0.85));
-    // Active: met to the solver's feasibility tolerance (1e-8 m/s) and with a positive
-    // Lagrange multiplier.
-    assert_eq!(c["holds"], true, "{c}");
-    assert!(
-        num(&c["slack"]).abs() <= 1e-8 && num(&c["lagrange"]) > 0.0,
-        "{c}"
-    );
+    let c = active(&d, "min-speed", ">=", 0.85);
     let v = num(&d["gait"]["fixed_point"]["V"]);
     assert_eq!(num(&c["value"]), v);
     assert!(num(&d["value"]) > num(&free["value"]), "{d}");
@@ -189,37 +198,14 @@ fn a_most_speed_the_least_friction_gait_exceeds_is_met_and_simulate_alone_walks_
     // The three-link biped's least-friction gait walks at 0.72 m/s (every parameter at its
     // lower bound); held to 0.65 m/s it lengthens its ramp and needs a little more friction.
     let three = model("three-link");
-    let design = |extra: &[&str]| {
-        let mut args = vec![
-            "design",
-            "--model",
-            &three,
-            "--friction",
-            "coulomb",
-            "--impact",
-            "coulomb",
-            "--objective",
-            "friction",
-            "--vary",
-            "T_set=0.2:1.0,th_T=0.1:0.8,beta=0.2:0.5",
-            "--max-evaluations",
-            "40",
-        ];
-        args.extend(extra);
-        json(&args)
+    let design = |extra: &[&str]| -> Value {
+        serde_json::from_str(&three_link_friction("40", extra)).unwrap()
     };
     let free = design(&[]);
     assert!(num(&free["gait"]["fixed_point"]["V"]) > 0.7, "{free}");
     let d = design(&["--max-speed", "0.65"]);
     assert_eq!(d["status"], "optimal", "{d}");
-    let c = row(&d, "max-speed");
-    assert_eq!((c["sense"].as_str(), num(&c["limit"])), (Some("<="), 0.65));
-    // Active: met to the solver's feasibility tolerance and with a positive multiplier.
-    assert_eq!(c["holds"], true, "{c}");
-    assert!(
-        num(&c["slack"]).abs() <= 1e-8 && num(&c["lagrange"]) > 0.0,
-        "{c}"
-    );
+    active(&d, "max-speed", "<=", 0.65);
     let v = num(&d["gait"]["fixed_point"]["V"]);
     assert!((v - 0.65).abs() <= 1e-8, "{v}");
     let need = num(&d["value"]);
@@ -229,10 +215,7 @@ fn a_most_speed_the_least_friction_gait_exceeds_is_met_and_simulate_alone_walks_
     let steps = simulate_design(&["--model", &three], need + 0.01, &d, &THREE_LINK, 100);
     for s in &steps {
         assert_eq!(s["impact"]["regime"], "stick", "{s}");
-        assert!(
-            (num(&s["stuck_time"]) - num(&s["T"])).abs() <= 1e-12 * num(&s["T"]),
-            "{s}"
-        );
+        assert!(stuck_all_step(s), "{s}");
     }
     every_step_has(&steps, "V", v);
 }
@@ -264,12 +247,7 @@ fn the_fastest_gait_at_a_fixed_effort_spends_the_effort_and_simulate_alone_walks
     let v = num(&d["gait"]["fixed_point"]["V"]);
     assert_eq!(num(&d["value"]), v);
     assert!(v > num(&d["start_value"]), "{d}");
-    let c = row(&d, "max-power");
-    assert_eq!((c["sense"].as_str(), num(&c["limit"])), (Some("<="), 12.0));
-    assert!(
-        num(&c["slack"]).abs() <= 1e-8 && num(&c["lagrange"]) > 0.0,
-        "{c}"
-    );
+    active(&d, "max-power", "<=", 12.0);
     // A shorter ramp is faster and costs more: d V / d T_set < 0 at the design.
     assert!(num(&d["parameters"][0]["gradient"]) < 0.0, "{d}");
     let steps = walk_paper_design(&d);

@@ -8,7 +8,10 @@ use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
-use crate::common::{PAPER_ACTIVE, THREE_LINK, designed_setup, json, num, simulate_design, walker};
+use crate::common::{
+    PAPER_ACTIVE, THREE_LINK, designed_setup, json, num, simulate_design, stuck_all_step,
+    three_link_friction, walker,
+};
 
 /// The repository's `models/paper-active.toml`.
 fn paper_active() -> PathBuf {
@@ -297,29 +300,11 @@ fn bad_design_requests_exit_2_naming_the_field_and_the_range() {
     }
 }
 
-/// Whether a step of `walker simulate`'s JSON kept its foot stuck for the whole step: the
-/// stuck time is a sum of the stance's intervals, equal to `T` up to the rounding of that sum
-/// (1 ulp measured; 1e-12 relative allows a few hundred intervals' rounding).
-fn stuck_all_step(s: &Value) -> bool {
-    (num(&s["stuck_time"]) - num(&s["T"])).abs() <= 1e-12 * num(&s["T"])
-}
-
 #[test]
 fn the_three_link_biped_walks_below_its_hand_made_friction() {
     let model = Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/three-link.toml");
     let m = model.to_str().unwrap();
-    let coulomb = ["--friction", "coulomb", "--impact", "coulomb"];
-    let mut args = vec!["design", "--model", m];
-    args.extend(coulomb);
-    args.extend([
-        "--objective",
-        "friction",
-        "--vary",
-        "T_set=0.2:1.0,th_T=0.1:0.8,beta=0.2:0.5",
-        "--max-evaluations",
-        "40",
-    ]);
-    let d = json(&args);
+    let d: Value = serde_json::from_str(&three_link_friction("40", &[])).unwrap();
     // With the strike after the ramp's end as a constraint (`T - T_set >= 0.01`) the solver
     // no longer stalls against the edge of the gaits (where, without it, it ended at 0.4725,
     // KKT residual 0.49, `feasible`): it converges to a KKT point.
@@ -343,31 +328,6 @@ fn the_three_link_biped_walks_below_its_hand_made_friction() {
         assert!(stuck_all_step(s), "{s}");
         assert_eq!(s["impact"]["regime"], "stick");
     }
-}
-
-/// The three-link biped's friction design with at most `evals` evaluations, and `extra` flags.
-fn three_link_friction(evals: &str, extra: &[&str]) -> String {
-    let model = Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/three-link.toml");
-    let mut args = vec![
-        "design",
-        "--model",
-        model.to_str().unwrap(),
-        "--friction",
-        "coulomb",
-        "--impact",
-        "coulomb",
-        "--objective",
-        "friction",
-        "--vary",
-        "T_set=0.2:1.0,th_T=0.1:0.8,beta=0.2:0.5",
-        "--max-evaluations",
-        evals,
-        "--json",
-    ];
-    args.extend(extra);
-    let (code, out, err) = walker(&args);
-    assert_eq!(code, 0, "{err}");
-    out
 }
 
 #[test]

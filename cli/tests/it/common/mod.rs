@@ -124,3 +124,37 @@ pub fn simulate_design(
     assert_eq!(out.len(), steps);
     out
 }
+
+/// Whether a step of `walker simulate`'s JSON kept its foot stuck for the whole step: the
+/// stuck time is a sum of the stance's intervals, equal to `T` up to the rounding of that sum
+/// (1 ulp measured; 1e-12 relative allows a few hundred intervals' rounding).
+pub fn stuck_all_step(s: &serde_json::Value) -> bool {
+    (num(&s["stuck_time"]) - num(&s["T"])).abs() <= 1e-12 * num(&s["T"])
+}
+
+/// `walker design --json` of the three-link biped's least-friction gait (Coulomb friction in
+/// stance and at the impact; `T_set`, `th_T` and `beta` varied) with at most `evals`
+/// evaluations and `extra` flags: its text.
+pub fn three_link_friction(evals: &str, extra: &[&str]) -> String {
+    let model = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/three-link.toml");
+    let mut args = vec![
+        "design",
+        "--model",
+        model.to_str().unwrap(),
+        "--friction",
+        "coulomb",
+        "--impact",
+        "coulomb",
+        "--objective",
+        "friction",
+        "--vary",
+        "T_set=0.2:1.0,th_T=0.1:0.8,beta=0.2:0.5",
+        "--max-evaluations",
+        evals,
+        "--json",
+    ];
+    args.extend(extra);
+    let (code, out, err) = walker(&args);
+    assert_eq!(code, 0, "{err}");
+    out
+}
