@@ -320,6 +320,7 @@ pub fn fixed_point_search(
     let opts = FixedPointOptions {
         start: *start,
         refine: true,
+        full_multipliers: true,
         ..FixedPointOptions::for_model(model)
     };
     fixed_point(model, cfg, &opts)

@@ -46,6 +46,7 @@ pub fn fixed_point(
     let opts = FixedPointOptions {
         start: walker_args::start(&model, &init)?,
         refine: true,
+        full_multipliers: true,
         ..FixedPointOptions::for_model(&model)
     };
     let wanted: Vec<&str> = sensitivities.iter().map(String::as_str).collect();

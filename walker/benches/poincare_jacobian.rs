@@ -11,7 +11,9 @@ use std::path::Path;
 use std::time::Instant;
 
 use walker::model::Model;
-use walker::poincare::{FixedPointOptions, JacobianMethod, fixed_point, poincare_map_with};
+use walker::poincare::{
+    FixedPointOptions, JacobianMethod, Section, fixed_point, poincare_map_with,
+};
 use walker::setup::{Overrides, Setup};
 use walker::sim::{SimConfig, WalkLimits, walk};
 
@@ -50,6 +52,11 @@ fn bench(name: &str, model: &Model, cfg: &SimConfig) {
     let step = time(|| {
         let _ = walk(model, &step_cfg, &s, &limits);
     });
+    let section = Section::of(model);
+    let r = section.reduce(&s);
+    let along = time(|| {
+        let _ = section.map(cfg, &r);
+    });
     let var = time(|| {
         let _ = poincare_map_with(model, cfg, &s, JacobianMethod::Variational);
     });
@@ -57,14 +64,29 @@ fn bench(name: &str, model: &Model, cfg: &SimConfig) {
         let _ = poincare_map_with(model, cfg, &s, JacobianMethod::FiniteDifferences);
     });
     println!(
-        "{name:<44} step {:>9.1} us  exact {:>9.1} us ({:?})  fd {:>9.1} us  exact/step {:>5.2}  fd/exact {:>5.2}",
+        "{name:<58} step {:>8.1} us  section ({} columns) {:>8.1} us  full {:>8.1} us ({:?})  fd {:>8.1} us  section/step {:>5.2}  full/step {:>5.2}  fd/section {:>5.2}",
         step * 1e6,
+        section.dim(),
+        along * 1e6,
         var * 1e6,
         exact.method,
         fd * 1e6,
+        along / step,
         var / step,
-        fd / var
+        fd / along
     );
+}
+
+/// A shipped model file derived at run time, with exact Coulomb friction in stance and at the
+/// impact and `mu0` set.
+fn coulomb_model(path: &Path, mu0: f64) -> Model {
+    let source = walker_load::runtime_source();
+    let mut setup = Setup::from_model_file(path, &Overrides::default(), Some(&source as &_))
+        .expect("the model");
+    setup.friction = walker::model::Friction::Coulomb;
+    setup.impact = walker::model::ImpactLaw::Coulomb;
+    setup.set("mu0", mu0).expect("mu0");
+    setup.model().expect("kernels")
 }
 
 fn main() {
@@ -109,4 +131,8 @@ fn main() {
         &simplest,
         &cfg,
     );
+    let compass = coulomb_model(&models.join("compass-gait.toml"), 5.0);
+    bench("compass-gait (run time, Coulomb, mu0 = 5)", &compass, &cfg);
+    let wheel = coulomb_model(&models.join("rimless-wheel.toml"), 3.0);
+    bench("rimless-wheel (run time, Coulomb, mu0 = 3)", &wheel, &cfg);
 }

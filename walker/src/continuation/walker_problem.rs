@@ -19,7 +19,7 @@ use walker_scene::Friction;
 
 use crate::jacobian::StanceJacobian;
 use crate::model::{FrictionLaw, ImpactLaw, Model};
-use crate::poincare::{Section, poincare_map};
+use crate::poincare::Section;
 use crate::setup::Setup;
 use crate::sim::{SimConfig, WalkLimits, walk};
 
@@ -263,8 +263,7 @@ impl GaitProblem for WalkerProblem {
             self.cfg
         };
         let section = Section::of(&model);
-        let m = poincare_map(&model, &cfg, &section.embed(r))?;
-        let j = section.reduced_jacobian(&m.jacobian, r);
+        let j = section.reduced(&section.map(&cfg, r)?.jacobian);
         let k = self.dim;
         Ok(DMatrix::from_fn(k, k, |i, c| j[i][c]))
     }

@@ -50,9 +50,8 @@ use crate::sim::SimConfig;
 use super::error::MapError;
 use super::finite_difference::{DEFAULT_STEP, finite_difference_map_with_step};
 use super::fixed_point::{FixedPoint, extrapolate};
-use super::map::poincare_map_with;
 use super::multipliers::{Multiplier, eigenvalues, eigenvectors};
-use super::result::{JacobianMethod, MapResult};
+use super::result::JacobianMethod;
 use super::section::Section;
 
 /// The reduced Jacobian `D P_r` at a section point with the estimate of its error.
@@ -88,38 +87,34 @@ pub fn jacobian_error(
 ) -> Result<EstimatedJacobian, MapError> {
     let section = Section::of(model);
     let s = section.embed(r);
-    let (coarse, fine) = match method {
+    // Differences give the full Jacobian.
+    let reduce = |full: &[Vec<f64>]| section.reduced_jacobian(full, r);
+    let (j, j_fine) = match method {
         JacobianMethod::Variational => {
             let finer = SimConfig {
                 rtol: cfg.rtol.min(1e-12) / 10.0,
                 atol: cfg.atol.min(1e-14) / 10.0,
                 ..*cfg
             };
+            // Along the section: `DP E`, whose free rows are the reduced Jacobian.
             (
-                poincare_map_with(model, cfg, &s, method)?,
-                poincare_map_with(model, &finer, &s, method)?,
+                section.reduced(&section.map_with(cfg, r, method)?.jacobian),
+                section.reduced(&section.map_with(&finer, r, method)?.jacobian),
             )
         }
-        JacobianMethod::FiniteDifferences => (
-            finite_difference_map_with_step(model, cfg, &s, DEFAULT_STEP)?,
-            finite_difference_map_with_step(model, cfg, &s, DEFAULT_STEP / 2.0)?,
-        ),
+        JacobianMethod::FiniteDifferences => {
+            let at = |k: f64| finite_difference_map_with_step(model, cfg, &s, DEFAULT_STEP / k);
+            (reduce(&at(1.0)?.jacobian), reduce(&at(2.0)?.jacobian))
+        }
         JacobianMethod::ExtrapolatedDifferences => {
             let at = |k: f64| finite_difference_map_with_step(model, cfg, &s, DEFAULT_STEP / k);
             let (h, half, quarter) = (at(1.0)?, at(2.0)?, at(4.0)?);
-            let coarse = MapResult {
-                jacobian: extrapolate(&h.jacobian, &half.jacobian),
-                ..h
-            };
-            let fine = MapResult {
-                jacobian: extrapolate(&half.jacobian, &quarter.jacobian),
-                ..half
-            };
-            (coarse, fine)
+            (
+                reduce(&extrapolate(&h.jacobian, &half.jacobian)),
+                reduce(&extrapolate(&half.jacobian, &quarter.jacobian)),
+            )
         }
     };
-    let j = section.reduced_jacobian(&coarse.jacobian, r);
-    let j_fine = section.reduced_jacobian(&fine.jacobian, r);
     let e = j
         .iter()
         .zip(&j_fine)

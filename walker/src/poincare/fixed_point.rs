@@ -10,7 +10,7 @@ use crate::vector::Vector;
 
 use super::error::FixedPointError;
 use super::finite_difference::{DEFAULT_STEP, finite_difference_map_with_step};
-use super::map::poincare_map;
+use super::map::poincare_map_with;
 use super::multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
 use super::result::{JacobianMethod, MapResult};
 use super::section::Section;
@@ -49,8 +49,10 @@ pub struct FixedPoint {
     /// independent coordinates (the paper's `(xd, th1d)`), by decreasing modulus.
     pub multipliers: Vec<Multiplier>,
     /// All `2n` eigenvalues of the full foot-relative map (the trivial ones explained in the
-    /// module documentation).
-    pub full_multipliers: Vec<Multiplier>,
+    /// module documentation), where [`FixedPointOptions::full_multipliers`] asked for them
+    /// (left out of the JSON otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub full_multipliers: Option<Vec<Multiplier>>,
     /// The section's independent coordinates, by name.
     pub section: Vec<String>,
     /// The reduced Jacobian `D P_r` at the fixed point.
@@ -102,6 +104,11 @@ pub struct FixedPointOptions {
     /// `1e-4`, for one more differenced map. Off by default (continuation and design call Newton
     /// many times and need no more than its convergence); `walker fixed-point` turns it on.
     pub refine: bool,
+    /// Evaluate the map once more at the result with its full `2n x 2n` Jacobian, for
+    /// [`FixedPoint::full_multipliers`]. Newton's method needs only the Jacobian along the
+    /// section (`DP E`, [`Section::map`]: `d` sensitivity columns instead of `2n`). Off by
+    /// default; `walker fixed-point` turns it on.
+    pub full_multipliers: bool,
 }
 
 impl FixedPointOptions {
@@ -113,6 +120,7 @@ impl FixedPointOptions {
             max_iter: 30,
             tol: 1e-11,
             refine: false,
+            full_multipliers: false,
         }
     }
 }
@@ -183,7 +191,7 @@ pub fn newton(
     // The foot's velocity along the floor among the section's coordinates, if it is one.
     let xd = section.free().iter().position(|&i| i == n);
     let mut r = r0.to_vec();
-    let mut m = poincare_map(model, cfg, &section.embed(&r))?;
+    let mut m = section.map(cfg, &r)?;
     let mut iterations = 0;
     let mut singular = false;
     let (mut res, mut jr) = residual(&section, &m, &r);
@@ -212,7 +220,7 @@ pub fn newton(
         let mut next = None;
         for _ in 0..8 {
             let rn: Vec<f64> = r.iter().zip(&d).map(|(x, dx)| x + step * dx).collect();
-            if let Ok(mn) = poincare_map(model, cfg, &section.embed(&rn)) {
+            if let Ok(mn) = section.map(cfg, &rn) {
                 let (rs, jn) = residual(&section, &mn, &rn);
                 if rs < res || step < 0.01 {
                     next = Some((rn, mn, rs, jn));
@@ -229,17 +237,34 @@ pub fn newton(
         res = rs;
         jr = jn;
     }
-    if opts.refine && m.method == JacobianMethod::FiniteDifferences {
+    // The full Jacobian at the result, where asked for or needed for the extrapolation (one
+    // more map: Newton's were along the section).
+    let differenced = m.method == JacobianMethod::FiniteDifferences;
+    let mut full = None;
+    if opts.full_multipliers || (opts.refine && differenced) {
+        // (It just succeeded along the section; were it to fail now, the full multipliers and
+        // the extrapolation are left out, not the fixed point.)
+        full = poincare_map_with(model, cfg, &section.embed(&r), m.method)
+            .ok()
+            .map(|f| f.jacobian);
+    }
+    if let Some(coarse) = full.as_mut()
+        && opts.refine
+        && differenced
+    {
         // At half the step, extrapolated (a failure there leaves the plain differences).
         let s = section.embed(&r);
         if let Ok(fine) = finite_difference_map_with_step(model, cfg, &s, DEFAULT_STEP / 2.0) {
-            m.jacobian = extrapolate(&m.jacobian, &fine.jacobian);
+            *coarse = extrapolate(coarse, &fine.jacobian);
             m.method = JacobianMethod::ExtrapolatedDifferences;
-            jr = section.reduced_jacobian(&m.jacobian, &r);
+            jr = section.reduced_jacobian(coarse, &r);
         }
     }
     let multipliers = eigenvalues(&jr);
-    let full_multipliers = eigenvalues(&m.jacobian);
+    let full_multipliers = opts
+        .full_multipliers
+        .then(|| full.as_deref().map(eigenvalues))
+        .flatten();
     let structural = singular
         || multipliers
             .iter()
@@ -298,7 +323,7 @@ fn residual(section: &Section<'_>, m: &MapResult, r: &[f64]) -> (f64, Vec<Vec<f6
     let p = section.reduce(&m.state_plus);
     (
         p.iter().zip(r).fold(0.0, |acc, (a, b)| acc.hypot(a - b)),
-        section.reduced_jacobian(&m.jacobian, r),
+        section.reduced(&m.jacobian),
     )
 }
 

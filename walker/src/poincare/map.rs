@@ -16,50 +16,75 @@ use super::parameter::ParameterRates;
 use super::result::{JacobianMethod, MapResult};
 use super::variational::{PhaseError, StanceEnd, field, stance};
 
-/// Evaluates `$body` with `$na` set to the size `2n + (2n)^2` of the state with the
-/// variational equations, for the sizes of the models with Jacobian kernels (`n` from 3 to 5);
-/// `$other` for any other `n`.
-macro_rules! with_variational_size {
-    ($n:expr, $na:ident => $body:expr, _ => $other:expr) => {
-        match $n {
-            3 => {
-                const $na: usize = 6 + 36;
+/// Evaluates `$body` with `$na` set to the size of the state with `$cols` variational columns
+/// appended (`2n` numbers each: the seeds' and the parameter's, `variational.rs`), for the
+/// sizes of the models with Jacobian kernels (`n` from 3 to 5); `$other` for any other `n`.
+/// The columns are rounded up to 2, 4, `2n` or `2n + 1`: four array sizes per `n` (each a copy
+/// of the integrator) serve the reduced Jacobian of every section (`2n x d` for `d` up to 4;
+/// `2n x 2` for the paper's walkers), the parameter's column alone, and the full Jacobian with
+/// or without it. The unused columns stay zero and out of the error test.
+macro_rules! with_columns {
+    ($n:expr, $cols:expr, $na:ident => $body:expr, _ => $other:expr) => {{
+        let (n, cols): (usize, usize) = ($n, $cols);
+        let padded = match cols {
+            0..=2 => 2,
+            3..=4 => 4,
+            c if c <= 2 * n => 2 * n,
+            c if c == 2 * n + 1 => c,
+            _ => 0,
+        };
+        match (n, padded) {
+            (3, 2) => {
+                const $na: usize = 6 * 3;
                 $body
             }
-            4 => {
-                const $na: usize = 8 + 64;
+            (3, 4) => {
+                const $na: usize = 6 * 5;
                 $body
             }
-            5 => {
-                const $na: usize = 10 + 100;
+            (3, 6) => {
+                const $na: usize = 6 * 7;
+                $body
+            }
+            (3, 7) => {
+                const $na: usize = 6 * 8;
+                $body
+            }
+            (4, 2) => {
+                const $na: usize = 8 * 3;
+                $body
+            }
+            (4, 4) => {
+                const $na: usize = 8 * 5;
+                $body
+            }
+            (4, 8) => {
+                const $na: usize = 8 * 9;
+                $body
+            }
+            (4, 9) => {
+                const $na: usize = 8 * 10;
+                $body
+            }
+            (5, 2) => {
+                const $na: usize = 10 * 3;
+                $body
+            }
+            (5, 4) => {
+                const $na: usize = 10 * 5;
+                $body
+            }
+            (5, 10) => {
+                const $na: usize = 10 * 11;
+                $body
+            }
+            (5, 11) => {
+                const $na: usize = 10 * 12;
                 $body
             }
             _ => $other,
         }
-    };
-}
-
-/// Evaluates `$body` with `$na` set to the size `2n + (2n)^2 + 2n` of the state with the
-/// variational equations and one parameter's column, for `n` from 3 to 5; `$other` for any
-/// other `n`.
-macro_rules! with_parameter_size {
-    ($n:expr, $na:ident => $body:expr, _ => $other:expr) => {
-        match $n {
-            3 => {
-                const $na: usize = 6 + 36 + 6;
-                $body
-            }
-            4 => {
-                const $na: usize = 8 + 64 + 8;
-                $body
-            }
-            5 => {
-                const $na: usize = 10 + 100 + 10;
-                $body
-            }
-            _ => $other,
-        }
-    };
+    }};
 }
 
 /// The strike guard's gradient `d g / d [q, qd]` at the coordinates `q` (the model file's
@@ -127,23 +152,75 @@ pub fn poincare_map_with(
     s: &[f64],
     method: JacobianMethod,
 ) -> Result<MapResult, MapError> {
-    if s.len() != 2 * model.n() || !s.iter().all(|v| v.is_finite()) {
+    let m = 2 * model.n();
+    let identity: Vec<Vec<f64>> = (0..m)
+        .map(|i| (0..m).map(|j| f64::from(u8::from(i == j))).collect())
+        .collect();
+    poincare_map_along(model, cfg, s, &identity, method)
+}
+
+/// [`poincare_map_with`] with the Jacobian along the columns of `seeds` (`2n` rows of `c`
+/// numbers): [`MapResult::jacobian`] is `DP S` (`2n x c`), which the variational equations
+/// carry as `c` columns instead of `Phi`'s `2n`. With the section's tangent `E`
+/// ([`super::Section::map`]) that is all the reduced Jacobian `Pi DP E` needs, at a fraction
+/// of the full Jacobian's cost (the paper's walkers: 2 columns instead of 8). Central
+/// differences compute the full Jacobian and multiply (`DP S` summed over `k` in ascending
+/// order, as [`super::Section::reduced_jacobian`] does).
+///
+/// # Errors
+/// [`MapError`]: the step could not be taken.
+pub fn poincare_map_along(
+    model: &Model,
+    cfg: &SimConfig,
+    s: &[f64],
+    seeds: &[Vec<f64>],
+    method: JacobianMethod,
+) -> Result<MapResult, MapError> {
+    let m = 2 * model.n();
+    if s.len() != m || !s.iter().all(|v| v.is_finite()) {
         return Err(MapError::NonFiniteStart);
     }
+    let cols = seeds.first().map_or(0, Vec::len);
+    if seeds.len() != m || seeds.iter().any(|row| row.len() != cols) {
+        return Err(MapError::NonFiniteStart);
+    }
+    let differences = |cfg: &SimConfig| {
+        finite_difference_map(model, cfg, s).map(|mut r| {
+            if !is_identity(seeds) {
+                r.jacobian = matmul(&r.jacobian, seeds);
+            }
+            r
+        })
+    };
     if method == JacobianMethod::FiniteDifferences {
-        return finite_difference_map(model, cfg, s);
+        return differences(cfg);
     }
     let (jac, cfg) = match StanceJacobian::new(model) {
         Ok(jac) => (jac, *cfg),
         Err(_) => (StanceJacobian::any_law(model), tight(cfg)),
     };
-    let out = with_variational_size!(model.n(), NA => variational_map::<NA>(model, &cfg, s, jac, None),
+    // The seeds' columns one after the other.
+    let flat: Vec<f64> = (0..cols)
+        .flat_map(|j| seeds.iter().map(move |row| row[j]))
+        .collect();
+    let out = with_columns!(model.n(), cols, NA => variational_map::<NA>(model, &cfg, s, &flat, jac, None),
         _ => Err(PhaseError::NoKernel));
     match out {
         Ok((r, _)) => Ok(r),
         Err(PhaseError::Map(e)) => Err(e),
-        Err(PhaseError::NoKernel) => finite_difference_map(model, &cfg, s),
+        Err(PhaseError::NoKernel) => differences(&cfg),
     }
+}
+
+/// Whether `a` is the identity matrix.
+fn is_identity(a: &[Vec<f64>]) -> bool {
+    a.iter().enumerate().all(|(i, row)| {
+        row.len() == a.len()
+            && row
+                .iter()
+                .enumerate()
+                .all(|(j, &v)| v == f64::from(u8::from(i == j)))
+    })
 }
 
 /// The Poincare map's exact derivative in one run-time parameter `p` (`parameter.rs`), for a
@@ -192,7 +269,7 @@ pub fn parameter_column(
         Err(_) => (StanceJacobian::any_law(model), tight(cfg)),
     };
     let param = Some((&rates, start_rate));
-    let out = with_parameter_size!(model.n(), NA => variational_map::<NA>(model, &cfg, s, jac, param),
+    let out = with_columns!(model.n(), 1, NA => variational_map::<NA>(model, &cfg, s, &[], jac, param),
         _ => Err(PhaseError::NoKernel));
     match out {
         Ok((r, Some(c))) => Ok(Some((r, c))),
@@ -211,24 +288,28 @@ pub(super) fn tight(cfg: &SimConfig) -> SimConfig {
     }
 }
 
-/// [`poincare_map`] by the variational equations.
+/// [`poincare_map_along`] by the variational equations, along the seeds' columns `seeds` (one
+/// after the other, `2n` numbers each), with the parameter's column if `param`.
 fn variational_map<const NA: usize>(
     model: &Model,
     cfg: &SimConfig,
     s: &[f64],
+    seeds: &[f64],
     jac: StanceJacobian<'_>,
     param: Option<(&ParameterRates, &[f64])>,
 ) -> Result<(MapResult, Option<ParameterColumn>), PhaseError> {
     let n = model.n();
     let m = 2 * n;
+    let cols = seeds.len() / m;
     let StanceEnd {
         t: te,
         y: ye,
         contact,
-    } = stance::<NA>(model, cfg, s, jac, param)?;
+    } = stance::<NA>(model, cfg, s, seeds, jac, param)?;
     let pre = Vector::from_slice(&ye[..m]);
+    // `Phi S` by rows (`m x cols`) from its columns.
     let mut phi: Vec<Vec<f64>> = (0..m)
-        .map(|i| ye[m + m * i..m + m * (i + 1)].to_vec())
+        .map(|i| (0..cols).map(|j| ye[m + m * j + i]).collect())
         .collect();
     // Saltation: Phi+ = (I - f g_y^T / (g_y . f)) Phi for the guard g.
     let mut f = [0.0; MAX_LEN];
@@ -238,16 +319,16 @@ fn variational_map<const NA: usize>(
     if gf.abs() < 1e-12 {
         return Err(MapError::GrazingHeelStrike { t: te }.into());
     }
-    let g_row: Vec<f64> = (0..m)
+    let g_row: Vec<f64> = (0..cols)
         .map(|j| (0..m).map(|k| g[k] * phi[k][j]).sum())
         .collect();
     for i in 0..m {
-        for j in 0..m {
+        for j in 0..cols {
             phi[i][j] -= f[i] * g_row[j] / gf;
         }
     }
     // The parameter's column: the strike moves by dT = -g_y psi / (g_y f), psi <- psi + f dT.
-    let psi_at = m + m * m;
+    let psi_at = m + m * cols;
     let strike = param.map(|_| {
         let psi = &ye[psi_at..psi_at + m];
         let d_period = -(0..m).map(|k| g[k] * psi[k]).sum::<f64>() / gf;
@@ -347,7 +428,7 @@ fn variational_map<const NA: usize>(
 
 /// `a b`, each entry summed over `k` in ascending order (as the fixed-size product it
 /// replaced).
-fn matmul(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
+pub(super) fn matmul(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
     let cols = b.first().map_or(0, Vec::len);
     a.iter()
         .map(|row| {

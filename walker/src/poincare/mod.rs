@@ -79,7 +79,9 @@ pub use continuation::{ContinuationPoint, continuation};
 pub use error::{FixedPointError, MapError};
 pub use finite_difference::finite_difference_map_with_step;
 pub use fixed_point::{FixedPoint, FixedPointOptions, Status, fixed_point, newton};
-pub use map::{ParameterColumn, parameter_column, poincare_map, poincare_map_with};
+pub use map::{
+    ParameterColumn, parameter_column, poincare_map, poincare_map_along, poincare_map_with,
+};
 pub(crate) use multipliers::{Eigenvectors, eigenvectors};
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
 pub use result::{JacobianMethod, MapResult};

@@ -12,7 +12,12 @@
 use walker_scene::model::{Expr, ModelExpr};
 
 use crate::model::Model;
+use crate::sim::SimConfig;
 use crate::vector::Vector;
+
+use super::error::MapError;
+use super::map::{matmul, poincare_map_along};
+use super::result::{JacobianMethod, MapResult};
 
 /// The section of a model: which components of the post-impact state are free, and the values
 /// of the others.
@@ -135,22 +140,40 @@ impl<'a> Section<'a> {
         self.free.iter().map(|&i| s[i]).collect()
     }
 
-    /// The reduced map's Jacobian `Pi DP E` from the full one (`2n x 2n`, row-major) at `r`.
+    /// The map at the section point `r` with its Jacobian along the section, `DP E` (`2n x
+    /// dim`: [`super::poincare_map_along`] with the tangent `E`, by the variational equations
+    /// where the model's kernels allow): what the reduced Jacobian needs
+    /// ([`Section::reduced`]), for the cost of `dim` sensitivity columns instead of `2n`.
+    ///
+    /// # Errors
+    /// [`MapError`]: the step could not be taken.
+    pub fn map(&self, cfg: &SimConfig, r: &[f64]) -> Result<MapResult, MapError> {
+        self.map_with(cfg, r, JacobianMethod::Variational)
+    }
+
+    /// [`Section::map`] by `method`.
+    ///
+    /// # Errors
+    /// [`MapError`]: the step could not be taken.
+    pub fn map_with(
+        &self,
+        cfg: &SimConfig,
+        r: &[f64],
+        method: JacobianMethod,
+    ) -> Result<MapResult, MapError> {
+        poincare_map_along(self.model, cfg, &self.embed(r), &self.tangent(r), method)
+    }
+
+    /// The reduced map's Jacobian `Pi DP E` from the map's Jacobian along the section `DP E`
+    /// ([`Section::map`]): its rows of the free components.
+    #[must_use]
+    pub fn reduced(&self, along: &[Vec<f64>]) -> Vec<Vec<f64>> {
+        self.free.iter().map(|&row| along[row].clone()).collect()
+    }
+
+    /// The reduced map's Jacobian `Pi DP E` from the full one (`2n x 2n`, row by row) at `r`.
     #[must_use]
     pub fn reduced_jacobian(&self, full: &[Vec<f64>], r: &[f64]) -> Vec<Vec<f64>> {
-        let e = self.tangent(r);
-        self.free
-            .iter()
-            .map(|&row| {
-                (0..self.dim())
-                    .map(|b| {
-                        e.iter()
-                            .enumerate()
-                            .map(|(k, ek)| full[row][k] * ek[b])
-                            .sum()
-                    })
-                    .collect()
-            })
-            .collect()
+        self.reduced(&matmul(full, &self.tangent(r)))
     }
 }

@@ -65,8 +65,11 @@ impl From<MapError> for PhaseError {
     }
 }
 
-/// The stance phase with the variational equations appended: `[s, Phi]`, `s = [q, qd]` (`2n`
-/// numbers) and the `2n x 2n` sensitivity `Phi` row-major, in the contact of the current phase.
+/// The stance phase with the variational equations appended: `[s, Phi S, psi, 0...]`, `s =
+/// [q, qd]` (`2n` numbers), then the `cols` columns of `Phi S` (`Phi` the `2n x 2n` sensitivity,
+/// `S` the seeds the map follows: the identity for the full Jacobian, the section's tangent
+/// `E` for the reduced one), each `2n` numbers, then the parameter's column `psi` if any;
+/// the rest of the array (a size rounded up, `map.rs`) stays zero and out of the error test.
 pub(super) struct Variational<'a> {
     pub(super) model: &'a Model,
     pub(super) jac: StanceJacobian<'a>,
@@ -75,7 +78,9 @@ pub(super) struct Variational<'a> {
     pub(super) scratch: Scratch,
     /// `d qdd / d y`, `n x 2n` row-major.
     pub(super) a: [f64; MAX_LEN * MAX_LEN],
-    /// The parameter whose column `psi = d s / dp` rides after `Phi` (`2n` more numbers), if
+    /// The number of columns of `Phi S`.
+    pub(super) cols: usize,
+    /// The parameter whose column `psi = d s / dp` rides after `Phi S` (`2n` more numbers), if
     /// any (`parameter.rs`).
     pub(super) param: Option<&'a ParameterRates>,
     /// Set where a right-hand side found no Jacobian (a held foot whose friction ratio has no
@@ -118,24 +123,10 @@ impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
             // `a` keeps its last (finite) values; the caller gives up on the phase.
             self.singular = true;
         }
-        // d Phi / dt = [0 I; A] Phi: the rows of q take Phi's rows of qd, the rows of qd are
-        // A (n x 2n) times Phi (2n x 2n).
-        let (phi, dphi) = (&y[m..m + m * m], &mut dy[m..m + m * m]);
-        dphi[..n * m].copy_from_slice(&phi[n * m..]);
-        for (a_i, out) in self.a[..n * m]
-            .chunks_exact(m)
-            .zip(dphi[n * m..].chunks_exact_mut(m))
-        {
-            out.fill(0.0);
-            for (&a_ik, phi_k) in a_i.iter().zip(phi.chunks_exact(m)) {
-                for (o, &p) in out.iter_mut().zip(phi_k) {
-                    *o += a_ik * p;
-                }
-            }
-        }
+        // Each column c of Phi S and psi: d c / dt = [0 I; A] c (+ [0; d qdd / dp] for psi):
+        // the rows of q take the column's rows of qd, the rows of qd are A (n x 2n) times it.
+        let mut b = [0.0; MAX_LEN];
         if let Some(rates) = self.param {
-            // d psi / dt = [0 I; A] psi + [0; d qdd / dp].
-            let mut b = [0.0; MAX_LEN];
             rates.field_rate(
                 self.model,
                 t,
@@ -144,17 +135,26 @@ impl<const NA: usize> OdeSystem<NA> for Variational<'_> {
                 &self.scratch.k,
                 &mut b[..n],
             );
-            let at = m + m * m;
-            let (psi, dpsi) = (&y[at..at + m], &mut dy[at..at + m]);
-            dpsi[..n].copy_from_slice(&psi[n..]);
+        }
+        let used = self.cols + usize::from(self.param.is_some());
+        let columns = y[m..m + m * used].chunks_exact(m);
+        let rates = dy[m..m + m * used].chunks_exact_mut(m);
+        for (j, (c, dc)) in columns.zip(rates).enumerate() {
+            dc[..n].copy_from_slice(&c[n..]);
+            let forced = j == self.cols;
             for (i, a_i) in self.a[..n * m].chunks_exact(m).enumerate() {
-                let mut d = b[i];
-                for (&a_ik, &p) in a_i.iter().zip(psi) {
-                    d += a_ik * p;
+                let mut d = if forced { b[i] } else { 0.0 };
+                for (&a_ik, &c_k) in a_i.iter().zip(c) {
+                    d += a_ik * c_k;
                 }
-                dpsi[n + i] = d;
+                dc[n + i] = d;
             }
         }
+        dy[m + m * used..].fill(0.0);
+    }
+
+    fn controlled_components(&mut self, _: f64, _: &[f64; NA], _: f64, _: &[f64; NA]) -> usize {
+        2 * self.model.n() * (1 + self.cols + usize::from(self.param.is_some()))
     }
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
@@ -196,18 +196,16 @@ fn initial_contact(model: &Model, y: &[f64]) -> Result<Contact, MapError> {
     }
 }
 
-/// `Phi <- DR Phi + (f+ - DR f-) (g_y^T Phi + g_p) / (g_y f- + g_t)` on the sensitivity `phi`
-/// (`m` rows of `cols`, row-major), `DR` the identity with the rows `reset_rows` zero; `g_t`
-/// the guard's explicit rate in time (zero for a guard of the state alone), `g_p` its own rate
-/// in a parameter (for a parameter's column `psi`; zero for `Phi`).
+/// `Phi <- DR Phi + (f+ - DR f-) (g_y^T Phi + g_p) / (g_y f- + g_t)` on the columns `phi`
+/// (each `m` numbers, one after the other), `DR` the identity with the rows `reset_rows` zero;
+/// `g_t` the guard's explicit rate in time (zero for a guard of the state alone), `g_p` its own
+/// rate in a parameter (for a parameter's column `psi`; zero for `Phi S`).
 ///
 /// # Errors
 /// [`MapError::GrazingEvent`]: `g_y f- + g_t` vanishes (the event is grazed).
-#[allow(clippy::too_many_arguments)]
 fn saltation(
     phi: &mut [f64],
     m: usize,
-    cols: usize,
     reset_rows: &[usize],
     f_minus: &[f64],
     f_plus: &[f64],
@@ -221,18 +219,14 @@ fn saltation(
     if gf.abs() < 1e-12 || !gf.is_finite() {
         return Err(MapError::GrazingEvent { t });
     }
-    let g_row: Vec<f64> = (0..cols)
-        .map(|j| {
-            let s: f64 = (0..m).map(|k| g[k] * phi[k * cols + j]).sum();
-            if g_p == 0.0 { s } else { s + g_p }
-        })
-        .collect();
-    for i in 0..m {
-        let reset = reset_rows.contains(&i);
-        let d = f_plus[i] - if reset { 0.0 } else { f_minus[i] };
-        for j in 0..cols {
-            let kept = if reset { 0.0 } else { phi[i * cols + j] };
-            phi[i * cols + j] = kept + d * g_row[j] / gf;
+    for column in phi.chunks_exact_mut(m) {
+        let s: f64 = (0..m).map(|k| g[k] * column[k]).sum();
+        let g_c = if g_p == 0.0 { s } else { s + g_p };
+        for (i, c) in column.iter_mut().enumerate() {
+            let reset = reset_rows.contains(&i);
+            let d = f_plus[i] - if reset { 0.0 } else { f_minus[i] };
+            let kept = if reset { 0.0 } else { *c };
+            *c = kept + d * g_c / gf;
         }
     }
     Ok(())
@@ -247,7 +241,9 @@ pub(super) struct StanceEnd<const NA: usize> {
 }
 
 /// Integrates the stance phase from the post-impact state `s` with the variational equations,
-/// phase by phase, until the strike (see the module documentation).
+/// phase by phase, until the strike (see the module documentation): `Phi S` from `Phi(0) S =
+/// seeds` (the seeds' columns one after the other, `2n` numbers each), and the parameter's
+/// column from its start rate, if any. `NA` holds them all (`map.rs`).
 ///
 /// # Errors
 /// [`PhaseError::NoKernel`] for a contact without Jacobian kernels, [`PhaseError::Map`] where
@@ -256,17 +252,22 @@ pub(super) fn stance<const NA: usize>(
     model: &Model,
     cfg: &SimConfig,
     s: &[f64],
+    seeds: &[f64],
     jac: StanceJacobian<'_>,
     param: Option<(&ParameterRates, &[f64])>,
 ) -> Result<StanceEnd<NA>, PhaseError> {
     let n = model.n();
     let m = 2 * n;
-    let psi_at = m + m * m;
+    let cols = seeds.len() / m;
+    let psi_at = m + m * cols;
+    let used = psi_at + if param.is_some() { m } else { 0 };
+    assert!(
+        used <= NA,
+        "{used} variational components in an array of {NA}"
+    );
     let mut y = [0.0; NA];
     y[..m].copy_from_slice(s);
-    for i in 0..m {
-        y[m + (m + 1) * i] = 1.0;
-    }
+    y[m..psi_at].copy_from_slice(seeds);
     if let Some((_, psi0)) = param {
         y[psi_at..psi_at + m].copy_from_slice(psi0);
     }
@@ -277,9 +278,8 @@ pub(super) fn stance<const NA: usize>(
     }
     if contact.get() == Contact::Stuck {
         // The foot at rest: no perturbation of its velocity (the module documentation).
-        y[m + m * n..m + m * (n + 2)].fill(0.0);
-        if rates.is_some() {
-            y[psi_at + n..psi_at + n + 2].fill(0.0);
+        for column in y[m..used].chunks_exact_mut(m) {
+            column[n..n + 2].fill(0.0);
         }
     }
     let coulomb = model.friction_law() == FrictionLaw::Coulomb;
@@ -312,6 +312,7 @@ pub(super) fn stance<const NA: usize>(
         contact: &contact,
         scratch: Scratch::new(),
         a: [0.0; MAX_LEN * MAX_LEN],
+        cols,
         param: rates,
         singular: false,
     };
@@ -391,8 +392,7 @@ pub(super) fn stance<const NA: usize>(
                 let mut g = [0.0; MAX_LEN];
                 g[n] = before.sigma();
                 saltation(
-                    &mut ye[m..m + m * m],
-                    m,
+                    &mut ye[m..psi_at],
                     m,
                     &[n, n + 1],
                     &f_minus[..m],
@@ -404,7 +404,6 @@ pub(super) fn stance<const NA: usize>(
                     saltation(
                         &mut ye[psi_at..psi_at + m],
                         m,
-                        1,
                         &[n, n + 1],
                         &f_minus[..m],
                         &f_plus[..m],
@@ -453,8 +452,7 @@ pub(super) fn stance<const NA: usize>(
                     (g, scale * ratio.d_t, g_p)
                 };
                 saltation(
-                    &mut ye[m..m + m * m],
-                    m,
+                    &mut ye[m..psi_at],
                     m,
                     &[],
                     &f_minus[..m],
@@ -466,7 +464,6 @@ pub(super) fn stance<const NA: usize>(
                     saltation(
                         &mut ye[psi_at..psi_at + m],
                         m,
-                        1,
                         &[],
                         &f_minus[..m],
                         &f_plus[..m],

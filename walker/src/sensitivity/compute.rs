@@ -5,7 +5,7 @@ use nalgebra::{Complex, DMatrix, DVector};
 
 use crate::continuation::{ProblemError, WalkerProblem};
 use crate::model::Model;
-use crate::poincare::{Eigenvectors, FixedPoint, Section, eigenvalues, eigenvectors, poincare_map};
+use crate::poincare::{Eigenvectors, FixedPoint, Section, eigenvalues, eigenvectors};
 use crate::setup::Setup;
 use crate::sim::SimConfig;
 
@@ -63,15 +63,16 @@ pub(super) fn sample(
     at: &str,
 ) -> Result<Vec<f64>, SensitivityError> {
     let section = Section::of(model);
-    let m =
-        poincare_map(model, cfg, &section.embed(r)).map_err(|source| SensitivityError::Map {
+    let m = section
+        .map(cfg, r)
+        .map_err(|source| SensitivityError::Map {
             at: at.to_owned(),
             source,
         })?;
     let mut out = section.reduce(&m.state_plus);
     out.push(m.period);
     out.push(m.dx);
-    for row in section.reduced_jacobian(&m.jacobian, r) {
+    for row in section.reduced(&m.jacobian) {
         out.extend(row);
     }
     Ok(out)
