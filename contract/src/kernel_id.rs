@@ -51,11 +51,15 @@ pub enum KernelId {
     /// `stick_jacobian`: `d [qdd, lambda_t, lambda_n] / d [q, qd]` of `stick`
     /// ((n + 2) x 2n; a model without inputs whose stuck stance has a closed form).
     StickJacobian,
+    /// `closed_loop_stick_jacobian`: `d [qdd, u, lambda_t, lambda_n] / d [q, qd, v]` of
+    /// `closed_loop_stick` ((n + m + 2) x (2n + m); a model with inputs whose stance has no
+    /// closed form, by differentiating the structured solve).
+    ClosedLoopStickJacobian,
 }
 
 impl KernelId {
     /// Every kernel, in the order of `docs/model-format.md`.
-    pub const ALL: [KernelId; 21] = [
+    pub const ALL: [KernelId; 22] = [
         KernelId::Accel,
         KernelId::ClosedLoop,
         KernelId::Lambda,
@@ -77,6 +81,7 @@ impl KernelId {
         KernelId::InputRatesJacobian,
         KernelId::RelabelJacobian,
         KernelId::StickJacobian,
+        KernelId::ClosedLoopStickJacobian,
     ];
 
     /// The kernel's name in model files and generated code.
@@ -104,6 +109,7 @@ impl KernelId {
             KernelId::InputRatesJacobian => "input_rates_jacobian",
             KernelId::RelabelJacobian => "relabel_jacobian",
             KernelId::StickJacobian => "stick_jacobian",
+            KernelId::ClosedLoopStickJacobian => "closed_loop_stick_jacobian",
         }
     }
 
@@ -121,6 +127,7 @@ impl KernelId {
                 | KernelId::InputRatesJacobian
                 | KernelId::RelabelJacobian
                 | KernelId::StickJacobian
+                | KernelId::ClosedLoopStickJacobian
         )
     }
 

@@ -77,8 +77,8 @@ fn bench(name: &str, model: &Model, cfg: &SimConfig) {
     );
 }
 
-/// A shipped model file derived at run time, with exact Coulomb friction in stance and at the
-/// impact and `mu0` set.
+/// A shipped model file (its compiled kernels: every shipped model the library compiles), with
+/// exact Coulomb friction in stance and at the impact and `mu0` set.
 fn coulomb_model(path: &Path, mu0: f64) -> Model {
     let source = walker_load::runtime_source();
     let mut setup = Setup::from_model_file(path, &Overrides::default(), Some(&source as &_))
@@ -132,7 +132,17 @@ fn main() {
         &cfg,
     );
     let compass = coulomb_model(&models.join("compass-gait.toml"), 5.0);
-    bench("compass-gait (run time, Coulomb, mu0 = 5)", &compass, &cfg);
+    bench("compass-gait (compiled, Coulomb, mu0 = 5)", &compass, &cfg);
+    // Sliding within its step: `accel_jacobian` of the structured solve, differentiated.
+    let sliding = coulomb_model(&models.join("compass-gait.toml"), 0.27);
+    bench(
+        "compass-gait (compiled, Coulomb, mu0 = 0.27)",
+        &sliding,
+        &cfg,
+    );
+    // No closed forms, inputs, held: `closed_loop_stick_jacobian`.
+    let three = coulomb_model(&models.join("three-link.toml"), 1.0);
+    bench("three-link (compiled, Coulomb, mu0 = 1)", &three, &cfg);
     let wheel = coulomb_model(&models.join("rimless-wheel.toml"), 3.0);
-    bench("rimless-wheel (run time, Coulomb, mu0 = 3)", &wheel, &cfg);
+    bench("rimless-wheel (compiled, Coulomb, mu0 = 3)", &wheel, &cfg);
 }

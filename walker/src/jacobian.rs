@@ -27,9 +27,10 @@ mod held;
 
 pub use held::HeldRatio;
 
-/// The largest output of a Jacobian kernel the chain rule reads: `closed_loop_jacobian` of a
-/// model with [`MAX_COORDINATES`] coordinates and as many inputs.
-const MAX_JAC: usize = 2 * MAX_COORDINATES * (3 * MAX_COORDINATES + 1);
+/// The largest output of a Jacobian kernel the chain rule reads: `closed_loop_jacobian` or
+/// `closed_loop_stick_jacobian` of a model with [`MAX_COORDINATES`] coordinates and as many
+/// inputs.
+const MAX_JAC: usize = (2 * MAX_COORDINATES + 2) * (3 * MAX_COORDINATES + 1);
 
 /// The kernels' outputs [`StanceJacobian::accel_with`] works in (`5.3` kB: zeroed once by
 /// [`Scratch::new`], then overwritten where read).
@@ -133,6 +134,9 @@ impl<'a> StanceJacobian<'a> {
         if self.model.is_stuck(contact) && self.model.inputs() == 0 {
             return k.has(KernelId::StickJacobian);
         }
+        if self.model.is_stuck(contact) && k.has(KernelId::ClosedLoopStickJacobian) {
+            return k.has(KernelId::OutputRatesJacobian);
+        }
         if self.model.is_stuck(contact) && !(self.model.mu0() > 0.0 && self.model.mu0().is_finite())
         {
             return false;
@@ -209,7 +213,10 @@ impl<'a> StanceJacobian<'a> {
             out[..n * 2 * n].copy_from_slice(&k[..n * 2 * n]);
             return Ok(());
         }
-        if m.is_stuck(contact) {
+        if m.is_stuck(contact) && m.kernels().has(KernelId::ClosedLoopStickJacobian) {
+            self.held_stick_rows(t, y, out, scratch);
+            Ok(())
+        } else if m.is_stuck(contact) {
             self.held_rows(t, y, out, scratch).map(|_| ())
         } else {
             self.sliding_rows(
@@ -261,8 +268,7 @@ impl<'a> StanceJacobian<'a> {
             }
             return;
         }
-        let mut v = [0.0; MAX_COORDINATES];
-        m.aux_inputs(t, y, &mut v[..inputs]);
+        let v = self.inputs_at(t, y, rates);
         let args = Args {
             v: &v[..inputs],
             sigma,
@@ -273,13 +279,6 @@ impl<'a> StanceJacobian<'a> {
             &args,
             &mut k[..(n + inputs) * cols],
         );
-        // d v_k / d y_j = -(K_P d y_k / d y_j) - K_D d yd_k / d y_j.
-        m.kernels().eval(
-            KernelId::OutputRatesJacobian,
-            &Args::state(q, qd),
-            &mut rates[..2 * inputs * 2 * n],
-        );
-        let (k_p, k_d) = m.gains();
         // The rows the caller asks for: `n` (the accelerations) or `n + m` (with the inputs).
         let rows = (out.len() / (2 * n)).min(n + inputs);
         for i in 0..rows {
@@ -295,14 +294,39 @@ impl<'a> StanceJacobian<'a> {
                         d += row[2 * n] * 0.0;
                     }
                 }
-                for kk in 0..inputs {
-                    let dy = rates[kk * 2 * n + j];
-                    let dyd = rates[(inputs + kk) * 2 * n + j];
-                    d += row[2 * n + 1 + kk] * (-(k_p * dy) - k_d * dyd);
-                }
-                out[i * 2 * n + j] = d;
+                out[i * 2 * n + j] = self.plus_through_v(d, &row[2 * n + 1..], rates, j);
             }
         }
+    }
+
+    /// The auxiliary inputs `v` at `(t, y)` (Eq. 32), with `output_rates_jacobian` (`d [y,
+    /// yd] / d [q, qd]`, `2m x 2n`) evaluated into `rates` for [`Self::plus_through_v`].
+    fn inputs_at(&self, t: f64, y: &[f64], rates: &mut [f64]) -> [f64; MAX_COORDINATES] {
+        let m = self.model;
+        let (n, inputs) = (m.n(), m.inputs());
+        let mut v = [0.0; MAX_COORDINATES];
+        m.aux_inputs(t, y, &mut v[..inputs]);
+        m.kernels().eval(
+            KernelId::OutputRatesJacobian,
+            &Args::state(&y[..n], &y[n..2 * n]),
+            &mut rates[..2 * inputs * 2 * n],
+        );
+        v
+    }
+
+    /// `d + sum_k K_v,k d v_k / d y_j` for a kernel row's `v` columns `row_v`: the chain rule
+    /// through `d v_k / d y_j = -(K_P d y_k / d y_j) - K_D d yd_k / d y_j` (Eq. 32), `rates`
+    /// from [`Self::inputs_at`].
+    #[inline]
+    fn plus_through_v(&self, mut d: f64, row_v: &[f64], rates: &[f64], j: usize) -> f64 {
+        let (n, inputs) = (self.model.n(), self.model.inputs());
+        let (k_p, k_d) = self.model.gains();
+        for (kk, &k_v) in row_v[..inputs].iter().enumerate() {
+            let dy = rates[kk * 2 * n + j];
+            let dyd = rates[(inputs + kk) * 2 * n + j];
+            d += k_v * (-(k_p * dy) - k_d * dyd);
+        }
+        d
     }
 
     /// `d [qdd, lambda_t, lambda_n] / d [q, qd]` of the stuck stance (`stick_jacobian`) at

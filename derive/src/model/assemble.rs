@@ -99,7 +99,10 @@ pub(super) fn kernel(
 pub(super) fn names(prefix: &str, rows: usize, cols: usize) -> Vec<String> {
     (0..rows * cols)
         .map(|k| {
-            if rows > 1 && cols > 1 {
+            // As `named`: past ten rows an underscore parts row and column.
+            if rows > 10 && cols > 1 {
+                format!("{prefix}{}_{}", k / cols, k % cols)
+            } else if rows > 1 && cols > 1 {
                 format!("{prefix}{}{}", k / cols, k % cols)
             } else {
                 format!("{prefix}{k}")

@@ -27,9 +27,11 @@
 //! (`prepare`) of the paper's passive walker grew to 13419 operations in 3629 `let`s, on
 //! which rustc's debug-info generation overflowed its stack; staged, no product is formed.
 
-use super::assemble::{kernel, named};
+use super::assemble::{kernel, named, names, solve_only, with_solve};
+use super::forward::differentiate;
 use super::mechanics::Mechanics;
 use super::program::Program;
+use super::structured::StructuredKernels;
 use crate::error::Result;
 use crate::kernels::{Kernel, Shape, Staged};
 use crate::matrix::Matrix;
@@ -175,4 +177,98 @@ pub(super) fn stick_jacobian(m: &Mechanics, stick: &Matrix, table: &mut Symbols)
         &state,
         &[],
     )
+}
+
+/// The most coordinates for which [`structured_jacobian_kernels`] differentiates the structured
+/// solves: five, as many as the Poincare map's variational equations take (`walker`'s
+/// `poincare/map.rs`). The five-link biped's (seven coordinates) would have 16 000 and 12 500
+/// operations and take 3.4 s to derive and lower at every run-time load (against 0.2 s), for a
+/// map that could not use them.
+pub const MAX_STRUCTURED_JACOBIAN_COORDINATES: usize = 5;
+
+/// The stance's Jacobian kernels of a model without closed forms, by forward-mode
+/// differentiation of its structured solves (`forward.rs`), with the closed forms' columns:
+/// `accel_jacobian` (without inputs, `d qdd / d [q, qdot, mu]`) or, with outputs,
+/// `closed_loop_jacobian` (`d [qdd, u] / d [q, qdot, mu, v]`) and `closed_loop_stick_jacobian`
+/// (`d [qdd, u, lambda_t, lambda_n] / d [q, qdot, v]` of `closed_loop_stick`, the held foot:
+/// without it the held foot is differentiated through the sliding kernel at the friction ratio
+/// that holds it, which divides by the foot's compliance to friction and, for the three-link
+/// biped, amplified rounding to `1e-9` relative). The impact's Jacobian is left to the Poincare
+/// map, which differentiates the impact's solve in its own way (linear in the velocities).
+///
+/// # Errors
+/// A full symbol table, or an arithmetic error of the differentiation.
+pub(super) fn structured_jacobian_kernels(
+    m: &Mechanics,
+    solves: &StructuredKernels,
+    loop_stick: Option<&Kernel>,
+    table: &mut Symbols,
+) -> Result<Vec<Kernel>> {
+    let n = m.syms.q.len();
+    if n > MAX_STRUCTURED_JACOBIAN_COORDINATES {
+        return Ok(Vec::new());
+    }
+    let inputs = m.syms.inputs.len();
+    let state: Vec<Sym> = m.syms.q.iter().chain(&m.syms.qd).copied().collect();
+    let mut with_mu = state.clone();
+    with_mu.push(m.syms.mu);
+    let mut kernels = Vec::new();
+    let mut push = |name: &'static str,
+                    doc: &'static str,
+                    equation: &'static str,
+                    program: &Staged,
+                    rows: usize,
+                    vars: &[Sym],
+                    table: &mut Symbols|
+     -> Result<()> {
+        let staged = differentiate(program, vars, table, name)?;
+        let k = solve_only(
+            name,
+            doc,
+            equation,
+            names("J", rows, vars.len()),
+            Shape::Matrix(rows, vars.len()),
+        );
+        kernels.push(with_solve(k, staged, false, table));
+        Ok(())
+    };
+    match &solves.closed_loop {
+        Some(closed_loop) => {
+            let mut vars = with_mu.clone();
+            vars.extend(&m.syms.aux);
+            push(
+                "closed_loop_jacobian",
+                "Partial derivatives of the closed-loop accelerations and inputs by (q, qdot, mu, v)",
+                "Eqs. 27, 31",
+                closed_loop,
+                n + inputs,
+                &vars,
+                table,
+            )?;
+            if let Some(held) = loop_stick.and_then(|k| k.solve.as_ref()) {
+                let mut vars = state.clone();
+                vars.extend(&m.syms.aux);
+                push(
+                    "closed_loop_stick_jacobian",
+                    "Partial derivatives of the held foot's closed-loop accelerations, inputs and ground force by (q, qdot, v)",
+                    "stick phase; Eqs. 30-31 with both foot coordinates held",
+                    held,
+                    n + inputs + 2,
+                    &vars,
+                    table,
+                )?;
+            }
+        }
+        None if inputs == 0 => push(
+            "accel_jacobian",
+            "Partial derivatives of the sliding stance's accelerations by (q, qdot, mu)",
+            "Eq. 27",
+            &solves.accel,
+            n,
+            &with_mu,
+            table,
+        )?,
+        None => {}
+    }
+    Ok(kernels)
 }

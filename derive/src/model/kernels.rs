@@ -2,7 +2,8 @@
 //! names are the model-independent ones of `docs/model-format.md` (`mass_matrix`, `bias`,
 //! `lambda`, `accel`, `control`, `closed_loop`, `stick`, `closed_loop_stick`, `impact`,
 //! `impact_double`, `impact_coulomb`, `accel_jacobian`, `closed_loop_jacobian`,
-//! `impact_jacobian`, `stick_jacobian`, `input_map`, `impact_rows`, `impact_double_rows`, `outputs`, `events`,
+//! `impact_jacobian`, `stick_jacobian`, `closed_loop_stick_jacobian`, `input_map`, `impact_rows`,
+//! `impact_double_rows`, `outputs`, `events`,
 //! `relabel`, `points`, `energy`, `output_rates`, `input_rates`, `total_mass`); a kernel's
 //! arguments are the non-parameter symbols its outputs contain, in the
 //! table's order (coordinates, velocities, inputs, `mu`, auxiliary inputs, `t`), and the impact
@@ -15,7 +16,9 @@ use super::control_check::check_control;
 use super::coulomb::impact_coulomb;
 use super::descriptors::descriptor_kernels;
 use super::events::event_kernels;
-use super::jacobians::{Differentiated, jacobian_kernels, stick_jacobian};
+use super::jacobians::{
+    Differentiated, jacobian_kernels, stick_jacobian, structured_jacobian_kernels,
+};
 use super::located::singular;
 use super::maps::map_kernels;
 use super::mechanics::{MAX_CLOSED_COORDINATES, Mechanics};
@@ -63,8 +66,11 @@ impl ModelDerivation {
     /// Derives every kernel of `model`: the stance and impact kernels as closed forms where the
     /// closed-form `M^-1` is small (at most [`MAX_INVERSE_TERMS`]; the stuck stance's where the
     /// angles' block is at most [`MAX_CLOSED_COORDINATES`] square), and as structured solves
-    /// always; the code generator evaluates the cheaper. The Jacobians exist in closed form
-    /// only, where the closed forms they differentiate do.
+    /// always; the code generator evaluates the cheaper. The Jacobians differentiate the closed
+    /// forms where they exist, and otherwise the stance's structured solves (forward mode,
+    /// `forward.rs`; models of at most
+    /// [`MAX_STRUCTURED_JACOBIAN_COORDINATES`](crate::model::MAX_STRUCTURED_JACOBIAN_COORDINATES)
+    /// coordinates).
     ///
     /// The work is bounded by [`DERIVATION_BUDGET`]; the angles' multiples by
     /// [`MAX_ANGLE_MULTIPLE`](crate::model::MAX_ANGLE_MULTIPLE), checked before any work.
@@ -161,7 +167,8 @@ impl ModelDerivation {
                 };
                 jacobian_kernels(&m, &of, &mut table)?
             }
-            _ => Vec::new(),
+            // Without closed forms, the stance's by differentiating its structured solve.
+            _ => structured_jacobian_kernels(&m, &solves, loop_stick.as_ref(), &mut table)?,
         };
         // The stuck stance's Jacobian wherever its closed form is (its own block, no `M^-1`:
         // the compass gait has it though its sliding stance has no closed form).

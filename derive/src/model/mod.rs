@@ -14,7 +14,8 @@
 //! `control_check` (`A` regular at the start posture and somewhere at all), and the kernels of
 //! their own files: `stick_control` (the control with the foot stuck, `closed_loop_stick`, both
 //! forms), `coulomb` (the impact with Coulomb friction's ingredients, `impact_coulomb`, both
-//! forms), `jacobians` (the closed forms' partial derivatives) and `descriptors` (output and
+//! forms), `jacobians` (the closed forms' partial derivatives, and the structured solves' by
+//! `forward`, forward-mode differentiation of a program) and `descriptors` (output and
 //! input rates, the total mass); `events` (the strike guard, the falls and the relabelling as
 //! kernels) uses `mechanics`.
 
@@ -23,6 +24,7 @@ mod control_check;
 mod coulomb;
 mod descriptors;
 mod events;
+mod forward;
 mod jacobians;
 mod kernels;
 mod located;
@@ -39,6 +41,7 @@ mod table;
 pub(crate) use assemble::named;
 pub(crate) use coulomb::coulomb_outputs;
 pub use coulomb::{CoulombImpact, CoulombRows, coulomb_impact, coulomb_rows};
+pub use jacobians::MAX_STRUCTURED_JACOBIAN_COORDINATES;
 pub use kernels::{MAX_INVERSE_TERMS, ModelDerivation};
 pub use mechanics::{FloorGeometry, MAX_CLOSED_COORDINATES, Mechanics, time_derivative};
 pub use multiples::{MAX_ANGLE_MULTIPLE, check_angle_multiples};

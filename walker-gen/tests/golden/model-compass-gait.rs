@@ -139,13 +139,17 @@ pub struct Prepared {
     k80: F,
     k81: F,
     k82: F,
+    k83: F,
+    k84: F,
+    k85: F,
+    k86: F,
 }
 
 /// Computes everything the kernels need that depends on the parameters only.
 ///
 /// Call once per parameter set, then pass the result to every kernel.
 ///
-/// Operations: 253 add/sub, 326 mul, 3 div, 1 transcendental.
+/// Operations: 256 add/sub, 329 mul, 3 div, 1 transcendental.
 /// Transcendental calls inline in this file: `sin_cos`.
 #[must_use]
 pub fn prepare(p: &Params) -> Prepared {
@@ -169,9 +173,14 @@ pub fn prepare(p: &Params) -> Prepared {
     let (k6, k7) = sin_cos(p.phi);
     let k8 = p.a * k7 + p.b * k7;
     let k9 = p.a * k6 + p.b * k6;
+    let k10 = 1.0_f64 / k0;
+    let k11 = k6 * k10;
+    let k12 = k7 * k10;
     let t11 = 4.0_f64 * p.m;
     let t12 = p.a * t11;
-    let k10 = k4 + p.g * t8;
+    let k13 = p.b * t0;
+    let k14 = t12 + k13 + t6 + p.b * t5;
+    let k15 = k4 + p.g * t8;
     let t13 = 3.0_f64 * p.m * p.a;
     let t14 = p.g * t7;
     let t15 = 3.0_f64 * p.m_h;
@@ -197,73 +206,74 @@ pub fn prepare(p: &Params) -> Prepared {
     let t35 = p.m * t34 * p.m_h;
     let t36 = 8.0_f64 * p.m;
     let t37 = p.a * t36;
-    let k11 = t10 + p.b * t0 * p.g;
+    let k16 = t10 + p.g * k13;
     let t38 = 6.0_f64 * p.m * p.a;
     let t39 = 6.0_f64 * p.m_h;
     let t40 = 8.0_f64 * k7 * p.m * p.m_h * p.a;
     let t41 = p.b * t40 * p.g;
     let t42 = 8.0_f64 * k6 * p.m * p.m_h * p.a;
     let t43 = p.b * t42 * p.g;
-    let k12 = 2.0_f64 * p.phi;
-    let k13 = p.a + p.b;
+    let k17 = 2.0_f64 * p.phi;
+    let k18 = p.a + p.b;
     let t44 = 0.5_f64 * p.m_h;
-    let k14 = p.m + t44;
+    let k19 = p.m + t44;
     let t45 = p.a * p.a;
     let t46 = t0 * t45;
     let t47 = p.b * p.b;
-    let k15 = p.m * t47;
+    let k20 = p.m * t47;
     let t48 = p.m_h * t45;
     let t49 = p.m_h * t47;
-    let k16 = t4 + t46 + k15 + t48 + t7 + t49;
-    let k17 = t9 + k15;
+    let k21 = t4 + t46 + k20 + t48 + t7 + t49;
+    let k22 = t9 + k20;
     let t50 = t0 * t47;
-    let k18 = p.b * t12 + t46 + t50;
+    let k23 = t4 + t50;
+    let k24 = p.b * t12 + t46 + t50;
     let t51 = p.m * t45;
-    let k19 = t4 + t51 + k15;
-    let k20 = t48 + t51 + t7 + t49;
+    let k25 = t4 + t51 + k20;
+    let k26 = t48 + t51 + t7 + t49;
     let t52 = p.b * t47;
     let t53 = t0 * t52;
-    let k21 = p.b * t46 + t12 * t47 + t53;
+    let k27 = p.b * t46 + t12 * t47 + t53;
     let t54 = p.g * t46;
-    let t55 = p.g * k15;
+    let t55 = p.g * k20;
     let t56 = p.g * t48;
     let t57 = p.g * t49;
-    let k22 = p.b * t13 * p.g + t54 + t55 + t56 + t14 + t57;
+    let k28 = p.b * t13 * p.g + t54 + t55 + t56 + t14 + t57;
     let t58 = p.b * t51;
     let t59 = p.m * t52;
-    let k23 = t58 + t1 * t47 + t59;
+    let k29 = t58 + t1 * t47 + t59;
     let t60 = p.a * t45;
     let t61 = t11 * t45;
     let t62 = p.b * t61;
     let t63 = p.m_h * t52;
-    let k24 = t0 * t60 + t62 + t13 * t47 + t59 + p.m_h * t60 + t15 * t45 * p.b
+    let k30 = t0 * t60 + t62 + t13 * t47 + t59 + p.m_h * t60 + t15 * t45 * p.b
         + p.a * t15 * t47 + t63;
-    let k25 = p.g * t4 + t54 + t55 + t56 + t14 + t57;
-    let k26 = t58 + p.b * t48 + t6 * t47 + t63;
+    let k31 = p.g * t4 + t54 + t55 + t56 + t14 + t57;
+    let k32 = t58 + p.b * t48 + t6 * t47 + t63;
     let t64 = p.m * p.m;
     let t65 = t16 * t64;
     let t66 = p.a * t65;
-    let k27 = p.b * t66 * p.g;
+    let k33 = p.b * t66 * p.g;
     let t67 = t47 * t65 * p.g;
-    let k28 = k27 + t67;
+    let k34 = k33 + t67;
     let t68 = k7 * t64;
     let t69 = t45 * t68 * p.b;
     let t70 = p.a * t68;
-    let k29 = t47 * t70;
+    let k35 = t47 * t70;
     let t71 = t17 * t45 * p.b;
     let t72 = p.a * t19 * t47;
     let t73 = t17 * t52;
-    let k30 = t69 + k29;
-    let k31 = t71 + k30 + t72 + t73;
+    let k36 = t69 + k35;
+    let k37 = t71 + k36 + t72 + t73;
     let t74 = k6 * t64;
     let t75 = t45 * t74 * p.b;
     let t76 = p.a * t74;
-    let k32 = t47 * t76;
+    let k38 = t47 * t76;
     let t77 = t20 * t45 * p.b;
     let t78 = p.a * t21 * t47;
     let t79 = t20 * t52;
-    let k33 = t75 + k32;
-    let k34 = t77 + k33 + t78 + t79;
+    let k39 = t75 + k38;
+    let k40 = t77 + k39 + t78 + t79;
     let t80 = t45 * t65;
     let t81 = p.g * t80;
     let t82 = t47 * t74 * p.g;
@@ -275,11 +285,11 @@ pub fn prepare(p: &Params) -> Prepared {
     let t88 = t16 * t85;
     let t89 = p.a * t88 * p.b * p.g;
     let t90 = t47 * t86 * p.g;
-    let k35 = t82 - t81 - t83 - t26 - t84 - t87 - t89 - t90;
+    let k41 = t82 - t81 - t83 - t26 - t84 - t87 - t89 - t90;
     let t91 = t18 * t64;
     let t92 = t45 * t91;
     let t93 = p.g * t92;
-    let k36 = p.b * t70 * p.g;
+    let k42 = p.b * t70 * p.g;
     let t94 = t28 * t45 * p.g;
     let t95 = t17 * t47 * p.g;
     let t96 = k7 * t85;
@@ -287,7 +297,7 @@ pub fn prepare(p: &Params) -> Prepared {
     let t98 = t18 * t85;
     let t99 = p.a * t98 * p.b * p.g;
     let t100 = t47 * t96 * p.g;
-    let k37 = t93 + k36 + t94 + t31 + t95 + t97 + t99 + t100;
+    let k43 = t93 + k42 + t94 + t31 + t95 + t97 + t99 + t100;
     let t101 = t60 * t91;
     let t102 = p.b * t92;
     let t103 = t28 * t60;
@@ -299,7 +309,7 @@ pub fn prepare(p: &Params) -> Prepared {
     let t109 = t45 * t108 * p.b;
     let t110 = p.a * t108 * t47;
     let t111 = t52 * t96;
-    let k38 = t101 + t102 + k29 + t103 + t105 + t106 + t73 + t107 + t109 + t110 + t111;
+    let k44 = t101 + t102 + k35 + t103 + t105 + t106 + t73 + t107 + t109 + t110 + t111;
     let t112 = t60 * t65;
     let t113 = t23 * t60;
     let t114 = t35 * t45;
@@ -310,46 +320,45 @@ pub fn prepare(p: &Params) -> Prepared {
     let t119 = t45 * t118 * p.b;
     let t120 = p.a * t118 * t47;
     let t121 = t52 * t86;
-    let k39 = t75 + t112 + t113 + t115 + t116 + t79 + t117 + t119 + t120 + t121;
-    let k40 = k27 + t82;
-    let k41 = t75 + t77 + t78 + t79;
+    let k45 = t75 + t112 + t113 + t115 + t116 + t79 + t117 + t119 + t120 + t121;
+    let k46 = k33 + t82;
+    let k47 = t75 + t77 + t78 + t79;
     let t122 = t21 * t47 * p.g;
-    let k42 = t81 + t83 + t26 + t122 + t87 + t89 + t90;
+    let k48 = t81 + t83 + t26 + t122 + t87 + t89 + t90;
     let t123 = p.a * t91;
-    let k43 = p.b * t123 * p.g;
+    let k49 = p.b * t123 * p.g;
     let t124 = t47 * t91 * p.g;
-    let k44 = k43 + t124;
+    let k50 = k49 + t124;
     let t125 = t47 * t68 * p.g;
-    let k45 = t93 - t125 + t94 + t31 + t95 + t97 + t99 + t100;
-    let k46 = p.b * t76 * p.g;
-    let k47 = t81 + k46 + t83 + t26 + t84 + t87 + t89 + t90;
+    let k51 = t93 - t125 + t94 + t31 + t95 + t97 + t99 + t100;
+    let k52 = p.b * t76 * p.g;
+    let k53 = t81 + k52 + t83 + t26 + t84 + t87 + t89 + t90;
     let t126 = p.b * t80;
-    let k48 = t112 + t126 + k32 + t113 + t115 + t116 + t79 + t117 + t119 + t120 + t121;
-    let k49 = t69 + t101 + t103 + t105 + t106 + t73 + t107 + t109 + t110 + t111;
-    let k50 = k43 + t125;
-    let k51 = t69 + t71 + t72 + t73;
+    let k54 = t112 + t126 + k38 + t113 + t115 + t116 + t79 + t117 + t119 + t120 + t121;
+    let k55 = t69 + t101 + t103 + t105 + t106 + t73 + t107 + t109 + t110 + t111;
+    let k56 = k49 + t125;
+    let k57 = t69 + t71 + t72 + t73;
     let t127 = t19 * t47 * p.g;
-    let k52 = t93 + t94 + t31 + t127 + t97 + t99 + t100;
-    let k53 = p.b * t37 + t61 + t11 * t47;
-    let k54 = t4 + t50;
-    let k55 = t62 + t37 * t47 + t11 * t52;
-    let k56 = p.b * t38 * p.g + p.g * t61 + p.g * t50 + t5 * t45 * p.g
+    let k58 = t93 + t94 + t31 + t127 + t97 + t99 + t100;
+    let k59 = p.b * t37 + t61 + t11 * t47;
+    let k60 = t62 + t37 * t47 + t11 * t52;
+    let k61 = p.b * t38 * p.g + p.g * t61 + p.g * t50 + t5 * t45 * p.g
         + 4.0_f64 * p.m_h * p.a * p.b * p.g + t5 * t47 * p.g;
-    let k57 = t11 * t60 + t36 * t45 * p.b + t38 * t47 + t53 + t5 * t60 + t39 * t45 * p.b
+    let k62 = t11 * t60 + t36 * t45 * p.b + t38 * t47 + t53 + t5 * t60 + t39 * t45 * p.b
         + p.a * t39 * t47 + t5 * t52;
     let t128 = t24 * t64;
     let t129 = p.a * t128 * p.b * p.g;
-    let k58 = t129 + t47 * t128 * p.g;
-    let k59 = t47 * t66;
+    let k63 = t129 + t47 * t128 * p.g;
+    let k64 = t47 * t66;
     let t130 = t21 * t45 * p.b;
     let t131 = t21 * t52;
-    let k60 = t126 + k59;
-    let k61 = t130 + k60 + t116 + t131;
-    let k62 = t47 * t123;
+    let k65 = t126 + k64;
+    let k66 = t130 + k65 + t116 + t131;
+    let k67 = t47 * t123;
     let t132 = t19 * t45 * p.b;
     let t133 = t19 * t52;
-    let k63 = t102 + k62;
-    let k64 = t132 + k63 + t106 + t133;
+    let k68 = t102 + k67;
+    let k69 = t132 + k68 + t106 + t133;
     let t134 = t29 * t64;
     let t135 = t45 * t134;
     let t136 = p.g * t135;
@@ -357,15 +366,15 @@ pub fn prepare(p: &Params) -> Prepared {
     let t138 = t45 * t98 * p.g;
     let t139 = t29 * t85 * p.a * p.b * p.g;
     let t140 = t47 * t98 * p.g;
-    let k65 = k43 + t136 + t137 + t41 + t127 + t138 + t139 + t140;
+    let k70 = k49 + t136 + t137 + t41 + t127 + t138 + t139 + t140;
     let t141 = t45 * t128;
     let t142 = p.g * t141;
     let t143 = p.g * t114;
     let t144 = t45 * t88 * p.g;
     let t145 = t24 * t85 * p.a * p.b * p.g;
     let t146 = t47 * t88 * p.g;
-    let k66 = t67 - t142 - t143 - t43 - t122 - t144 - t145 - t146;
-    let k67 = t67 + t129;
+    let k71 = t67 - t142 - t143 - t43 - t122 - t144 - t145 - t146;
+    let k72 = t67 + t129;
     let t147 = t60 * t134;
     let t148 = t33 * t60;
     let t149 = 12.0_f64 * k7 * p.m * p.m_h * t45 * p.b;
@@ -375,7 +384,7 @@ pub fn prepare(p: &Params) -> Prepared {
     let t153 = t45 * t152 * p.b;
     let t154 = p.a * t152 * t47;
     let t155 = t52 * t98;
-    let k68 = t147 + p.b * t135 + k62 + t148 + t149 + t150 + t133 + t151 + t153 + t154
+    let k73 = t147 + p.b * t135 + k67 + t148 + t149 + t150 + t133 + t151 + t153 + t154
         + t155;
     let t156 = t60 * t128;
     let t157 = t35 * t60;
@@ -386,22 +395,21 @@ pub fn prepare(p: &Params) -> Prepared {
     let t162 = t45 * t161 * p.b;
     let t163 = p.a * t161 * t47;
     let t164 = t52 * t88;
-    let k69 = t126 + t156 + t157 + t158 + t159 + t131 + t160 + t162 + t163 + t164;
-    let k70 = t126 + t130 + t116 + t131;
+    let k74 = t126 + t156 + t157 + t158 + t159 + t131 + t160 + t162 + t163 + t164;
+    let k75 = t126 + t130 + t116 + t131;
     let t165 = p.a * t134 * p.b * p.g;
-    let k71 = t165 + t47 * t134 * p.g;
-    let k72 = k27 + t142 + t143 + t43 + t122 + t144 + t145 + t146;
-    let k73 = t136 - t124 + t137 + t41 + t127 + t138 + t139 + t140;
-    let k74 = t124 + t165;
-    let k75 = t156 + p.b * t141 + k59 + t157 + t158 + t159 + t131 + t160 + t162 + t163
+    let k76 = t165 + t47 * t134 * p.g;
+    let k77 = k33 + t142 + t143 + t43 + t122 + t144 + t145 + t146;
+    let k78 = t136 - t124 + t137 + t41 + t127 + t138 + t139 + t140;
+    let k79 = t124 + t165;
+    let k80 = t156 + p.b * t141 + k64 + t157 + t158 + t159 + t131 + t160 + t162 + t163
         + t164;
-    let k76 = t102 + t147 + t148 + t149 + t150 + t133 + t151 + t153 + t154 + t155;
-    let k77 = t102 + t132 + t106 + t133;
-    let k78 = 0.5_f64 * p.m * t47;
-    let k79 = t9 + t51 + k78 + t44 * t45 + p.b * t2 + t44 * t47;
-    let k80 = 1.0_f64 / k0;
-    let k81 = 1.0_f64 / k7;
-    let k82 = 1.0_f64 / k16;
+    let k81 = t102 + t147 + t148 + t149 + t150 + t133 + t151 + t153 + t154 + t155;
+    let k82 = t102 + t132 + t106 + t133;
+    let k83 = 0.5_f64 * p.m * t47;
+    let k84 = t9 + t51 + k83 + t44 * t45 + p.b * t2 + t44 * t47;
+    let k85 = 1.0_f64 / k7;
+    let k86 = 1.0_f64 / k21;
     Prepared {
         mu0: p.mu0,
         c: p.c,
@@ -488,6 +496,10 @@ pub fn prepare(p: &Params) -> Prepared {
         k80,
         k81,
         k82,
+        k83,
+        k84,
+        k85,
+        k86,
     }
 }
 
@@ -562,12 +574,12 @@ pub fn mass_matrix(p: &Prepared, th_st: F, th_sw: F) -> [[F; 4]; 4] {
     let t5 = -(p.k1 * t4);
     let t6 = -(p.k2 * t0);
     let t7 = p.k1 * t3;
-    let t8 = -(t3 * p.k17 * t0 + t4 * p.k17 * t1);
+    let t8 = -(t3 * p.k22 * t0 + t4 * p.k22 * t1);
     [
         [p.k0, 0.0_f64, t2, t5],
         [0.0_f64, p.k0, t6, t7],
-        [t2, t6, p.k16, t8],
-        [t5, t7, t8, p.k15],
+        [t2, t6, p.k21, t8],
+        [t5, t7, t8, p.k20],
     ]
 }
 
@@ -631,8 +643,8 @@ pub fn bias(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F) -> [F; 4] {
     let (t2, t3) = sin_cos(th_sw);
     let t4 = p.k2 * th_std * th_std;
     let t5 = p.k1 * th_swd * th_swd;
-    let t6 = th_swd * p.k17 * th_swd;
-    let t7 = th_std * p.k17 * th_std;
+    let t6 = th_swd * p.k22 * th_swd;
+    let t7 = th_std * p.k22 * th_std;
     [
         t2 * t5 - t0 * t4,
         p.k3 + t3 * t5 - t1 * t4,
@@ -703,33 +715,33 @@ pub fn lambda(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F, xd: F) -> 
     let t13 = t1 * t8;
     let t14 = p.k3 + t4 * t10;
     let t15 = t14 - t13;
-    let t16 = th_swd * p.k17 * th_swd;
-    let t17 = th_std * p.k17 * th_std;
-    let t18 = t2 * p.k80;
-    let t19 = t6 * p.k80;
-    let t20 = t5 * p.k80;
-    let t21 = t7 * p.k80;
-    let t22 = tanh(p.c * xd * p.k81);
+    let t16 = t6 * p.k10;
+    let t17 = t2 * p.k10;
+    let t18 = t7 * p.k10;
+    let t19 = t5 * p.k10;
+    let t20 = th_swd * p.k22 * th_swd;
+    let t21 = th_std * p.k22 * th_std;
+    let t22 = tanh(p.c * xd * p.k85);
     let t23 = p.mu0 * t22;
     let t24 = p.k7 * t23;
     let t25 = p.k7 + p.k6 * t23;
     let t26 = t24 - p.k6;
-    let t27 = t18 * t26 + t19 * t25;
-    let t28 = p.k16 - (t2 * t18 + t6 * t19);
-    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
+    let t27 = t17 * t26 + t16 * t25;
+    let t28 = p.k21 - (t2 * t17 + t6 * t16);
+    let t29 = t5 * t17 + t7 * t16 - (t3 * p.k22 * t0 + t4 * p.k22 * t1);
     let t30 = 1.0_f64 / t28;
     let t31 = t29 * t30;
-    let t32 = 1.0_f64 / (p.k15 - (t7 * t21 + t29 * t31 + t5 * t20));
-    let t33 = (t21 * t25 + t27 * t31 + t20 * t26) * t32;
+    let t32 = 1.0_f64 / (p.k20 - (t7 * t18 + t29 * t31 + t5 * t19));
+    let t33 = (t18 * t25 + t27 * t31 + t19 * t26) * t32;
     let t34 = t30 * (t27 + t31 * t33 * t28);
-    let t35 = t0 * (p.k5 + t4 * t16) - t3 * t16 * t1 - t15 * t19 + t12 * t18;
+    let t35 = t0 * (p.k5 + t4 * t20) - t3 * t20 * t1 - t15 * t16 + t12 * t17;
     let t36 = t32
-        * (t3 * (t1 * t17 - p.k4) - t4 * t17 * t0 - t31 * t35 + t15 * t21 - t12 * t20);
+        * (t3 * (t1 * t21 - p.k4) - t4 * t21 * t0 - t31 * t35 + t15 * t18 - t12 * t19);
     let t37 = t30 * (t35 - t31 * t36 * t28);
-    -((p.k80 * (t9 - t11 + p.k0 * (t20 * t36 - t18 * t37)) * p.k6
-        + p.k80 * (t13 - t14 + p.k0 * (t19 * t37 - t21 * t36)) * p.k7)
-        / (p.k80 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33)) * p.k6
-            + p.k80 * (t25 + p.k0 * (t19 * t34 + t21 * t33)) * p.k7) * p.k7)
+    -((p.k10 * (t9 - t11 + p.k0 * (t19 * t36 - t17 * t37)) * p.k6
+        + p.k10 * (t13 - t14 + p.k0 * (t16 * t37 - t18 * t36)) * p.k7)
+        / (p.k10 * (p.k6 - t24 - p.k0 * (t17 * t34 + t19 * t33)) * p.k6
+            + p.k10 * (t25 + p.k0 * (t16 * t34 + t18 * t33)) * p.k7) * p.k7)
 }
 
 /// Checked variant of [`lambda`]: the same value, or why it would not be finite.
@@ -793,33 +805,33 @@ pub fn accel(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F, xd: F) -> [
     let t13 = t1 * t8;
     let t14 = p.k3 + t4 * t10;
     let t15 = t14 - t13;
-    let t16 = th_swd * p.k17 * th_swd;
-    let t17 = th_std * p.k17 * th_std;
-    let t18 = t2 * p.k80;
-    let t19 = t6 * p.k80;
-    let t20 = t5 * p.k80;
-    let t21 = t7 * p.k80;
-    let t22 = tanh(p.c * xd * p.k81);
+    let t16 = t6 * p.k10;
+    let t17 = t2 * p.k10;
+    let t18 = t7 * p.k10;
+    let t19 = t5 * p.k10;
+    let t20 = th_swd * p.k22 * th_swd;
+    let t21 = th_std * p.k22 * th_std;
+    let t22 = tanh(p.c * xd * p.k85);
     let t23 = p.mu0 * t22;
     let t24 = p.k7 * t23;
     let t25 = p.k7 + p.k6 * t23;
     let t26 = t24 - p.k6;
-    let t27 = t18 * t26 + t19 * t25;
-    let t28 = p.k16 - (t2 * t18 + t6 * t19);
-    let t29 = t5 * t18 + t7 * t19 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
+    let t27 = t17 * t26 + t16 * t25;
+    let t28 = p.k21 - (t2 * t17 + t6 * t16);
+    let t29 = t5 * t17 + t7 * t16 - (t3 * p.k22 * t0 + t4 * p.k22 * t1);
     let t30 = 1.0_f64 / t28;
     let t31 = t29 * t30;
-    let t32 = 1.0_f64 / (p.k15 - (t7 * t21 + t29 * t31 + t5 * t20));
-    let t33 = (t21 * t25 + t27 * t31 + t20 * t26) * t32;
+    let t32 = 1.0_f64 / (p.k20 - (t7 * t18 + t29 * t31 + t5 * t19));
+    let t33 = (t18 * t25 + t27 * t31 + t19 * t26) * t32;
     let t34 = t30 * (t27 + t31 * t33 * t28);
-    let t35 = p.k80 * (t25 + p.k0 * (t19 * t34 + t21 * t33));
-    let t36 = p.k80 * (p.k6 - t24 - p.k0 * (t18 * t34 + t20 * t33));
-    let t37 = t0 * (p.k5 + t4 * t16) - t3 * t16 * t1 - t15 * t19 + t12 * t18;
+    let t35 = p.k10 * (t25 + p.k0 * (t16 * t34 + t18 * t33));
+    let t36 = p.k10 * (p.k6 - t24 - p.k0 * (t17 * t34 + t19 * t33));
+    let t37 = t0 * (p.k5 + t4 * t20) - t3 * t20 * t1 - t15 * t16 + t12 * t17;
     let t38 = t32
-        * (t3 * (t1 * t17 - p.k4) - t4 * t17 * t0 - t31 * t37 + t15 * t21 - t12 * t20);
+        * (t3 * (t1 * t21 - p.k4) - t4 * t21 * t0 - t31 * t37 + t15 * t18 - t12 * t19);
     let t39 = t30 * (t37 - t31 * t38 * t28);
-    let t40 = p.k80 * (t13 - t14 + p.k0 * (t19 * t39 - t21 * t38));
-    let t41 = p.k80 * (t9 - t11 + p.k0 * (t20 * t38 - t18 * t39));
+    let t40 = p.k10 * (t13 - t14 + p.k0 * (t16 * t39 - t18 * t38));
+    let t41 = p.k10 * (t9 - t11 + p.k0 * (t19 * t38 - t17 * t39));
     let t42 = (p.k6 * t41 + p.k7 * t40) / (p.k6 * t36 + p.k7 * t35);
     [t41 - t36 * t42, t40 - t35 * t42, t39 - t34 * t42, t38 + t33 * t42]
 }
@@ -877,15 +889,15 @@ pub fn stick(p: &Prepared, th_st: F, th_sw: F, th_std: F, th_swd: F) -> [F; 6] {
     let (t2, t3) = sin_cos(th_sw);
     let t4 = p.k2 * th_std * th_std;
     let t5 = p.k1 * th_swd * th_swd;
-    let t6 = t2 * p.k17 * t0 + t3 * p.k17 * t1;
-    let t7 = th_swd * p.k17 * th_swd;
+    let t6 = t2 * p.k22 * t0 + t3 * p.k22 * t1;
+    let t7 = th_swd * p.k22 * th_swd;
     let t8 = t0 * (p.k5 + t3 * t7);
     let t9 = t2 * t7 * t1;
-    let t10 = th_std * p.k17 * th_std;
-    let t11 = t6 * p.k82;
+    let t10 = th_std * p.k22 * th_std;
+    let t11 = t6 * p.k86;
     let t12 = (t2 * (t1 * t10 - p.k4) - t3 * t10 * t0 - (t9 - t8) * t11)
-        / (p.k15 - t6 * t11);
-    let t13 = p.k82 * (t8 - t9 + t11 * t12 * p.k16);
+        / (p.k20 - t6 * t11);
+    let t13 = p.k86 * (t8 - t9 + t11 * t12 * p.k21);
     let t14 = t2 * t5 - t0 * t4 + (p.k2 * t1 * t13 - p.k1 * t3 * t12);
     let t15 = p.k3 + t3 * t5 - t1 * t4 + (p.k1 * t2 * t12 - p.k2 * t0 * t13);
     [0.0_f64, 0.0_f64, t13, t12, p.k7 * t14 - p.k6 * t15, p.k6 * t14 + p.k7 * t15]
@@ -961,21 +973,21 @@ pub fn impact(
     let t11 = t3 * p.k8;
     let t12 = t4 * p.k9;
     let t13 = t11 - t12;
-    let t14 = t2 * p.k80;
-    let t15 = t6 * p.k80;
-    let t16 = t5 * p.k80;
-    let t17 = t7 * p.k80;
-    let t18 = p.k16 - (t2 * t14 + t6 * t15);
-    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
+    let t14 = t6 * p.k10;
+    let t15 = t2 * p.k10;
+    let t16 = t7 * p.k10;
+    let t17 = t5 * p.k10;
+    let t18 = p.k21 - (t2 * t15 + t6 * t14);
+    let t19 = t5 * t15 + t7 * t14 - (t3 * p.k22 * t0 + t4 * p.k22 * t1);
     let t20 = 1.0_f64 / t18;
     let t21 = t19 * t20;
-    let t22 = p.k6 * t14;
-    let t23 = t10 + p.k7 * t15;
-    let t24 = (t13 + t21 * (t22 - t23) - p.k7 * t17 + p.k6 * t16)
-        / (p.k15 - (t7 * t17 + t19 * t21 + t5 * t16));
+    let t22 = p.k6 * t15;
+    let t23 = t10 + p.k7 * t14;
+    let t24 = (t13 + t21 * (t22 - t23) - p.k7 * t16 + p.k6 * t17)
+        / (p.k20 - (t7 * t16 + t19 * t21 + t5 * t17));
     let t25 = t20 * (t23 - t22 - t21 * t24 * t18);
-    let t26 = p.k80 * (p.k7 + p.k0 * (t15 * t25 - t17 * t24));
-    let t27 = p.k80 * (p.k6 + p.k0 * (t16 * t24 - t14 * t25));
+    let t26 = p.k10 * (p.k7 + p.k0 * (t14 * t25 - t16 * t24));
+    let t27 = p.k10 * (p.k6 + p.k0 * (t17 * t24 - t15 * t25));
     let t28 = (th_std * (t8 - t9) + th_swd * (t12 - t11) - p.k7 * zd - p.k6 * xd)
         / (t10 * t25 + t13 * t24 + p.k7 * t26 + p.k6 * t27);
     [t28, xd + t27 * t28, zd + t26 * t28, th_std + t25 * t28, th_swd + t24 * t28]
@@ -1057,31 +1069,31 @@ pub fn impact_double(
     let t14 = p.k6 * xd;
     let t15 = p.k7 * zd;
     let t16 = th_std * (t8 - t9) + th_swd * (t12 - t11) - t15;
-    let t17 = t2 * p.k80;
-    let t18 = t6 * p.k80;
-    let t19 = t5 * p.k80;
-    let t20 = t7 * p.k80;
-    let t21 = p.k16 - (t2 * t17 + t6 * t18);
-    let t22 = t5 * t17 + t7 * t18 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
+    let t17 = t6 * p.k10;
+    let t18 = t2 * p.k10;
+    let t19 = t7 * p.k10;
+    let t20 = t5 * p.k10;
+    let t21 = p.k21 - (t2 * t18 + t6 * t17);
+    let t22 = t5 * t18 + t7 * t17 - (t3 * p.k22 * t0 + t4 * p.k22 * t1);
     let t23 = 1.0_f64 / t21;
     let t24 = t22 * t23;
-    let t25 = 1.0_f64 / (p.k15 - (t7 * t20 + t22 * t24 + t5 * t19));
-    let t26 = p.k6 * t17;
-    let t27 = p.k7 * t18;
+    let t25 = 1.0_f64 / (p.k20 - (t7 * t19 + t22 * t24 + t5 * t20));
+    let t26 = p.k6 * t18;
+    let t27 = p.k7 * t17;
     let t28 = t10 + t27;
-    let t29 = p.k6 * t19;
-    let t30 = p.k7 * t20;
+    let t29 = p.k6 * t20;
+    let t30 = p.k7 * t19;
     let t31 = t25 * (t13 + t24 * (t26 - t28) - t30 + t29);
     let t32 = t23 * (t28 - t26 - t24 * t31 * t21);
-    let t33 = p.k80 * (p.k7 + p.k0 * (t18 * t32 - t20 * t31));
-    let t34 = p.k80 * (p.k6 + p.k0 * (t19 * t31 - t17 * t32));
+    let t33 = p.k10 * (p.k7 + p.k0 * (t17 * t32 - t19 * t31));
+    let t34 = p.k10 * (p.k6 + p.k0 * (t20 * t31 - t18 * t32));
     let t35 = p.k6 * t34;
     let t36 = p.k7 * t33;
     let t37 = t10 * t32 + t13 * t31 + t36 + t35;
     let t38 = t25 * (t24 * (t26 - t27) - t30 + t29);
     let t39 = t23 * (t27 - t26 - t24 * t38 * t21);
-    let t40 = p.k80 * (p.k7 + p.k0 * (t18 * t39 - t20 * t38));
-    let t41 = p.k80 * (p.k6 + p.k0 * (t19 * t38 - t17 * t39));
+    let t40 = p.k10 * (p.k7 + p.k0 * (t17 * t39 - t19 * t38));
+    let t41 = p.k10 * (p.k6 + p.k0 * (t20 * t38 - t18 * t39));
     let t42 = t35 + t36;
     let t43 = 1.0_f64 / t37;
     let t44 = t42 * t43;
@@ -1172,36 +1184,36 @@ pub fn impact_coulomb(
     let t11 = p.k7 * zd;
     let t12 = t0 * p.k9 + t1 * p.k8;
     let t13 = t3 * p.k9 + t4 * p.k8;
-    let t14 = t2 * p.k80;
-    let t15 = t6 * p.k80;
-    let t16 = t5 * p.k80;
-    let t17 = t7 * p.k80;
-    let t18 = p.k16 - (t2 * t14 + t6 * t15);
-    let t19 = t5 * t14 + t7 * t15 - (t3 * p.k17 * t0 + t4 * p.k17 * t1);
+    let t14 = t6 * p.k10;
+    let t15 = t2 * p.k10;
+    let t16 = t7 * p.k10;
+    let t17 = t5 * p.k10;
+    let t18 = p.k21 - (t2 * t15 + t6 * t14);
+    let t19 = t5 * t15 + t7 * t14 - (t3 * p.k22 * t0 + t4 * p.k22 * t1);
     let t20 = 1.0_f64 / t18;
     let t21 = t19 * t20;
-    let t22 = 1.0_f64 / (p.k15 - (t7 * t17 + t19 * t21 + t5 * t16));
-    let t23 = p.k6 * t14;
-    let t24 = p.k7 * t15;
+    let t22 = 1.0_f64 / (p.k20 - (t7 * t16 + t19 * t21 + t5 * t17));
+    let t23 = p.k6 * t15;
+    let t24 = p.k7 * t14;
     let t25 = t8 + t24;
-    let t26 = p.k6 * t16;
-    let t27 = p.k7 * t17;
+    let t26 = p.k6 * t17;
+    let t27 = p.k7 * t16;
     let t28 = t22 * (t9 + t21 * (t23 - t25) - t27 + t26);
     let t29 = t20 * (t25 - t23 - t21 * t28 * t18);
-    let t30 = p.k80 * (p.k7 + p.k0 * (t15 * t29 - t17 * t28));
-    let t31 = p.k80 * (p.k6 + p.k0 * (t16 * t28 - t14 * t29));
+    let t30 = p.k10 * (p.k7 + p.k0 * (t14 * t29 - t16 * t28));
+    let t31 = p.k10 * (p.k6 + p.k0 * (t17 * t28 - t15 * t29));
     let t32 = t22 * (t21 * (t23 - t24) - t27 + t26);
     let t33 = t20 * (t24 - t23 - t21 * t32 * t18);
-    let t34 = p.k80 * (p.k7 + p.k0 * (t15 * t33 - t17 * t32));
-    let t35 = p.k80 * (p.k6 + p.k0 * (t16 * t32 - t14 * t33));
+    let t34 = p.k10 * (p.k7 + p.k0 * (t14 * t33 - t16 * t32));
+    let t35 = p.k10 * (p.k6 + p.k0 * (t17 * t32 - t15 * t33));
     let t36 = p.k6 * t35;
     let t37 = p.k7 * t34;
-    let t38 = p.k7 * t14;
-    let t39 = t12 - p.k6 * t15;
-    let t40 = t22 * (t21 * (t38 - t39) - t13 + p.k6 * t17 + p.k7 * t16);
+    let t38 = p.k7 * t15;
+    let t39 = t12 - p.k6 * t14;
+    let t40 = t22 * (t21 * (t38 - t39) - t13 + p.k6 * t16 + p.k7 * t17);
     let t41 = t20 * (t39 - t38 - t21 * t40 * t18);
-    let t42 = p.k80 * (p.k0 * (t15 * t41 - t17 * t40) - p.k6);
-    let t43 = p.k80 * (p.k7 + p.k0 * (t16 * t40 - t14 * t41));
+    let t42 = p.k10 * (p.k0 * (t14 * t41 - t16 * t40) - p.k6);
+    let t43 = p.k10 * (p.k7 + p.k0 * (t17 * t40 - t15 * t41));
     [
         xd,
         zd,
@@ -1281,6 +1293,283 @@ pub fn impact_coulomb_checked(
     Ok(out)
 }
 
+/// Partial derivatives of the sliding stance's accelerations by (q, qdot, mu).
+///
+/// Paper: Eq. 27.
+///
+/// Arguments: `th_st`, `th_sw`, `th_std`, `th_swd`, `xd`; parameters through `p` from [`prepare`].
+/// Returns, row-major, `[[J00, J01, J02, J03, J04, J05, J06, J07, J08], [J10, J11, J12, J13, J14, J15, J16, J17, J18], [J20, J21, J22, J23, J24, J25, J26, J27, J28], [J30, J31, J32, J33, J34, J35, J36, J37, J38]]`.
+///
+/// Operations per call: 178 add/sub, 283 mul, 6 div, 1 neg, 3 transcendental.
+/// Transcendental calls inline in this file: `sin_cos`, `tanh`.
+///
+/// Unchecked fast path: no checks; non-finite inputs propagate to non-finite outputs (but the
+/// friction law's `tanh` maps an infinite argument to a finite value, and an argument the scene
+/// does not read has no effect); never panics. [`accel_jacobian_checked`] rejects non-finite
+/// arguments and outputs.
+#[inline]
+#[must_use]
+pub fn accel_jacobian(
+    p: &Prepared,
+    th_st: F,
+    th_sw: F,
+    th_std: F,
+    th_swd: F,
+    xd: F,
+) -> [[F; 9]; 4] {
+    let (t0, t1) = sin_cos(th_st);
+    let t2 = p.k2 * t1;
+    let (t3, t4) = sin_cos(th_sw);
+    let t5 = p.k1 * t4;
+    let t6 = p.k2 * t0;
+    let t7 = p.k1 * t3;
+    let t8 = p.k2 * th_std * th_std;
+    let t9 = t0 * t8;
+    let t10 = p.k1 * th_swd * th_swd;
+    let t11 = t3 * t10;
+    let t12 = t11 - t9;
+    let t13 = t1 * t8;
+    let t14 = t4 * t10;
+    let t15 = p.k3 + t14;
+    let t16 = t15 - t13;
+    let t17 = t6 * p.k10;
+    let t18 = t2 * p.k10;
+    let t19 = t2 * t17;
+    let t20 = t6 * t18;
+    let t21 = t7 * p.k10;
+    let t22 = t5 * p.k10;
+    let t23 = t5 * t17;
+    let t24 = t7 * t18;
+    let t25 = t5 * t21;
+    let t26 = t7 * t22;
+    let t27 = th_std * p.k14;
+    let t28 = t0 * t27;
+    let t29 = th_swd * p.k13;
+    let t30 = t3 * t29;
+    let t31 = t1 * t27;
+    let t32 = t4 * t29;
+    let t33 = t3 * p.k22;
+    let t34 = t4 * p.k22;
+    let t35 = t0 * t33 + t1 * t34;
+    let t36 = th_swd * p.k22 * th_swd;
+    let t37 = p.k5 + t4 * t36;
+    let t38 = t3 * t36;
+    let t39 = th_std * p.k22 * th_std;
+    let t40 = t1 * t39 - p.k4;
+    let t41 = t0 * t34;
+    let t42 = t1 * t33;
+    let t43 = t24 - t23 + (t41 - t42);
+    let t44 = t4 * p.k23 * t0;
+    let t45 = t3 * p.k23 * t1;
+    let t46 = t5 * t18 + t7 * t17;
+    let t47 = tanh(p.c * xd * p.k85);
+    let t48 = p.mu0 * t47;
+    let t49 = p.k7 * t48;
+    let t50 = p.k7 + p.k6 * t48;
+    let t51 = t49 - p.k6;
+    let t52 = t18 * t51 + t17 * t50;
+    let t53 = t12 * t22;
+    let t54 = p.k21 - (t2 * t18 + t6 * t17);
+    let t55 = t46 - t35;
+    let t56 = 1.0_f64 / t54;
+    let t57 = t55 * t56;
+    let t58 = p.k20 - (t7 * t21 + t55 * t57 + t5 * t22);
+    let t59 = t21 * t50 + t52 * t57 + t22 * t51;
+    let t60 = 1.0_f64 / t58;
+    let t61 = t59 * t60;
+    let t62 = t56 * (t52 + t57 * t61 * t54);
+    let t63 = t17 * t62;
+    let t64 = t21 * t61;
+    let t65 = p.k10 * (t50 + p.k0 * (t63 + t64));
+    let t66 = t18 * t62;
+    let t67 = t22 * t61;
+    let t68 = p.k10 * (p.k6 - t49 - p.k0 * (t66 + t67));
+    let t69 = p.k6 * t68 + p.k7 * t65;
+    let t70 = t0 * t37 - t1 * t38 - t16 * t17 + t12 * t18;
+    let t71 = t3 * t40 - t4 * t39 * t0 - t57 * t70 + t16 * t21;
+    let t72 = t60 * (t71 - t53);
+    let t73 = t56 * (t70 - t57 * t72 * t54);
+    let t74 = t17 * t73;
+    let t75 = t21 * t72;
+    let t76 = t18 * t73;
+    let t77 = t22 * t72;
+    let t78 = p.k10 * (t9 - t11 + p.k0 * (t77 - t76)) * p.k6
+        + p.k10 * (t13 - t15 + p.k0 * (t74 - t75)) * p.k7;
+    let t79 = t19 - (t19 + t20) + t20;
+    let t80 = t18 * t50 - t17 * t51;
+    let t81 = p.k7 * t18 + p.k6 * t17;
+    let t82 = t17 * t31 - t18 * t28;
+    let t83 = 1.0_f64 / t69;
+    let t84 = t78 * t83;
+    let t85 = t42 - t41 + (t23 - t24);
+    let t86 = t35 - t46;
+    let t87 = 1.0_f64 / (t54 * t54);
+    let t88 = t86 * t87 * t79 + t43 * t56;
+    let t89 = t56 * t85;
+    let t90 = t86 * t88 - t43 * t57;
+    let t91 = t86 * t89 - t57 * t85 - t26 - t25 + t25 + t26;
+    let t92 = 1.0_f64 / (t58 * t58);
+    let t93 = t59 * t92;
+    let t94 = t90 * t93 - t60 * (t52 * t88 + t57 * t80);
+    let t95 = t91 * t93 + t60 * (t21 * t51 - (t22 * t50 + t52 * t89));
+    let t96 = t60 * (p.k6 * t21 + t57 * t81 + p.k7 * t22);
+    let t97 = t56 * t80 - t57 * t94 + t61 * t88 - t52 * t87 * t79;
+    let t98 = t61 * t89 - t57 * t95;
+    let t99 = t56 * t81 + t57 * t96;
+    let t100 = t17 * t97 - t21 * t94 + t66;
+    let t101 = t17 * t98 - t21 * t95 + t67;
+    let t102 = t21 * t96 + t17 * t99 + p.k11;
+    let t103 = t22 * t94 - t18 * t97 + t63;
+    let t104 = t22 * t95 - t18 * t98 + t64;
+    let t105 = t22 * t96 + t18 * t99 + p.k12;
+    let t106 = t1 * t37 + t0 * t38 - (t13 * t18 + t9 * t17) - t16 * t18 - t12 * t17;
+    let t107 = t14 * t18 + t11 * t17 - th_swd * t35 * th_swd;
+    let t108 = t18 * t30 - t17 * t32 + th_swd * (t44 - t45);
+    let t109 = t92 * (t53 - t71);
+    let t110 = t90 * t109
+        + t60 * (t9 * t21 - t57 * t106 + t13 * t22 - th_std * t35 * th_std - t70 * t88);
+    let t111 = t91 * t109
+        + t60
+            * (t4 * t40 + t3 * t39 * t0 - (t11 * t21 + t57 * t107 + t14 * t22)
+                - t70 * t89 + t16 * t22 + t12 * t21);
+    let t112 = t60 * (t22 * t28 - (t21 * t31 + t57 * t82) + th_std * (t45 - t44));
+    let t113 = t60 * (t21 * t32 - t57 * t108 - t22 * t30);
+    let t114 = t56 * t106 - t57 * t110 - t72 * t88 - t70 * t87 * t79;
+    let t115 = t56 * t107 - t57 * t111 - t72 * t89;
+    let t116 = t56 * t82 - t57 * t112;
+    let t117 = t56 * t108 - t57 * t113;
+    let t118 = t17 * t114 - t21 * t110 - t9 * p.k10 + t76;
+    let t119 = t17 * t115 - t21 * t111 + t11 * p.k10 - t77;
+    let t120 = t17 * t116 - t21 * t112 + p.k10 * t31;
+    let t121 = t17 * t117 - t21 * t113 - p.k10 * t32;
+    let t122 = t22 * t110 - t18 * t114 + t13 * p.k10 + t74;
+    let t123 = t22 * t111 - t18 * t115 - t14 * p.k10 - t75;
+    let t124 = t22 * t112 - t18 * t116 + p.k10 * t28;
+    let t125 = t22 * t113 - t18 * t117 - p.k10 * t30;
+    let t126 = t78 / (t69 * t69);
+    let t127 = p.k7 * t83;
+    let t128 = p.k6 * t83;
+    let t129 = (p.k7 * t100 + p.k6 * t103) * t126 - (t118 * t127 + t122 * t128);
+    let t130 = (p.k7 * t101 + p.k6 * t104) * t126 - (t119 * t127 + t123 * t128);
+    let t131 = t120 * t127 + t124 * t128;
+    let t132 = t121 * t127 + t125 * t128;
+    let t133 = (p.k6 * t105 - p.k7 * t102) * t126;
+    [
+        [
+            0.0_f64,
+            0.0_f64,
+            t122 + t68 * t129 - t84 * t103,
+            t123 + t68 * t130 - t84 * t104,
+            0.0_f64,
+            0.0_f64,
+            t124 - t68 * t131,
+            t125 - t68 * t132,
+            t68 * t133 - t84 * t105,
+        ],
+        [
+            0.0_f64,
+            0.0_f64,
+            t118 + t65 * t129 - t84 * t100,
+            t119 + t65 * t130 - t84 * t101,
+            0.0_f64,
+            0.0_f64,
+            t120 - t65 * t131,
+            t121 - t65 * t132,
+            t84 * t102 + t65 * t133,
+        ],
+        [
+            0.0_f64,
+            0.0_f64,
+            t114 + t62 * t129 - t84 * t97,
+            t115 + t62 * t130 - t84 * t98,
+            0.0_f64,
+            0.0_f64,
+            t116 - t62 * t131,
+            t117 - t62 * t132,
+            t84 * t99 + t62 * t133,
+        ],
+        [
+            0.0_f64,
+            0.0_f64,
+            t110 - t61 * t129 - t84 * t94,
+            t111 - t61 * t130 - t84 * t95,
+            0.0_f64,
+            0.0_f64,
+            t112 + t61 * t131,
+            t113 + t61 * t132,
+            -(t84 * t96 + t61 * t133),
+        ],
+    ]
+}
+
+/// Checked variant of [`accel_jacobian`]: the same value, or why it would not be finite.
+///
+/// Every argument is checked, also one the scene does not read. Cost: the unchecked kernel plus 41
+/// finiteness tests. Never panics.
+///
+/// # Errors
+///
+/// [`KernelError::NonFiniteArgument`] naming the first argument (in the order `th_st`, `th_sw`,
+/// `th_std`, `th_swd`, `xd`) that is NaN or infinite; otherwise [`KernelError::NonFiniteOutput`]
+/// naming the first output (in the order `J00`, `J01`, `J02`, `J03`, `J04`, `J05`, `J06`, `J07`,
+/// `J08`, `J10`, `J11`, `J12`, `J13`, `J14`, `J15`, `J16`, `J17`, `J18`, `J20`, `J21`, `J22`,
+/// `J23`, `J24`, `J25`, `J26`, `J27`, `J28`, `J30`, `J31`, `J32`, `J33`, `J34`, `J35`, `J36`,
+/// `J37`, `J38`) that is NaN or infinite, for example where a denominator vanishes or a parameter
+/// given to [`prepare`] is not finite.
+#[inline]
+pub fn accel_jacobian_checked(
+    p: &Prepared,
+    th_st: F,
+    th_sw: F,
+    th_std: F,
+    th_swd: F,
+    xd: F,
+) -> Result<[[F; 9]; 4], KernelError> {
+    KernelError::argument("th_st", th_st)?;
+    KernelError::argument("th_sw", th_sw)?;
+    KernelError::argument("th_std", th_std)?;
+    KernelError::argument("th_swd", th_swd)?;
+    KernelError::argument("xd", xd)?;
+    let out = accel_jacobian(p, th_st, th_sw, th_std, th_swd, xd);
+    KernelError::output("J00", out[0][0])?;
+    KernelError::output("J01", out[0][1])?;
+    KernelError::output("J02", out[0][2])?;
+    KernelError::output("J03", out[0][3])?;
+    KernelError::output("J04", out[0][4])?;
+    KernelError::output("J05", out[0][5])?;
+    KernelError::output("J06", out[0][6])?;
+    KernelError::output("J07", out[0][7])?;
+    KernelError::output("J08", out[0][8])?;
+    KernelError::output("J10", out[1][0])?;
+    KernelError::output("J11", out[1][1])?;
+    KernelError::output("J12", out[1][2])?;
+    KernelError::output("J13", out[1][3])?;
+    KernelError::output("J14", out[1][4])?;
+    KernelError::output("J15", out[1][5])?;
+    KernelError::output("J16", out[1][6])?;
+    KernelError::output("J17", out[1][7])?;
+    KernelError::output("J18", out[1][8])?;
+    KernelError::output("J20", out[2][0])?;
+    KernelError::output("J21", out[2][1])?;
+    KernelError::output("J22", out[2][2])?;
+    KernelError::output("J23", out[2][3])?;
+    KernelError::output("J24", out[2][4])?;
+    KernelError::output("J25", out[2][5])?;
+    KernelError::output("J26", out[2][6])?;
+    KernelError::output("J27", out[2][7])?;
+    KernelError::output("J28", out[2][8])?;
+    KernelError::output("J30", out[3][0])?;
+    KernelError::output("J31", out[3][1])?;
+    KernelError::output("J32", out[3][2])?;
+    KernelError::output("J33", out[3][3])?;
+    KernelError::output("J34", out[3][4])?;
+    KernelError::output("J35", out[3][5])?;
+    KernelError::output("J36", out[3][6])?;
+    KernelError::output("J37", out[3][7])?;
+    KernelError::output("J38", out[3][8])?;
+    Ok(out)
+}
+
 /// Partial derivatives of the stuck stance's accelerations and ground force by (q, qdot).
 ///
 /// Paper: stick phase; Eq. 19 with both foot coordinates held.
@@ -1305,101 +1594,101 @@ pub fn stick_jacobian(
 ) -> [[F; 8]; 6] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = th_swd * p.k17 * th_swd;
+    let t4 = th_swd * p.k22 * th_swd;
     let t5 = t3 * t4;
     let t6 = p.k5 + t5;
-    let t7 = th_std * p.k18 * th_std;
-    let t8 = th_std * p.k19 * th_std;
-    let t9 = t3 * p.k18 * t2;
-    let t10 = t2 * p.k21 * t2;
-    let t11 = t10 - p.k23;
+    let t7 = th_std * p.k24 * th_std;
+    let t8 = th_std * p.k25 * th_std;
+    let t9 = t3 * p.k24 * t2;
+    let t10 = t2 * p.k27 * t2;
+    let t11 = t10 - p.k29;
     let t12 = th_swd * t11 * th_swd;
-    let t13 = t3 * p.k22;
-    let t14 = th_swd * p.k21 * th_swd;
-    let t15 = th_std * p.k24 * th_std;
+    let t13 = t3 * p.k28;
+    let t14 = th_swd * p.k27 * th_swd;
+    let t15 = th_std * p.k30 * th_std;
     let t16 = t1 * t15;
-    let t17 = t3 * p.k21 * t2;
-    let t18 = th_swd * p.k31 * th_swd;
-    let t19 = th_swd * p.k34 * th_swd;
-    let t20 = t2 * p.k30;
-    let t21 = t3 * p.k33;
+    let t17 = t3 * p.k27 * t2;
+    let t18 = th_swd * p.k37 * th_swd;
+    let t19 = th_swd * p.k40 * th_swd;
+    let t20 = t2 * p.k36;
+    let t21 = t3 * p.k39;
     let t22 = th_std * (t21 - t20) * th_std;
     let t23 = t3 * t19;
     let t24 = t3 * t18;
-    let t25 = p.k37 + t24;
-    let t26 = th_std * p.k38 * th_std;
-    let t27 = th_std * (t2 * p.k33 + t3 * p.k30) * th_std;
-    let t28 = th_swd * p.k29 * th_swd;
-    let t29 = th_std * p.k39 * th_std;
-    let t30 = th_swd * p.k41 * th_swd;
-    let t31 = t23 + p.k47;
-    let t32 = th_std * p.k48 * th_std;
-    let t33 = th_swd * p.k32 * th_swd;
-    let t34 = th_std * p.k49 * th_std;
-    let t35 = th_swd * p.k51 * th_swd;
-    let t36 = th_std * p.k53 * th_std;
+    let t25 = p.k43 + t24;
+    let t26 = th_std * p.k44 * th_std;
+    let t27 = th_std * (t2 * p.k39 + t3 * p.k36) * th_std;
+    let t28 = th_swd * p.k35 * th_swd;
+    let t29 = th_std * p.k45 * th_std;
+    let t30 = th_swd * p.k47 * th_swd;
+    let t31 = t23 + p.k53;
+    let t32 = th_std * p.k54 * th_std;
+    let t33 = th_swd * p.k38 * th_swd;
+    let t34 = th_std * p.k55 * th_std;
+    let t35 = th_swd * p.k57 * th_swd;
+    let t36 = th_std * p.k59 * th_std;
     let t37 = t1 * t36;
     let t38 = t0 * t36;
-    let t39 = t0 * p.k18 * t0;
-    let t40 = th_swd * p.k55 * th_swd;
+    let t39 = t0 * p.k24 * t0;
+    let t40 = th_swd * p.k60 * th_swd;
     let t41 = t3 * t40;
     let t42 = t2 * t40;
-    let t43 = th_swd * p.k61 * th_swd;
-    let t44 = th_swd * p.k64 * th_swd;
+    let t43 = th_swd * p.k66 * th_swd;
+    let t44 = th_swd * p.k69 * th_swd;
     let t45 = t3 * t43;
     let t46 = t3 * t44;
-    let t47 = th_std * p.k33 * th_std;
+    let t47 = th_std * p.k39 * th_std;
     let t48 = t1 * t47;
-    let t49 = th_std * p.k30 * th_std;
-    let t50 = t2 * p.k60 + t3 * p.k63;
-    let t51 = th_std * p.k60 * th_std * t1;
-    let t52 = th_std * p.k63 * th_std * t1;
+    let t49 = th_std * p.k36 * th_std;
+    let t50 = t2 * p.k65 + t3 * p.k68;
+    let t51 = th_std * p.k65 * th_std * t1;
+    let t52 = th_std * p.k68 * th_std * t1;
     let t53 = t1 * t49;
-    let t54 = t2 * p.k63;
-    let t55 = t3 * p.k60;
-    let t56 = t2 * p.k64 + t3 * p.k61;
-    let t57 = t2 * p.k61;
-    let t58 = t3 * p.k64;
+    let t54 = t2 * p.k68;
+    let t55 = t3 * p.k65;
+    let t56 = t2 * p.k69 + t3 * p.k66;
+    let t57 = t2 * p.k66;
+    let t58 = t3 * p.k69;
     let t59 = t54 - t55;
     let t60 = 1.0_f64
-        / (t0 * (t0 * (t2 * p.k18 * t2 - p.k19) + t1 * t9) - (p.k20 + t2 * p.k19 * t2));
-    let t61 = (t0 * (t1 * t8 - t6 + t2 * (t2 * (p.k10 - t1 * t7) + t3 * t7 * t0))
-        + t2 * (t1 * (t3 * p.k10 + t4) - t3 * t8)) * t60;
-    let t62 = 1.0_f64 / (t0 * (t0 * t11 + t1 * t17) - (p.k26 + t2 * p.k23 * t2));
-    let t63 = (t0 * (t3 * t15 - t2 * (p.k22 + t3 * t14) * t0 + t1 * (t12 - t13))
-        + t2 * (p.k25 + th_swd * p.k23 * th_swd * t3 - t16)) * t62;
-    let t64 = (p.k42 + t3 * t30 - t1 * t29
-        + t2 * (t3 * p.k36 + t28 + t2 * p.k40 - t1 * t27)
+        / (t0 * (t0 * (t2 * p.k24 * t2 - p.k25) + t1 * t9) - (p.k26 + t2 * p.k25 * t2));
+    let t61 = (t0 * (t1 * t8 - t6 + t2 * (t2 * (p.k15 - t1 * t7) + t3 * t7 * t0))
+        + t2 * (t1 * (t3 * p.k15 + t4) - t3 * t8)) * t60;
+    let t62 = 1.0_f64 / (t0 * (t0 * t11 + t1 * t17) - (p.k32 + t2 * p.k29 * t2));
+    let t63 = (t0 * (t3 * t15 - t2 * (p.k28 + t3 * t14) * t0 + t1 * (t12 - t13))
+        + t2 * (p.k31 + th_swd * p.k29 * th_swd * t3 - t16)) * t62;
+    let t64 = (p.k48 + t3 * t30 - t1 * t29
+        + t2 * (t3 * p.k42 + t28 + t2 * p.k46 - t1 * t27)
         + t0
-            * (t26 - t1 * t25 + t0 * (p.k35 - t23)
-                + t2 * (t1 * (t19 - t3 * p.k28) + t22 - t0 * (t2 * p.k28 + t18)))) * t60;
-    let t65 = (t1 * t34 - (p.k52 + t3 * t35)
-        + t2 * (t3 * p.k46 + t33 - t2 * p.k50 + th_std * (t20 - t21) * th_std * t1)
+            * (t26 - t1 * t25 + t0 * (p.k41 - t23)
+                + t2 * (t1 * (t19 - t3 * p.k34) + t22 - t0 * (t2 * p.k34 + t18)))) * t60;
+    let t65 = (t1 * t34 - (p.k58 + t3 * t35)
+        + t2 * (t3 * p.k52 + t33 - t2 * p.k56 + th_std * (t20 - t21) * th_std * t1)
         + t0
-            * (t32 - t1 * t31 + t0 * (t24 + p.k45)
-                + t2 * (t1 * (t3 * p.k44 - t18) - t27 + t0 * (t2 * p.k44 - t19)))) * t60;
-    let t66 = p.k53 * t61;
+            * (t32 - t1 * t31 + t0 * (t24 + p.k51)
+                + t2 * (t1 * (t3 * p.k50 - t18) - t27 + t0 * (t2 * p.k50 - t19)))) * t60;
+    let t66 = p.k59 * t61;
     let t67 = t0 * t66;
     let t68 = t1 * t66;
-    let t69 = p.k18 * t61;
+    let t69 = p.k24 * t61;
     let t70 = t3 * t69;
     let t71 = t0 * t69;
-    let t72 = p.k55 * t63;
+    let t72 = p.k60 * t63;
     let t73 = t2 * t72;
     let t74 = t3 * t72;
-    let t75 = p.k21 * t63;
+    let t75 = p.k27 * t63;
     let t76 = t1 * t75;
     let t77 = t2 * t75;
-    let t78 = p.k58 + p.k53 * t64;
+    let t78 = p.k63 + p.k59 * t64;
     let t79 = t3 * t78;
     let t80 = t2 * t78;
-    let t81 = p.k18 * t64;
-    let t82 = p.k28 + t81;
-    let t83 = p.k53 * t65;
-    let t84 = t83 - p.k71;
-    let t85 = p.k71 - t83;
-    let t86 = p.k18 * t65;
-    let t87 = p.k44 - t86;
+    let t81 = p.k24 * t64;
+    let t82 = p.k34 + t81;
+    let t83 = p.k59 * t65;
+    let t84 = t83 - p.k76;
+    let t85 = p.k76 - t83;
+    let t86 = p.k24 * t65;
+    let t87 = p.k50 - t86;
     [
         [0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
         [0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
@@ -1407,38 +1696,38 @@ pub fn stick_jacobian(
             0.0_f64,
             0.0_f64,
             t60
-                * (th_std * (p.k19 - t39) * th_std + t1 * (t71 - t6)
+                * (th_std * (p.k25 - t39) * th_std + t1 * (t71 - t6)
                     + t2
-                        * (t2 * (t1 * p.k10 - t7) - t70
-                            + t0 * (t2 * (t38 - t68) - t4 + t3 * (t37 - p.k10 + t67)))),
+                        * (t2 * (t1 * p.k15 - t7) - t70
+                            + t0 * (t2 * (t38 - t68) - t4 + t3 * (t37 - p.k15 + t67)))),
             t60
-                * (th_std * (t39 - p.k19) * th_std + t1 * (p.k10 + t5 - t71)
+                * (th_std * (t39 - p.k25) * th_std + t1 * (p.k15 + t5 - t71)
                     + t2
-                        * (t2 * (t7 - t1 * p.k11) + t70
-                            + t0 * (t4 + t2 * (t68 - t38) + t3 * (p.k11 - t37 - t67)))),
+                        * (t2 * (t7 - t1 * p.k16) + t70
+                            + t0 * (t4 + t2 * (t68 - t38) + t3 * (p.k16 - t37 - t67)))),
             0.0_f64,
             0.0_f64,
-            th_std * (t0 * (t1 * (p.k18 - t2 * p.k53 * t2) + t3 * p.k53 * t2 * t0) - t9)
+            th_std * (t0 * (t1 * (p.k24 - t2 * p.k59 * t2) + t3 * p.k59 * t2 * t0) - t9)
                 * t60,
-            th_swd * (t2 * p.k54 * t1 - t3 * p.k54 * t0) * t60,
+            th_swd * (t2 * p.k23 * t1 - t3 * p.k23 * t0) * t60,
         ],
         [
             0.0_f64,
             0.0_f64,
             t62
-                * (t12 + t3 * (t16 - (p.k22 + t77))
+                * (t12 + t3 * (t16 - (p.k28 + t77))
                     + t0
-                        * (t0 * (t14 + t3 * p.k56) + t76
-                            + t2 * (t15 + t0 * (t74 - t42) - t1 * (p.k56 + t41 + t73)))),
+                        * (t0 * (t14 + t3 * p.k61) + t76
+                            + t2 * (t15 + t0 * (t74 - t42) - t1 * (p.k61 + t41 + t73)))),
             t62
-                * (th_swd * (p.k23 - t10) * th_swd + t3 * (p.k25 + t77 - t16)
+                * (th_swd * (p.k29 - t10) * th_swd + t3 * (p.k31 + t77 - t16)
                     + t0
-                        * (t2 * (t0 * (t42 - t74) - t15 + t1 * (p.k22 + t41 + t73))
+                        * (t2 * (t0 * (t42 - t74) - t15 + t1 * (p.k28 + t41 + t73))
                             - (t0 * (t13 + t14) + t76))),
             0.0_f64,
             0.0_f64,
-            th_std * (t3 * p.k57 * t0 - t2 * p.k57 * t1) * t62,
-            th_swd * (t17 + t0 * (t1 * (t2 * p.k55 * t2 - p.k21) - t3 * p.k55 * t2 * t0))
+            th_std * (t3 * p.k62 * t0 - t2 * p.k62 * t1) * t62,
+            th_swd * (t17 + t0 * (t1 * (t2 * p.k60 * t2 - p.k27) - t3 * p.k60 * t2 * t0))
                 * t62,
         ],
         [
@@ -1447,20 +1736,20 @@ pub fn stick_jacobian(
             t60
                 * (t1 * t26 - t25 + t2 * (t19 - t2 * t49 * t1 + t3 * (t48 - t82))
                     + t0
-                        * (t29 + t0 * (p.k65 + t46) + t1 * (p.k66 + t81 - t45)
+                        * (t29 + t0 * (p.k70 + t46) + t1 * (p.k71 + t81 - t45)
                             + t2 * (t27 - t1 * (t44 + t80) + t0 * (t79 - t43)))),
             t60
-                * (p.k36 + t3 * t28 - t53 + t0 * (t47 - t0 * t24 + t1 * (t23 - t82))
+                * (p.k42 + t3 * t28 - t53 + t0 * (t47 - t0 * t24 + t1 * (t23 - t82))
                     + t2
-                        * (t2 * (t52 - p.k43) - t30 + t3 * (p.k67 + t81 - t51)
+                        * (t2 * (t52 - p.k49) - t30 + t3 * (p.k72 + t81 - t51)
                             + t0
                                 * (t1 * (t18 + t80) - th_std * t50 * th_std
                                     + t0 * (t19 - t79)))),
             0.0_f64,
             0.0_f64,
-            th_std * (t0 * p.k68 - t1 * p.k69 + t2 * (t0 * (t55 - t54) - t1 * t50))
+            th_std * (t0 * p.k73 - t1 * p.k74 + t2 * (t0 * (t55 - t54) - t1 * t50))
                 * t60,
-            th_swd * (t2 * p.k62 + t3 * p.k70 + t0 * (t1 * (t57 - t58) - t0 * t56)) * t60,
+            th_swd * (t2 * p.k67 + t3 * p.k75 + t0 * (t1 * (t57 - t58) - t0 * t56)) * t60,
         ],
         [
             0.0_f64,
@@ -1468,20 +1757,20 @@ pub fn stick_jacobian(
             t60
                 * (t1 * t32 - t31 + t2 * (t3 * (t87 - t53) - (t18 + t2 * t47 * t1))
                     + t0
-                        * (t0 * (t45 + p.k72) - t34 + t1 * (p.k73 + t86 + t46)
+                        * (t0 * (t45 + p.k77) - t34 + t1 * (p.k78 + t86 + t46)
                             + t2
                                 * (t22 + t1 * (t2 * t85 - t43) + t0 * (t44 + t3 * t84)))),
             t60
-                * (p.k46 + t3 * t33 - t48 + t0 * (t1 * (t87 - t24) - (t49 + t0 * t23))
+                * (p.k52 + t3 * t33 - t48 + t0 * (t1 * (t87 - t24) - (t49 + t0 * t23))
                     + t2
-                        * (t35 + t2 * (t51 - p.k27) + t3 * (t86 - p.k74 + t52)
+                        * (t35 + t2 * (t51 - p.k33) + t3 * (t86 - p.k79 + t52)
                             + t0
                                 * (th_std * t59 * th_std + t1 * (t19 + t2 * t84)
                                     + t0 * (t3 * t85 - t18)))),
             0.0_f64,
             0.0_f64,
-            th_std * (t0 * p.k75 + t1 * p.k76 + t2 * (t1 * t59 - t0 * t50)) * t60,
-            th_swd * (t2 * p.k59 - t3 * p.k77 + t0 * (t0 * (t58 - t57) - t1 * t56)) * t60,
+            th_std * (t0 * p.k80 + t1 * p.k81 + t2 * (t1 * t59 - t0 * t50)) * t60,
+            th_swd * (t2 * p.k64 - t3 * p.k82 + t0 * (t0 * (t58 - t57) - t1 * t56)) * t60,
         ],
     ]
 }
@@ -1688,7 +1977,7 @@ pub fn impact_double_rows_checked(
 #[must_use]
 pub fn events(p: &Prepared, x: F, z: F, th_st: F, th_sw: F) -> [F; 2] {
     let (t0, t1) = sin_cos(th_st);
-    [p.k12 - th_sw - th_st, p.k6 * x + p.k7 * z + t1 * p.k8 + t0 * p.k9]
+    [p.k17 - th_sw - th_st, p.k6 * x + p.k7 * z + t1 * p.k8 + t0 * p.k9]
 }
 
 /// Checked variant of [`events`]: the same value, or why it would not be finite.
@@ -1753,11 +2042,11 @@ pub fn relabel(
 ) -> [F; 8] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = th_std * p.k13;
-    let t5 = th_swd * p.k13;
+    let t4 = th_std * p.k18;
+    let t5 = th_swd * p.k18;
     [
-        x - t2 * p.k13 + t0 * p.k13,
-        z - t3 * p.k13 + t1 * p.k13,
+        x - t2 * p.k18 + t0 * p.k18,
+        z - t3 * p.k18 + t1 * p.k18,
         th_sw,
         th_st,
         xd - t3 * t5 + t1 * t4,
@@ -1840,12 +2129,12 @@ pub fn relabel_jacobian(
 ) -> [[F; 8]; 8] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = t2 * p.k13;
-    let t5 = t1 * p.k13;
-    let t6 = -(t3 * p.k13);
-    let t7 = th_std * p.k13;
-    let t8 = th_swd * p.k13;
-    let t9 = -(t0 * p.k13);
+    let t4 = t2 * p.k18;
+    let t5 = t1 * p.k18;
+    let t6 = -(t3 * p.k18);
+    let t7 = th_std * p.k18;
+    let t8 = th_swd * p.k18;
+    let t9 = -(t0 * p.k18);
     [
         [1.0_f64, 0.0_f64, t5, t6, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
         [0.0_f64, 1.0_f64, t9, t4, 0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64],
@@ -1972,9 +2261,9 @@ pub fn relabel_jacobian_checked(
 pub fn points(p: &Prepared, x: F, z: F, th_st: F, th_sw: F) -> [F; 4] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = t0 * p.k13;
-    let t5 = t1 * p.k13;
-    [x + t4, z + t5, x - t2 * p.k13 + t4, z - t3 * p.k13 + t5]
+    let t4 = t0 * p.k18;
+    let t5 = t1 * p.k18;
+    [x + t4, z + t5, x - t2 * p.k18 + t4, z - t3 * p.k18 + t5]
 }
 
 /// Checked variant of [`points`]: the same value, or why it would not be finite.
@@ -2039,12 +2328,12 @@ pub fn energy(
 ) -> [F; 2] {
     let (t0, t1) = sin_cos(th_st);
     let (t2, t3) = sin_cos(th_sw);
-    let t4 = th_swd * p.k17;
+    let t4 = th_swd * p.k22;
     [
-        xd * p.k14 * xd + zd * p.k14 * zd
-            + th_swd * (th_swd * p.k78 - p.k1 * xd * t3 + p.k1 * zd * t2)
+        xd * p.k19 * xd + zd * p.k19 * zd
+            + th_swd * (th_swd * p.k83 - p.k1 * xd * t3 + p.k1 * zd * t2)
             + th_std
-                * (t1 * (p.k2 * xd - t3 * t4) + th_std * p.k79
+                * (t1 * (p.k2 * xd - t3 * t4) + th_std * p.k84
                     - t0 * (p.k2 * zd + t2 * t4)),
         p.k3 * z - t3 * p.k4 + t1 * p.k5,
     ]

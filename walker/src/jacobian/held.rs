@@ -4,7 +4,7 @@
 
 use walker_contract::Desired;
 
-use crate::model::Contact;
+use crate::model::{Args, Contact, KernelId};
 use crate::vector::MAX_COORDINATES;
 
 use super::{NoJacobian, Scratch, StanceJacobian};
@@ -57,6 +57,41 @@ impl StanceJacobian<'_> {
             }
         }
         Ok(held)
+    }
+
+    /// The stuck stance's rows of a model with inputs from `closed_loop_stick_jacobian` (a
+    /// model whose stance has no closed form: the structured solve differentiated), chained
+    /// through `v`: as many rows as `out` holds (`n`, or `n + m` with the inputs), row stride
+    /// `2n`. The kernel's output is left in `scratch` (columns `[q, qd, v]`; rows `[qdd, u,
+    /// lambda_t, lambda_n]`), which a parameter's column reads
+    /// ([`crate::poincare::parameter_column`]).
+    pub(super) fn held_stick_rows(
+        &self,
+        t: f64,
+        y: &[f64],
+        out: &mut [f64],
+        scratch: &mut Scratch,
+    ) {
+        let m = self.model;
+        let (n, inputs) = (m.n(), m.inputs());
+        let Scratch { k, rates } = scratch;
+        let v = self.inputs_at(t, y, rates);
+        let cols = 2 * n + inputs;
+        m.kernels().eval(
+            KernelId::ClosedLoopStickJacobian,
+            &Args {
+                v: &v[..inputs],
+                ..Args::state(&y[..n], &y[n..2 * n])
+            },
+            &mut k[..(n + inputs + 2) * cols],
+        );
+        let rows = (out.len() / (2 * n)).min(n + inputs);
+        for (i, o) in out[..rows * 2 * n].chunks_exact_mut(2 * n).enumerate() {
+            let row = &k[i * cols..(i + 1) * cols];
+            for (j, o) in o.iter_mut().enumerate() {
+                *o = self.plus_through_v(row[j], &row[2 * n..], rates, j);
+            }
+        }
     }
 
     /// The friction ratio `mu* = lambda_t / lambda_n` that holds the stance foot of a model

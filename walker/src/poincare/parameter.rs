@@ -21,7 +21,7 @@ use std::collections::BTreeSet;
 use walker_contract::Desired;
 use walker_scene::model::{FallCondition, ModelExpr};
 
-use crate::model::{Contact, Model};
+use crate::model::{Contact, KernelId, Model};
 use crate::vector::MAX_COORDINATES;
 
 /// The derivatives in one run-time parameter `p` of what it moves (module documentation).
@@ -87,7 +87,8 @@ impl ParameterRates {
     /// with inputs has the sliding field at the friction ratio `mu*(p)` that holds it (`k` the
     /// sliding kernel's rows there, as [`crate::jacobian::StanceJacobian::accel_with`] leaves
     /// them): the rate through `v` with `mu*`'s own rate eliminated, `b_i - (K_mu,i / K_mu,0)
-    /// b_0` (row 0, the foot's, exactly zero).
+    /// b_0` (row 0, the foot's, exactly zero); where the model has `closed_loop_stick_jacobian`
+    /// (no closed forms), `k` is that kernel's rows and the rate is theirs through `v`.
     pub(crate) fn field_rate(
         &self,
         model: &Model,
@@ -115,6 +116,16 @@ impl ParameterRates {
         };
         let mut d_v = [0.0; MAX_COORDINATES];
         self.input_rates(model, t, y, &mut d_v[..inputs]);
+        if held && model.kernels().has(KernelId::ClosedLoopStickJacobian) {
+            // `k` holds `closed_loop_stick_jacobian` (columns `[q, qd, v]`): the held field's
+            // own rate through `v`, no friction ratio to eliminate.
+            let cols = 2 * n + inputs;
+            for (i, o) in out[..n].iter_mut().enumerate() {
+                let row = &k[i * cols + 2 * n..(i + 1) * cols];
+                *o = row.iter().zip(&d_v[..inputs]).map(|(a, b)| a * b).sum();
+            }
+            return;
+        }
         let cols = 2 * n + 1 + inputs;
         for (i, o) in out[..n].iter_mut().enumerate() {
             let row = &k[i * cols..(i + 1) * cols];

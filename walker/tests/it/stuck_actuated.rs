@@ -163,6 +163,8 @@ fn the_held_foots_jacobian_is_the_stuck_fields_and_its_foot_rows_vanish() {
             active(&[("mu0", 1.0), ("K_P", 50.0), ("K_D", 10.0)]),
         ),
         ("slope 0.1", active_on_a_slope(0.1)),
+        // No closed forms: `closed_loop_stick_jacobian` (its foot rows are exactly zero).
+        ("three-link", three_link()),
     ];
     for (name, setup) in cases {
         let model = setup.model().unwrap();
@@ -334,15 +336,17 @@ fn the_held_active_walkers_map_jacobian_is_exact_and_agrees_with_extrapolated_di
 }
 
 #[test]
-fn the_three_link_biped_without_a_closed_loop_jacobian_keeps_differences() {
-    // Its mass matrix's inverse has no closed form within the derivation's limit, so neither
-    // its sliding stance nor, through it, its held one has a Jacobian kernel: the map falls
-    // back to differences (which `walker fixed-point` then extrapolates).
+fn the_three_link_bipeds_held_map_jacobian_is_exact_and_agrees_with_extrapolated_differences() {
+    // Its mass matrix's inverse has no closed form within the derivation's limit: its held
+    // foot goes through `closed_loop_stick_jacobian`, the structured solve differentiated
+    // (`derive/src/model/forward.rs`), and its map is exact. Tolerance as for the paper's
+    // walker above (seen: 2e-10).
     let model = three_link().model().unwrap();
-    let jac = StanceJacobian::any_law(&model);
-    assert!(!jac.has_contact(Contact::Stuck));
     let fp = converged(&model);
-    assert_eq!(fp.jacobian_method, JacobianMethod::FiniteDifferences);
+    assert_eq!(fp.jacobian_method, JacobianMethod::Variational);
+    assert_eq!(fp.impact, ImpactRegime::Stick);
+    let worst = exact_against_differences(&model, &fp, 1e-7);
+    eprintln!("largest relative difference {worst:e}");
 }
 
 /// The time the foot spends stuck in one step from `s`, with the step's period.
@@ -500,5 +504,29 @@ fn the_held_and_slipping_stances_have_exact_columns_in_the_ramp_and_the_gains() 
         // depend on it).
         let moved = check_column(&setup, "mu0", &s);
         assert_eq!(moved > 1e-3, !held, "mu0 = {mu0}, d/dmu0: {moved:e}");
+    }
+}
+
+#[test]
+fn the_three_link_bipeds_held_stance_has_exact_columns_in_its_gains() {
+    // The held foot through `closed_loop_stick_jacobian` (no friction ratio to eliminate): the
+    // gains' columns, with the torso started 0.05 rad and 0.2 rad/s off its output so that
+    // they are not zero.
+    let setup = three_link();
+    let model = setup.model().unwrap();
+    let mut s = model.start_state().to_vec();
+    let n = model.n();
+    s[n - 1] += 0.05;
+    s[2 * n - 1] += 0.2;
+    let (stuck, period) = stuck_time(&model, &s);
+    assert!(
+        (period - stuck).abs() <= 1e-12 * period,
+        "held: {stuck} of {period}"
+    );
+    for name in ["K_P", "K_D"] {
+        // Not trivially zero: the gains move the step (seen: 2.8e-4 for K_P, its error
+        // decays fast at K_P = 100), fifty times the check's resolution 2e-7.
+        let moved = check_column(&setup, name, &s);
+        assert!(moved > 1e-5, "d/d{name}: {moved:e}");
     }
 }
