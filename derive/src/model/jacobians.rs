@@ -179,11 +179,11 @@ pub(super) fn stick_jacobian(m: &Mechanics, stick: &Matrix, table: &mut Symbols)
     )
 }
 
-/// The most coordinates for which [`structured_jacobian_kernels`] differentiates the structured
-/// solves: five, as many as the Poincare map's variational equations take (`walker`'s
-/// `poincare/map.rs`). The five-link biped's (seven coordinates) would have 16 000 and 12 500
-/// operations and take 3.4 s to derive and lower at every run-time load (against 0.2 s), for a
-/// map that could not use them.
+/// The most coordinates for which a model without closed forms gets Jacobian kernels (its
+/// structured solves differentiated): five, as many as the Poincare map's variational equations
+/// take (`walker`'s `poincare/map.rs`). The five-link biped's (seven coordinates) would have
+/// 16 000 and 12 500 operations and take 3.4 s to derive and lower at every run-time load
+/// (against 0.2 s), for a map that could not use them.
 pub const MAX_STRUCTURED_JACOBIAN_COORDINATES: usize = 5;
 
 /// The stance's Jacobian kernels of a model without closed forms, by forward-mode

@@ -12,8 +12,11 @@
 //!
 //! # The Jacobian
 //!
-//! The 8x8 sensitivity matrix `Phi' = Df Phi`, `Phi(0) = I`, is integrated alongside the state
-//! with the same integrator (64 extra components under the same error control). `Df` comes from
+//! The sensitivity `Phi' = Df Phi` is integrated alongside the state with the same integrator,
+//! under the same error control: the 8x8 `Phi` from `Phi(0) = I` for the full Jacobian
+//! ([`poincare_map`], 64 extra components), or its columns along the section's tangent `E`
+//! from `Phi(0) E` ([`Section::map`], 16 for the paper's walkers), all the reduced Jacobian
+//! `Pi DP E` needs. `Df` comes from
 //! the generated Jacobian kernels (`closed_loop_level_jacobian`, `accel_slope_jacobian`) with the
 //! chain rule through `mu(xd)` (`dmu/dxd = -mu0 c (1 - tanh^2)`, with `c / cos phi` on the slope)
 //! and through `v(t, y, ydot)` of Eq. 32 (`dv/dy = -K_P`, `dv/dydot = -K_D`). The `T_set`
