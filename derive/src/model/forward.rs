@@ -32,7 +32,7 @@ use super::program::Program;
 
 /// `d outputs / d vars` of `program` (row `i` an output, column `j` a variable, row-major) as a
 /// program: `program`'s locals, then the tangents (module documentation). The new locals are
-/// added to `table` under `name`.
+/// added to `table` under `prefix`.
 ///
 /// # Errors
 /// A full symbol table, or an arithmetic error of the differentiation.
@@ -40,10 +40,10 @@ pub(super) fn differentiate(
     program: &Staged,
     vars: &[Sym],
     table: &mut Symbols,
-    name: &'static str,
+    prefix: &str,
 ) -> Result<Staged> {
     let by_slot: HashMap<usize, Sym> = program.locals.iter().map(|(s, _)| (s.slot(), *s)).collect();
-    let mut p = Program::new(table, name);
+    let mut p = Program::new(table, prefix);
     // Each local's tangent, one entry per variable (bound, or an exact constant).
     let mut tangents: HashMap<Sym, Vec<RatFunc>> = HashMap::with_capacity(program.locals.len());
     for (s, e) in &program.locals {

@@ -221,7 +221,8 @@ pub(super) fn structured_jacobian_kernels(
                     vars: &[Sym],
                     table: &mut Symbols|
      -> Result<()> {
-        let staged = differentiate(program, vars, table, name)?;
+        // Named apart from the closed form's staged locals (`jacobian`).
+        let staged = differentiate(program, vars, table, &format!("{name}.forward"))?;
         let k = solve_only(
             name,
             doc,
