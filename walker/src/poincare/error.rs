@@ -10,6 +10,17 @@ pub enum MapError {
     /// The state given to the map is not finite.
     #[error("Poincare map failed at t = 0: non-finite initial state")]
     NonFiniteStart,
+    /// A state, a start's rate or the seeds given to the map do not have the model's shape (a
+    /// caller's mistake: `2n` numbers, or `2n` rows of equal length).
+    #[error("Poincare map: {what} has {got} entries where {expected} are needed")]
+    Shape {
+        /// What was given: `the state`, `the start's rate`, `the seeds`, `a seed row`.
+        what: &'static str,
+        /// Its length.
+        got: usize,
+        /// The length it must have.
+        expected: usize,
+    },
     /// No heel strike before [`SimConfig::max_step_time`](crate::sim::SimConfig::max_step_time).
     #[error("Poincare map failed at t = {t}: no heel strike")]
     NoHeelStrike {

@@ -91,6 +91,13 @@ pub fn finite_difference_map_with_step(
     let cfg = tight(cfg);
     let n = model.n();
     let m = 2 * n;
+    if s.len() != m {
+        return Err(MapError::Shape {
+            what: "the state",
+            got: s.len(),
+            expected: m,
+        });
+    }
     let (plus, period, dx) = one_step(model, &cfg, s)?;
     let mut jacobian = vec![vec![0.0; m]; m];
     let foot_at_rest = model.friction_law() == FrictionLaw::Coulomb && s[n] == 0.0;

@@ -177,11 +177,17 @@ pub fn poincare_map_along(
     method: JacobianMethod,
 ) -> Result<MapResult, MapError> {
     let m = 2 * model.n();
-    if s.len() != m || !s.iter().all(|v| v.is_finite()) {
-        return Err(MapError::NonFiniteStart);
-    }
+    shape("the state", s.len(), m)?;
+    shape("the seeds", seeds.len(), m)?;
     let cols = seeds.first().map_or(0, Vec::len);
-    if seeds.len() != m || seeds.iter().any(|row| row.len() != cols) {
+    for row in seeds {
+        shape("a seed row", row.len(), cols)?;
+    }
+    if !s
+        .iter()
+        .chain(seeds.iter().flatten())
+        .all(|v| v.is_finite())
+    {
         return Err(MapError::NonFiniteStart);
     }
     let differences = |cfg: &SimConfig| {
@@ -209,6 +215,19 @@ pub fn poincare_map_along(
         Ok((r, _)) => Ok(r),
         Err(PhaseError::Map(e)) => Err(e),
         Err(PhaseError::NoKernel) => differences(&cfg),
+    }
+}
+
+/// [`MapError::Shape`] unless `got == expected`.
+fn shape(what: &'static str, got: usize, expected: usize) -> Result<(), MapError> {
+    if got == expected {
+        Ok(())
+    } else {
+        Err(MapError::Shape {
+            what,
+            got,
+            expected,
+        })
     }
 }
 
@@ -258,7 +277,9 @@ pub fn parameter_column(
     start_rate: &[f64],
 ) -> Result<Option<(MapResult, ParameterColumn)>, MapError> {
     let m = 2 * model.n();
-    if s.len() != m || start_rate.len() != m || !s.iter().chain(start_rate).all(|v| v.is_finite()) {
+    shape("the state", s.len(), m)?;
+    shape("the start's rate", start_rate.len(), m)?;
+    if !s.iter().chain(start_rate).all(|v| v.is_finite()) {
         return Err(MapError::NonFiniteStart);
     }
     let Some(rates) = ParameterRates::of(model, name) else {

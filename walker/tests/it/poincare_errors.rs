@@ -1,5 +1,5 @@
 //! The Poincare map and the fixed-point search fail with typed errors that keep the time and
-//! the cause: a non-finite state, a heel strike that does not come in time (also in the map by
+//! the cause: a non-finite state, a state or seeds of the wrong shape, a heel strike that does not come in time (also in the map by
 //! finite differences of a model without Jacobian kernels), and a warm-up walk that falls.
 #![allow(clippy::unwrap_used, clippy::panic, reason = "tests")]
 
@@ -8,8 +8,9 @@ use crate::common;
 use common::start;
 use walker::model::Model;
 use walker::poincare::{
-    FixedPointError, FixedPointOptions, JacobianMethod, MapError, Section, fixed_point,
-    poincare_map, poincare_map_with,
+    FixedPointError, FixedPointOptions, JacobianMethod, MapError, Section,
+    finite_difference_map_with_step, fixed_point, poincare_map, poincare_map_along,
+    poincare_map_with,
 };
 use walker::sim::SimConfig;
 use walker::vector::Vector;
@@ -34,6 +35,53 @@ fn a_non_finite_state_is_refused_before_integrating() {
     let err = poincare_map(&model, &SimConfig::default(), &s).unwrap_err();
     assert_eq!(err, MapError::NonFiniteStart);
     assert!(err.to_string().contains("non-finite"), "{err}");
+}
+
+#[test]
+fn a_state_or_seeds_of_the_wrong_shape_are_refused_by_name() {
+    let model = active();
+    let cfg = SimConfig::default();
+    let s = near_cycle(&model);
+    let short = &s[..7];
+    for err in [
+        poincare_map(&model, &cfg, short).unwrap_err(),
+        finite_difference_map_with_step(&model, &cfg, short, 1e-4).unwrap_err(),
+    ] {
+        assert_eq!(
+            err,
+            MapError::Shape {
+                what: "the state",
+                got: 7,
+                expected: 8
+            }
+        );
+        assert!(err.to_string().contains("the state has 7 entries"), "{err}");
+    }
+    let seeds = vec![vec![1.0, 0.0]; 8];
+    let along = |seeds: &[Vec<f64>]| {
+        poincare_map_along(&model, &cfg, &s, seeds, JacobianMethod::Variational).unwrap_err()
+    };
+    assert!(matches!(
+        along(&seeds[..5]),
+        MapError::Shape {
+            what: "the seeds",
+            got: 5,
+            ..
+        }
+    ));
+    let mut ragged = seeds.clone();
+    ragged[3].push(0.0);
+    assert!(matches!(
+        along(&ragged),
+        MapError::Shape {
+            what: "a seed row",
+            got: 3,
+            ..
+        }
+    ));
+    let mut nan = seeds;
+    nan[2][1] = f64::NAN;
+    assert_eq!(along(&nan), MapError::NonFiniteStart);
 }
 
 #[test]
