@@ -3,7 +3,9 @@
 
 use serde::Serialize;
 
-use crate::poincare::{FixedPoint, FixedPointOptions, Section, Status, fixed_point, newton};
+use crate::poincare::{
+    FixedPoint, FixedPointOptions, Section, Status, StepCheck, fixed_point, newton,
+};
 use crate::setup::Setup;
 use crate::sim::{Frame, SimConfig, WalkLimits, trajectory};
 
@@ -105,7 +107,11 @@ pub fn evaluate(
         s.set(n, *v).map_err(|e| e.to_string())?;
     }
     let model = s.model().map_err(|e| e.to_string())?;
-    let opts = FixedPointOptions::for_model(&model);
+    // An iterate whose step fails is no gait: its maps fail with the simulator's step.
+    let opts = FixedPointOptions {
+        step_check: StepCheck::Walk,
+        ..FixedPointOptions::for_model(&model)
+    };
     let ok = |fp: &FixedPoint| fp.status == Status::Converged;
     let from_guess = guess.and_then(|r| newton(&model, cfg, r, &opts).ok().filter(ok));
     let fp = match from_guess {

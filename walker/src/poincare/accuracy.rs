@@ -51,7 +51,7 @@ use super::error::MapError;
 use super::finite_difference::{DEFAULT_STEP, finite_difference_map_with_step};
 use super::fixed_point::{FixedPoint, extrapolate};
 use super::multipliers::{Multiplier, eigenvalues, eigenvectors};
-use super::result::JacobianMethod;
+use super::result::{JacobianMethod, StepCheck};
 use super::section::Section;
 
 /// The reduced Jacobian `D P_r` at a section point with the estimate of its error.
@@ -98,8 +98,16 @@ pub fn jacobian_error(
             };
             // Along the section: `DP E`, whose free rows are the reduced Jacobian.
             (
-                section.reduced(&section.map_with(cfg, r, method)?.jacobian),
-                section.reduced(&section.map_with(&finer, r, method)?.jacobian),
+                section.reduced(
+                    &section
+                        .map_with(cfg, r, method, StepCheck::Through)?
+                        .jacobian,
+                ),
+                section.reduced(
+                    &section
+                        .map_with(&finer, r, method, StepCheck::Through)?
+                        .jacobian,
+                ),
             )
         }
         JacobianMethod::FiniteDifferences => {

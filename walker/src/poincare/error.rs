@@ -21,6 +21,24 @@ pub enum MapError {
         /// The length it must have.
         expected: usize,
     },
+    /// One of the model's falls (`[[fall]]`) within the stance: the walker has no next step.
+    #[error("Poincare map failed at t = {t}: fall `{name}`")]
+    Fall {
+        /// The fall's name in the model file.
+        name: String,
+        /// The time since the impact (s).
+        t: f64,
+    },
+    /// The ground reaction blew up within the stance (`|lambda|` beyond the simulator's
+    /// threshold, [`SimConfig::lambda_blowup`](crate::sim::SimConfig::lambda_blowup) times the
+    /// weight): a singular control or contact.
+    #[error("Poincare map failed at t = {t}: the ground reaction blew up (lambda = {lambda})")]
+    BlowUp {
+        /// The time since the impact (s).
+        t: f64,
+        /// The vertical ground reaction there (N).
+        lambda: f64,
+    },
     /// No heel strike before [`SimConfig::max_step_time`](crate::sim::SimConfig::max_step_time).
     #[error("Poincare map failed at t = {t}: no heel strike")]
     NoHeelStrike {

@@ -17,7 +17,7 @@
 //! `x` and `z` are zero: nothing depends on them and the map measures from the new foot.
 
 use crate::model::{FrictionLaw, ImpactRegime, Model};
-use crate::sim::{SimConfig, WalkLimits, walk};
+use crate::sim::{SimConfig, StepResult, WalkLimits, walk};
 use crate::vector::Vector;
 
 use super::error::MapError;
@@ -39,9 +39,8 @@ fn tight(cfg: &SimConfig) -> SimConfig {
     }
 }
 
-/// One step from `s` (time 0 of a step): the foot-relative post-impact state, the period and
-/// the step length.
-fn one_step(model: &Model, cfg: &SimConfig, s: &[f64]) -> Result<(State, f64, f64), MapError> {
+/// The simulator's step from `s` (time 0 of a step), or its failure as the map's.
+pub(super) fn walked(model: &Model, cfg: &SimConfig, s: &[f64]) -> Result<StepResult, MapError> {
     let limits = WalkLimits {
         max_steps: 1,
         ..WalkLimits::default()
@@ -50,9 +49,15 @@ fn one_step(model: &Model, cfg: &SimConfig, s: &[f64]) -> Result<(State, f64, f6
     if let Some(failure) = w.failure {
         return Err(MapError::Walk(Box::new(failure)));
     }
-    let step = w.steps.first().ok_or(MapError::NoHeelStrike {
+    w.steps.first().copied().ok_or(MapError::NoHeelStrike {
         t: cfg.max_step_time,
-    })?;
+    })
+}
+
+/// One step from `s` (time 0 of a step): the foot-relative post-impact state, the period and
+/// the step length.
+fn one_step(model: &Model, cfg: &SimConfig, s: &[f64]) -> Result<(State, f64, f64), MapError> {
+    let step = walked(model, cfg, s)?;
     let mut plus = step.state_plus();
     (plus[0], plus[1]) = (0.0, 0.0);
     let state = State {

@@ -12,7 +12,7 @@ use super::error::FixedPointError;
 use super::finite_difference::{DEFAULT_STEP, finite_difference_map_with_step};
 use super::map::poincare_map_with;
 use super::multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
-use super::result::{JacobianMethod, MapResult};
+use super::result::{JacobianMethod, MapResult, StepCheck};
 use super::section::Section;
 use crate::model::ImpactRegime;
 
@@ -109,6 +109,10 @@ pub struct FixedPointOptions {
     /// section (`DP E`, [`Section::map`]: `d` sensitivity columns instead of `2n`). Off by
     /// default; `walker fixed-point` turns it on.
     pub full_multipliers: bool,
+    /// Whether Newton's maps exist only where the simulator's step does ([`StepCheck::Walk`]:
+    /// gait design, whose iterates must walk) or not (the default: a cycle past a boundary is
+    /// found, and reported as not a valid gait).
+    pub step_check: StepCheck,
 }
 
 impl FixedPointOptions {
@@ -121,6 +125,7 @@ impl FixedPointOptions {
             tol: 1e-11,
             refine: false,
             full_multipliers: false,
+            step_check: StepCheck::Through,
         }
     }
 }
@@ -191,7 +196,8 @@ pub fn newton(
     // The foot's velocity along the floor among the section's coordinates, if it is one.
     let xd = section.free().iter().position(|&i| i == n);
     let mut r = r0.to_vec();
-    let mut m = section.map(cfg, &r)?;
+    let map = |r: &[f64]| section.map_with(cfg, r, JacobianMethod::Variational, opts.step_check);
+    let mut m = map(&r)?;
     let mut iterations = 0;
     let mut singular = false;
     let (mut res, mut jr) = residual(&section, &m, &r);
@@ -220,7 +226,7 @@ pub fn newton(
         let mut next = None;
         for _ in 0..8 {
             let rn: Vec<f64> = r.iter().zip(&d).map(|(x, dx)| x + step * dx).collect();
-            if let Ok(mn) = section.map(cfg, &rn) {
+            if let Ok(mn) = map(&rn) {
                 let (rs, jn) = residual(&section, &mn, &rn);
                 if rs < res || step < 0.01 {
                     next = Some((rn, mn, rs, jn));

@@ -8,13 +8,13 @@ use crate::sim::SimConfig;
 use crate::vector::{MAX_LEN, Vector};
 
 use super::error::MapError;
-use super::finite_difference::finite_difference_map;
+use super::finite_difference::{finite_difference_map, walked};
 use super::impact_jacobian::{
     coulomb_impact_jacobian, coulomb_impact_mu0_rate, frictionless_impact_jacobian,
 };
 use super::parameter::ParameterRates;
-use super::result::{JacobianMethod, MapResult};
-use super::variational::{PhaseError, StanceEnd, field, stance};
+use super::result::{JacobianMethod, MapResult, StepCheck};
+use super::variational::{Columns, PhaseError, StanceEnd, field, stance};
 
 /// Evaluates `$body` with `$na` set to the size of the state with `$cols` variational columns
 /// appended (`2n` numbers each: the seeds' and the parameter's, `variational.rs`), for the
@@ -123,8 +123,9 @@ fn guard_gradient(model: &Model, q: &[f64]) -> Vector {
 /// (see the module documentation) by the default method: the variational equations wherever
 /// the model's kernels differentiate every phase the step goes through, central differences
 /// otherwise ([`poincare_map_with`]). Failures of the stance phase (no strike within
-/// [`SimConfig::max_step_time`], integrator failures, non-finite values) are errors; the
-/// physical validity tests of [`crate::sim`] (lift-off, double support) are not applied here.
+/// [`SimConfig::max_step_time`], one of the model's falls, a ground reaction that blows up,
+/// integrator failures, non-finite values) are errors; the physical validity tests of
+/// [`crate::sim`] (lift-off, double support) are not applied here.
 ///
 /// # Errors
 /// [`MapError`]: the step could not be taken.
@@ -156,7 +157,7 @@ pub fn poincare_map_with(
     let identity: Vec<Vec<f64>> = (0..m)
         .map(|i| (0..m).map(|j| f64::from(u8::from(i == j))).collect())
         .collect();
-    poincare_map_along(model, cfg, s, &identity, method)
+    poincare_map_along(model, cfg, s, &identity, method, StepCheck::Through)
 }
 
 /// [`poincare_map_with`] with the Jacobian along the columns of `seeds` (`2n` rows of `c`
@@ -165,7 +166,8 @@ pub fn poincare_map_with(
 /// ([`super::Section::map`]) that is all the reduced Jacobian `Pi DP E` needs, at a fraction
 /// of the full Jacobian's cost (the paper's walkers: 2 columns instead of 8). Central
 /// differences compute the full Jacobian and multiply (`DP S` summed over `k` in ascending
-/// order, as [`super::Section::reduced_jacobian`] does).
+/// order, as [`super::Section::reduced_jacobian`] does). With [`StepCheck::Walk`] the map exists
+/// only where the simulator's step does (the differences' always walk).
 ///
 /// # Errors
 /// [`MapError`]: the step could not be taken.
@@ -175,6 +177,7 @@ pub fn poincare_map_along(
     s: &[f64],
     seeds: &[Vec<f64>],
     method: JacobianMethod,
+    step_check: StepCheck,
 ) -> Result<MapResult, MapError> {
     let m = 2 * model.n();
     shape("the state", s.len(), m)?;
@@ -209,7 +212,14 @@ pub fn poincare_map_along(
     let flat: Vec<f64> = (0..cols)
         .flat_map(|j| seeds.iter().map(move |row| row[j]))
         .collect();
-    let out = with_columns!(model.n(), cols, NA => variational_map::<NA>(model, &cfg, s, &flat, jac, None),
+    if step_check == StepCheck::Walk {
+        walked(model, &cfg, s)?;
+    }
+    let columns = Columns {
+        seeds: &flat,
+        param: None,
+    };
+    let out = with_columns!(model.n(), cols, NA => variational_map::<NA>(model, &cfg, s, &columns, jac),
         _ => Err(PhaseError::NoKernel));
     match out {
         Ok((r, _)) => Ok(r),
@@ -289,8 +299,11 @@ pub fn parameter_column(
         Ok(jac) => (jac, *cfg),
         Err(_) => (StanceJacobian::any_law(model), tight(cfg)),
     };
-    let param = Some((&rates, start_rate));
-    let out = with_columns!(model.n(), 1, NA => variational_map::<NA>(model, &cfg, s, &[], jac, param),
+    let columns = Columns {
+        seeds: &[],
+        param: Some((&rates, start_rate)),
+    };
+    let out = with_columns!(model.n(), 1, NA => variational_map::<NA>(model, &cfg, s, &columns, jac),
         _ => Err(PhaseError::NoKernel));
     match out {
         Ok((r, Some(c))) => Ok(Some((r, c))),
@@ -309,24 +322,24 @@ pub(super) fn tight(cfg: &SimConfig) -> SimConfig {
     }
 }
 
-/// [`poincare_map_along`] by the variational equations, along the seeds' columns `seeds` (one
-/// after the other, `2n` numbers each), with the parameter's column if `param`.
+/// [`poincare_map_along`] by the variational equations, along the seeds' columns of `columns`,
+/// with the parameter's column if it has one.
 fn variational_map<const NA: usize>(
     model: &Model,
     cfg: &SimConfig,
     s: &[f64],
-    seeds: &[f64],
+    columns: &Columns<'_>,
     jac: StanceJacobian<'_>,
-    param: Option<(&ParameterRates, &[f64])>,
 ) -> Result<(MapResult, Option<ParameterColumn>), PhaseError> {
     let n = model.n();
     let m = 2 * n;
-    let cols = seeds.len() / m;
+    let cols = columns.seeds.len() / m;
+    let param = columns.param;
     let StanceEnd {
         t: te,
         y: ye,
         contact,
-    } = stance::<NA>(model, cfg, s, seeds, jac, param)?;
+    } = stance::<NA>(model, cfg, s, columns, jac)?;
     let pre = Vector::from_slice(&ye[..m]);
     // `Phi S` by rows (`m x cols`) from its columns.
     let mut phi: Vec<Vec<f64>> = (0..m)

@@ -87,5 +87,5 @@ pub use map::{
 };
 pub(crate) use multipliers::{Eigenvectors, eigenvectors};
 pub use multipliers::{Multiplier, UNIT_MULTIPLIER_TOL, eigenvalues};
-pub use result::{JacobianMethod, MapResult};
+pub use result::{JacobianMethod, MapResult, StepCheck};
 pub use section::Section;

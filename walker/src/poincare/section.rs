@@ -17,7 +17,7 @@ use crate::vector::Vector;
 
 use super::error::MapError;
 use super::map::{matmul, poincare_map_along};
-use super::result::{JacobianMethod, MapResult};
+use super::result::{JacobianMethod, MapResult, StepCheck};
 
 /// The section of a model: which components of the post-impact state are free, and the values
 /// of the others.
@@ -148,10 +148,11 @@ impl<'a> Section<'a> {
     /// # Errors
     /// [`MapError`]: the step could not be taken.
     pub fn map(&self, cfg: &SimConfig, r: &[f64]) -> Result<MapResult, MapError> {
-        self.map_with(cfg, r, JacobianMethod::Variational)
+        self.map_with(cfg, r, JacobianMethod::Variational, StepCheck::Through)
     }
 
-    /// [`Section::map`] by `method`.
+    /// [`Section::map`] by `method`, checked against the simulator's step where `step_check`
+    /// says.
     ///
     /// # Errors
     /// [`MapError`]: the step could not be taken.
@@ -160,8 +161,10 @@ impl<'a> Section<'a> {
         cfg: &SimConfig,
         r: &[f64],
         method: JacobianMethod,
+        step_check: StepCheck,
     ) -> Result<MapResult, MapError> {
-        poincare_map_along(self.model, cfg, &self.embed(r), &self.tangent(r), method)
+        let (s, e) = (self.embed(r), self.tangent(r));
+        poincare_map_along(self.model, cfg, &s, &e, method, step_check)
     }
 
     /// The reduced map's Jacobian `Pi DP E` from the map's Jacobian along the section `DP E`

@@ -232,6 +232,14 @@ fn saltation(
     Ok(())
 }
 
+/// What the variational stance carries besides the state ([`stance`]).
+pub(super) struct Columns<'a> {
+    /// The seeds' columns, one after the other (`2n` numbers each): `Phi(0) S`.
+    pub(super) seeds: &'a [f64],
+    /// A parameter's rates and its start rate, where its column rides after the seeds'.
+    pub(super) param: Option<(&'a ParameterRates, &'a [f64])>,
+}
+
 /// The end of the stance phase: the strike's time, the state with `Phi` there, and the contact
 /// of the last phase.
 pub(super) struct StanceEnd<const NA: usize> {
@@ -252,10 +260,10 @@ pub(super) fn stance<const NA: usize>(
     model: &Model,
     cfg: &SimConfig,
     s: &[f64],
-    seeds: &[f64],
+    columns: &Columns<'_>,
     jac: StanceJacobian<'_>,
-    param: Option<(&ParameterRates, &[f64])>,
 ) -> Result<StanceEnd<NA>, PhaseError> {
+    let Columns { seeds, param } = *columns;
     let n = model.n();
     let m = 2 * n;
     let cols = seeds.len() / m;
@@ -286,11 +294,36 @@ pub(super) fn stance<const NA: usize>(
     let mu0 = model.mu0();
     let mut guard_values = [0.0; 1 + crate::sim::MAX_FALLS];
     let k = model.event_count().min(guard_values.len());
-    let mut events = [
+    let lambda_max = cfg.lambda_blowup * model.total_mass() * model.gravity();
+    let mut events = vec![
         Event::terminal(Direction::Falling, move |_, y: &[f64; NA]| {
             model.events(&y[..n], &mut guard_values[..k]);
             guard_values[0]
         }),
+        // The ground reaction blows up (the simulator's threshold, `sim/blowup.rs`): a
+        // singular control or contact, where the integration would otherwise crawl to its
+        // step limit (the three-link biped's sliding stance, whose control is singular: 100 000
+        // steps and 1.5 s per map before this guard).
+        Event::terminal(Direction::Rising, |t, y: &[f64; NA]| {
+            model.reaction(t, &y[..m], contact.get()).lambda.abs() - lambda_max
+        }),
+    ];
+    // The model's falls, as the simulator and the continuation's map watch them: a walker
+    // that falls has no next step (and one integrated on past its fall, legs through the
+    // floor, can turn stiff: the three-link biped's did, 100 000 steps in 1.5 s per map).
+    let falls = k.saturating_sub(1);
+    for i in 1..k {
+        events.push(Event::terminal(
+            Direction::Falling,
+            move |_, y: &[f64; NA]| {
+                let mut e = [0.0; 1 + crate::sim::MAX_FALLS];
+                model.events(&y[..n], &mut e[..k]);
+                e[i]
+            },
+        ));
+    }
+    let (rest, slip) = (2 + falls, 3 + falls);
+    events.extend([
         // The sliding foot comes to rest (zero while stuck).
         Event::terminal(Direction::Falling, |_, y: &[f64; NA]| {
             contact.get().sigma() * y[n]
@@ -304,8 +337,8 @@ pub(super) fn stance<const NA: usize>(
                 -1.0
             }
         }),
-    ];
-    let watched = if coulomb { 3 } else { 1 };
+    ]);
+    let watched = if coulomb { slip + 1 } else { rest };
     let mut sys = Variational {
         model,
         jac,
@@ -372,11 +405,19 @@ pub(super) fn stance<const NA: usize>(
                     contact: contact.get(),
                 });
             }
+            Outcome::Event { index: 1, t: te, y } => {
+                let lambda = model.reaction(te, &y[..m], contact.get()).lambda;
+                return Err(MapError::BlowUp { t: te, lambda }.into());
+            }
+            Outcome::Event { index, t: te, .. } if index < rest => {
+                let name = model.spec().model.falls[index - 2].name.name.clone();
+                return Err(MapError::Fall { name, t: te }.into());
+            }
             Outcome::Event {
-                index: 1,
+                index,
                 t: te,
                 y: mut ye,
-            } => {
+            } if index == rest => {
                 // The foot comes to rest: xd = zd = 0, then stuck or sliding back.
                 let before = contact.get();
                 let mut f_minus = [0.0; MAX_LEN];

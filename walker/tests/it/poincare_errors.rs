@@ -8,7 +8,7 @@ use crate::common;
 use common::start;
 use walker::model::Model;
 use walker::poincare::{
-    FixedPointError, FixedPointOptions, JacobianMethod, MapError, Section,
+    FixedPointError, FixedPointOptions, JacobianMethod, MapError, Section, StepCheck,
     finite_difference_map_with_step, fixed_point, poincare_map, poincare_map_along,
     poincare_map_with,
 };
@@ -59,7 +59,8 @@ fn a_state_or_seeds_of_the_wrong_shape_are_refused_by_name() {
     }
     let seeds = vec![vec![1.0, 0.0]; 8];
     let along = |seeds: &[Vec<f64>]| {
-        poincare_map_along(&model, &cfg, &s, seeds, JacobianMethod::Variational).unwrap_err()
+        let method = JacobianMethod::Variational;
+        poincare_map_along(&model, &cfg, &s, seeds, method, StepCheck::Through).unwrap_err()
     };
     assert!(matches!(
         along(&seeds[..5]),
@@ -152,4 +153,38 @@ fn the_map_error_passes_through_the_fixed_point_search() {
         err,
         FixedPointError::Map(MapError::NoHeelStrike { t: 0.01 })
     );
+}
+
+#[test]
+fn a_fall_within_the_stance_is_the_maps_failure_and_the_step_check_is_the_walks() {
+    // The passive wheel on phi = 0.1 with mu0 = 0.19 falls back onto its rear spoke in a
+    // step of its walk from (P2b) (Fig. 14, `walker reproduce`): the map of that step stops
+    // there with the model's fall, as the simulator does, instead of integrating the wheel on
+    // through the floor.
+    let model = common::passive(&[("mu0", 0.19), ("phi", 0.1)]);
+    let cfg = SimConfig::default();
+    let limits = walker::sim::WalkLimits {
+        max_steps: 5,
+        ..walker::sim::WalkLimits::default()
+    };
+    let w = walker::sim::walk(&model, &cfg, &start(&model, 0.8), &limits);
+    let fell = w.failure.as_ref().expect("the wheel falls");
+    assert_eq!(fell.name(), "fell-backward");
+    let s = w.last_state().expect("a step before the fall");
+    let got = poincare_map(&model, &cfg, &s);
+    let Err(MapError::Fall { name, t }) = got else {
+        panic!("expected the fall, got {got:?}");
+    };
+    assert_eq!(name, "fell-backward");
+    assert!(t > 0.0 && t < cfg.max_step_time, "{t}");
+    // With the simulator's step checked first, its failure is the map's (as for differences).
+    let section = Section::of(&model);
+    let r = section.reduce(&s);
+    let err = section
+        .map_with(&cfg, &r, JacobianMethod::Variational, StepCheck::Walk)
+        .unwrap_err();
+    let MapError::Walk(failure) = &err else {
+        panic!("expected the walk's failure, got {err:?}");
+    };
+    assert_eq!(failure.name(), "fell-backward", "{err}");
 }
