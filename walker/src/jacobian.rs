@@ -269,6 +269,7 @@ impl<'a> StanceJacobian<'a> {
             return;
         }
         let v = self.inputs_at(t, y, rates);
+        let gains = m.gains();
         let args = Args {
             v: &v[..inputs],
             sigma,
@@ -294,13 +295,14 @@ impl<'a> StanceJacobian<'a> {
                         d += row[2 * n] * 0.0;
                     }
                 }
-                out[i * 2 * n + j] = self.plus_through_v(d, &row[2 * n + 1..], rates, j);
+                out[i * 2 * n + j] =
+                    plus_through_v(d, &row[2 * n + 1..], rates, (n, inputs), gains, j);
             }
         }
     }
 
     /// The auxiliary inputs `v` at `(t, y)` (Eq. 32), with `output_rates_jacobian` (`d [y,
-    /// yd] / d [q, qd]`, `2m x 2n`) evaluated into `rates` for [`Self::plus_through_v`].
+    /// yd] / d [q, qd]`, `2m x 2n`) evaluated into `rates` for [`plus_through_v`].
     fn inputs_at(&self, t: f64, y: &[f64], rates: &mut [f64]) -> [f64; MAX_COORDINATES] {
         let m = self.model;
         let (n, inputs) = (m.n(), m.inputs());
@@ -312,21 +314,6 @@ impl<'a> StanceJacobian<'a> {
             &mut rates[..2 * inputs * 2 * n],
         );
         v
-    }
-
-    /// `d + sum_k K_v,k d v_k / d y_j` for a kernel row's `v` columns `row_v`: the chain rule
-    /// through `d v_k / d y_j = -(K_P d y_k / d y_j) - K_D d yd_k / d y_j` (Eq. 32), `rates`
-    /// from [`Self::inputs_at`].
-    #[inline]
-    fn plus_through_v(&self, mut d: f64, row_v: &[f64], rates: &[f64], j: usize) -> f64 {
-        let (n, inputs) = (self.model.n(), self.model.inputs());
-        let (k_p, k_d) = self.model.gains();
-        for (kk, &k_v) in row_v[..inputs].iter().enumerate() {
-            let dy = rates[kk * 2 * n + j];
-            let dyd = rates[(inputs + kk) * 2 * n + j];
-            d += k_v * (-(k_p * dy) - k_d * dyd);
-        }
-        d
     }
 
     /// `d [qdd, lambda_t, lambda_n] / d [q, qd]` of the stuck stance (`stick_jacobian`) at
@@ -399,4 +386,25 @@ impl<'a> StanceJacobian<'a> {
             &mut out[..n * 2 * n],
         );
     }
+}
+
+/// `d + sum_k K_v,k d v_k / d y_j` for a kernel row's `v` columns `row_v` (`inputs` of them):
+/// the chain rule through `d v_k / d y_j = -(K_P d y_k / d y_j) - K_D d yd_k / d y_j` (Eq. 32),
+/// `rates` from [`StanceJacobian::inputs_at`] for a model of `n` coordinates, `gains` `(K_P,
+/// K_D)`.
+#[inline]
+fn plus_through_v(
+    mut d: f64,
+    row_v: &[f64],
+    rates: &[f64],
+    (n, inputs): (usize, usize),
+    (k_p, k_d): (f64, f64),
+    j: usize,
+) -> f64 {
+    for kk in 0..inputs {
+        let dy = rates[kk * 2 * n + j];
+        let dyd = rates[(inputs + kk) * 2 * n + j];
+        d += row_v[kk] * (-(k_p * dy) - k_d * dyd);
+    }
+    d
 }

@@ -7,7 +7,7 @@ use walker_contract::Desired;
 use crate::model::{Args, Contact, KernelId};
 use crate::vector::MAX_COORDINATES;
 
-use super::{NoJacobian, Scratch, StanceJacobian};
+use super::{NoJacobian, Scratch, StanceJacobian, plus_through_v};
 
 /// The friction ratio that holds the stance foot of a model with inputs, with its derivatives
 /// ([`StanceJacobian::held_ratio`]).
@@ -86,10 +86,11 @@ impl StanceJacobian<'_> {
             &mut k[..(n + inputs + 2) * cols],
         );
         let rows = (out.len() / (2 * n)).min(n + inputs);
+        let gains = m.gains();
         for (i, o) in out[..rows * 2 * n].chunks_exact_mut(2 * n).enumerate() {
             let row = &k[i * cols..(i + 1) * cols];
             for (j, o) in o.iter_mut().enumerate() {
-                *o = self.plus_through_v(row[j], &row[2 * n..], rates, j);
+                *o = plus_through_v(row[j], &row[2 * n..], rates, (n, inputs), gains, j);
             }
         }
     }
