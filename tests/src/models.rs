@@ -243,7 +243,45 @@ pub const UNREFERENCED: &[&str] = &[
     "impact_rows",
     "impact_double_rows",
     "stick_jacobian",
+    "closed_loop_stick_jacobian",
 ];
+
+/// The reference's value of `key` (an output of `kernel`), or `None` where the reference has no
+/// Jacobian of that name at all: `sympy_ref/models.py` differentiates closed forms only (of at
+/// most four coordinates), so the Jacobians a model without closed forms has from its
+/// structured solves (`derive/src/model/forward.rs`: the compass gait's and the simplest
+/// walker's `accel_jacobian`, the three-link biped's `closed_loop_jacobian`) are not in it.
+/// Those are checked exactly against the closed forms on the paper's walkers (the forward
+/// mode's unit tests) and by differences of the stance and of whole steps
+/// (`walker/tests/it/stuck_actuated.rs`, `poincare_exact.rs`); `closed_loop_stick_jacobian`
+/// likewise ([`UNREFERENCED`]).
+///
+/// # Errors
+/// A key the reference should have and has not (a reference that lists some of a Jacobian's
+/// entries must list them all), named with the model.
+pub fn reference_value(
+    sample: &Sample,
+    model: &str,
+    kernel: &str,
+    key: &str,
+) -> Result<Option<f64>, String> {
+    if let Some(v) = sample.reference(key) {
+        return Ok(Some(v));
+    }
+    let jacobian = ["accel_jac_", "cl_jac_"]
+        .into_iter()
+        .find(|prefix| key.starts_with(prefix));
+    let listed = |prefix: &str| {
+        sample
+            .out
+            .as_object()
+            .is_some_and(|o| o.keys().any(|k| k.starts_with(prefix)))
+    };
+    match jacobian {
+        Some(prefix) if kernel.ends_with("_jacobian") && !listed(prefix) => Ok(None),
+        _ => Err(format!("{model}: the reference has no {key}")),
+    }
+}
 
 /// The factor that turns a kernel output into the reference's: impulses on a slope are
 /// reported by the reference as their vertical components (`cos phi` times the normal one).
