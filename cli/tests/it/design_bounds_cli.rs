@@ -81,23 +81,8 @@ fn a_clearance_the_straight_legged_three_link_biped_cannot_give_is_an_infeasible
     // its rate, about 1.6 rad/s): 1.4e-6 m. A design pushed towards 1 mm reached 2.8e-8 m.
     let m = model("three-link");
     for h in ["1", "0.001"] {
-        let d = json(&[
-            "design",
-            "--model",
-            &m,
-            "--friction",
-            "coulomb",
-            "--impact",
-            "coulomb",
-            "--objective",
-            "friction",
-            "--vary",
-            "T_set=0.2:1.0,th_T=0.1:0.8,beta=0.2:0.5",
-            "--max-evaluations",
-            "10",
-            "--clearance",
-            h,
-        ]);
+        let d: Value =
+            serde_json::from_str(&three_link_friction("10", &["--clearance", h])).unwrap();
         assert_eq!(d["status"], "infeasible", "{d}");
         assert_eq!(d["violated"], "clearance", "{d}");
         let c = row(&d, "clearance");
